@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# setup.sh run|test [ARGS...] - the two commands of the README.
+# Installs the Debian 12 packages idview needs (only the missing ones, so a second call is
+# quick), configures and builds Release in build/, then
+#   run:  starts idview on the default scene (ARGS are passed to it);
+#   test: runs the whole ctest suite on lavapipe, Mesa's CPU Vulkan driver.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+what=${1:-}
+case $what in
+run | test) shift ;;
+*)
+    echo "usage: scripts/setup.sh run|test [ARGS...]" >&2
+    exit 2
+    ;;
+esac
+
+# Build-time libraries, then what running and testing need. mesa-vulkan-drivers brings
+# lavapipe, so idview has a Vulkan device even on a machine without a GPU driver.
+packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-tools libtinygltf-dev
+    libimgui-dev libvulkan-dev libstb-dev mesa-vulkan-drivers)
+if [[ $what == test ]]; then
+    packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if ((${#missing[@]})); then
+    echo "setup: installing ${missing[*]}"
+    sudo=()
+    [[ $(id -u) -ne 0 ]] && sudo=(sudo)
+    "${sudo[@]}" apt-get update -qq
+    "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+        "${missing[@]}"
+fi
+
+[[ -f build/CMakeCache.txt ]] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"
+
+if [[ $what == run ]]; then
+    exec build/idview "$@"
+fi
+cd build
+exec ctest --output-on-failure -j"$(nproc)" "$@"

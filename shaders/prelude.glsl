@@ -1,0 +1,26 @@
+// prelude.glsl - what every idview shader starts with: extensions, the shared structs, the
+// buffer-reference views of the scene buffers and the push constant block.
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_buffer_reference : require
+
+#include "shared.h"
+
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer FrameRef {
+    FrameData frame;
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer ObjectsRef {
+    ObjectData objects[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer MaterialsRef {
+    Material materials[];
+};
+
+layout(push_constant, std430) uniform PushBlock {
+    DrawPush push;
+};
+
+FrameData loadFrame() { return FrameRef(push.frameAddress).frame; }
+
+ObjectData loadObject(uint64_t objectsAddress, uint objectIndex) {
+    return ObjectsRef(objectsAddress).objects[objectIndex];
+}

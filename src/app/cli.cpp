@@ -1,0 +1,150 @@
+// cli.cpp - flag table, value parsing and usage text.
+#include "app/cli.h"
+
+#include <charconv>
+#include <functional>
+
+#include "render/technique.h"
+#include "scene/generator.h"
+
+namespace app {
+namespace {
+
+uint32_t parseCount(const std::string& flag, const std::string& text, uint32_t min, uint32_t max) {
+    uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || value < min || value > max)
+        throw UsageError(flag + " expects a whole number from " + std::to_string(min) + " to " +
+                         std::to_string(max) + ", not '" + text + "'");
+    return value;
+}
+
+float parseFraction(const std::string& flag, const std::string& text) {
+    try {
+        size_t used = 0;
+        float value = std::stof(text, &used);
+        if (used == text.size() && value >= 0.0f && value <= 1.0f) return value;
+    } catch (const std::exception&) {
+    }
+    throw UsageError(flag + " expects a number from 0 to 1, not '" + text + "'");
+}
+
+void parseSize(const std::string& text, Options& o) {
+    auto x = text.find('x');
+    if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, not '" + text + "'");
+    o.width = parseCount("--size width", text.substr(0, x), 1, 16384);
+    o.height = parseCount("--size height", text.substr(x + 1), 1, 16384);
+}
+
+struct Flag {
+    const char* name;
+    const char* value; // nullptr for a switch
+    const char* help;
+    std::function<void(Options&, const std::string&)> apply;
+};
+
+const std::vector<Flag>& flags() {
+    static const std::vector<Flag> table = {
+        {"--help", nullptr, "print this text", [](Options& o, auto&) { o.help = true; }},
+        {"--headless", nullptr, "render offscreen without a window or surface",
+         [](Options& o, auto&) { o.headless = true; }},
+        {"--size", "WxH", "render size in pixels (default 1280x720)",
+         [](Options& o, auto& v) { parseSize(v, o); }},
+        {"--frames", "N", "frames to render headless (default 10); files hold the last one",
+         [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }},
+        {"--screenshot", "FILE", "write the last frame's colour image as PNG",
+         [](Options& o, auto& v) { o.screenshot = v; }},
+        {"--id-image", "FILE",
+         "write the last frame's part IDs: W*H little-endian uint32, row-major, top row first, "
+         "0xFFFFFFFF where no part is",
+         [](Options& o, auto& v) { o.idImage = v; }},
+        {"--scene", "NAME", "built-in scene: assembly (default) or tiles (the test layout)",
+         [](Options& o, auto& v) {
+             for (const auto& name : scene::sceneNames())
+                 if (v == name) {
+                     o.scene = v;
+                     return;
+                 }
+             throw UsageError("--scene: unknown scene '" + v + "'");
+         }},
+        {"--renderer", "NAME", "part-ID technique (see --list-renderers; default per-draw)",
+         [](Options& o, auto& v) {
+             if (!render::findTechnique(v))
+                 throw UsageError("--renderer: unknown renderer '" + v +
+                                  "' (known: " + render::techniqueNames() + ")");
+             o.renderer = v;
+         }},
+        {"--mode", "NAME", "per-draw parameter mode (default push)",
+         [](Options& o, auto& v) {
+             if (!render::findDrawMode(v))
+                 throw UsageError("--mode: unknown mode '" + v +
+                                  "' (known: " + render::drawModeNames() + ")");
+             o.mode = v;
+         }},
+        {"--part-weight", "F", "blend of part colour over material colour, 0 to 1 (default 0.5)",
+         [](Options& o, auto& v) { o.partWeight = parseFraction("--part-weight", v); }},
+        {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
+         [](Options& o, auto&) { o.colorizeDraws = true; }},
+        {"--list-renderers", nullptr, "print the renderers and modes, then exit",
+         [](Options& o, auto&) { o.listRenderers = true; }},
+        {"--validation", nullptr, "enable the Khronos validation layer; messages make exit 3",
+         [](Options& o, auto&) { o.validation = true; }},
+        {"--device", "INDEX|NAME", "Vulkan device by index or name substring (default: best)",
+         [](Options& o, auto& v) { o.device = v; }},
+        {"--list-devices", nullptr, "print the Vulkan devices and whether idview runs there",
+         [](Options& o, auto&) { o.listDevices = true; }},
+        {"--shader-dir", "DIR", "read shaders from DIR instead of the built-in location",
+         [](Options& o, auto& v) { o.shaderDir = v; }},
+    };
+    return table;
+}
+
+} // namespace
+
+Options parseArgs(const std::vector<std::string>& args) {
+    Options options;
+    for (size_t i = 0; i < args.size(); ++i) {
+        std::string name = args[i], value;
+        bool inlineValue = false;
+        if (auto eq = name.find('='); name.rfind("--", 0) == 0 && eq != std::string::npos) {
+            value = name.substr(eq + 1);
+            name = name.substr(0, eq);
+            inlineValue = true;
+        }
+        const Flag* flag = nullptr;
+        for (const auto& f : flags())
+            if (name == f.name) flag = &f;
+        if (!flag) throw UsageError("unknown option '" + args[i] + "'");
+        if (flag->value && !inlineValue) {
+            if (i + 1 >= args.size())
+                throw UsageError(name + " needs a value (" + flag->value + ")");
+            value = args[++i];
+        } else if (!flag->value && inlineValue) {
+            throw UsageError(name + " takes no value");
+        }
+        flag->apply(options, value);
+    }
+    return options;
+}
+
+Options parseArgs(int argc, char** argv) {
+    return parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+}
+
+std::string usage() {
+    std::string text = "usage: idview [OPTIONS]\n"
+                       "Renders a CAD assembly and knows which part is at every pixel.\n\n";
+    for (const auto& f : flags()) {
+        std::string left = std::string("  ") + f.name + (f.value ? std::string(" ") + f.value : "");
+        if (left.size() < 26)
+            left.resize(26, ' ');
+        else
+            left += "\n" + std::string(26, ' ');
+        text += left + f.help + "\n";
+    }
+    text += "\nExit codes: 0 ok, 1 error (no device, missing features, I/O), 2 bad command line,\n"
+            "3 validation messages were reported (with --validation).\n";
+    return text;
+}
+
+} // namespace app

@@ -1,0 +1,149 @@
+// headless.cpp - the frame loop without a window, and image readback.
+#include "app/headless.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+
+#include "app/image_io.h"
+#include "render/frame_slots.h"
+#include "render/renderer.h"
+#include "render/targets.h"
+#include "scene/generator.h"
+#include "vk/check.h"
+#include "vk/context.h"
+#include "vk/shader_compiler.h"
+
+namespace app {
+namespace {
+
+// Host-visible copies of the last frame's colour and ID images.
+struct Readback {
+    vk::Device& device;
+    vk::Buffer color, ids;
+
+    Readback(vk::Device& d, VkExtent2D extent) : device(d) {
+        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+        const VkMemoryPropertyFlags host =
+            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        color =
+            vk::createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host, "readback colour");
+        try {
+            ids =
+                vk::createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host, "readback IDs");
+        } catch (...) {
+            vk::destroyBuffer(d, color);
+            throw;
+        }
+    }
+    ~Readback() {
+        vk::destroyBuffer(device, color);
+        vk::destroyBuffer(device, ids);
+    }
+
+    // After the scene pass: both images are in TRANSFER_SRC_OPTIMAL (see ScenePass).
+    void record(VkCommandBuffer cmd, const render::SceneTargets& targets) const {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {targets.extent().width, targets.extent().height, 1};
+        vkCmdCopyImageToBuffer(cmd, targets.color().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               color.buffer, 1, &region);
+        vkCmdCopyImageToBuffer(cmd, targets.ids().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               ids.buffer, 1, &region);
+        auto toHost = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                             &toHost, 0, nullptr, 0, nullptr);
+    }
+};
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+} // namespace
+
+scene::Camera defaultCamera(const std::string& sceneName, const scene::Scene& scene, float aspect) {
+    if (sceneName == "tiles") return scene::tilesCamera();
+    // A three-quarter view from the front, above: how CAD viewers open an assembly.
+    return scene::fitCamera(scene.bounds(), {0.9f, -1.6f, 1.2f}, {0, 0, 1}, glm::radians(40.0f),
+                            aspect);
+}
+
+HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
+                              const scene::Camera& camera) {
+    const render::Technique* technique = render::findTechnique(options.renderer);
+    const render::DrawMode* mode = render::findDrawMode(options.mode);
+    if (!technique || !mode) throw vk::Error("unknown renderer or mode");
+
+    HeadlessResult result;
+    result.width = options.width;
+    result.height = options.height;
+    vk::Instance instance({options.validation, {}});
+    {
+        const auto devices = instance.devices();
+        vk::Device device(instance, vk::chooseDevice(devices, options.device));
+        result.deviceName = device.info().name;
+        vk::ShaderCompiler compiler(vk::ShaderCompiler::locate(options.shaderDir));
+        render::ScenePass pass(device);
+        const VkExtent2D extent{options.width, options.height};
+        render::SceneTargets targets(device, pass, extent);
+        render::FrameSlots slots(device);
+        render::Renderer renderer(device, compiler, pass);
+        renderer.setTechnique(*technique, *mode, scene);
+        renderer.setScene(scene);
+        result.draws = renderer.drawCount();
+        Readback readback(device, extent);
+
+        render::FrameParams params;
+        params.viewProj = camera.viewProjection(float(extent.width) / float(extent.height));
+        params.eye = camera.eye;
+        params.partColorWeight = options.partWeight;
+        params.colorizeDraws = options.colorizeDraws;
+        for (uint32_t frame = 0; frame < options.frames; ++frame) {
+            render::FrameSlot& slot = slots.begin(frame);
+            renderer.record(slot, targets, params);
+            if (frame + 1 == options.frames) readback.record(slot.cmd, targets);
+            slots.submit(slot);
+        }
+        slots.finish();
+        result.gpuMs = slots.gpuMilliseconds();
+
+        const size_t pixels = size_t(extent.width) * extent.height;
+        result.color.resize(pixels * 4);
+        result.ids.resize(pixels);
+        std::memcpy(result.color.data(), readback.color.mapped, pixels * 4);
+        std::memcpy(result.ids.data(), readback.ids.mapped, pixels * 4);
+    }
+    result.validationMessages = instance.validationMessages();
+    return result;
+}
+
+int runHeadless(const Options& options) {
+    const scene::Scene scene = scene::makeScene(options.scene);
+    const float aspect = float(options.width) / float(options.height);
+    const scene::Camera camera = defaultCamera(options.scene, scene, aspect);
+    HeadlessResult result = renderHeadless(options, scene, camera);
+
+    if (!options.screenshot.empty())
+        writePng(options.screenshot, result.width, result.height, result.color);
+    if (!options.idImage.empty()) writeIdImage(options.idImage, result.ids);
+
+    std::printf("idview: %u frames of %ux%u on %s, %s + %s: %zu draws, %llu triangles, %u parts, "
+                "scene pass GPU median %.3f ms\n",
+                options.frames, result.width, result.height, result.deviceName.c_str(),
+                options.renderer.c_str(), options.mode.c_str(), result.draws,
+                static_cast<unsigned long long>(scene.drawnTriangleCount()),
+                scene.uniquePartCount(), median(result.gpuMs));
+    if (result.validationMessages > 0) {
+        std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
+                     result.validationMessages);
+        return 3;
+    }
+    return 0;
+}
+
+} // namespace app

@@ -1,0 +1,36 @@
+// headless.h - offscreen rendering with no window and no surface extensions, through the same
+// renderer the window uses. Used by `idview --headless` and, in-process, by the tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace app {
+
+struct HeadlessResult {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> color; // RGBA8 of the last frame, top row first
+    std::vector<uint32_t> ids;  // unique part IDs of the last frame, gpu::BACKGROUND_ID if none
+    std::vector<double> gpuMs;  // scene pass time of each frame
+    std::string deviceName;
+    size_t draws = 0;
+    uint32_t validationMessages = 0; // counted until the device is destroyed
+};
+
+// Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
+// Throws vk::Error / vk::ShaderError with a message for people.
+HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
+                              const scene::Camera& camera);
+
+// The camera idview uses for a built-in scene at this aspect ratio.
+scene::Camera defaultCamera(const std::string& sceneName, const scene::Scene& scene, float aspect);
+
+// `idview --headless`: renders, writes the requested files, prints a summary line and returns
+// the exit code (3 when validation reported anything).
+int runHeadless(const Options& options);
+
+} // namespace app

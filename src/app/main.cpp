@@ -1,0 +1,63 @@
+// main.cpp - idview's entry point: parses the command line and runs the requested path.
+#include <cstdio>
+#include <exception>
+
+#include "app/cli.h"
+#include "app/headless.h"
+#include "render/technique.h"
+#include "vk/context.h"
+
+namespace {
+
+int listRenderers() {
+    std::printf("renderers:\n");
+    for (const auto& t : render::techniques()) std::printf("  %-12s %s\n", t.name, t.description);
+    std::printf("per-draw modes:\n");
+    for (const auto& m : render::drawModes()) std::printf("  %-12s %s\n", m.name, m.description);
+    return 0;
+}
+
+int listDevices(const app::Options& options) {
+    vk::Instance instance({options.validation, {}});
+    const auto devices = instance.devices();
+    if (devices.empty()) std::printf("no Vulkan devices\n");
+    for (const auto& info : devices) {
+        auto missing = vk::missingRequirements(info);
+        std::string verdict = "usable";
+        for (size_t i = 0; i < missing.size(); ++i)
+            verdict = (i == 0 ? "cannot run idview: missing " : verdict + ", ") + missing[i];
+        std::printf("%s | %s\n", vk::describeDevice(info).c_str(), verdict.c_str());
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    app::Options options;
+    try {
+        options = app::parseArgs(argc, argv);
+    } catch (const app::UsageError& e) {
+        std::fprintf(stderr, "idview: %s\n\n%s", e.what(), app::usage().c_str());
+        return 2;
+    }
+    if (options.help) {
+        std::printf("%s", app::usage().c_str());
+        return 0;
+    }
+    try {
+        if (options.listRenderers) return listRenderers();
+        if (options.listDevices) return listDevices(options);
+        if (!options.headless) {
+            // The interactive window arrives with the viewer; until then say what happens.
+            if (options.screenshot.empty()) options.screenshot = "idview.png";
+            std::printf("idview: the interactive window is not built yet; rendering the default "
+                        "scene headless to %s\n",
+                        options.screenshot.c_str());
+        }
+        return app::runHeadless(options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "idview: error: %s\n", e.what());
+        return 1;
+    }
+}

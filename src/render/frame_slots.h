@@ -1,0 +1,55 @@
+// frame_slots.h - the frames in flight: per slot a command buffer, a fence, the timestamp
+// queries around the scene pass and the slot's FrameData buffer. A slot is reused only after
+// its fence signalled, which is also when its timestamps are read (never with a wait flag).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "vk/resources.h"
+
+namespace render {
+
+struct FrameSlot {
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence done = VK_NULL_HANDLE;
+    VkQueryPool timestamps = VK_NULL_HANDLE; // [0] before the scene pass, [1] after it
+    vk::Buffer frameData;                    // gpu::FrameData, written with vkCmdUpdateBuffer
+    bool submitted = false;                  // has work whose timestamps are not read yet
+};
+
+class FrameSlots {
+  public:
+    static constexpr uint32_t count = 2;
+
+    explicit FrameSlots(vk::Device& device);
+    ~FrameSlots();
+    FrameSlots(const FrameSlots&) = delete;
+    FrameSlots& operator=(const FrameSlots&) = delete;
+
+    // Waits for the slot of frame `frameNumber`, collects its previous GPU time, resets it
+    // and begins its command buffer.
+    FrameSlot& begin(uint64_t frameNumber);
+    // Ends and submits the slot's command buffer, signalling its fence.
+    void submit(FrameSlot& slot, const std::vector<VkSemaphore>& wait = {},
+                const std::vector<VkPipelineStageFlags>& waitStages = {},
+                const std::vector<VkSemaphore>& signal = {});
+    // Waits for every slot and collects the remaining GPU times.
+    void finish();
+
+    // GPU milliseconds of the scene pass, one per completed frame, oldest first.
+    const std::vector<double>& gpuMilliseconds() const { return gpuMs_; }
+
+  private:
+    void create();
+    void release();
+    void collectTimings(FrameSlot& slot);
+
+    vk::Device& device_;
+    std::array<FrameSlot, count> slots_;
+    std::vector<double> gpuMs_;
+};
+
+} // namespace render

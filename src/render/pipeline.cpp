@@ -1,0 +1,118 @@
+// pipeline.cpp - graphics pipeline state for the scene pass.
+#include "render/pipeline.h"
+
+#include <array>
+
+#include "shared.h"
+#include "vk/check.h"
+
+namespace render {
+
+VkPipelineLayout createScenePipelineLayout(vk::Device& device) {
+    VkPushConstantRange range{pushStages, 0, sizeof(gpu::DrawPush)};
+    auto info = vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    info.pushConstantRangeCount = 1;
+    info.pPushConstantRanges = &range;
+    VkPipelineLayout layout;
+    vk::check(vkCreatePipelineLayout(device.handle(), &info, nullptr, &layout),
+              "vkCreatePipelineLayout");
+    device.name(VK_OBJECT_TYPE_PIPELINE_LAYOUT, layout, "scene pipeline layout");
+    return layout;
+}
+
+VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
+                               const std::vector<ShaderStage>& stages, const std::string& name) {
+    std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
+    for (const auto& s : stages) {
+        auto info = vk::init<VkPipelineShaderStageCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+        info.stage = s.stage;
+        info.module = s.module;
+        info.pName = "main";
+        stageInfos.push_back(info);
+    }
+
+    VkVertexInputBindingDescription binding{gpu::BINDING_VERTICES, sizeof(gpu::Vertex),
+                                            VK_VERTEX_INPUT_RATE_VERTEX};
+    std::array<VkVertexInputAttributeDescription, 2> attributes = {{
+        {gpu::LOC_POSITION, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
+         offsetof(gpu::Vertex, position)},
+        {gpu::LOC_NORMAL, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
+         offsetof(gpu::Vertex, normal)},
+    }};
+    auto vertexInput = vk::init<VkPipelineVertexInputStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
+    vertexInput.pVertexAttributeDescriptions = attributes.data();
+
+    auto assembly = vk::init<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+
+    auto viewport = vk::init<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+
+    // No culling: CAD exports often mix windings, and the shading is two-sided.
+    auto raster = vk::init<VkPipelineRasterizationStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+
+    auto multisample = vk::init<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+    auto depth = vk::init<VkPipelineDepthStencilStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
+    depth.depthTestEnable = VK_TRUE;
+    depth.depthWriteEnable = VK_TRUE;
+    depth.depthCompareOp = VK_COMPARE_OP_LESS;
+
+    // Both attachments get the same state (a full write mask; R32_UINT ignores G, B and A):
+    // differing states would need the independentBlend feature.
+    std::array<VkPipelineColorBlendAttachmentState, 2> blend{};
+    for (auto& attachment : blend)
+        attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    auto colorBlend = vk::init<VkPipelineColorBlendStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
+    colorBlend.attachmentCount = static_cast<uint32_t>(blend.size());
+    colorBlend.pAttachments = blend.data();
+
+    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                   VK_DYNAMIC_STATE_SCISSOR};
+    auto dynamic = vk::init<VkPipelineDynamicStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
+    dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+    dynamic.pDynamicStates = dynamicStates.data();
+
+    auto info =
+        vk::init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
+    info.stageCount = static_cast<uint32_t>(stageInfos.size());
+    info.pStages = stageInfos.data();
+    info.pVertexInputState = &vertexInput;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &colorBlend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    info.renderPass = pass;
+    info.subpass = 0;
+    VkPipeline pipeline;
+    vk::check(
+        vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateGraphicsPipelines");
+    device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
+    return pipeline;
+}
+
+} // namespace render

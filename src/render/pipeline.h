@@ -1,0 +1,26 @@
+// pipeline.h - the fixed-function state every scene pipeline shares (vertex layout from
+// shared.h, depth test, two colour outputs) with the shader stages a technique brings.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vk/context.h"
+
+namespace render {
+
+struct ShaderStage {
+    VkShaderStageFlagBits stage;
+    VkShaderModule module;
+};
+
+// Push constants are visible to every stage a technique may use, so one range serves all.
+constexpr VkShaderStageFlags pushStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+VkPipelineLayout createScenePipelineLayout(vk::Device& device);
+
+VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
+                               const std::vector<ShaderStage>& stages, const std::string& name);
+
+} // namespace render

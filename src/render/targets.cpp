@@ -1,0 +1,132 @@
+// targets.cpp - render pass and attachments of the scene pass.
+#include "render/targets.h"
+
+#include <array>
+
+#include "vk/check.h"
+
+namespace render {
+
+static VkFormat pickDepthFormat(VkPhysicalDevice physical) {
+    for (VkFormat format :
+         {VK_FORMAT_D32_SFLOAT, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM}) {
+        VkFormatProperties props;
+        vkGetPhysicalDeviceFormatProperties(physical, format, &props);
+        if (props.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT)
+            return format;
+    }
+    throw vk::Error("the device offers no depth attachment format");
+}
+
+ScenePass::ScenePass(vk::Device& device) : device_(device) {
+    depthFormat_ = pickDepthFormat(device.physical());
+
+    auto colorAttachment = [](VkFormat format) {
+        VkAttachmentDescription a{};
+        a.format = format;
+        a.samples = VK_SAMPLE_COUNT_1_BIT;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED; // cleared every frame
+        a.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        return a;
+    };
+    std::array<VkAttachmentDescription, 3> attachments = {
+        colorAttachment(colorFormat), colorAttachment(idFormat), {}};
+    VkAttachmentDescription& depth = attachments[2];
+    depth = colorAttachment(depthFormat_);
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+
+    std::array<VkAttachmentReference, 2> colorRefs = {
+        VkAttachmentReference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
+        VkAttachmentReference{1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+    VkAttachmentReference depthRef{2, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
+    subpass.pColorAttachments = colorRefs.data();
+    subpass.pDepthStencilAttachment = &depthRef;
+
+    // In: the previous frame's pass and its copies out of the colour and ID images must be
+    // done before this frame clears them. Out: the copies wait for this pass's writes.
+    std::array<VkSubpassDependency, 2> deps{};
+    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    deps[0].dstSubpass = 0;
+    deps[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                           VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                           VK_PIPELINE_STAGE_TRANSFER_BIT;
+    deps[0].srcAccessMask =
+        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                           VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                           VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    deps[1].srcSubpass = 0;
+    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+
+    auto info = vk::init<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
+    info.attachmentCount = static_cast<uint32_t>(attachments.size());
+    info.pAttachments = attachments.data();
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = static_cast<uint32_t>(deps.size());
+    info.pDependencies = deps.data();
+    vk::check(vkCreateRenderPass(device.handle(), &info, nullptr, &pass_), "vkCreateRenderPass");
+    device.name(VK_OBJECT_TYPE_RENDER_PASS, pass_, "scene pass");
+}
+
+ScenePass::~ScenePass() {
+    vkDestroyRenderPass(device_.handle(), pass_, nullptr);
+}
+
+SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent)
+    : device_(device), extent_(extent) {
+    try {
+        const VkImageUsageFlags readable =
+            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        color_ = vk::createImage2D(device, extent, ScenePass::colorFormat, readable,
+                                   VK_IMAGE_ASPECT_COLOR_BIT, "scene colour");
+        ids_ = vk::createImage2D(device, extent, ScenePass::idFormat, readable,
+                                 VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs");
+        depth_ = vk::createImage2D(device, extent, pass.depthFormat(),
+                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                   VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth");
+        std::array<VkImageView, 3> views = {color_.view, ids_.view, depth_.view};
+        auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
+        info.renderPass = pass.handle();
+        info.attachmentCount = static_cast<uint32_t>(views.size());
+        info.pAttachments = views.data();
+        info.width = extent.width;
+        info.height = extent.height;
+        info.layers = 1;
+        vk::check(vkCreateFramebuffer(device.handle(), &info, nullptr, &framebuffer_),
+                  "vkCreateFramebuffer");
+        device.name(VK_OBJECT_TYPE_FRAMEBUFFER, framebuffer_, "scene framebuffer");
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+SceneTargets::~SceneTargets() {
+    release();
+}
+
+void SceneTargets::release() {
+    if (framebuffer_) vkDestroyFramebuffer(device_.handle(), framebuffer_, nullptr);
+    framebuffer_ = VK_NULL_HANDLE;
+    vk::destroyImage(device_, color_);
+    vk::destroyImage(device_, ids_);
+    vk::destroyImage(device_, depth_);
+}
+
+} // namespace render

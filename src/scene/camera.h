@@ -1,0 +1,37 @@
+// camera.h - a look-at perspective camera with Vulkan conventions (depth 0..1, y down in
+// framebuffer space), and the ray through a pixel that the CPU ray cast uses.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace scene {
+
+struct Camera {
+    glm::vec3 eye{0, -10, 5};
+    glm::vec3 target{0, 0, 0};
+    glm::vec3 up{0, 0, 1};
+    float fovY = glm::radians(45.0f);
+    float nearPlane = 0.1f;
+    float farPlane = 100.0f;
+
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+    glm::mat4 viewProjection(float aspect) const { return projection(aspect) * view(); }
+};
+
+// A camera looking at the whole of `bounds` from `direction` (target to eye), with near and
+// far planes hugging the bounding sphere so depth precision follows the model's size.
+Camera fitCamera(const Bounds& bounds, glm::vec3 direction, glm::vec3 up, float fovY, float aspect);
+
+struct Ray {
+    glm::vec3 origin;
+    glm::vec3 direction; // not normalised: origin + direction reaches the far plane
+};
+
+// The ray through framebuffer position `pixel` (pixel centres at +0.5) of a width x height
+// image rendered with `viewProj`.
+Ray pixelRay(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel);
+
+} // namespace scene

@@ -1,0 +1,105 @@
+// scene.cpp - unique part ID bookkeeping, bounds and consistency checks.
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace scene {
+
+uint32_t Scene::uniquePartCount() const {
+    if (objects.empty()) return 0;
+    const Object& last = objects.back();
+    return last.uniquePartOffset + geometries[last.geometry].partCount;
+}
+
+uint64_t Scene::drawnTriangleCount() const {
+    uint64_t total = 0;
+    for (const auto& object : objects) total += geometries[object.geometry].triangleCount;
+    return total;
+}
+
+std::optional<PartRef> Scene::locate(uint32_t uniquePartId) const {
+    // Objects hold increasing, contiguous ID ranges: find the last one starting at or below.
+    auto it =
+        std::upper_bound(objects.begin(), objects.end(), uniquePartId,
+                         [](uint32_t id, const Object& o) { return id < o.uniquePartOffset; });
+    if (it == objects.begin()) return std::nullopt;
+    --it;
+    uint32_t local = uniquePartId - it->uniquePartOffset;
+    if (local >= geometries[it->geometry].partCount) return std::nullopt;
+    return PartRef{static_cast<uint32_t>(it - objects.begin()), local};
+}
+
+Bounds Scene::bounds() const {
+    Bounds b;
+    b.min = glm::vec3(std::numeric_limits<float>::max());
+    b.max = glm::vec3(std::numeric_limits<float>::lowest());
+    for (const auto& object : objects) {
+        const Geometry& g = geometries[object.geometry];
+        for (uint32_t v = 0; v < g.vertexCount; ++v) {
+            glm::vec3 p =
+                glm::vec3(object.world * glm::vec4(vertices[g.firstVertex + v].position, 1));
+            b.min = glm::min(b.min, p);
+            b.max = glm::max(b.max, p);
+        }
+    }
+    if (objects.empty()) b = {};
+    return b;
+}
+
+uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world) {
+    Object object;
+    object.geometry = geometry;
+    object.material = material;
+    object.world = world;
+    object.uniquePartOffset = scene.uniquePartCount();
+    scene.objects.push_back(object);
+    return static_cast<uint32_t>(scene.objects.size() - 1);
+}
+
+uint32_t addMaterial(Scene& scene, std::string name, glm::vec4 color) {
+    scene.materials.push_back({std::move(name), color});
+    return static_cast<uint32_t>(scene.materials.size() - 1);
+}
+
+static void fail(const std::string& what) {
+    throw std::invalid_argument("invalid scene: " + what);
+}
+
+void validate(const Scene& scene) {
+    for (size_t gi = 0; gi < scene.geometries.size(); ++gi) {
+        const Geometry& g = scene.geometries[gi];
+        const std::string name = "geometry " + std::to_string(gi) + " '" + g.name + "'";
+        if (uint64_t(g.firstVertex) + g.vertexCount > scene.vertices.size())
+            fail(name + " has vertices past the end of the vertex array");
+        if (uint64_t(g.firstIndex) + 3ull * g.triangleCount > scene.indices.size())
+            fail(name + " has triangles past the end of the index array");
+        if (uint64_t(g.firstPart) + g.partCount > scene.parts.size())
+            fail(name + " has parts past the end of the part array");
+        if (g.partCount == 0) fail(name + " has no parts");
+        uint32_t expected = 0;
+        for (uint32_t p = 0; p < g.partCount; ++p) {
+            const Part& part = scene.parts[g.firstPart + p];
+            if (part.firstTriangle != expected || part.triangleCount == 0)
+                fail(name + " part " + std::to_string(p) + " does not follow the previous one");
+            expected += part.triangleCount;
+        }
+        if (expected != g.triangleCount) fail(name + " parts do not cover all its triangles");
+        for (uint32_t i = 0; i < 3 * g.triangleCount; ++i)
+            if (scene.indices[g.firstIndex + i] >= g.vertexCount)
+                fail(name + " indexes a vertex it does not own");
+    }
+    uint32_t nextId = 0;
+    for (size_t oi = 0; oi < scene.objects.size(); ++oi) {
+        const Object& o = scene.objects[oi];
+        if (o.geometry >= scene.geometries.size() || o.material >= scene.materials.size())
+            fail("object " + std::to_string(oi) + " references a missing geometry or material");
+        if (o.uniquePartOffset != nextId)
+            fail("object " + std::to_string(oi) +
+                 " unique part IDs do not follow the previous object");
+        nextId += scene.geometries[o.geometry].partCount;
+    }
+}
+
+} // namespace scene

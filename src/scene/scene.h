@@ -1,0 +1,88 @@
+// scene.h - the CAD scene model: geometries made of parts, objects placing geometries, and
+// the unique part IDs that name every (object, part) pair. Plain C++, no Vulkan.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shared.h"
+
+namespace scene {
+
+using Vertex = gpu::Vertex;
+
+// A CAD face: a contiguous range of its geometry's triangles.
+struct Part {
+    uint32_t firstTriangle = 0; // relative to the geometry's first triangle
+    uint32_t triangleCount = 0;
+};
+
+// Vertices and triangles in the scene's shared arrays, drawable as one draw call.
+struct Geometry {
+    std::string name;
+    uint32_t firstVertex = 0; // into Scene::vertices; the draw's vertexOffset
+    uint32_t vertexCount = 0;
+    uint32_t firstIndex = 0; // into Scene::indices (3 per triangle, geometry-local vertices)
+    uint32_t triangleCount = 0;
+    uint32_t firstPart = 0; // into Scene::parts
+    uint32_t partCount = 0;
+};
+
+struct Material {
+    std::string name;
+    glm::vec4 color{0.7f, 0.7f, 0.7f, 1.0f};
+};
+
+// One placement of a geometry. Its parts have unique IDs uniquePartOffset + local index.
+struct Object {
+    uint32_t geometry = 0;
+    uint32_t material = 0;
+    glm::mat4 world{1.0f};
+    uint32_t uniquePartOffset = 0;
+};
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    float radius() const { return glm::length(max - min) * 0.5f; }
+};
+
+// Which object and which of its geometry's parts a unique part ID names.
+struct PartRef {
+    uint32_t object = 0;
+    uint32_t localPart = 0;
+};
+
+struct Scene {
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<Part> parts;
+    std::vector<Geometry> geometries;
+    std::vector<Material> materials;
+    std::vector<Object> objects;
+
+    const Part& part(const Object& object, uint32_t localPart) const {
+        return parts[geometries[object.geometry].firstPart + localPart];
+    }
+    // Unique part IDs run from 0 to uniquePartCount() - 1 without gaps.
+    uint32_t uniquePartCount() const;
+    // Triangles drawn for all objects (instanced geometry counted per object).
+    uint64_t drawnTriangleCount() const;
+    std::optional<PartRef> locate(uint32_t uniquePartId) const;
+    Bounds bounds() const;
+};
+
+// Adds an object and gives it the next free range of unique part IDs.
+uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world);
+uint32_t addMaterial(Scene& scene, std::string name, glm::vec4 color);
+
+// Throws std::invalid_argument naming the first inconsistency (index out of range, parts not
+// covering their geometry's triangles, overlapping unique IDs, ...).
+void validate(const Scene& scene);
+
+} // namespace scene

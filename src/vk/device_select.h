@@ -1,0 +1,57 @@
+// device_select.h - what idview needs from a Vulkan device, and which device it takes.
+// The checks are plain functions over DeviceInfo so they are unit-tested without a GPU.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+#include <vulkan/vulkan.h>
+
+namespace vk {
+
+// What idview reads off a physical device to decide whether, and how well, it can run there.
+struct DeviceInfo {
+    uint32_t index = 0;
+    VkPhysicalDevice handle = VK_NULL_HANDLE;
+    std::string name;
+    VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+    uint32_t apiVersion = 0;
+    std::string driverName; // from VkPhysicalDeviceDriverProperties; empty before Vulkan 1.2
+    std::string driverInfo;
+    uint32_t driverVersion = 0;
+    uint32_t vendorId = 0;
+
+    // Requirements, one flag each so the refusal can name every missing one.
+    bool bufferDeviceAddress = false;
+    bool shaderInt64 = false;
+    bool shaderBufferInt64Atomics = false;
+    bool geometryShader = false;
+    bool multiDrawIndirect = false;
+    bool drawIndirectFirstInstance = false;
+    bool fragmentStoresAndAtomics = false;
+    // A queue family with graphics and timestamps; UINT32_MAX if there is none.
+    uint32_t graphicsQueueFamily = UINT32_MAX;
+    float timestampPeriodNs = 0.0f;
+};
+
+// Reads everything above from the driver.
+DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index);
+
+// Names of every requirement the device misses ("Vulkan 1.2", "shaderInt64", ...).
+std::vector<std::string> missingRequirements(const DeviceInfo& info);
+
+// "discrete GPU", "CPU", ...
+const char* deviceTypeName(VkPhysicalDeviceType type);
+std::string versionString(uint32_t apiVersion);
+std::string driverVersionString(const DeviceInfo& info);
+
+// One line for --list-devices: index, name, type, driver and API version.
+std::string describeDevice(const DeviceInfo& info);
+
+// Picks the device to use. An empty request takes the best suitable device (discrete GPU,
+// then integrated, virtual, CPU). A request of digits is an index; anything else is a
+// case-insensitive substring of the name. Throws vk::Error with one line naming the reason
+// (no device, no match, or each missing requirement).
+const DeviceInfo& chooseDevice(const std::vector<DeviceInfo>& devices, const std::string& request);
+
+} // namespace vk

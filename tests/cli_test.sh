@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# cli_test.sh IDVIEW LAVAPIPE_ICD - idview as a user runs it: exit codes, one-line errors,
+# and the files the headless path writes. Every check names itself when it fails.
+set -uo pipefail
+idview=$1
+icd=$2
+export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# expect NAME CODE PATTERN -- COMMAND...: runs COMMAND, checks its exit code and that its
+# stdout+stderr match the extended regex PATTERN.
+expect() {
+    local name=$1 code=$2 pattern=$3
+    shift 4
+    local out rc
+    out=$("$@" 2>&1)
+    rc=$?
+    if [[ $rc -ne $code ]]; then
+        echo "FAIL $name: exit $rc, expected $code"; echo "$out" | head -20; failures=$((failures + 1))
+    elif ! grep -qE -- "$pattern" <<<"$out"; then
+        echo "FAIL $name: output lacks /$pattern/"; echo "$out" | head -20; failures=$((failures + 1))
+    else
+        echo "ok   $name"
+    fi
+}
+
+expect unknown-flag 2 "unknown option '--bogus'" -- "$idview" --bogus
+expect usage-on-error 2 '^usage: idview' -- "$idview" --bogus
+expect missing-value 2 '--size needs a value' -- "$idview" --headless --size
+expect bad-number 2 '--frames expects a whole number' -- "$idview" --frames lots
+expect help 0 '--id-image FILE' -- "$idview" --help
+expect list-renderers 0 'per-draw' -- "$idview" --list-renderers
+expect list-devices 0 '^0: llvmpipe.* \| CPU \| driver .* \| Vulkan 1\.[0-9]+\.[0-9]+ \| usable$' -- "$idview" --list-devices
+expect no-such-index 1 '^idview: error: --device 7: there are only 1 Vulkan devices' -- "$idview" --headless --device 7
+expect no-such-name 1 'no Vulkan device name contains it' -- "$idview" --headless --device radeon
+expect unwritable 1 "cannot write PNG '/nonexistent/x.png'" -- "$idview" --headless --frames 1 --screenshot /nonexistent/x.png
+
+# No driver at all: exactly one line, exit 1.
+out=$(VK_DRIVER_FILES=$work/none.json VK_ICD_FILENAMES=$work/none.json "$idview" --headless 2>&1)
+rc=$?
+if [[ $rc -eq 1 && $(wc -l <<<"$out") -eq 1 && $out == "idview: error: no Vulkan device found"* ]]; then
+    echo "ok   no-driver"
+else
+    echo "FAIL no-driver: exit $rc, output:"; echo "$out"; failures=$((failures + 1))
+fi
+
+# Headless files: a PNG, and W*H little-endian uint32 IDs holding the tiles' 25 parts and
+# the background (the in-process tests check every pixel; this checks the file format).
+expect headless-files 0 '25 draws' -- "$idview" --headless --validation --scene tiles --size 160x100 \
+    --frames 2 --screenshot "$work/t.png" --id-image "$work/t.ids"
+if [[ $(head -c 8 "$work/t.png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]]; then
+    echo "ok   png-signature"
+else
+    echo "FAIL png-signature"; failures=$((failures + 1))
+fi
+size=$(stat -c %s "$work/t.ids" 2>/dev/null || echo 0)
+values=$(od -An -v -tx4 -w4 "$work/t.ids" | sort -u | tr -d ' ' | tr '\n' ' ')
+if [[ $size -eq $((160 * 100 * 4)) && $(wc -w <<<"$values") -eq 26 && $values == *ffffffff* &&
+    $values == "00000000 00000001 "* ]]; then
+    echo "ok   id-image-format"
+else
+    echo "FAIL id-image-format: size $size, values $values"; failures=$((failures + 1))
+fi
+# Top-left pixel is background, first row first: the first four bytes are ff ff ff ff.
+[[ $(head -c 4 "$work/t.ids" | od -An -tx1 | tr -d ' \n') == ffffffff ]] &&
+    echo "ok   id-image-top-left" || { echo "FAIL id-image-top-left"; failures=$((failures + 1)); }
+
+# Without --headless (no window yet) idview says so and renders the default scene to idview.png.
+(cd "$work" && expect default-run 0 'not built yet.*idview.png' -- "$idview" --frames 1 --size 64x48)
+[[ -s $work/idview.png ]] && echo "ok   default-run-png" ||
+    { echo "FAIL default-run-png"; failures=$((failures + 1)); }
+
+echo "cli_test: $failures failed"
+exit $((failures > 0))

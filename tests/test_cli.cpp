@@ -1,0 +1,94 @@
+// test_cli.cpp - command-line parsing: every flag, both value spellings, and every refusal.
+#include <gtest/gtest.h>
+
+#include "app/cli.h"
+
+using app::Options;
+using app::parseArgs;
+using app::UsageError;
+
+TEST(Cli, DefaultsWithoutArguments) {
+    Options o = parseArgs(std::vector<std::string>{});
+    EXPECT_FALSE(o.headless);
+    EXPECT_FALSE(o.validation);
+    EXPECT_EQ(o.width, 1280u);
+    EXPECT_EQ(o.height, 720u);
+    EXPECT_EQ(o.scene, "assembly");
+    EXPECT_EQ(o.renderer, "per-draw");
+    EXPECT_EQ(o.mode, "push");
+    EXPECT_FLOAT_EQ(o.partWeight, 0.5f);
+}
+
+TEST(Cli, EveryFlagIsApplied) {
+    Options o = parseArgs({"--headless",
+                           "--size",
+                           "320x200",
+                           "--frames",
+                           "7",
+                           "--screenshot",
+                           "a.png",
+                           "--id-image=a.ids",
+                           "--scene",
+                           "tiles",
+                           "--renderer",
+                           "per-draw",
+                           "--mode=push",
+                           "--part-weight",
+                           "0.25",
+                           "--colorize-draws",
+                           "--validation",
+                           "--device",
+                           "llvm",
+                           "--shader-dir",
+                           "/x"});
+    EXPECT_TRUE(o.headless);
+    EXPECT_EQ(o.width, 320u);
+    EXPECT_EQ(o.height, 200u);
+    EXPECT_EQ(o.frames, 7u);
+    EXPECT_EQ(o.screenshot, "a.png");
+    EXPECT_EQ(o.idImage, "a.ids");
+    EXPECT_EQ(o.scene, "tiles");
+    EXPECT_FLOAT_EQ(o.partWeight, 0.25f);
+    EXPECT_TRUE(o.colorizeDraws);
+    EXPECT_TRUE(o.validation);
+    EXPECT_EQ(o.device, "llvm");
+    EXPECT_EQ(o.shaderDir, "/x");
+    EXPECT_TRUE(parseArgs({"--list-devices"}).listDevices);
+    EXPECT_TRUE(parseArgs({"--list-renderers"}).listRenderers);
+    EXPECT_TRUE(parseArgs({"--help"}).help);
+}
+
+TEST(Cli, RefusesBadCommandLines) {
+    const std::vector<std::vector<std::string>> bad = {
+        {"--bogus"},
+        {"headless"},
+        {"--size"},
+        {"--size", "320"},
+        {"--size", "0x200"},
+        {"--size", "320x"},
+        {"--size", "99999x10"},
+        {"--frames", "-1"},
+        {"--frames", "3x"},
+        {"--frames", "0"},
+        {"--part-weight", "1.5"},
+        {"--part-weight", "abc"},
+        {"--renderer", "nope"},
+        {"--mode", "nope"},
+        {"--scene", "nope"},
+        {"--headless=yes"},
+        {"--screenshot"},
+    };
+    for (const auto& args : bad) {
+        std::string joined;
+        for (const auto& a : args) joined += a + " ";
+        EXPECT_THROW(parseArgs(args), UsageError) << joined;
+    }
+}
+
+TEST(Cli, UsageListsEveryFlag) {
+    const std::string text = app::usage();
+    for (const char* flag : {"--headless", "--size", "--frames", "--screenshot", "--id-image",
+                             "--validation", "--device", "--list-devices", "--renderer", "--mode",
+                             "--part-weight", "--colorize-draws", "--scene", "--shader-dir"})
+        EXPECT_NE(text.find(flag), std::string::npos) << flag;
+}
