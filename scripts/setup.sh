@@ -21,7 +21,8 @@ esac
 packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-tools libtinygltf-dev
     libimgui-dev libvulkan-dev libstb-dev mesa-vulkan-drivers)
 if [[ $what == test ]]; then
-    packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels)
+    packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang
+        libclang-rt-14-dev)
 fi
 
 missing=()

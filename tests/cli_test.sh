@@ -35,7 +35,7 @@ expect list-renderers 0 'per-draw' -- "$idview" --list-renderers
 expect list-devices 0 '^0: llvmpipe.* \| CPU \| driver .* \| Vulkan 1\.[0-9]+\.[0-9]+ \| usable$' -- "$idview" --list-devices
 expect no-such-index 1 '^idview: error: --device 7: there are only 1 Vulkan devices' -- "$idview" --headless --device 7
 expect no-such-name 1 'no Vulkan device name contains it' -- "$idview" --headless --device radeon
-expect unwritable 1 "cannot write PNG '/nonexistent/x.png'" -- "$idview" --headless --frames 1 --screenshot /nonexistent/x.png
+expect unwritable 1 "cannot write PNG '/nonexistent/x.png'" -- "$idview" --headless --frames 1 --size 64x48 --screenshot /nonexistent/x.png
 
 # No driver at all: exactly one line, exit 1.
 out=$(VK_DRIVER_FILES=$work/none.json VK_ICD_FILENAMES=$work/none.json "$idview" --headless 2>&1)
@@ -71,6 +71,16 @@ fi
 (cd "$work" && expect default-run 0 'not built yet.*idview.png' -- "$idview" --frames 1 --size 64x48)
 [[ -s $work/idview.png ]] && echo "ok   default-run-png" ||
     { echo "FAIL default-run-png"; failures=$((failures + 1)); }
+
+# --stats: one JSON object with the scene's counts; --export writes a .glb that loads back.
+expect stats-json 0 '^\{"source":"assembly".*"objects":32,.*"parts":312,.*"triangles":2360,.*"load_ms":' -- \
+    "$idview" --scene assembly --stats
+expect stats-copies 0 '"objects":96,.*"parts":936,' -- "$idview" --scene assembly --copies 3 --stats
+expect export 0 '"parts":312' -- "$idview" --scene assembly --export "$work/a.glb" --stats
+expect export-loads 0 '"source":".*a.glb".*"objects":32,.*"parts":312,.*"triangles":2360' -- \
+    "$idview" --model "$work/a.glb" --stats
+expect missing-model 1 "^idview: error: $work/none.glb: " -- "$idview" --model "$work/none.glb" --stats
+expect bad-scene 2 "--scene: unknown procedural preset 'huge'" -- "$idview" --scene procedural:preset=huge
 
 echo "cli_test: $failures failed"
 exit $((failures > 0))

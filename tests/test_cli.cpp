@@ -13,7 +13,12 @@ TEST(Cli, DefaultsWithoutArguments) {
     EXPECT_FALSE(o.validation);
     EXPECT_EQ(o.width, 1280u);
     EXPECT_EQ(o.height, 720u);
-    EXPECT_EQ(o.scene, "assembly");
+    EXPECT_EQ(o.scene, ""); // the default model
+    EXPECT_EQ(o.model, "");
+    EXPECT_EQ(o.parts, "primitives");
+    EXPECT_EQ(o.copies, 1u);
+    EXPECT_EQ(o.searchBatch, 16u);
+    EXPECT_FALSE(o.stats);
     EXPECT_EQ(o.renderer, "per-draw");
     EXPECT_EQ(o.mode, "push");
     EXPECT_FLOAT_EQ(o.partWeight, 0.5f);
@@ -56,6 +61,17 @@ TEST(Cli, EveryFlagIsApplied) {
     EXPECT_TRUE(parseArgs({"--list-devices"}).listDevices);
     EXPECT_TRUE(parseArgs({"--list-renderers"}).listRenderers);
     EXPECT_TRUE(parseArgs({"--help"}).help);
+    Options m = parseArgs({"--model", "a.glb", "--parts", "components", "--copies", "3", "--stats",
+                           "--search-batch", "8", "--export", "out.glb"});
+    EXPECT_EQ(m.model, "a.glb");
+    EXPECT_EQ(m.parts, "components");
+    EXPECT_EQ(m.copies, 3u);
+    EXPECT_EQ(m.searchBatch, 8u);
+    EXPECT_TRUE(m.stats);
+    EXPECT_EQ(m.exportPath, "out.glb");
+    EXPECT_EQ(parseArgs({"--scene", "procedural:preset=car-like,seed=42"}).scene,
+              "procedural:preset=car-like,seed=42");
+    EXPECT_EQ(parseArgs({"--scene=procedural"}).scene, "procedural");
 }
 
 TEST(Cli, RefusesBadCommandLines) {
@@ -77,6 +93,14 @@ TEST(Cli, RefusesBadCommandLines) {
         {"--scene", "nope"},
         {"--headless=yes"},
         {"--screenshot"},
+        {"--scene", "procedural:preset=huge"},
+        {"--scene", "procedural:seed=x"},
+        {"--scene", "procedural:colour=red"},
+        {"--scene", "tiles:seed=3"},
+        {"--parts", "faces"},
+        {"--copies", "0"},
+        {"--search-batch", "33"},
+        {"--stats=1"},
     };
     for (const auto& args : bad) {
         std::string joined;
@@ -87,8 +111,10 @@ TEST(Cli, RefusesBadCommandLines) {
 
 TEST(Cli, UsageListsEveryFlag) {
     const std::string text = app::usage();
-    for (const char* flag : {"--headless", "--size", "--frames", "--screenshot", "--id-image",
-                             "--validation", "--device", "--list-devices", "--renderer", "--mode",
-                             "--part-weight", "--colorize-draws", "--scene", "--shader-dir"})
+    for (const char* flag :
+         {"--headless",    "--size",           "--frames",       "--screenshot", "--id-image",
+          "--validation",  "--device",         "--list-devices", "--renderer",   "--mode",
+          "--part-weight", "--colorize-draws", "--scene",        "--shader-dir", "--model",
+          "--parts",       "--copies",         "--stats",        "--export",     "--search-batch"})
         EXPECT_NE(text.find(flag), std::string::npos) << flag;
 }

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "app/headless.h"
+#include "app/scene_source.h"
 #include "scene/generator.h"
 #include "scene/raycast.h"
 
@@ -36,13 +37,13 @@ HeadlessResult renderChecked(const app::Options& o, const scene::Scene& s, const
 
 // The part the CPU sees at a pixel centre, or nothing when the pixel is near an edge: there
 // the rasteriser's fixed-point snapping may decide either way, so no exact answer exists.
-std::optional<uint32_t> stableReference(const scene::Scene& s, const glm::mat4& viewProj,
+std::optional<uint32_t> stableReference(const scene::RayCaster& caster, const glm::mat4& viewProj,
                                         glm::vec2 size, uint32_t x, uint32_t y) {
     const glm::vec2 offsets[] = {
         {0.5f, 0.5f}, {0.2f, 0.2f}, {0.8f, 0.2f}, {0.2f, 0.8f}, {0.8f, 0.8f}};
     std::optional<uint32_t> first;
     for (size_t i = 0; i < std::size(offsets); ++i) {
-        auto hit = scene::raycast(s, scene::pixelRay(viewProj, size, glm::vec2(x, y) + offsets[i]));
+        auto hit = caster.cast(scene::pixelRay(viewProj, size, glm::vec2(x, y) + offsets[i]));
         uint32_t id = hit ? hit->uniquePartId : gpu::BACKGROUND_ID;
         if (i == 0)
             first = id;
@@ -62,10 +63,11 @@ Comparison compareWithRaycast(const HeadlessResult& r, const scene::Scene& s,
                               const scene::Camera& camera, uint32_t step) {
     const glm::vec2 size(r.width, r.height);
     const glm::mat4 viewProj = camera.viewProjection(size.x / size.y);
+    const scene::RayCaster caster(s);
     Comparison c;
     for (uint32_t y = 0; y < r.height; y += step)
         for (uint32_t x = 0; x < r.width; x += step) {
-            auto expected = stableReference(s, viewProj, size, x, y);
+            auto expected = stableReference(caster, viewProj, size, x, y);
             if (!expected) continue;
             c.compared++;
             c.comparedPerId[*expected]++;
@@ -174,7 +176,10 @@ TEST(HeadlessRenderCheck, OneWrongPartIdIsCaught) {
 TEST(HeadlessRenderAssembly, IdsNamePartsAndAgreeWithRaycast) {
     scene::Scene s = scene::makeAssembly();
     app::Options o = testOptions(256, 160);
-    scene::Camera camera = app::defaultCamera("assembly", s, 256.0f / 160.0f);
+    app::LoadedScene loaded;
+    loaded.scene = s;
+    loaded.source = "assembly";
+    scene::Camera camera = app::initialCamera(loaded, 256.0f / 160.0f);
     HeadlessResult r = renderChecked(o, s, camera);
     EXPECT_EQ(r.validationMessages, 0u);
     EXPECT_EQ(r.draws, s.uniquePartCount());
@@ -216,4 +221,38 @@ TEST(HeadlessRenderAssembly, ShadingOptionsChangeColoursButNotIds) {
     EXPECT_GT(parts, 0u);
     EXPECT_EQ(grey, parts);
     EXPECT_LT(greyParts(b).first, greyParts(b).second / 10);
+}
+
+// Scenes from the generator and from a real glTF file go through the same check.
+namespace {
+
+void expectIdsMatchRaycast(const app::LoadedScene& loaded, uint32_t width, uint32_t height,
+                           size_t minimumParts) {
+    const scene::Camera camera = app::initialCamera(loaded, float(width) / float(height));
+    HeadlessResult r = renderChecked(testOptions(width, height), loaded.scene, camera);
+    std::set<uint32_t> seen;
+    for (uint32_t id : r.ids)
+        if (id != gpu::BACKGROUND_ID) {
+            ASSERT_TRUE(loaded.scene.locate(id)) << "ID " << id << " names no part";
+            seen.insert(id);
+        }
+    EXPECT_GE(seen.size(), minimumParts);
+    Comparison c = compareWithRaycast(r, loaded.scene, camera, 3);
+    EXPECT_EQ(c.mismatches, 0u);
+    EXPECT_GT(c.compared, size_t(width / 3) * (height / 3) / 2);
+}
+
+} // namespace
+
+TEST(HeadlessRenderScenes, ProceduralSmallAgreesWithRaycast) {
+    app::Options o;
+    o.scene = "procedural:preset=small,seed=3";
+    expectIdsMatchRaycast(app::loadScene(o), 192, 120, 100);
+}
+
+TEST(HeadlessRenderScenes, EngineFromGltfInComponentsModeAgreesWithRaycast) {
+    app::Options o;
+    o.model = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+    o.parts = "components"; // 1,410 parts instead of 115: many more borders to get right
+    expectIdsMatchRaycast(app::loadScene(o), 192, 120, 100);
 }

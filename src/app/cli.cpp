@@ -4,8 +4,8 @@
 #include <charconv>
 #include <functional>
 
+#include "app/scene_source.h"
 #include "render/technique.h"
-#include "scene/generator.h"
 
 namespace app {
 namespace {
@@ -58,15 +58,37 @@ const std::vector<Flag>& flags() {
          "write the last frame's part IDs: W*H little-endian uint32, row-major, top row first, "
          "0xFFFFFFFF where no part is",
          [](Options& o, auto& v) { o.idImage = v; }},
-        {"--scene", "NAME", "built-in scene: assembly (default) or tiles (the test layout)",
+        {"--model", "FILE", "open a glTF model (.gltf or .glb); default: assets/default.glb",
+         [](Options& o, auto& v) { o.model = v; }},
+        {"--scene", "SPEC",
+         "built-in scene instead of a model: assembly, tiles (the test layout) or "
+         "procedural[:preset=small|car-like][,seed=N]",
          [](Options& o, auto& v) {
-             for (const auto& name : scene::sceneNames())
-                 if (v == name) {
-                     o.scene = v;
-                     return;
-                 }
-             throw UsageError("--scene: unknown scene '" + v + "'");
+             try {
+                 parseSceneSpec(v);
+             } catch (const std::invalid_argument& e) {
+                 throw UsageError(std::string("--scene: ") + e.what());
+             }
+             o.scene = v;
          }},
+        {"--parts", "MODE",
+         "glTF parts: primitives (one part per primitive, default) or components (one per "
+         "connected component, recovers CAD faces merged by an exporter)",
+         [](Options& o, auto& v) {
+             if (v != "primitives" && v != "components")
+                 throw UsageError("--parts expects primitives or components, not '" + v + "'");
+             o.parts = v;
+         }},
+        {"--copies", "N", "replicate the model N times on a grid (default 1)",
+         [](Options& o, auto& v) { o.copies = parseCount("--copies", v, 1, 4096); }},
+        {"--search-batch", "N", "parts per draw of the search techniques, 1 to 32 (default 16)",
+         [](Options& o, auto& v) { o.searchBatch = parseCount("--search-batch", v, 1, 32); }},
+        {"--stats", nullptr,
+         "print the scene's statistics as one JSON object (objects, geometries, parts, "
+         "triangles, load_ms, ID buffer bytes) and exit",
+         [](Options& o, auto&) { o.stats = true; }},
+        {"--export", "FILE", "write the scene (after copies) as binary glTF and exit",
+         [](Options& o, auto& v) { o.exportPath = v; }},
         {"--renderer", "NAME", "part-ID technique (see --list-renderers; default per-draw)",
          [](Options& o, auto& v) {
              if (!render::findTechnique(v))

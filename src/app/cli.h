@@ -21,7 +21,13 @@ struct Options {
     uint32_t frames = 10;
     std::string screenshot; // PNG path
     std::string idImage;    // raw little-endian uint32 path
-    std::string scene = "assembly";
+    std::string model;      // glTF file; with scene empty too, the default model
+    std::string scene;      // built-in or procedural scene spec (scene_source.h)
+    std::string parts = "primitives";
+    uint32_t copies = 1;
+    uint32_t searchBatch = 16;
+    bool stats = false;
+    std::string exportPath; // write the scene as .glb and exit
     std::string renderer = "per-draw";
     std::string mode = "push";
     float partWeight = 0.5f;

@@ -6,10 +6,10 @@
 #include <cstring>
 
 #include "app/image_io.h"
+#include "app/scene_source.h"
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
-#include "scene/generator.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
@@ -66,13 +66,6 @@ double median(std::vector<double> values) {
 
 } // namespace
 
-scene::Camera defaultCamera(const std::string& sceneName, const scene::Scene& scene, float aspect) {
-    if (sceneName == "tiles") return scene::tilesCamera();
-    // A three-quarter view from the front, above: how CAD viewers open an assembly.
-    return scene::fitCamera(scene.bounds(), {0.9f, -1.6f, 1.2f}, {0, 0, 1}, glm::radians(40.0f),
-                            aspect);
-}
-
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera) {
     const render::Technique* technique = render::findTechnique(options.renderer);
@@ -123,10 +116,12 @@ HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
 }
 
 int runHeadless(const Options& options) {
-    const scene::Scene scene = scene::makeScene(options.scene);
+    const LoadedScene loaded = loadScene(options);
+    const scene::Scene& scene = loaded.scene;
+    for (const auto& warning : loaded.warnings)
+        std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
     const float aspect = float(options.width) / float(options.height);
-    const scene::Camera camera = defaultCamera(options.scene, scene, aspect);
-    HeadlessResult result = renderHeadless(options, scene, camera);
+    HeadlessResult result = renderHeadless(options, scene, initialCamera(loaded, aspect));
 
     if (!options.screenshot.empty())
         writePng(options.screenshot, result.width, result.height, result.color);

@@ -26,9 +26,6 @@ struct HeadlessResult {
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 
-// The camera idview uses for a built-in scene at this aspect ratio.
-scene::Camera defaultCamera(const std::string& sceneName, const scene::Scene& scene, float aspect);
-
 // `idview --headless`: renders, writes the requested files, prints a summary line and returns
 // the exit code (3 when validation reported anything).
 int runHeadless(const Options& options);

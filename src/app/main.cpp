@@ -4,7 +4,9 @@
 
 #include "app/cli.h"
 #include "app/headless.h"
+#include "app/scene_source.h"
 #include "render/technique.h"
+#include "scene/gltf_writer.h"
 #include "vk/context.h"
 
 namespace {
@@ -48,6 +50,12 @@ int main(int argc, char** argv) {
     try {
         if (options.listRenderers) return listRenderers();
         if (options.listDevices) return listDevices(options);
+        if (options.stats || !options.exportPath.empty()) {
+            const app::LoadedScene loaded = app::loadScene(options);
+            if (!options.exportPath.empty()) scene::writeGlb(loaded.scene, options.exportPath);
+            if (options.stats) std::printf("%s\n", app::statsJson(loaded, options).c_str());
+            return 0;
+        }
         if (!options.headless) {
             // The interactive window arrives with the viewer; until then say what happens.
             if (options.screenshot.empty()) options.screenshot = "idview.png";

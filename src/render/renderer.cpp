@@ -125,7 +125,7 @@ void Renderer::recordDraws(VkCommandBuffer cmd) const {
     std::array<uint32_t, fieldCount> last{0, 0, 0};
     for (uint32_t i = 0; i < draws_.size(); ++i) {
         const DrawItem& draw = draws_[i];
-        const std::array<uint32_t, fieldCount> now{draw.object, draw.partIndex, i};
+        const std::array<uint32_t, fieldCount> now{draw.object, draw.firstPart, i};
         uint32_t first = fieldCount, end = 0;
         for (uint32_t f = 0; f < fieldCount; ++f)
             if (now[f] != last[f]) {

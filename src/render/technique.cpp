@@ -4,21 +4,6 @@
 namespace render {
 namespace {
 
-// One draw per (object, part): the draw itself names the part.
-std::vector<DrawItem> drawPerPart(const scene::Scene& scene) {
-    std::vector<DrawItem> draws;
-    draws.reserve(scene.uniquePartCount());
-    for (uint32_t oi = 0; oi < scene.objects.size(); ++oi) {
-        const scene::Geometry& g = scene.geometries[scene.objects[oi].geometry];
-        for (uint32_t p = 0; p < g.partCount; ++p) {
-            const scene::Part& part = scene.parts[g.firstPart + p];
-            draws.push_back({oi, p, g.firstIndex + 3 * part.firstTriangle, 3 * part.triangleCount,
-                             static_cast<int32_t>(g.firstVertex)});
-        }
-    }
-    return draws;
-}
-
 template <typename Entry>
 std::string namesOf(const std::vector<Entry>& entries) {
     std::string text;
@@ -41,7 +26,7 @@ const std::vector<Technique>& techniques() {
          "one draw per part; the draw carries the part index",
          "techniques/per_draw.glsl",
          {},
-         drawPerPart},
+         scene::drawsPerPart},
     };
     return list;
 }

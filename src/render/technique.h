@@ -7,18 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "scene/scene.h"
+#include "scene/part_data.h"
 
 namespace render {
 
-// One draw call of a draw list: a range of an object's geometry.
-struct DrawItem {
-    uint32_t object = 0;
-    uint32_t partIndex = 0; // first local part the draw covers
-    uint32_t firstIndex = 0;
-    uint32_t indexCount = 0;
-    int32_t vertexOffset = 0;
-};
+// One draw call: a range of parts of one object's geometry (scene/part_data.h).
+using DrawItem = scene::DrawRange;
 
 struct Technique {
     const char* name;        // as the CLI spells it

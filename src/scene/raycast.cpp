@@ -2,6 +2,9 @@
 // ray parameter t, so hits of different objects compare without going back to world space.
 #include "scene/raycast.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace scene {
 
 static bool intersect(glm::vec3 origin, glm::vec3 dir, glm::vec3 a, glm::vec3 b, glm::vec3 c,
@@ -21,20 +24,64 @@ static bool intersect(glm::vec3 origin, glm::vec3 dir, glm::vec3 a, glm::vec3 b,
     return t >= 0.0f;
 }
 
-std::optional<Hit> raycast(const Scene& scene, const Ray& ray) {
+// Slab test of the segment origin + t * direction, t in [0, 1], against a box.
+static bool hitsBox(const Ray& ray, const Bounds& box) {
+    float t0 = 0.0f, t1 = 1.0f;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float inv = 1.0f / ray.direction[axis]; // +-inf for axis-parallel rays is fine
+        float a = (box.min[axis] - ray.origin[axis]) * inv;
+        float b = (box.max[axis] - ray.origin[axis]) * inv;
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+RayCaster::RayCaster(const Scene& scene) : scene_(scene) {
+    std::vector<Bounds> local(scene.geometries.size());
+    for (size_t g = 0; g < scene.geometries.size(); ++g) {
+        const Geometry& geo = scene.geometries[g];
+        local[g].min = glm::vec3(std::numeric_limits<float>::max());
+        local[g].max = glm::vec3(std::numeric_limits<float>::lowest());
+        for (uint32_t v = 0; v < geo.vertexCount; ++v) {
+            local[g].min = glm::min(local[g].min, scene.vertices[geo.firstVertex + v].position);
+            local[g].max = glm::max(local[g].max, scene.vertices[geo.firstVertex + v].position);
+        }
+    }
+    for (const Object& object : scene.objects) {
+        const Bounds& b = local[object.geometry];
+        Bounds world{glm::vec3(std::numeric_limits<float>::max()),
+                     glm::vec3(std::numeric_limits<float>::lowest())};
+        for (int corner = 0; corner < 8; ++corner) {
+            glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                        (corner & 4) ? b.max.z : b.min.z);
+            p = glm::vec3(object.world * glm::vec4(p, 1.0f));
+            world.min = glm::min(world.min, p);
+            world.max = glm::max(world.max, p);
+        }
+        // Widen a little so rounding in the transform never rejects a grazing hit.
+        const glm::vec3 margin = (world.max - world.min) * 1e-4f + 1e-6f;
+        objects_.push_back({glm::inverse(object.world), {world.min - margin, world.max + margin}});
+    }
+}
+
+std::optional<Hit> RayCaster::cast(const Ray& ray) const {
     std::optional<Hit> best;
-    for (uint32_t oi = 0; oi < scene.objects.size(); ++oi) {
-        const Object& object = scene.objects[oi];
-        const Geometry& g = scene.geometries[object.geometry];
-        const glm::mat4 toLocal = glm::inverse(object.world);
+    for (uint32_t oi = 0; oi < scene_.objects.size(); ++oi) {
+        if (!hitsBox(ray, objects_[oi].worldBounds)) continue;
+        const Object& object = scene_.objects[oi];
+        const Geometry& g = scene_.geometries[object.geometry];
+        const glm::mat4& toLocal = objects_[oi].toLocal;
         const glm::vec3 origin = glm::vec3(toLocal * glm::vec4(ray.origin, 1.0f));
         const glm::vec3 dir = glm::vec3(toLocal * glm::vec4(ray.direction, 0.0f));
+        const Vertex* v = &scene_.vertices[g.firstVertex];
         for (uint32_t p = 0; p < g.partCount; ++p) {
-            const Part& part = scene.parts[g.firstPart + p];
+            const Part& part = scene_.parts[g.firstPart + p];
             for (uint32_t tri = part.firstTriangle; tri < part.firstTriangle + part.triangleCount;
                  ++tri) {
-                const uint32_t* idx = &scene.indices[g.firstIndex + 3 * tri];
-                const Vertex* v = &scene.vertices[g.firstVertex];
+                const uint32_t* idx = &scene_.indices[g.firstIndex + 3 * tri];
                 float t;
                 if (!intersect(origin, dir, v[idx[0]].position, v[idx[1]].position,
                                v[idx[2]].position, t))
@@ -45,6 +92,10 @@ std::optional<Hit> raycast(const Scene& scene, const Ray& ray) {
         }
     }
     return best;
+}
+
+std::optional<Hit> raycast(const Scene& scene, const Ray& ray) {
+    return RayCaster(scene).cast(ray);
 }
 
 } // namespace scene

@@ -1,8 +1,9 @@
-// raycast.h - the CPU reference for "which part is at this pixel": a brute-force ray cast
-// against every triangle of the scene, used by tests to check what the GPU wrote.
+// raycast.h - the CPU reference for "which part is at this pixel": a ray cast against every
+// triangle of the scene, used by tests to check what the GPU wrote.
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "scene/camera.h"
 #include "scene/scene.h"
@@ -16,6 +17,23 @@ struct Hit {
     float t = 0.0f; // along Ray::direction, 0 at the origin
 };
 
+// Prepares per-object inverse matrices and world bounds once, so rays skip the objects
+// whose box they miss; every remaining triangle is tested exactly (no approximation).
+class RayCaster {
+  public:
+    explicit RayCaster(const Scene& scene);
+    std::optional<Hit> cast(const Ray& ray) const;
+
+  private:
+    struct Prepared {
+        glm::mat4 toLocal;
+        Bounds worldBounds;
+    };
+    const Scene& scene_;
+    std::vector<Prepared> objects_;
+};
+
+// One ray; for many rays over the same scene use RayCaster.
 std::optional<Hit> raycast(const Scene& scene, const Ray& ray);
 
 } // namespace scene

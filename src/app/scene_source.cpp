@@ -1,0 +1,136 @@
+// scene_source.cpp - scene loading by source, copies, and the --stats report.
+#include "app/scene_source.h"
+
+#include <charconv>
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "scene/copies.h"
+#include "scene/generator.h"
+#include "scene/gltf_loader.h"
+#include "scene/part_data.h"
+#include "scene/procedural.h"
+
+namespace app {
+
+SceneSpec parseSceneSpec(const std::string& text) {
+    SceneSpec spec;
+    const auto colon = text.find(':');
+    spec.builtin = text.substr(0, colon);
+    const bool known =
+        spec.builtin == "procedural" || spec.builtin == "assembly" || spec.builtin == "tiles";
+    if (!known)
+        throw std::invalid_argument("unknown scene '" + spec.builtin +
+                                    "' (known: assembly, tiles, procedural)");
+    if (colon == std::string::npos) return spec;
+    if (spec.builtin != "procedural")
+        throw std::invalid_argument("scene '" + spec.builtin + "' takes no parameters");
+    std::istringstream params(text.substr(colon + 1));
+    std::string item;
+    while (std::getline(params, item, ',')) {
+        const auto eq = item.find('=');
+        const std::string key = item.substr(0, eq),
+                          value = eq == std::string::npos ? "" : item.substr(eq + 1);
+        if (key == "preset") {
+            bool found = false;
+            for (const auto& name : scene::proceduralPresets()) found |= name == value;
+            if (!found) throw std::invalid_argument("unknown procedural preset '" + value + "'");
+            spec.preset = value;
+        } else if (key == "seed") {
+            auto [end, error] =
+                std::from_chars(value.data(), value.data() + value.size(), spec.seed);
+            if (value.empty() || error != std::errc() || end != value.data() + value.size())
+                throw std::invalid_argument("procedural seed must be a whole number, not '" +
+                                            value + "'");
+        } else {
+            throw std::invalid_argument("unknown procedural parameter '" + item +
+                                        "' (preset=NAME, seed=N)");
+        }
+    }
+    return spec;
+}
+
+std::string defaultModelPath() {
+    std::error_code ignored;
+    auto exe = std::filesystem::read_symlink("/proc/self/exe", ignored);
+    if (!ignored) {
+        auto bundled = exe.parent_path() / "assets" / "default.glb";
+        if (std::filesystem::exists(bundled)) return bundled.string();
+    }
+    return IDVIEW_SOURCE_ASSET_DIR "/default.glb";
+}
+
+LoadedScene loadScene(const Options& options) {
+    const auto start = std::chrono::steady_clock::now();
+    LoadedScene loaded;
+    if (!options.model.empty() || options.scene.empty()) {
+        loaded.source = options.model.empty() ? defaultModelPath() : options.model;
+        scene::LoadResult result =
+            scene::loadGltf(loaded.source, {scene::parsePartMode(options.parts)});
+        loaded.scene = std::move(result.scene);
+        loaded.warnings = std::move(result.warnings);
+    } else {
+        const SceneSpec spec = parseSceneSpec(options.scene);
+        loaded.source = options.scene;
+        if (spec.builtin == "procedural")
+            loaded.scene = scene::makeProcedural({spec.preset, spec.seed});
+        else
+            loaded.scene = scene::makeScene(spec.builtin);
+        loaded.tilesLayout = spec.builtin == "tiles" && options.copies == 1;
+    }
+    if (options.copies > 1) loaded.scene = scene::replicate(loaded.scene, options.copies);
+    loaded.loadMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return loaded;
+}
+
+scene::Camera initialCamera(const LoadedScene& loaded, float aspect) {
+    if (loaded.tilesLayout) return scene::tilesCamera();
+    // A three-quarter view from the front, above: how CAD viewers open an assembly. glTF is
+    // y-up, the built-in scenes z-up.
+    const bool yUp = loaded.source.ends_with(".glb") || loaded.source.ends_with(".gltf");
+    const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+    const glm::vec3 direction = yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);
+    return scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
+}
+
+static std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) {
+            char code[8];
+            std::snprintf(code, sizeof code, "\\u%04x", c);
+            out += code;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string statsJson(const LoadedScene& loaded, const Options& options) {
+    const scene::Scene& s = loaded.scene;
+    const scene::IdDataBytes bytes = scene::idDataBytes(s, options.searchBatch);
+    std::ostringstream json;
+    json.precision(3);
+    json << std::fixed << "{\"source\":" << jsonString(loaded.source)
+         << ",\"part_mode\":" << jsonString(options.parts) << ",\"copies\":" << options.copies
+         << ",\"objects\":" << s.objects.size() << ",\"geometries\":" << s.geometries.size()
+         << ",\"parts\":" << s.uniquePartCount() << ",\"geometry_parts\":" << s.parts.size()
+         << ",\"triangles\":" << s.drawnTriangleCount()
+         << ",\"unique_triangles\":" << s.indices.size() / 3
+         << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
+         << ",\"search_batch\":" << options.searchBatch
+         << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
+         << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
+         << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets << ",\"warnings\":[";
+    for (size_t i = 0; i < loaded.warnings.size(); ++i)
+        json << (i ? "," : "") << jsonString(loaded.warnings[i]);
+    json << "]}";
+    return json.str();
+}
+
+} // namespace app

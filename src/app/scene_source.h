@@ -1,0 +1,47 @@
+// scene_source.h - where the scene comes from: a glTF file (--model), a built-in or
+// procedural scene (--scene), or the default model in assets/; then model copies. Shared by
+// the headless path, the viewer and --stats.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace app {
+
+// A parsed --scene value: "assembly", "tiles" or "procedural[:preset=NAME][,seed=N]".
+struct SceneSpec {
+    std::string builtin; // "assembly", "tiles" or "procedural"
+    std::string preset = "small";
+    uint64_t seed = 1;
+};
+// Throws std::invalid_argument with a message for people.
+SceneSpec parseSceneSpec(const std::string& text);
+
+struct LoadedScene {
+    scene::Scene scene;
+    std::string source;  // file path or scene spec, for messages and stats
+    double loadMs = 0.0; // loading or generating, copies included
+    std::vector<std::string> warnings;
+    bool tilesLayout = false; // the test layout at its own camera
+};
+
+// The model idview opens when none is given: assets/default.glb beside the executable
+// (a bundled copy), else in the source tree.
+std::string defaultModelPath();
+
+// Loads or generates the scene the options name and applies --copies. Throws
+// scene::ModelError / std::runtime_error with a one-line message.
+LoadedScene loadScene(const Options& options);
+
+// The camera idview opens a scene with, at this aspect ratio.
+scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
+
+// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ...
+std::string statsJson(const LoadedScene& loaded, const Options& options);
+
+} // namespace app

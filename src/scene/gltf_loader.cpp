@@ -1,0 +1,406 @@
+// gltf_loader.cpp - loadGltf: parses a .gltf/.glb with tinygltf, walks the node hierarchy of
+// the default scene and builds a Scene; every failure becomes one ModelError line.
+#include "scene/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <new>
+#include <string_view>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/gltf_detail.h"
+
+namespace scene {
+namespace {
+
+using gltf::Bad;
+namespace fs = std::filesystem;
+
+// tinygltf takes the length as unsigned int; nothing this size is a sensible CAD part list.
+constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;
+constexpr size_t kMaxObjects = size_t(1) << 24;
+
+std::vector<unsigned char> readFileBytes(const std::string& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Bad("file not found");
+    if (!fs::is_regular_file(path, ec)) throw Bad("not a regular file");
+    uint64_t size = fs::file_size(path, ec);
+    if (ec) throw Bad("cannot read the file size: " + ec.message());
+    if (size > kMaxFileBytes) throw Bad("file too large (" + std::to_string(size) + " bytes)");
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes(size);
+    if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+        throw Bad("cannot read the file");
+    return bytes;
+}
+
+// tinygltf's file callbacks, replaced so that a URI can only name a regular file of sane
+// size (never a device or a pipe) and no shell-style path expansion happens.
+bool fileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+std::string expandPath(const std::string& path, void*) {
+    return path;
+}
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void*) {
+    try {
+        *out = readFileBytes(path);
+        return true;
+    } catch (const std::exception& e) {
+        if (err) *err += "cannot read '" + path + "': " + e.what();
+        return false;
+    }
+}
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not supported";
+    return false;
+}
+
+// Textures are not shown, so images are neither decoded nor kept.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+               const unsigned char*, int, void*) {
+    return true;
+}
+
+// tinygltf messages span lines and may quote file content: make them one printable line.
+std::string oneLine(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+        if (space && (out.empty() || out.back() == ' ')) continue;
+        if (c == '\n' && out.size() >= 2 && out.back() != ';')
+            out += "; ";
+        else
+            out += (space || (unsigned char)c < 0x20 || c == 0x7f) ? ' ' : c;
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    if (out.size() > 300) out = out.substr(0, 297) + "...";
+    return out.empty() ? "unknown error" : out;
+}
+
+uint32_t readLe32(const unsigned char* p) {
+    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
+
+// Checks the GLB container before tinygltf sees it, for clear messages on truncated files.
+void checkGlbHeader(std::span<const unsigned char> bytes) {
+    if (bytes.size() < 20)
+        throw Bad("truncated GLB file (" + std::to_string(bytes.size()) + " bytes)");
+    if (readLe32(bytes.data() + 4) != 2)
+        throw Bad("unsupported GLB version " + std::to_string(readLe32(bytes.data() + 4)));
+    uint64_t length = readLe32(bytes.data() + 8), jsonLength = readLe32(bytes.data() + 12);
+    if (length > bytes.size())
+        throw Bad("truncated GLB file: header says " + std::to_string(length) +
+                  " bytes, file has " + std::to_string(bytes.size()));
+    if (readLe32(bytes.data() + 16) != 0x4E4F534A) throw Bad("GLB file without a JSON chunk");
+    if (20 + jsonLength > length) throw Bad("truncated GLB file: JSON chunk runs past the end");
+}
+
+bool hasExtension(const std::string& name, const char* ext) {
+    return name.size() >= 4 && name.compare(name.size() - 4, 4, ext) == 0;
+}
+
+bool isHarmlessExtension(const std::string& ext) {
+    // Extensions that change only looks we do not render; any other required one changes the
+    // geometry or its encoding (Draco, meshopt, quantization), so we must refuse the file.
+    static const char* const harmless[] = {
+        "KHR_materials_pbrSpecularGlossiness",
+        "KHR_materials_unlit",
+        "KHR_texture_transform",
+        "KHR_materials_emissive_strength",
+        "KHR_lights_punctual",
+        "KHR_texture_basisu",
+        "EXT_texture_webp",
+    };
+    for (const char* h : harmless)
+        if (ext == h) return true;
+    return false;
+}
+
+void checkRequiredExtensions(const std::vector<std::string>& required) {
+    for (const std::string& ext : required)
+        if (!isHarmlessExtension(ext))
+            throw Bad("requires the unsupported extension " + oneLine(ext));
+}
+
+// The names in the first "extensionsRequired": [...] of a JSON text, found without a JSON
+// parser; only used to explain a file that tinygltf has already refused.
+std::vector<std::string> requiredExtensionsInText(std::string_view json) {
+    std::vector<std::string> names;
+    const std::string_view key = "\"extensionsRequired\"";
+    size_t at = json.find(key);
+    if (at == std::string_view::npos) return names;
+    size_t open = json.find('[', at), end = json.find(']', at);
+    if (open == std::string_view::npos || end == std::string_view::npos || end < open) return names;
+    std::string_view list = json.substr(open + 1, end - open - 1);
+    for (size_t q = list.find('"'); q != std::string_view::npos; q = list.find('"', q + 1)) {
+        size_t close = list.find('"', q + 1);
+        if (close == std::string_view::npos) break;
+        names.emplace_back(list.substr(q + 1, close - q - 1));
+        q = close;
+    }
+    return names;
+}
+
+tinygltf::Model parse(std::span<const unsigned char> bytes, const std::string& name,
+                      std::vector<std::string>& warnings) {
+    if (bytes.empty()) throw Bad("file is empty");
+    if (bytes.size() > kMaxFileBytes) throw Bad("file too large");
+    bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
+    if (!binary && (hasExtension(name, ".glb") || hasExtension(name, ".GLB")))
+        throw Bad("not a GLB file (wrong magic)");
+    if (binary) checkGlbHeader(bytes);
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    loader.SetFsCallbacks({fileExists, expandPath, readWholeFile, refuseWrite, nullptr});
+    tinygltf::Model model;
+    std::string err, warn, baseDir = fs::path(name).parent_path().string();
+    auto length = static_cast<unsigned int>(bytes.size());
+    bool ok = binary
+                  ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, baseDir)
+                  : loader.LoadASCIIFromString(&model, &err, &warn,
+                                               reinterpret_cast<const char*>(bytes.data()), length,
+                                               baseDir);
+    if (!ok) {
+        // A Draco file fails in tinygltf (its accessors have no bufferView) before we see
+        // extensionsRequired, so look for the real reason in the text first.
+        std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        if (binary) json = json.substr(20, readLe32(bytes.data() + 12));
+        checkRequiredExtensions(requiredExtensionsInText(json));
+        throw Bad(oneLine(err.empty() ? "tinygltf could not parse the file" : err));
+    }
+    if (!warn.empty()) warnings.push_back("tinygltf: " + oneLine(warn));
+    return model;
+}
+
+glm::mat4 localTransform(const tinygltf::Node& node, size_t index) {
+    const std::string name = "node " + std::to_string(index);
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) throw Bad(name + " has a matrix without 16 numbers");
+        glm::dmat4 m = glm::make_mat4(node.matrix.data()); // both column-major
+        return glm::mat4(m);
+    }
+    if ((!node.translation.empty() && node.translation.size() != 3) ||
+        (!node.rotation.empty() && node.rotation.size() != 4) ||
+        (!node.scale.empty() && node.scale.size() != 3))
+        throw Bad(name + " has a malformed translation, rotation or scale");
+    glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+    if (!node.translation.empty())
+        t = glm::translate(glm::mat4(1.0f), glm::vec3(glm::make_vec3(node.translation.data())));
+    if (!node.rotation.empty()) {
+        const auto& q = node.rotation; // glTF order x, y, z, w
+        glm::quat quat{float(q[3]), float(q[0]), float(q[1]), float(q[2])};
+        float len = glm::length(quat);
+        if (len > 0.0f && std::isfinite(len)) r = glm::mat4_cast(quat / len);
+    }
+    if (!node.scale.empty())
+        s = glm::scale(glm::mat4(1.0f), glm::vec3(glm::make_vec3(node.scale.data())));
+    return t * r * s;
+}
+
+bool isFinite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// Builds the Scene from a parsed model: geometries on first use, objects per node instance.
+class Builder {
+  public:
+    Builder(const tinygltf::Model& model, const LoadOptions& options)
+        : model_(model), options_(options), geometryOfMesh_(model.meshes.size(), kUnbuilt),
+          materialForMesh_(model.meshes.size(), 0), materialOf_(model.materials.size(), kUnbuilt) {}
+
+    LoadResult build(std::vector<std::string> warnings) {
+        result_.warnings = std::move(warnings);
+        checkParents();
+        for (int root : roots()) addTree(root);
+        if (result_.scene.objects.empty()) throw Bad("empty scene: nothing with triangles to show");
+        try {
+            validate(result_.scene);
+        } catch (const std::invalid_argument& e) {
+            throw Bad(e.what());
+        }
+        return std::move(result_);
+    }
+
+  private:
+    static constexpr int64_t kUnbuilt = -2, kDropped = -1;
+
+    void checkNodeIndex(int index, const std::string& who) const {
+        if (index < 0 || size_t(index) >= model_.nodes.size())
+            throw Bad(who + " refers to missing node " + std::to_string(index));
+    }
+
+    // glTF nodes form strict trees; a node listed as a child twice would be drawn twice and
+    // a crafted file could make that exponential, so it is an error like a cycle.
+    void checkParents() {
+        parentCount_.assign(model_.nodes.size(), 0);
+        for (size_t n = 0; n < model_.nodes.size(); ++n)
+            for (int child : model_.nodes[n].children) {
+                checkNodeIndex(child, "node " + std::to_string(n));
+                if (++parentCount_[size_t(child)] > 1)
+                    throw Bad("node " + std::to_string(child) + " has more than one parent");
+            }
+    }
+
+    std::vector<int> roots() {
+        const auto& scenes = model_.scenes;
+        if (model_.defaultScene >= 0 && size_t(model_.defaultScene) >= scenes.size())
+            throw Bad("the default scene " + std::to_string(model_.defaultScene) +
+                      " does not exist");
+        std::vector<int> out;
+        for (size_t s = 0; s < scenes.size(); ++s)
+            if (model_.defaultScene < 0 || size_t(model_.defaultScene) == s)
+                for (int n : scenes[s].nodes) {
+                    checkNodeIndex(n, "scene " + std::to_string(s));
+                    out.push_back(n);
+                }
+        return out;
+    }
+
+    // Depth-first without recursion (a deep chain must not overflow the stack); a node met
+    // again while it is still on the current path is a cycle.
+    void addTree(int root) {
+        struct Step {
+            int node;
+            glm::mat4 parentWorld;
+            bool leave;
+        };
+        std::vector<Step> stack{{root, glm::mat4(1.0f), false}};
+        onPath_.resize(model_.nodes.size(), false);
+        while (!stack.empty()) {
+            Step step = stack.back();
+            stack.pop_back();
+            size_t n = size_t(step.node);
+            if (step.leave) {
+                onPath_[n] = false;
+                continue;
+            }
+            if (onPath_[n])
+                throw Bad("node cycle: node " + std::to_string(n) + " is its own ancestor");
+            onPath_[n] = true;
+            const tinygltf::Node& node = model_.nodes[n];
+            glm::mat4 world = step.parentWorld * localTransform(node, n);
+            if (!isFinite(world))
+                throw Bad("node " + std::to_string(n) + " has a non-finite transform");
+            if (node.mesh >= 0) addObject(node.mesh, world, n);
+            stack.push_back({step.node, world, true});
+            for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+                stack.push_back({*it, world, false});
+        }
+    }
+
+    void addObject(int mesh, const glm::mat4& world, size_t node) {
+        if (size_t(mesh) >= model_.meshes.size())
+            throw Bad("node " + std::to_string(node) + " refers to missing mesh " +
+                      std::to_string(mesh));
+        int64_t geometry = geometryFor(mesh);
+        if (geometry == kDropped) return;
+        Scene& scene = result_.scene;
+        uint64_t ids =
+            uint64_t(scene.uniquePartCount()) + scene.geometries[size_t(geometry)].partCount;
+        if (scene.objects.size() >= kMaxObjects || ids > std::numeric_limits<uint32_t>::max())
+            throw Bad("too many objects or parts");
+        scene::addObject(scene, uint32_t(geometry), materialForMesh_[size_t(mesh)], world);
+    }
+
+    int64_t geometryFor(int mesh) {
+        int64_t& slot = geometryOfMesh_[size_t(mesh)];
+        if (slot != kUnbuilt) return slot;
+        MeshBuilder builder;
+        gltf::MeshInfo info =
+            gltf::addMesh(model_, mesh, options_.parts, builder, result_.warnings);
+        if (!info.hasTriangles) {
+            result_.warnings.push_back("mesh " + std::to_string(mesh) +
+                                       ": no triangles, dropped with its nodes");
+            return slot = kDropped;
+        }
+        const std::string& name = model_.meshes[size_t(mesh)].name;
+        slot = builder.finish(result_.scene, name.empty() ? "mesh " + std::to_string(mesh) : name);
+        if (result_.scene.vertices.size() > std::numeric_limits<uint32_t>::max() ||
+            result_.scene.indices.size() > std::numeric_limits<uint32_t>::max())
+            throw Bad("too many vertices or triangles");
+        materialForMesh_[size_t(mesh)] = material(info.material);
+        return slot;
+    }
+
+    uint32_t material(int index) {
+        if (index < 0) {
+            if (defaultMaterial_ == kUnbuilt)
+                defaultMaterial_ =
+                    addMaterial(result_.scene, "default", glm::vec4(0.7f, 0.7f, 0.7f, 1));
+            return uint32_t(defaultMaterial_);
+        }
+        int64_t& slot = materialOf_[size_t(index)];
+        if (slot != kUnbuilt) return uint32_t(slot);
+        const tinygltf::Material& m = model_.materials[size_t(index)];
+        glm::vec4 color(1.0f);
+        const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+        for (size_t i = 0; i < 4 && f.size() == 4; ++i)
+            color[int(i)] = std::isfinite(f[i]) ? float(std::clamp(f[i], 0.0, 1.0)) : 1.0f;
+        std::string name = m.name.empty() ? "material " + std::to_string(index) : m.name;
+        slot = addMaterial(result_.scene, std::move(name), color);
+        return uint32_t(slot);
+    }
+
+    const tinygltf::Model& model_;
+    const LoadOptions& options_;
+    LoadResult result_;
+    std::vector<int64_t> geometryOfMesh_;
+    std::vector<uint32_t> materialForMesh_;
+    std::vector<int64_t> materialOf_;
+    int64_t defaultMaterial_ = kUnbuilt;
+    std::vector<int> parentCount_;
+    std::vector<bool> onPath_;
+};
+
+} // namespace
+
+const char* partModeName(PartMode mode) {
+    return mode == PartMode::Components ? "components" : "primitives";
+}
+
+PartMode parsePartMode(const std::string& name) {
+    if (name == "primitives") return PartMode::Primitives;
+    if (name == "components") return PartMode::Components;
+    throw std::invalid_argument("unknown part mode '" + name + "'");
+}
+
+LoadResult loadGltfFromMemory(std::span<const unsigned char> bytes, const std::string& name,
+                              const LoadOptions& options) {
+    try {
+        std::vector<std::string> warnings;
+        tinygltf::Model model = parse(bytes, name, warnings);
+        checkRequiredExtensions(model.extensionsRequired);
+        return Builder(model, options).build(std::move(warnings));
+    } catch (const Bad& e) {
+        throw ModelError(name + ": " + oneLine(e.what()));
+    } catch (const std::bad_alloc&) {
+        throw ModelError(name + ": out of memory");
+    } catch (const std::exception& e) {
+        // tinygltf's JSON parser may throw on input it cannot handle.
+        throw ModelError(name + ": " + oneLine(e.what()));
+    }
+}
+
+LoadResult loadGltf(const std::string& path, const LoadOptions& options) {
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = readFileBytes(path);
+    } catch (const Bad& e) {
+        throw ModelError(path + ": " + e.what());
+    }
+    return loadGltfFromMemory(bytes, path, options);
+}
+
+} // namespace scene

@@ -1,0 +1,19 @@
+// gltf_writer.h - saves a Scene as binary glTF (.glb): one mesh per (geometry, material)
+// pair with one primitive per part, one node per object under a root node that turns
+// idview's z-up into glTF's y-up. Loading the file back in
+// `primitives` part mode gives the same parts, triangles and unique part IDs.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace scene {
+
+// The rotation the writer puts on its root node: idview's z-up to glTF's y-up.
+glm::mat4 zUpToYUp();
+
+// Throws std::runtime_error naming the file when it cannot be written.
+void writeGlb(const Scene& scene, const std::string& path);
+
+} // namespace scene

@@ -1,0 +1,119 @@
+// part_data.cpp - derived per-part data and draw lists.
+#include "scene/part_data.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace scene {
+namespace {
+
+DrawRange rangeOf(const Scene& scene, uint32_t object, uint32_t firstPart, uint32_t partCount) {
+    const Geometry& g = scene.geometries[scene.objects[object].geometry];
+    const Part& first = scene.parts[g.firstPart + firstPart];
+    const Part& last = scene.parts[g.firstPart + firstPart + partCount - 1];
+    const uint32_t triangles = last.firstTriangle + last.triangleCount - first.firstTriangle;
+    return {object,        firstPart,
+            partCount,     g.firstIndex + 3 * first.firstTriangle,
+            3 * triangles, static_cast<int32_t>(g.firstVertex)};
+}
+
+template <typename PerObject>
+std::vector<DrawRange> drawsOf(const Scene& scene, PerObject&& perObject) {
+    std::vector<DrawRange> draws;
+    for (uint32_t o = 0; o < scene.objects.size(); ++o) perObject(o, draws);
+    return draws;
+}
+
+} // namespace
+
+std::vector<DrawRange> drawsPerPart(const Scene& scene) {
+    return drawsPerBatch(scene, 1);
+}
+
+std::vector<DrawRange> drawsPerObject(const Scene& scene) {
+    return drawsOf(scene, [&](uint32_t o, std::vector<DrawRange>& draws) {
+        draws.push_back(
+            rangeOf(scene, o, 0, scene.geometries[scene.objects[o].geometry].partCount));
+    });
+}
+
+std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount) {
+    if (searchCount == 0) throw std::invalid_argument("search batch must be at least 1");
+    return drawsOf(scene, [&](uint32_t o, std::vector<DrawRange>& draws) {
+        const uint32_t parts = scene.geometries[scene.objects[o].geometry].partCount;
+        for (uint32_t first = 0; first < parts; first += searchCount)
+            draws.push_back(rangeOf(scene, o, first, std::min(searchCount, parts - first)));
+    });
+}
+
+uint32_t partIndexBytes(uint32_t partCount) {
+    if (partCount <= 0x100u) return 1;
+    if (partCount <= 0x10000u) return 2;
+    return 4;
+}
+
+TrianglePartIds buildTrianglePartIds(const Scene& scene) {
+    TrianglePartIds ids;
+    for (const Geometry& g : scene.geometries) {
+        const uint32_t width = partIndexBytes(g.partCount);
+        const uint32_t offset = static_cast<uint32_t>((ids.bytes.size() + 3) & ~size_t(3));
+        ids.geometries.push_back({offset, width});
+        ids.bytes.resize(offset + size_t(g.triangleCount) * width, 0);
+        uint8_t* out = ids.bytes.data() + offset;
+        for (uint32_t p = 0; p < g.partCount; ++p) {
+            const Part& part = scene.parts[g.firstPart + p];
+            for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t)
+                for (uint32_t b = 0; b < width; ++b) out[t * width + b] = uint8_t(p >> (8 * b));
+        }
+    }
+    ids.bytes.resize((ids.bytes.size() + 3) & ~size_t(3), 0); // whole uint32 words for shaders
+    return ids;
+}
+
+uint32_t TrianglePartIds::partOf(uint32_t geometry, uint32_t triangle) const {
+    const Range& r = geometries[geometry];
+    uint32_t value = 0;
+    for (uint32_t b = 0; b < r.elementBytes; ++b)
+        value |= uint32_t(bytes[r.byteOffset + triangle * r.elementBytes + b]) << (8 * b);
+    return value;
+}
+
+PartTriangleCounts buildPartTriangleCounts(const Scene& scene, uint32_t searchCount) {
+    if (searchCount == 0) throw std::invalid_argument("search batch must be at least 1");
+    PartTriangleCounts result;
+    result.counts.reserve(scene.parts.size() + searchCount - 1);
+    for (const Geometry& g : scene.geometries) {
+        result.geometryOffsets.push_back(static_cast<uint32_t>(result.counts.size()));
+        for (uint32_t p = 0; p < g.partCount; ++p)
+            result.counts.push_back(scene.parts[g.firstPart + p].triangleCount);
+    }
+    result.counts.resize(result.counts.size() + searchCount - 1, 0);
+    return result;
+}
+
+PartTriangleOffsets buildPartTriangleOffsets(const Scene& scene) {
+    PartTriangleOffsets result;
+    for (const Geometry& g : scene.geometries) {
+        result.geometryOffsets.push_back(static_cast<uint32_t>(result.offsets.size()));
+        for (uint32_t p = 0; p < g.partCount; ++p)
+            result.offsets.push_back(scene.parts[g.firstPart + p].firstTriangle);
+        result.offsets.push_back(g.triangleCount);
+    }
+    return result;
+}
+
+IdDataBytes idDataBytes(const Scene& scene, uint32_t searchCount) {
+    IdDataBytes bytes;
+    uint64_t triangleIdBytes = 0, offsets = 0;
+    for (const Geometry& g : scene.geometries) {
+        triangleIdBytes = ((triangleIdBytes + 3) & ~uint64_t(3)) +
+                          uint64_t(g.triangleCount) * partIndexBytes(g.partCount);
+        offsets += g.partCount + 1;
+    }
+    bytes.trianglePartIds = (triangleIdBytes + 3) & ~uint64_t(3);
+    bytes.partTriangleCounts = 4ull * (scene.parts.size() + searchCount - 1);
+    bytes.partTriangleOffsets = 4ull * offsets;
+    return bytes;
+}
+
+} // namespace scene

@@ -1,0 +1,485 @@
+// procedural.cpp - seeded machine-like assemblies: a ladder frame with wheels, engine, gearbox,
+// radiator, hoses and fasteners (car-like), or one gearbox module (small).
+#include "scene/procedural.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+
+#include "scene/shapes.h"
+
+namespace scene {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// splitmix64: tiny, fast and the same everywhere, unlike std:: distributions.
+class Rng {
+  public:
+    explicit Rng(uint64_t seed) : state_(seed) {}
+    uint64_t next() {
+        uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    // 24 random bits make an exactly representable float in [0, 1).
+    float unit() { return float(next() >> 40) * (1.0f / 16777216.0f); }
+    float uniform(float lo, float hi) { return lo + (hi - lo) * unit(); }
+    int range(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }
+
+  private:
+    uint64_t state_;
+};
+
+struct Materials {
+    uint32_t steel, blackSteel, framePaint, enginePaint, aluminium, brass, rubber, copper;
+};
+
+Materials addMaterials(Scene& s, Rng& rng) {
+    // The body colour is the seed's one visible signature at a glance.
+    glm::vec4 paint{rng.uniform(0.1f, 0.8f), rng.uniform(0.1f, 0.5f), rng.uniform(0.2f, 0.7f), 1};
+    return {addMaterial(s, "steel", {0.62f, 0.64f, 0.68f, 1}),
+            addMaterial(s, "black oxide steel", {0.18f, 0.18f, 0.2f, 1}),
+            addMaterial(s, "frame paint", paint),
+            addMaterial(s, "engine red", {0.62f, 0.12f, 0.1f, 1}),
+            addMaterial(s, "cast aluminium", {0.78f, 0.79f, 0.8f, 1}),
+            addMaterial(s, "brass", {0.78f, 0.62f, 0.28f, 1}),
+            addMaterial(s, "rubber", {0.08f, 0.08f, 0.09f, 1}),
+            addMaterial(s, "copper", {0.72f, 0.42f, 0.24f, 1})};
+}
+
+glm::mat4 placeAt(glm::vec3 position) {
+    return glm::translate(glm::mat4(1.0f), position);
+}
+// Places a geometry built along local z so that z runs along `axis`.
+glm::mat4 placeAlong(glm::vec3 position, glm::vec3 axis, float spin = 0.0f) {
+    Frame f = frameAlong(position, axis);
+    glm::mat4 m(glm::vec4(f.ax, 0), glm::vec4(f.ay, 0), glm::vec4(f.az, 0), glm::vec4(position, 1));
+    return glm::rotate(m, spin, {0, 0, 1});
+}
+
+// --- the parts catalogue: each geometry is built once and placed many times ---
+
+uint32_t makeBolt(Scene& s, float d, float length) {
+    MeshBuilder mb;
+    addHexPrism(mb, {}, 1.8f * d, 0.0f, 0.65f * d, 0.0f, 0);
+    const float r = 0.5f * d, c = 0.1f * d;
+    const glm::vec2 shank[] = {{0, -length}, {r - c, -length}, {r, -length + c}, {r, 0}};
+    addLathe(mb, {}, shank, 12);
+    return mb.finish(s, "bolt M" + std::to_string(int(d * 1000)));
+}
+
+uint32_t makeNut(Scene& s, float d) {
+    MeshBuilder mb;
+    addHexPrism(mb, {}, 1.8f * d, 0.0f, 0.8f * d, 0.5f * d, 12);
+    return mb.finish(s, "nut M" + std::to_string(int(d * 1000)));
+}
+
+uint32_t makeWasher(Scene& s, float d) {
+    MeshBuilder mb;
+    const float ri = 0.55f * d, ro = 1.0f * d, t = 0.15f * d;
+    const glm::vec2 ring[] = {{ri, 0}, {ro, 0}, {ro, t}, {ri, t}, {ri, 0}};
+    addLathe(mb, {}, ring, 16);
+    return mb.finish(s, "washer");
+}
+
+// Three gears and their shaft in one geometry: a lay-shaft cluster of many tiny flank parts.
+uint32_t makeGearCluster(Scene& s, int teeth) {
+    MeshBuilder mb;
+    float z = 0.0f;
+    for (int g = 0; g < 3; ++g) {
+        int n = teeth - 8 * g;
+        float r = 0.0008f * float(n);
+        addGear(mb, frameAlong({0, 0, z}, {0, 0, 1}), n, r, r + 0.003f, 0, 0.02f, 0.01f);
+        z += 0.03f;
+    }
+    const glm::vec2 shaft[] = {{0, -0.03f}, {0.01f, -0.03f}, {0.01f, z + 0.02f}, {0, z + 0.02f}};
+    addLathe(mb, {}, shaft, 24);
+    return mb.finish(s, "gear cluster " + std::to_string(teeth));
+}
+
+uint32_t makeHose(Scene& s, Rng& rng, float length, int rings) {
+    MeshBuilder mb;
+    std::vector<glm::vec3> path;
+    const float wave = rng.uniform(0.01f, 0.04f), turns = rng.uniform(2.0f, 5.0f);
+    for (int k = 0; k <= rings; ++k) {
+        float t = float(k) / float(rings);
+        float a = 2.0f * kPi * turns * t;
+        path.push_back({length * t, wave * std::sin(a), wave * 0.5f * std::cos(a)});
+    }
+    addTube(mb, path, 0.012f, 32);
+    return mb.finish(s, "hose");
+}
+
+uint32_t makeRail(Scene& s, float length, float height) {
+    MeshBuilder mb;
+    PlateSpec web{{length, height}, 0.006f, {int(length / 0.05f), 3}, 1, 0.45f, 16};
+    Frame f = frameAlong({0, 0, 0}, {0, 1, 0});
+    f.ax = {1, 0, 0};
+    f.ay = {0, 0, 1};
+    f.az = {0, -1, 0};
+    addPlateWithHoles(mb, f, web);
+    mb.addBox({0, 0.03f, height * 0.5f}, {length, 0.06f, 0.006f});
+    mb.addBox({0, 0.03f, -height * 0.5f}, {length, 0.06f, 0.006f});
+    return mb.finish(s, "frame rail");
+}
+
+uint32_t makeFloorPan(Scene& s, glm::vec2 size) {
+    MeshBuilder mb;
+    addPlateWithHoles(mb, {}, {size, 0.003f, {48, 24}, 5, 0.5f, 16});
+    return mb.finish(s, "floor pan");
+}
+
+uint32_t makeTubeBar(Scene& s, float length, std::string name) {
+    MeshBuilder mb;
+    const float ro = 0.035f, ri = 0.03f;
+    const glm::vec2 tube[] = {{ri, 0}, {ro, 0}, {ro, length}, {ri, length}, {ri, 0}};
+    addLathe(mb, {}, tube, 32);
+    return mb.finish(s, std::move(name));
+}
+
+uint32_t makeBracket(Scene& s) {
+    MeshBuilder mb;
+    addPlateWithHoles(mb, {}, {{0.12f, 0.08f}, 0.006f, {3, 2}, 1, 0.5f, 16});
+    Frame up = frameAlong({0, -0.04f, 0.04f}, {0, 1, 0});
+    addPlateWithHoles(mb, up, {{0.12f, 0.08f}, 0.006f, {3, 2}, 2, 0.5f, 16});
+    return mb.finish(s, "angle bracket");
+}
+
+uint32_t makeTyre(Scene& s) {
+    MeshBuilder mb;
+    std::vector<glm::vec2> profile;
+    // A rounded tread section, walked from the inner bead over the tread and back.
+    for (int k = 0; k <= 40; ++k) {
+        float a = -kPi * 0.5f + kPi * float(k) / 40.0f;
+        profile.push_back({0.25f + 0.08f * std::cos(a), 0.1f * std::sin(a) * -1.0f});
+    }
+    std::reverse(profile.begin(), profile.end());
+    addLathe(mb, {}, profile, 128, true);
+    return mb.finish(s, "tyre");
+}
+
+uint32_t makeRim(Scene& s) {
+    MeshBuilder mb;
+    const glm::vec2 rim[] = {{0.26f, -0.1f}, {0.26f, 0.1f},  {0.24f, 0.1f},   {0.24f, 0.04f},
+                             {0.2f, 0.03f},  {0.12f, 0.05f}, {0.06f, 0.05f},  {0.06f, 0.03f},
+                             {0.1f, 0.02f},  {0.2f, 0.0f},   {0.23f, -0.05f}, {0.23f, -0.1f},
+                             {0.26f, -0.1f}};
+    addLathe(mb, {}, rim, 64);
+    return mb.finish(s, "wheel rim");
+}
+
+uint32_t makeDisc(Scene& s) {
+    MeshBuilder mb;
+    const glm::vec2 disc[] = {{0.06f, 0}, {0.16f, 0}, {0.16f, 0.025f}, {0.06f, 0.025f}, {0.06f, 0}};
+    addLathe(mb, {}, disc, 64);
+    mb.addBox({0.16f, 0, 0.0125f}, {0.06f, 0.12f, 0.05f});
+    return mb.finish(s, "brake disc and caliper");
+}
+
+uint32_t makeCasting(Scene& s, float length, float radius, int segments) {
+    MeshBuilder mb;
+    std::vector<glm::vec2> profile{{0, 0}};
+    for (int k = 0; k <= 24; ++k) {
+        float t = float(k) / 24.0f;
+        profile.push_back({radius * (0.6f + 0.4f * std::sin(kPi * t)), length * t});
+    }
+    profile.push_back({0, length});
+    addLathe(mb, {}, profile, segments, true);
+    const glm::vec2 flange[] = {
+        {radius * 0.5f, 0}, {radius * 1.15f, 0}, {radius * 1.15f, 0.012f}, {radius * 0.5f, 0.012f}};
+    addLathe(mb, frameAlong({0, 0, -0.012f}, {0, 0, 1}), flange, 48);
+    return mb.finish(s, "cast housing");
+}
+
+uint32_t makeEngineBlock(Scene& s, glm::vec3 size) {
+    MeshBuilder mb;
+    addPlateWithHoles(mb, frameAlong({0, 0, size.z}, {0, 0, 1}),
+                      {{size.x, size.y}, 0.01f, {4, 1}, 1, 0.8f, 32});
+    mb.addBox({0, 0, size.z * 0.5f - 0.005f}, {size.x, size.y, size.z - 0.01f});
+    return mb.finish(s, "engine block");
+}
+
+uint32_t makeFinPack(Scene& s, int fins, glm::vec2 size) {
+    MeshBuilder mb;
+    for (int i = 0; i < fins; ++i)
+        mb.addBox({0.0f, -size.x * 0.5f + size.x * (float(i) + 0.5f) / float(fins), 0.0f},
+                  {0.03f, 0.0015f, size.y});
+    return mb.finish(s, "radiator fins");
+}
+
+uint32_t makePulley(Scene& s, float r) {
+    MeshBuilder mb;
+    std::vector<glm::vec2> profile{{0.01f, 0}, {r, 0}};
+    for (int g = 0; g < 6; ++g) {
+        float z = 0.006f * float(g);
+        profile.push_back({r - 0.004f, z + 0.003f});
+        profile.push_back({r, z + 0.006f});
+    }
+    profile.push_back({0.01f, 0.036f});
+    profile.push_back({0.01f, 0.0f});
+    addLathe(mb, {}, profile, 48);
+    return mb.finish(s, "pulley");
+}
+
+// --- sub-assemblies ---
+
+struct Catalogue {
+    uint32_t bolt, smallBolt, nut, smallNut, washer, hose, cluster;
+};
+
+// The fasteners both presets place everywhere (M10 and M6), made once per scene.
+Catalogue makeFasteners(Scene& s) {
+    Catalogue c{};
+    c.bolt = makeBolt(s, 0.010f, 0.04f);
+    c.smallBolt = makeBolt(s, 0.006f, 0.02f);
+    c.nut = makeNut(s, 0.010f);
+    c.smallNut = makeNut(s, 0.006f);
+    c.washer = makeWasher(s, 0.010f);
+    return c;
+}
+
+Catalogue makeCatalogue(Scene& s, Rng& rng) {
+    Catalogue c = makeFasteners(s);
+    c.hose = makeHose(s, rng, 3.2f, 320);
+    c.cluster = makeGearCluster(s, rng.range(44, 52));
+    return c;
+}
+
+// Bolted joint through a hole: the bolt head on one side, the nut `grip` below.
+void addJoint(Scene& s, const Catalogue& c, const Materials& m, glm::vec3 at, glm::vec3 axis,
+              float grip, bool small) {
+    addObject(s, small ? c.smallBolt : c.bolt, m.blackSteel, placeAlong(at, axis));
+    addObject(s, small ? c.smallNut : c.nut, m.steel, placeAlong(at - axis * grip, -axis));
+}
+
+void addWheel(Scene& s, const Catalogue& c, const Materials& m, glm::vec3 hub, float side,
+              uint32_t tyre, uint32_t rim, uint32_t disc) {
+    glm::vec3 out{0, side, 0};
+    addObject(s, tyre, m.rubber, placeAlong(hub, out));
+    addObject(s, rim, m.aluminium, placeAlong(hub, out));
+    addObject(s, disc, m.steel, placeAlong(hub - out * 0.09f, out));
+    for (int k = 0; k < 5; ++k) {
+        float a = 2.0f * kPi * float(k) / 5.0f;
+        glm::vec3 at = hub + glm::vec3(0.08f * std::cos(a), 0, 0.08f * std::sin(a)) + out * 0.05f;
+        addObject(s, c.nut, m.steel, placeAlong(at, out));
+    }
+}
+
+struct Chassis {
+    float length, track, railHeight, wheelbase;
+};
+
+void addFrame(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch, Rng& rng) {
+    const uint32_t rail = makeRail(s, ch.length, ch.railHeight);
+    const uint32_t cross = makeTubeBar(s, ch.track * 0.6f, "cross member");
+    const uint32_t bracket = makeBracket(s);
+    const float y = ch.track * 0.3f, z = 0.35f;
+    addObject(s, rail, m.framePaint, placeAt({0, y, z}));
+    addObject(s, rail, m.framePaint, glm::rotate(placeAt({0, -y, z}), kPi, {0, 0, 1}));
+    const int members = rng.range(5, 7);
+    for (int i = 0; i < members; ++i) {
+        float x = -ch.length * 0.45f + ch.length * 0.9f * float(i) / float(members - 1);
+        addObject(s, cross, m.framePaint, placeAlong({x, -y, z}, {0, 1, 0}));
+        for (float side : {-1.0f, 1.0f}) {
+            glm::vec3 at{x, side * (y - 0.07f), z + 0.08f};
+            addObject(s, bracket, m.steel,
+                      glm::rotate(placeAt(at), side > 0 ? 0.0f : kPi, {0, 0, 1}));
+            for (float dx : {-0.04f, 0.0f, 0.04f})
+                addJoint(s, c, m, at + glm::vec3(dx, 0, 0.01f), {0, 0, 1}, 0.02f, true);
+        }
+    }
+    addObject(s, makeFloorPan(s, {ch.length * 0.5f, ch.track * 0.6f}), m.framePaint,
+              placeAt({-ch.length * 0.12f, 0, z + ch.railHeight * 0.5f + 0.01f}));
+}
+
+void addRunningGear(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch) {
+    const uint32_t tyre = makeTyre(s), rim = makeRim(s), disc = makeDisc(s);
+    const uint32_t axle = makeTubeBar(s, ch.track, "axle");
+    const uint32_t diff = makeCasting(s, 0.3f, 0.14f, 96);
+    for (float x : {-ch.wheelbase * 0.5f, ch.wheelbase * 0.5f}) {
+        addObject(s, axle, m.steel, placeAlong({x, -ch.track * 0.5f, 0.33f}, {0, 1, 0}));
+        for (float side : {-1.0f, 1.0f})
+            addWheel(s, c, m, {x, side * ch.track * 0.5f, 0.33f}, side, tyre, rim, disc);
+    }
+    addObject(s, diff, m.aluminium,
+              placeAlong({-ch.wheelbase * 0.5f + 0.15f, 0, 0.33f}, {-1, 0, 0}));
+}
+
+void addEngine(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch, Rng& rng) {
+    const int cylinders = rng.range(4, 6);
+    const glm::vec3 size{0.11f * float(cylinders), 0.3f, 0.35f};
+    const glm::vec3 base{ch.wheelbase * 0.5f - 0.1f, 0, 0.3f};
+    addObject(s, makeEngineBlock(s, size), m.enginePaint, placeAt(base));
+    const uint32_t gearbox = makeCasting(s, 0.6f, 0.16f, 128);
+    addObject(s, gearbox, m.aluminium,
+              placeAlong(base + glm::vec3(-size.x * 0.5f, 0, 0.15f), {-1, 0, 0}));
+    const uint32_t pulley = makePulley(s, 0.07f);
+    for (int k = 0; k < 3; ++k)
+        addObject(s, pulley, m.steel,
+                  placeAlong(base + glm::vec3(size.x * 0.5f + 0.02f, 0.08f * float(k - 1),
+                                              0.1f + 0.08f * float(k % 2)),
+                             {1, 0, 0}));
+    for (int i = 0; i < cylinders * 8; ++i) {
+        float x = -size.x * 0.5f + size.x * (float(i / 2) + 0.5f) / float(cylinders * 4);
+        glm::vec3 at = base + glm::vec3(x, (i % 2 ? 1.0f : -1.0f) * 0.13f, size.z + 0.005f);
+        addObject(s, c.bolt, m.blackSteel, placeAlong(at, {0, 0, 1}));
+        addObject(s, c.washer, m.steel, placeAlong(at - glm::vec3(0, 0, 0.0015f), {0, 0, 1}));
+    }
+    const uint32_t fins = makeFinPack(s, 160, {0.6f, 0.4f});
+    addObject(s, fins, m.copper, placeAt({ch.length * 0.5f - 0.05f, 0, 0.6f}));
+}
+
+struct Site {
+    glm::vec3 at, axis; // the bolt head sits at `at` and points along `axis`
+};
+
+// Fastener sites: the holes of both rail webs, then bolt rows on the rail flanges, each group
+// in the order the seed shuffles it, so every seed fastens a different subset.
+std::vector<Site> fastenerSites(const Chassis& ch, Rng& rng) {
+    std::vector<Site> web, flange;
+    const int columns = int(ch.length / 0.05f);
+    const float cell = ch.length / float(columns);
+    const float railY = ch.track * 0.3f;
+    for (float side : {-1.0f, 1.0f})
+        for (int col = 0; col < columns; ++col) {
+            float x = -ch.length * 0.5f + cell * (float(col) + 0.5f);
+            for (int row = 0; row < 3; ++row)
+                web.push_back({{x, side * (railY + 0.004f),
+                                0.35f + ch.railHeight * (float(row) - 1.0f) / 3.0f},
+                               {0, side, 0}});
+            for (float z : {-1.0f, 1.0f})
+                flange.push_back(
+                    {{x, side * (railY + 0.03f), 0.35f + z * (ch.railHeight * 0.5f + 0.003f)},
+                     {0, 0, z}});
+        }
+    for (auto* group : {&web, &flange})
+        for (size_t i = group->size(); i > 1; --i)
+            std::swap((*group)[i - 1], (*group)[rng.next() % i]);
+    web.insert(web.end(), flange.begin(), flange.end());
+    return web;
+}
+
+struct Counts {
+    double objects = 0, parts = 0, triangles = 0;
+};
+
+Counts countsOf(const Scene& s) {
+    return {double(s.objects.size()), double(s.uniquePartCount()), double(s.drawnTriangleCount())};
+}
+
+Counts geometryCounts(const Scene& s, uint32_t g) {
+    return {1, double(s.geometries[g].partCount), double(s.geometries[g].triangleCount)};
+}
+
+// How many fasteners, gear clusters and hoses close the gap to the target: a 3x3 linear
+// system solved by Cramer's rule, then rounded (the rounding error is one item of each).
+glm::ivec3 fillPlan(const Counts& gap, const Counts& a, const Counts& b, const Counts& c) {
+    glm::dmat3 m(a.objects, a.parts, a.triangles, b.objects, b.parts, b.triangles, c.objects,
+                 c.parts, c.triangles);
+    glm::dvec3 n = glm::inverse(m) * glm::dvec3(gap.objects, gap.parts, gap.triangles);
+    return glm::max(glm::ivec3(glm::round(n)), glm::ivec3(0));
+}
+
+void addFill(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch, Rng& rng,
+             const Counts& target) {
+    Counts now = countsOf(s);
+    Counts gap{target.objects - now.objects, target.parts - now.parts,
+               target.triangles - now.triangles};
+    Counts joint = geometryCounts(s, c.bolt);
+    joint.parts = (joint.parts + geometryCounts(s, c.nut).parts) * 0.5;
+    joint.triangles = (joint.triangles + geometryCounts(s, c.nut).triangles) * 0.5;
+    glm::ivec3 plan = fillPlan(gap, joint, geometryCounts(s, c.cluster), geometryCounts(s, c.hose));
+    // Gear clusters stand in rows on the frame centre line, like a long transfer gearbox.
+    for (int i = 0; i < plan.y; ++i) {
+        int row = i % 6, col = i / 6;
+        glm::vec3 at{-ch.length * 0.4f + 0.09f * float(col), -0.25f + 0.1f * float(row), 0.15f};
+        addObject(s, c.cluster, i % 3 ? m.steel : m.brass,
+                  placeAlong(at, {0, 0, 1}, rng.uniform(0.0f, kPi)));
+    }
+    for (int i = 0; i < plan.z; ++i) {
+        float y = (i % 2 ? 1.0f : -1.0f) * (ch.track * 0.3f - 0.12f + 0.03f * float(i / 2 % 8));
+        addObject(s, c.hose, i % 4 ? m.rubber : m.copper,
+                  placeAt({-1.6f, y, 0.08f + 0.03f * float(i / 16)}));
+    }
+    const std::vector<Site> sites = fastenerSites(ch, rng);
+    for (int i = 0; i < plan.x; ++i) {
+        Site site = sites[size_t(i / 2) % sites.size()];
+        // Past the last site the rows repeat a little higher: a second row of clips.
+        site.at.z += float(size_t(i / 2) / sites.size()) * 0.02f;
+        if (i % 2 == 0)
+            addObject(s, c.bolt, m.blackSteel, placeAlong(site.at, site.axis));
+        else
+            addObject(s, c.nut, m.steel, placeAlong(site.at - site.axis * 0.016f, -site.axis));
+    }
+}
+
+Scene makeCarLike(uint64_t seed) {
+    Scene s;
+    Rng rng(seed);
+    const Materials m = addMaterials(s, rng);
+    const Catalogue c = makeCatalogue(s, rng);
+    const Chassis ch{rng.uniform(4.0f, 4.4f), rng.uniform(1.45f, 1.6f), 0.16f,
+                     rng.uniform(2.5f, 2.8f)};
+    addFrame(s, c, m, ch, rng);
+    addRunningGear(s, c, m, ch);
+    addEngine(s, c, m, ch, rng);
+    addFill(s, c, m, ch, rng, {2260, 99000, 2350000});
+    return s;
+}
+
+// One gearbox module on a holed base plate: every shape kind, a few thousand parts.
+Scene makeSmall(uint64_t seed) {
+    Scene s;
+    Rng rng(seed);
+    const Materials m = addMaterials(s, rng);
+    Catalogue c = makeFasteners(s);
+    c.cluster = makeGearCluster(s, rng.range(30, 40));
+    MeshBuilder mb;
+    addPlateWithHoles(mb, {}, {{0.6f, 0.4f}, 0.01f, {12, 8}, 3, 0.5f, 16});
+    addObject(s, mb.finish(s, "base plate"), m.framePaint, placeAt({0, 0, 0}));
+    const int clusters = rng.range(3, 5);
+    for (int i = 0; i < clusters; ++i)
+        addObject(s, c.cluster, m.steel,
+                  placeAlong({-0.2f + 0.12f * float(i), -0.06f + 0.05f * float(i % 2), 0.005f},
+                             {0, 0, 1}, rng.uniform(0.0f, kPi)));
+    const uint32_t bracket = makeBracket(s);
+    for (int i = 0; i < 4; ++i) {
+        glm::vec3 at{-0.24f + 0.16f * float(i), -0.15f, 0.008f};
+        addObject(s, bracket, m.steel, placeAt(at));
+        for (float dx : {-0.04f, 0.0f, 0.04f})
+            addJoint(s, c, m, at + glm::vec3(dx, 0, 0.01f), {0, 0, 1}, 0.02f, true);
+    }
+    // The back rows of plate holes (every third cell has one) carry bolts with washers.
+    for (int cell = 5 * 12; cell < 8 * 12; cell += 3) {
+        glm::vec3 at{-0.275f + 0.05f * float(cell % 12), -0.175f + 0.05f * float(cell / 12),
+                     0.0065f};
+        addJoint(s, c, m, at, {0, 0, 1}, 0.013f, false);
+        addObject(s, c.washer, m.steel, placeAlong(at - glm::vec3(0, 0, 0.0015f), {0, 0, 1}));
+    }
+    return s;
+}
+
+} // namespace
+
+const std::vector<std::string>& proceduralPresets() {
+    static const std::vector<std::string> names = {"small", "car-like"};
+    return names;
+}
+
+Scene makeProcedural(const ProceduralOptions& options) {
+    Scene scene;
+    if (options.preset == "small")
+        scene = makeSmall(options.seed);
+    else if (options.preset == "car-like")
+        scene = makeCarLike(options.seed);
+    else
+        throw std::invalid_argument("unknown procedural preset '" + options.preset + "'");
+    validate(scene);
+    return scene;
+}
+
+} // namespace scene
