@@ -10,6 +10,15 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
     -DIDVIEW_FUZZ=ON -DIDVIEW_TESTS=OFF >/dev/null
 cmake --build "$build" -j2 --target fuzz_gltf
 
+# First every real and malformed file of Debian's assimp-testmodels glTF2 corpus, once each,
+# through the instrumented loader: none may crash or trip a sanitizer.
+corpus=/usr/share/assimp/models/glTF2
+if [[ -d $corpus ]]; then
+    mapfile -t files < <(find "$corpus" \( -name '*.gltf' -o -name '*.glb' \) -size -4M | sort)
+    echo "run_fuzz: replaying ${#files[@]} files of $corpus"
+    "$build/fuzz/fuzz_gltf" -runs=1 "${files[@]}" 2>&1 | tail -n 3
+fi
+
 # The fuzzer adds inputs to its corpus folder: work on a copy so the seeds stay as committed.
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
