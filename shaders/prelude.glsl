@@ -2,6 +2,7 @@
 // buffer-reference views of the scene buffers and the push constant block.
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
+#extension GL_EXT_control_flow_attributes : require
 
 #include "shared.h"
 
@@ -15,6 +16,13 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Ma
     Material materials[];
 };
 
+layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer DrawsRef {
+    DrawData draws[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer UintsRef {
+    uint values[];
+};
+
 layout(push_constant, std430) uniform PushBlock {
     DrawPush push;
 };
@@ -23,4 +31,13 @@ FrameData loadFrame() { return FrameRef(push.frameAddress).frame; }
 
 ObjectData loadObject(uint64_t objectsAddress, uint objectIndex) {
     return ObjectsRef(objectsAddress).objects[objectIndex];
+}
+
+// The current draw's parameters, however the per-draw mode delivers them (IDV_MODE_*).
+DrawData loadDraw(FrameData frame, uint drawIndex) {
+#if IDV_MODE_PUSH
+    return push.draw;
+#else
+    return DrawsRef(frame.drawsAddress).draws[drawIndex];
+#endif
 }

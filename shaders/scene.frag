@@ -1,25 +1,35 @@
 #version 460
-// scene.frag - finds the unique part ID of the fragment (the technique's job), writes it to
-// the ID attachment and shades the fragment with it.
+// scene.frag - finds the unique part ID of the fragment (the technique's job, here or in the
+// geometry shader), writes it to the ID attachment and shades the fragment with it.
 #include "prelude.glsl"
 #include "shading.glsl"
-// Resolved by the shader compiler to the current technique's file (src/render/technique.cpp).
+// Resolved by the shader compiler to the technique's lookup file (src/render/technique.cpp).
 #include "technique.glsl"
 
-layout(location = 0) in vec3 inWorldPos;
-layout(location = 1) in vec3 inWorldNormal;
+layout(location = VARYING_WORLD_POS) in vec3 inWorldPos;
+layout(location = VARYING_WORLD_NORMAL) in vec3 inWorldNormal;
+layout(location = VARYING_DRAW_INDEX) flat in uint inDrawIndex;
+#if IDV_LOOKUP_IN_GS
+layout(location = VARYING_GS_PART_INDEX) flat in uint inGsPartIndex;
+#endif
 
 layout(location = OUT_COLOR) out vec4 outColor;
 layout(location = OUT_PART_ID) out uint outPartId;
 
 void main() {
     FrameData frame = loadFrame();
-    ObjectData object = loadObject(frame.objectsAddress, push.objectIndex);
-    uint uniquePartId = object.uniquePartOffset + techniqueLocalPartIndex();
+    DrawData draw = loadDraw(frame, inDrawIndex);
+    ObjectData object = loadObject(frame.objectsAddress, draw.objectIndex);
+#if IDV_LOOKUP_IN_GS
+    uint localPart = inGsPartIndex;
+#else
+    uint localPart = lookupLocalPart(frame, draw, uint(gl_PrimitiveID));
+#endif
+    uint uniquePartId = object.uniquePartOffset + localPart;
     outPartId = uniquePartId;
 
     vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
-    if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(push.drawIndex ^ 0x9e3779b9u);
+    if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(draw.drawIndex ^ 0x9e3779b9u);
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
     outColor = vec4(headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz), 1.0);
 }

@@ -24,7 +24,15 @@ using mat4 = glm::mat4;
 // Vertex attribute locations and the vertex buffer bindings they come from.
 IDV_CONST LOC_POSITION = 0;
 IDV_CONST LOC_NORMAL = 1;
+IDV_CONST LOC_DRAW_INDEX = 2; // mdi-attribute: instanced uint, buffer[i] = i
 IDV_CONST BINDING_VERTICES = 0;
+IDV_CONST BINDING_DRAW_INDICES = 1;
+
+// Varyings between stages: only what shading needs plus a flat draw index.
+IDV_CONST VARYING_WORLD_POS = 0;
+IDV_CONST VARYING_WORLD_NORMAL = 1;
+IDV_CONST VARYING_DRAW_INDEX = 2;
+IDV_CONST VARYING_GS_PART_INDEX = 3; // gs techniques: the part the geometry shader found
 
 // Fragment outputs, matching the colour attachments of the scene render pass.
 IDV_CONST OUT_COLOR = 0;
@@ -52,6 +60,22 @@ struct FrameData {
     uint flags;
     uint64_t objectsAddress;   // ObjectData[]
     uint64_t materialsAddress; // Material[]
+    uint64_t idsAddress;       // the technique's ID buffer (see DrawData::idsOffset), or 0
+    uint64_t drawsAddress;     // DrawData[] of the mdi modes, or 0
+};
+
+// What one draw of a draw list needs. `push` mode pushes it; the mdi modes read it from the
+// per-draw buffer at the draw's index.
+struct DrawData {
+    uint objectIndex;
+    uint firstPart; // local index of the draw's first part in the object's geometry
+    uint partCount; // parts the draw covers
+    // Where the draw's data starts in the technique's ID buffer: tri-*: byte offset of the
+    // geometry's per-triangle part indices; search-*: index of the batch's first triangle
+    // count; bsearch-*: index of the geometry's first running triangle offset.
+    uint idsOffset;
+    uint idsWidth;  // tri-*: bytes per part index (1, 2 or 4)
+    uint drawIndex; // position in the draw list, for colorize drawcalls
 };
 
 // One placed instance of a geometry.
@@ -68,23 +92,21 @@ struct Material {
     vec4 color; // linear RGB, a unused
 };
 
-// Push constants of the `push` per-draw mode. The frame address is pushed once per frame at
-// offset 0; each draw then pushes only the per-draw tail (DRAW_PUSH_TAIL_OFFSET onwards).
+// Push constants. The frame address is pushed once per frame at offset 0; in `push` mode
+// each draw then pushes the fields of `draw` that changed since the previous draw.
 struct DrawPush {
     uint64_t frameAddress; // FrameData
-    uint objectIndex;
-    uint partIndex; // local part index within the object's geometry
-    uint drawIndex; // for colorize drawcalls
-    uint reserved;
+    DrawData draw;
 };
-IDV_CONST DRAW_PUSH_TAIL_OFFSET = 8;
+IDV_CONST DRAW_PUSH_DRAW_OFFSET = 8;
 
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 112 && offsetof(FrameData, objectsAddress) == 96);
+static_assert(sizeof(FrameData) == 128 && offsetof(FrameData, drawsAddress) == 120);
+static_assert(sizeof(DrawData) == 24);
 static_assert(sizeof(ObjectData) == 144);
 static_assert(sizeof(Material) == 16);
-static_assert(sizeof(DrawPush) == 24 && offsetof(DrawPush, objectIndex) == DRAW_PUSH_TAIL_OFFSET);
+static_assert(sizeof(DrawPush) == 32 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
 } // namespace gpu
 #endif
 #undef IDV_CONST

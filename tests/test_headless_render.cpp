@@ -100,7 +100,7 @@ HeadlessResult* HeadlessRender::tilesResult = nullptr;
 
 TEST_F(HeadlessRender, ValidationStaysSilent) {
     EXPECT_EQ(tilesResult->validationMessages, 0u);
-    EXPECT_EQ(tilesResult->draws, 25u); // per-draw: one draw per part
+    EXPECT_EQ(tilesResult->stats.draws, 25u); // per-draw: one draw per part
     EXPECT_EQ(tilesResult->gpuMs.size(), 3u);
 }
 
@@ -160,8 +160,8 @@ TEST(HeadlessRenderCheck, OneWrongPartIdIsCaught) {
     fs::remove_all(dir);
     fs::copy(IDVIEW_SOURCE_SHADER_DIR, dir, fs::copy_options::recursive);
     std::ofstream(dir / "techniques/per_draw.glsl")
-        << "uint techniqueLocalPartIndex() { return push.partIndex == 5u ? 6u : push.partIndex; "
-           "}\n";
+        << "uint lookupLocalPart(FrameData f, DrawData d, uint primitive) {\n"
+           "    return d.firstPart == 5u ? 6u : d.firstPart;\n}\n";
     app::Options o = testOptions(320, 200);
     o.shaderDir = dir.string();
     scene::Scene s = scene::makeTiles();
@@ -182,7 +182,7 @@ TEST(HeadlessRenderAssembly, IdsNamePartsAndAgreeWithRaycast) {
     scene::Camera camera = app::initialCamera(loaded, 256.0f / 160.0f);
     HeadlessResult r = renderChecked(o, s, camera);
     EXPECT_EQ(r.validationMessages, 0u);
-    EXPECT_EQ(r.draws, s.uniquePartCount());
+    EXPECT_EQ(r.stats.draws, s.uniquePartCount());
     std::set<uint32_t> seen;
     for (uint32_t id : r.ids) {
         if (id == gpu::BACKGROUND_ID) continue;

@@ -47,7 +47,10 @@ std::string compileError(const vk::ShaderCompiler& compiler, const vk::ShaderReq
 TEST(Shaders, EveryVariantCompiles) {
     vk::ShaderCompiler compiler(IDVIEW_SOURCE_SHADER_DIR);
     const auto variants = render::allShaderVariants();
-    ASSERT_EQ(variants.size(), 2 * render::techniques().size() * render::drawModes().size());
+    // Per mode: per-draw, tri-fs, bsearch-fs (2 stages); tri-gs in two forms (3 stages each);
+    // search-fs at 32 batch sizes (2 stages); search-gs at 32 sizes in two forms (3 stages).
+    const size_t perMode = 3 * 2 + 2 * 3 + 32 * 2 + 32 * 2 * 3;
+    ASSERT_EQ(variants.size(), perMode * render::drawModes().size());
     for (const auto& request : variants) {
         std::vector<uint32_t> spirv;
         ASSERT_NO_THROW(spirv = compiler.compile(request)) << request.label();
@@ -62,7 +65,8 @@ TEST(Shaders, ErrorNamesFileAndLine) {
                                    "outWorldPos = undeclaredThing;");
     ASSERT_GT(line, 0);
     vk::ShaderCompiler compiler(dir);
-    const auto request = render::shaderVariants(render::techniques()[0], render::drawModes()[0])[0];
+    const auto request =
+        render::shaderVariants(render::techniques()[0], render::drawModes()[0], {})[0];
     const std::string error = compileError(compiler, request);
     EXPECT_NE(error.find((dir / "scene.vert").string() + ":" + std::to_string(line) + ": error:"),
               std::string::npos)
@@ -77,7 +81,8 @@ TEST(Shaders, ErrorInsideAnIncludeNamesTheIncludedFile) {
         replaceInFile(dir / "shading.glsl", "uint h = hashId(id);", "uint h = hashId(id) +;");
     ASSERT_GT(line, 0);
     vk::ShaderCompiler compiler(dir);
-    const auto request = render::shaderVariants(render::techniques()[0], render::drawModes()[0])[1];
+    const auto request =
+        render::shaderVariants(render::techniques()[0], render::drawModes()[0], {})[1];
     const std::string error = compileError(compiler, request);
     EXPECT_NE(error.find((dir / "shading.glsl").string() + ":" + std::to_string(line) + ": error:"),
               std::string::npos)
@@ -98,11 +103,11 @@ TEST(Shaders, MissingFilesAreReported) {
 
 TEST(Shaders, DefinesReachTheSource) {
     fs::path dir = copyShaders("defines");
-    ASSERT_GT(replaceInFile(dir / "techniques/per_draw.glsl", "return push.partIndex;",
-                            "return push.partIndex + EXTRA_OFFSET;"),
+    ASSERT_GT(replaceInFile(dir / "techniques/per_draw.glsl", "return draw.firstPart;",
+                            "return draw.firstPart + EXTRA_OFFSET;"),
               0);
     vk::ShaderCompiler compiler(dir);
-    auto request = render::shaderVariants(render::techniques()[0], render::drawModes()[0])[1];
+    auto request = render::shaderVariants(render::techniques()[0], render::drawModes()[0], {})[1];
     EXPECT_NE(compileError(compiler, request).find("EXTRA_OFFSET"), std::string::npos);
     request.defines.push_back({"EXTRA_OFFSET", "1u"});
     EXPECT_NO_THROW(compiler.compile(request));

@@ -1,3 +1,3 @@
-// per_draw.glsl - technique `per-draw`: one draw per part, and the draw itself carries the
-// part's local index, so the fragment shader does no lookup at all.
-uint techniqueLocalPartIndex() { return push.partIndex; }
+// per_draw.glsl - technique `per-draw`: one draw per part, and the draw itself names the
+// part, so there is nothing to look up.
+uint lookupLocalPart(FrameData frame, DrawData draw, uint primitive) { return draw.firstPart; }

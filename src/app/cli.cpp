@@ -107,6 +107,14 @@ const std::vector<Flag>& flags() {
          [](Options& o, auto& v) { o.partWeight = parseFraction("--part-weight", v); }},
         {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
          [](Options& o, auto&) { o.colorizeDraws = true; }},
+        {"--no-sort-draws", nullptr,
+         "keep draws in scene order instead of by geometry and material",
+         [](Options& o, auto&) { o.sortDraws = false; }},
+        {"--gs-ordinary", nullptr,
+         "gs renderers: use an ordinary geometry shader even where "
+         "VK_NV_geometry_shader_passthrough "
+         "is offered",
+         [](Options& o, auto&) { o.gsPassthrough = false; }},
         {"--list-renderers", nullptr, "print the renderers and modes, then exit",
          [](Options& o, auto&) { o.listRenderers = true; }},
         {"--validation", nullptr, "enable the Khronos validation layer; messages make exit 3",

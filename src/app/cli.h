@@ -32,6 +32,8 @@ struct Options {
     std::string mode = "push";
     float partWeight = 0.5f;
     bool colorizeDraws = false;
+    bool sortDraws = true;     // by geometry, then material
+    bool gsPassthrough = true; // where the device offers it
     std::string shaderDir;
 };
 

@@ -66,11 +66,20 @@ double median(std::vector<double> values) {
 
 } // namespace
 
+render::RenderConfig renderConfig(const Options& options) {
+    render::RenderConfig config;
+    config.technique = render::findTechnique(options.renderer);
+    config.mode = render::findDrawMode(options.mode);
+    if (!config.technique || !config.mode) throw vk::Error("unknown renderer or mode");
+    config.searchBatch = options.searchBatch;
+    config.sortDraws = options.sortDraws;
+    config.gsPassthrough = options.gsPassthrough;
+    return config;
+}
+
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera) {
-    const render::Technique* technique = render::findTechnique(options.renderer);
-    const render::DrawMode* mode = render::findDrawMode(options.mode);
-    if (!technique || !mode) throw vk::Error("unknown renderer or mode");
+    const render::RenderConfig config = renderConfig(options);
 
     HeadlessResult result;
     result.width = options.width;
@@ -86,9 +95,9 @@ HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
         render::SceneTargets targets(device, pass, extent);
         render::FrameSlots slots(device);
         render::Renderer renderer(device, compiler, pass);
-        renderer.setTechnique(*technique, *mode, scene);
         renderer.setScene(scene);
-        result.draws = renderer.drawCount();
+        renderer.configure(scene, config);
+        result.stats = renderer.stats();
         Readback readback(device, extent);
 
         render::FrameParams params;
@@ -130,7 +139,7 @@ int runHeadless(const Options& options) {
     std::printf("idview: %u frames of %ux%u on %s, %s + %s: %zu draws, %llu triangles, %u parts, "
                 "scene pass GPU median %.3f ms\n",
                 options.frames, result.width, result.height, result.deviceName.c_str(),
-                options.renderer.c_str(), options.mode.c_str(), result.draws,
+                options.renderer.c_str(), options.mode.c_str(), result.stats.draws,
                 static_cast<unsigned long long>(scene.drawnTriangleCount()),
                 scene.uniquePartCount(), median(result.gpuMs));
     if (result.validationMessages > 0) {

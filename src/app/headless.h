@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -17,9 +18,12 @@ struct HeadlessResult {
     std::vector<uint32_t> ids;  // unique part IDs of the last frame, gpu::BACKGROUND_ID if none
     std::vector<double> gpuMs;  // scene pass time of each frame
     std::string deviceName;
-    size_t draws = 0;
+    render::RenderStats stats;
     uint32_t validationMessages = 0; // counted until the device is destroyed
 };
+
+// The renderer configuration the options ask for (throws vk::Error for unknown names).
+render::RenderConfig renderConfig(const Options& options);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
 // Throws vk::Error / vk::ShaderError with a message for people.

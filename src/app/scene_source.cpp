@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "render/draw_list.h"
 #include "scene/copies.h"
 #include "scene/generator.h"
 #include "scene/gltf_loader.h"
@@ -126,7 +127,20 @@ std::string statsJson(const LoadedScene& loaded, const Options& options) {
          << ",\"search_batch\":" << options.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
-         << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets << ",\"warnings\":[";
+         << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets;
+    // What the chosen renderer and mode would draw and upload.
+    const render::Technique* technique = render::findTechnique(options.renderer);
+    const render::DrawMode* mode = render::findDrawMode(options.mode);
+    if (technique && mode) {
+        const render::RenderStats r = render::statsFor(
+            render::buildDrawList(s, *technique, {options.searchBatch, options.sortDraws}), *mode);
+        json << ",\"renderer\":" << jsonString(technique->name)
+             << ",\"mode\":" << jsonString(mode->name) << ",\"draws\":" << r.draws
+             << ",\"pipelines\":" << r.pipelines << ",\"id_buffer_bytes\":" << r.idBufferBytes
+             << ",\"per_draw_bytes\":" << r.perDrawBytes
+             << ",\"indirect_bytes\":" << r.indirectBytes;
+    }
+    json << ",\"warnings\":[";
     for (size_t i = 0; i < loaded.warnings.size(); ++i)
         json << (i ? "," : "") << jsonString(loaded.warnings[i]);
     json << "]}";

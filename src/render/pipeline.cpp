@@ -21,7 +21,8 @@ VkPipelineLayout createScenePipelineLayout(vk::Device& device) {
 }
 
 VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
-                               const std::vector<ShaderStage>& stages, const std::string& name) {
+                               const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
+                               const std::string& name) {
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
     for (const auto& s : stages) {
         auto info = vk::init<VkPipelineShaderStageCreateInfo>(
@@ -32,18 +33,25 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
         stageInfos.push_back(info);
     }
 
-    VkVertexInputBindingDescription binding{gpu::BINDING_VERTICES, sizeof(gpu::Vertex),
-                                            VK_VERTEX_INPUT_RATE_VERTEX};
-    std::array<VkVertexInputAttributeDescription, 2> attributes = {{
+    std::vector<VkVertexInputBindingDescription> bindings = {
+        {gpu::BINDING_VERTICES, sizeof(gpu::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    std::vector<VkVertexInputAttributeDescription> attributes = {
         {gpu::LOC_POSITION, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
          offsetof(gpu::Vertex, position)},
         {gpu::LOC_NORMAL, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
          offsetof(gpu::Vertex, normal)},
-    }};
+    };
+    if (drawIndexAttribute) {
+        // One uint per instance; each indirect draw's firstInstance selects its element.
+        bindings.push_back(
+            {gpu::BINDING_DRAW_INDICES, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE});
+        attributes.push_back(
+            {gpu::LOC_DRAW_INDEX, gpu::BINDING_DRAW_INDICES, VK_FORMAT_R32_UINT, 0});
+    }
     auto vertexInput = vk::init<VkPipelineVertexInputStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexBindingDescriptionCount = static_cast<uint32_t>(bindings.size());
+    vertexInput.pVertexBindingDescriptions = bindings.data();
     vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
     vertexInput.pVertexAttributeDescriptions = attributes.data();
 

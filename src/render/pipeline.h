@@ -20,7 +20,9 @@ constexpr VkShaderStageFlags pushStages =
 
 VkPipelineLayout createScenePipelineLayout(vk::Device& device);
 
+// drawIndexAttribute adds the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute mode).
 VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
-                               const std::vector<ShaderStage>& stages, const std::string& name);
+                               const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
+                               const std::string& name);
 
 } // namespace render

@@ -1,8 +1,9 @@
-// renderer.cpp - pipeline (re)building and the recording of the scene pass.
+// renderer.cpp - pipeline and draw buffer (re)building, and the recording of the scene pass.
 #include "render/renderer.h"
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 
 #include "render/pipeline.h"
 #include "render/shader_variants.h"
@@ -18,6 +19,7 @@ Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler, const
 
 Renderer::~Renderer() {
     sceneGpu_.reset();
+    destroyDraws(drawBuffers_);
     if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
     vkDestroyPipelineLayout(device_.handle(), layout_, nullptr);
 }
@@ -27,33 +29,55 @@ void Renderer::setScene(const scene::Scene& scene) {
     // The old buffers may still be read by frames in flight.
     vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
     sceneGpu_ = std::move(uploaded);
-    if (technique_) draws_ = technique_->buildDrawList(scene);
 }
 
-void Renderer::setTechnique(const Technique& technique, const DrawMode& mode,
-                            const scene::Scene& scene) {
-    VkPipeline pipeline = buildPipeline(technique, mode); // throws before anything changes
+void Renderer::configure(const scene::Scene& scene, const RenderConfig& config) {
+    if (!config.technique || !config.mode) throw vk::Error("Renderer::configure without technique");
+    const Technique& technique = *config.technique;
+    Variant variant{&technique, config.mode,
+                    technique.ids == IdBuffer::PartTriangleCounts ? config.searchBatch : 0u,
+                    technique.stage == LookupStage::Geometry && config.gsPassthrough &&
+                        device_.info().geometryShaderPassthrough};
+    // Build everything new first, so a failure leaves the current configuration intact.
+    VkPipeline pipeline = variant == variant_ ? VK_NULL_HANDLE : buildPipeline(variant);
+    DrawList list = buildDrawList(scene, technique, {config.searchBatch, config.sortDraws});
+    DrawBuffers buffers;
+    try {
+        buffers = uploadDraws(list, *config.mode);
+    } catch (...) {
+        if (pipeline) vkDestroyPipeline(device_.handle(), pipeline, nullptr);
+        throw;
+    }
+
     vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
-    if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
-    pipeline_ = pipeline;
-    technique_ = &technique;
-    mode_ = &mode;
-    draws_ = technique.buildDrawList(scene);
+    if (pipeline) {
+        if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
+        pipeline_ = pipeline;
+        variant_ = variant;
+    }
+    destroyDraws(drawBuffers_);
+    drawBuffers_ = buffers;
+    drawList_ = std::move(list);
+
+    stats_ = statsFor(drawList_, *config.mode);
+    stats_.gsPassthrough = variant_.passthrough;
 }
 
-VkPipeline Renderer::buildPipeline(const Technique& technique, const DrawMode& mode) const {
+VkPipeline Renderer::buildPipeline(const Variant& variant) const {
     std::vector<ShaderStage> stages;
     auto destroyModules = [&] {
         for (auto& s : stages) vkDestroyShaderModule(device_.handle(), s.module, nullptr);
     };
     try {
-        for (const auto& request : shaderVariants(technique, mode)) {
+        for (const auto& request : shaderVariants(*variant.technique, *variant.mode,
+                                                  {variant.searchCount, variant.passthrough})) {
             auto spirv = compiler_.compile(request);
             stages.push_back({request.stage, vk::createShaderModule(device_.handle(), spirv)});
             device_.name(VK_OBJECT_TYPE_SHADER_MODULE, stages.back().module, request.label());
         }
-        const std::string name = std::string(technique.name) + " + " + mode.name;
-        VkPipeline pipeline = createScenePipeline(device_, layout_, pass_.handle(), stages, name);
+        const std::string name = std::string(variant.technique->name) + " + " + variant.mode->name;
+        VkPipeline pipeline = createScenePipeline(device_, layout_, pass_.handle(), stages,
+                                                  variant.mode->drawIndexAttribute, name);
         destroyModules();
         return pipeline;
     } catch (...) {
@@ -62,9 +86,51 @@ VkPipeline Renderer::buildPipeline(const Technique& technique, const DrawMode& m
     }
 }
 
+Renderer::DrawBuffers Renderer::uploadDraws(const DrawList& list, const DrawMode& mode) const {
+    DrawBuffers b;
+    const VkBufferUsageFlags shaderRead =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+    try {
+        if (!list.idBytes.empty())
+            b.ids = vk::createBufferWithData(device_, list.idBytes.data(), list.idBytes.size(),
+                                             shaderRead, "technique ID data");
+        if (mode.indirect && !list.data.empty()) {
+            b.draws = vk::createBufferWithData(device_, list.data.data(),
+                                               list.data.size() * sizeof(gpu::DrawData), shaderRead,
+                                               "per-draw data");
+            std::vector<VkDrawIndexedIndirectCommand> commands;
+            commands.reserve(list.ranges.size());
+            for (uint32_t i = 0; i < list.ranges.size(); ++i) {
+                const DrawItem& d = list.ranges[i];
+                // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
+                commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
+            }
+            b.indirect = vk::createBufferWithData(
+                device_, commands.data(), commands.size() * sizeof(VkDrawIndexedIndirectCommand),
+                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
+            if (mode.drawIndexAttribute) {
+                std::vector<uint32_t> rows(list.ranges.size());
+                for (uint32_t i = 0; i < rows.size(); ++i) rows[i] = i;
+                b.drawIndices = vk::createBufferWithData(
+                    device_, rows.data(), rows.size() * sizeof(uint32_t),
+                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "draw index attribute");
+            }
+        }
+    } catch (...) {
+        destroyDraws(b);
+        throw;
+    }
+    return b;
+}
+
+void Renderer::destroyDraws(DrawBuffers& b) const {
+    for (vk::Buffer* buffer : {&b.ids, &b.draws, &b.indirect, &b.drawIndices})
+        vk::destroyBuffer(device_, *buffer);
+}
+
 void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
                       const FrameParams& params) const {
-    if (!pipeline_ || !sceneGpu_) throw vk::Error("Renderer::record before scene and technique");
+    if (!pipeline_ || !sceneGpu_) throw vk::Error("Renderer::record before setScene and configure");
     VkCommandBuffer cmd = slot.cmd;
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
@@ -76,6 +142,8 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
     frame.flags = params.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u;
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();
+    frame.idsAddress = drawBuffers_.ids.address;
+    frame.drawsAddress = drawBuffers_.draws.address;
     vkCmdUpdateBuffer(cmd, slot.frameData.buffer, 0, sizeof frame, &frame);
 
     auto toShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
@@ -107,25 +175,31 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &sceneGpu_->vertices().buffer, &zero);
+    if (drawBuffers_.drawIndices.buffer)
+        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &drawBuffers_.drawIndices.buffer,
+                               &zero);
     vkCmdBindIndexBuffer(cmd, sceneGpu_->indices().buffer, 0, VK_INDEX_TYPE_UINT32);
 
-    // The whole block once per frame (frame address, zeroed draw fields); draws change the tail.
+    // The whole block once per frame (frame address, zeroed draw); push mode changes the draw.
     gpu::DrawPush push{};
     push.frameAddress = slot.frameData.address;
     vkCmdPushConstants(cmd, layout_, pushStages, 0, sizeof push, &push);
-    recordDraws(cmd);
+    if (variant_.mode->indirect)
+        recordIndirectDraws(cmd);
+    else
+        recordPushDraws(cmd);
 
     vkCmdEndRenderPass(cmd);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps, 1);
 }
 
-// `push` mode: per draw, push only the span of DrawPush fields that differ from the last draw.
-void Renderer::recordDraws(VkCommandBuffer cmd) const {
-    constexpr uint32_t fieldCount = 3; // objectIndex, partIndex, drawIndex, as pushed zeroed
-    std::array<uint32_t, fieldCount> last{0, 0, 0};
-    for (uint32_t i = 0; i < draws_.size(); ++i) {
-        const DrawItem& draw = draws_[i];
-        const std::array<uint32_t, fieldCount> now{draw.object, draw.firstPart, i};
+// `push` mode: per draw, push only the span of DrawData fields that differ from the last draw.
+void Renderer::recordPushDraws(VkCommandBuffer cmd) const {
+    constexpr uint32_t fieldCount = sizeof(gpu::DrawData) / sizeof(uint32_t);
+    std::array<uint32_t, fieldCount> last{}; // as pushed, zeroed, at the start of the frame
+    for (size_t i = 0; i < drawList_.ranges.size(); ++i) {
+        std::array<uint32_t, fieldCount> now;
+        std::memcpy(now.data(), &drawList_.data[i], sizeof(gpu::DrawData));
         uint32_t first = fieldCount, end = 0;
         for (uint32_t f = 0; f < fieldCount; ++f)
             if (now[f] != last[f]) {
@@ -134,11 +208,22 @@ void Renderer::recordDraws(VkCommandBuffer cmd) const {
             }
         if (first < end)
             vkCmdPushConstants(cmd, layout_, pushStages,
-                               gpu::DRAW_PUSH_TAIL_OFFSET + first * sizeof(uint32_t),
+                               gpu::DRAW_PUSH_DRAW_OFFSET + first * sizeof(uint32_t),
                                (end - first) * sizeof(uint32_t), &now[first]);
         last = now;
-        vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+        const DrawItem& d = drawList_.ranges[i];
+        vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
     }
+}
+
+// mdi modes: the whole draw list in as few indirect calls as the device's limit allows.
+void Renderer::recordIndirectDraws(VkCommandBuffer cmd) const {
+    const uint32_t total = static_cast<uint32_t>(drawList_.ranges.size());
+    const uint32_t limit = std::max(1u, device_.info().maxDrawIndirectCount);
+    constexpr uint32_t stride = sizeof(VkDrawIndexedIndirectCommand);
+    for (uint32_t first = 0; first < total; first += limit)
+        vkCmdDrawIndexedIndirect(cmd, drawBuffers_.indirect.buffer, VkDeviceSize(first) * stride,
+                                 std::min(limit, total - first), stride);
 }
 
 } // namespace render

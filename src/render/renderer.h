@@ -1,6 +1,6 @@
 // renderer.h - draws a scene into the scene pass with one part-ID technique and per-draw
-// mode. Pipelines and draw lists are built when the scene or technique changes, never per
-// frame; record() only writes commands.
+// mode. Pipelines, draw lists, ID, per-draw and indirect buffers are built when the scene,
+// technique, mode or search batch changes, never per frame; record() only writes commands.
 #pragma once
 
 #include <memory>
@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/draw_list.h"
 #include "render/frame_slots.h"
 #include "render/scene_gpu.h"
 #include "render/targets.h"
@@ -23,6 +24,14 @@ struct FrameParams {
     bool colorizeDraws = false;
 };
 
+struct RenderConfig {
+    const Technique* technique = nullptr;
+    const DrawMode* mode = nullptr;
+    uint32_t searchBatch = 16;
+    bool sortDraws = true;
+    bool gsPassthrough = true; // used where the device offers VK_NV_geometry_shader_passthrough
+};
+
 class Renderer {
   public:
     Renderer(vk::Device& device, const vk::ShaderCompiler& compiler, const ScenePass& pass);
@@ -30,31 +39,45 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Uploads the scene (the Renderer keeps no reference to it) and rebuilds the draw list.
+    // Uploads the scene's geometry, objects and materials; configure() must follow.
     void setScene(const scene::Scene& scene);
-    // Compiles the technique's pipeline; on a compile error the previous one stays.
-    void setTechnique(const Technique& technique, const DrawMode& mode, const scene::Scene& scene);
+    // Builds what `config` needs for `scene`. The pipeline is rebuilt only when its shader
+    // variant changes; a compile error throws and leaves the previous configuration working.
+    void configure(const scene::Scene& scene, const RenderConfig& config);
 
     // Records the scene pass with timestamps around it into the slot's command buffer.
     void record(FrameSlot& slot, const SceneTargets& targets, const FrameParams& params) const;
 
-    size_t drawCount() const { return draws_.size(); }
-    const Technique* technique() const { return technique_; }
-    const DrawMode* mode() const { return mode_; }
+    const RenderStats& stats() const { return stats_; }
 
   private:
-    VkPipeline buildPipeline(const Technique& technique, const DrawMode& mode) const;
-    void recordDraws(VkCommandBuffer cmd) const;
+    struct Variant {
+        const Technique* technique = nullptr;
+        const DrawMode* mode = nullptr;
+        uint32_t searchCount = 0;
+        bool passthrough = false;
+        bool operator==(const Variant&) const = default;
+    };
+    struct DrawBuffers {
+        vk::Buffer ids, draws, indirect, drawIndices;
+    };
+
+    VkPipeline buildPipeline(const Variant& variant) const;
+    DrawBuffers uploadDraws(const DrawList& list, const DrawMode& mode) const;
+    void destroyDraws(DrawBuffers& buffers) const;
+    void recordPushDraws(VkCommandBuffer cmd) const;
+    void recordIndirectDraws(VkCommandBuffer cmd) const;
 
     vk::Device& device_;
     const vk::ShaderCompiler& compiler_;
     const ScenePass& pass_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
-    const Technique* technique_ = nullptr;
-    const DrawMode* mode_ = nullptr;
+    Variant variant_;
     std::unique_ptr<SceneGpu> sceneGpu_;
-    std::vector<DrawItem> draws_;
+    DrawList drawList_;
+    DrawBuffers drawBuffers_;
+    RenderStats stats_;
 };
 
 } // namespace render

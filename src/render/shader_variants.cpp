@@ -1,25 +1,45 @@
-// shader_variants.cpp - technique and mode defines combined into compile requests.
+// shader_variants.cpp - technique and mode choices turned into defines and include aliases.
 #include "render/shader_variants.h"
+
+#include <map>
+#include <string>
 
 namespace render {
 
-std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const DrawMode& mode) {
-    auto defines = technique.defines;
-    defines.insert(defines.end(), mode.defines.begin(), mode.defines.end());
-    vk::ShaderRequest vertex{"scene.vert", VK_SHADER_STAGE_VERTEX_BIT, defines, {}};
-    vk::ShaderRequest fragment{"scene.frag",
-                               VK_SHADER_STAGE_FRAGMENT_BIT,
-                               defines,
-                               {{"technique.glsl", technique.shaderFile}}};
-    return {vertex, fragment};
+std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const DrawMode& mode,
+                                              const VariantOptions& options) {
+    const bool inGeometry = technique.stage == LookupStage::Geometry;
+    // Every switch the shaders test is defined, 0 or 1: GLSL has no implicit 0 in #if.
+    std::vector<std::pair<std::string, std::string>> defines;
+    for (const auto& m : drawModes()) defines.push_back({m.define, &m == &mode ? "1" : "0"});
+    defines.push_back({"IDV_LOOKUP_IN_GS", inGeometry ? "1" : "0"});
+    defines.push_back({"IDV_GS_PASSTHROUGH", inGeometry && options.gsPassthrough ? "1" : "0"});
+    const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
+    defines.push_back(
+        {"IDV_SEARCH_COUNT", std::to_string(searches ? options.searchCount : 1) + "u"});
+
+    const std::map<std::string, std::string> aliases = {{"technique.glsl", technique.lookupFile}};
+    std::vector<vk::ShaderRequest> requests;
+    requests.push_back({"scene.vert", VK_SHADER_STAGE_VERTEX_BIT, defines, aliases});
+    if (inGeometry)
+        requests.push_back({"scene.geom", VK_SHADER_STAGE_GEOMETRY_BIT, defines, aliases});
+    requests.push_back({"scene.frag", VK_SHADER_STAGE_FRAGMENT_BIT, defines, aliases});
+    return requests;
 }
 
 std::vector<vk::ShaderRequest> allShaderVariants() {
     std::vector<vk::ShaderRequest> all;
+    auto add = [&](const Technique& t, const DrawMode& m, VariantOptions o) {
+        auto variants = shaderVariants(t, m, o);
+        all.insert(all.end(), variants.begin(), variants.end());
+    };
     for (const auto& technique : techniques())
         for (const auto& mode : drawModes()) {
-            auto variants = shaderVariants(technique, mode);
-            all.insert(all.end(), variants.begin(), variants.end());
+            const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
+            for (uint32_t count = 1; count <= (searches ? 32u : 1u); ++count) {
+                add(technique, mode, {count, false});
+                if (technique.stage == LookupStage::Geometry) add(technique, mode, {count, true});
+            }
         }
     return all;
 }

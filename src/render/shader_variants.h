@@ -9,10 +9,17 @@
 
 namespace render {
 
-// Vertex stage first, fragment stage last.
-std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const DrawMode& mode);
+struct VariantOptions {
+    uint32_t searchCount = 16;  // the unrolled loop length of the search techniques
+    bool gsPassthrough = false; // VK_NV_geometry_shader_passthrough for the gs techniques
+};
 
-// Every request the program can make, over all techniques and modes.
+// Vertex stage first, then geometry (gs techniques), fragment last.
+std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const DrawMode& mode,
+                                              const VariantOptions& options);
+
+// Every request the program can make: all techniques and modes, every search batch size for
+// the search techniques, and both geometry shader forms for the gs techniques.
 std::vector<vk::ShaderRequest> allShaderVariants();
 
 } // namespace render

@@ -21,19 +21,41 @@ const Entry* findByName(const std::vector<Entry>& entries, const std::string& na
 } // namespace
 
 const std::vector<Technique>& techniques() {
+    using enum LookupStage;
     static const std::vector<Technique> list = {
-        {"per-draw",
-         "one draw per part; the draw carries the part index",
-         "techniques/per_draw.glsl",
-         {},
-         scene::drawsPerPart},
+        {"per-draw", "one draw per part; the draw carries the part index",
+         "techniques/per_draw.glsl", Fragment, IdBuffer::None, DrawSplit::PerPart},
+        {"tri-fs", "one draw per object; part index per triangle, read in the fragment shader",
+         "techniques/triangle_ids.glsl", Fragment, IdBuffer::TrianglePartIds, DrawSplit::PerObject},
+        {"tri-gs", "one draw per object; part index per triangle, read in a geometry shader",
+         "techniques/triangle_ids.glsl", Geometry, IdBuffer::TrianglePartIds, DrawSplit::PerObject},
+        {"search-fs",
+         "draws of up to search-batch parts; fragment shader searches their triangle counts",
+         "techniques/batch_search.glsl", Fragment, IdBuffer::PartTriangleCounts,
+         DrawSplit::PerBatch},
+        {"search-gs",
+         "draws of up to search-batch parts; geometry shader searches their triangle counts",
+         "techniques/batch_search.glsl", Geometry, IdBuffer::PartTriangleCounts,
+         DrawSplit::PerBatch},
+        {"bsearch-fs",
+         "one draw per object; fragment shader binary-searches running triangle offsets",
+         "techniques/binary_search.glsl", Fragment, IdBuffer::PartTriangleOffsets,
+         DrawSplit::PerObject},
     };
     return list;
 }
 
 const std::vector<DrawMode>& drawModes() {
     static const std::vector<DrawMode> list = {
-        {"push", "push constants per draw; only what changed is pushed", {{"IDV_MODE_PUSH", "1"}}},
+        {"push", "push constants per draw; only the fields that changed are pushed",
+         "IDV_MODE_PUSH", false, false},
+        {"mdi-baseinstance",
+         "one multi-draw-indirect per pipeline; shaders index a per-draw buffer by "
+         "gl_InstanceIndex",
+         "IDV_MODE_MDI_BASEINSTANCE", true, false},
+        {"mdi-attribute",
+         "one multi-draw-indirect per pipeline; the draw index is an instanced vertex attribute",
+         "IDV_MODE_MDI_ATTRIBUTE", true, true},
     };
     return list;
 }

@@ -1,6 +1,6 @@
 // technique.h - the part-ID techniques and per-draw modes as data. Adding a technique means
-// one entry in techniques() (technique.cpp), its GLSL file in shaders/techniques/, and its
-// name in the test lists; nothing else switches on technique names.
+// one entry in techniques() (technique.cpp), its lookup file in shaders/techniques/ if it
+// needs a new one, and its name in the test lists; nothing else switches on technique names.
 #pragma once
 
 #include <string>
@@ -14,20 +14,35 @@ namespace render {
 // One draw call: a range of parts of one object's geometry (scene/part_data.h).
 using DrawItem = scene::DrawRange;
 
+// The ID data a technique's shaders read (scene/part_data.h builds each).
+enum class IdBuffer {
+    None,                // the draw names its part
+    TrianglePartIds,     // part index per triangle
+    PartTriangleCounts,  // triangle count per part, padded for the search loop
+    PartTriangleOffsets, // running triangle offset per part
+};
+
+enum class DrawSplit { PerPart, PerObject, PerBatch };
+
+// Where the part lookup runs: the fragment shader, or a geometry shader once per triangle.
+enum class LookupStage { Fragment, Geometry };
+
 struct Technique {
     const char* name;        // as the CLI spells it
     const char* description; // one line for --list-renderers and the panel
-    const char* shaderFile;  // the file scene.frag includes as "technique.glsl"
-    std::vector<std::pair<std::string, std::string>> defines;
-    // How the technique splits the scene into draws.
-    std::vector<DrawItem> (*buildDrawList)(const scene::Scene& scene);
+    const char* lookupFile;  // defines lookupLocalPart(); included as "technique.glsl"
+    LookupStage stage;
+    IdBuffer ids;
+    DrawSplit split;
 };
 
 // How per-draw parameters reach the shaders.
 struct DrawMode {
     const char* name;
     const char* description;
-    std::vector<std::pair<std::string, std::string>> defines;
+    const char* define;      // IDV_MODE_* set to 1 (the others to 0)
+    bool indirect;           // one multi-draw-indirect call per pipeline
+    bool drawIndexAttribute; // the draw index comes from an instanced vertex attribute
 };
 
 const std::vector<Technique>& techniques();

@@ -153,7 +153,12 @@ Device::Device(const Instance& instance, const DeviceInfo& info)
     features.features.drawIndirectFirstInstance = VK_TRUE;
     features.features.fragmentStoresAndAtomics = VK_TRUE;
 
+    std::vector<const char*> extensions;
+    if (info.geometryShaderPassthrough)
+        extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
     auto create = vk::init<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
+    create.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    create.ppEnabledExtensionNames = extensions.data();
     create.pNext = &features;
     create.queueCreateInfoCount = 1;
     create.pQueueCreateInfos = &queue;

@@ -22,6 +22,17 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     info.driverVersion = props.driverVersion;
     info.vendorId = props.vendorID;
     info.timestampPeriodNs = props.limits.timestampPeriod;
+    info.maxDrawIndirectCount = props.limits.maxDrawIndirectCount;
+
+    uint32_t extensionCount = 0;
+    check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extensionCount, nullptr),
+          "vkEnumerateDeviceExtensionProperties");
+    std::vector<VkExtensionProperties> extensions(extensionCount);
+    check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extensionCount, extensions.data()),
+          "vkEnumerateDeviceExtensionProperties");
+    for (const auto& e : extensions)
+        if (std::string(e.extensionName) == VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME)
+            info.geometryShaderPassthrough = true;
 
     const bool vulkan12 = props.apiVersion >= VK_API_VERSION_1_2;
     if (vulkan12) {

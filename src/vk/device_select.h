@@ -32,6 +32,10 @@ struct DeviceInfo {
     // A queue family with graphics and timestamps; UINT32_MAX if there is none.
     uint32_t graphicsQueueFamily = UINT32_MAX;
     float timestampPeriodNs = 0.0f;
+
+    // Optional, used when present.
+    bool geometryShaderPassthrough = false; // VK_NV_geometry_shader_passthrough
+    uint32_t maxDrawIndirectCount = 1;
 };
 
 // Reads everything above from the driver.
