@@ -121,19 +121,30 @@ std::string nameOf(const ::testing::TestParamInfo<Combination>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Lavapipe, AllTechniques, ::testing::ValuesIn(combinations()), nameOf);
 
-// The search techniques rebuild their batches and pipeline for another batch size and still
-// agree with the reference; draws follow ceil(parts / batch).
-TEST(SearchBatch, EverySizeGivesTheSameIds) {
+// One renderer switched at run time between search batch sizes, techniques and modes
+// rebuilds batches and pipelines and still agrees with the reference; draws follow
+// ceil(parts / batch).
+TEST(SearchBatch, ChangesAtRunTimeKeepIdsAndFollowTheFormula) {
     Reference& ref = reference("small-x2");
-    for (uint32_t batch : {1u, 7u, 32u}) {
-        app::Options o = renderOptions("search-fs", "mdi-baseinstance");
-        o.searchBatch = batch;
-        app::HeadlessResult r = app::renderHeadless(o, ref.loaded.scene, ref.camera);
-        EXPECT_EQ(r.validationMessages, 0u);
-        EXPECT_EQ(r.ids, ref.image.ids) << "batch " << batch;
-        EXPECT_EQ(r.stats.draws,
-                  expectedDraws(*render::findTechnique("search-fs"), ref.loaded.scene, batch));
+    const uint32_t batches[] = {16, 1, 7, 32, 16};
+    std::vector<render::RenderConfig> configs;
+    for (uint32_t batch : batches) {
+        render::RenderConfig config;
+        config.technique = render::findTechnique(batch == 7 ? "search-gs" : "search-fs");
+        config.mode = render::findDrawMode(batch == 1 ? "mdi-attribute" : "mdi-baseinstance");
+        config.searchBatch = batch;
+        configs.push_back(config);
     }
+    app::Options o = renderOptions("search-fs", "mdi-baseinstance");
+    auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
+    ASSERT_EQ(results.size(), configs.size());
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    for (size_t i = 0; i < results.size(); ++i) {
+        EXPECT_EQ(results[i].ids, ref.image.ids) << "batch " << batches[i];
+        EXPECT_EQ(results[i].stats.draws,
+                  expectedDraws(*configs[i].technique, ref.loaded.scene, batches[i]));
+    }
+    EXPECT_GT(results[1].stats.draws, results[0].stats.draws); // batch 1: one draw per part
 }
 
 } // namespace

@@ -77,18 +77,15 @@ render::RenderConfig renderConfig(const Options& options) {
     return config;
 }
 
-HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
-                              const scene::Camera& camera) {
-    const render::RenderConfig config = renderConfig(options);
-
-    HeadlessResult result;
-    result.width = options.width;
-    result.height = options.height;
+std::vector<HeadlessResult>
+renderHeadlessSequence(const Options& options, const scene::Scene& scene,
+                       const scene::Camera& camera,
+                       const std::vector<render::RenderConfig>& configs) {
+    std::vector<HeadlessResult> results(configs.size());
     vk::Instance instance({options.validation, {}});
     {
         const auto devices = instance.devices();
         vk::Device device(instance, vk::chooseDevice(devices, options.device));
-        result.deviceName = device.info().name;
         vk::ShaderCompiler compiler(vk::ShaderCompiler::locate(options.shaderDir));
         render::ScenePass pass(device);
         const VkExtent2D extent{options.width, options.height};
@@ -96,8 +93,6 @@ HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
         render::FrameSlots slots(device);
         render::Renderer renderer(device, compiler, pass);
         renderer.setScene(scene);
-        renderer.configure(scene, config);
-        result.stats = renderer.stats();
         Readback readback(device, extent);
 
         render::FrameParams params;
@@ -105,23 +100,39 @@ HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
         params.eye = camera.eye;
         params.partColorWeight = options.partWeight;
         params.colorizeDraws = options.colorizeDraws;
-        for (uint32_t frame = 0; frame < options.frames; ++frame) {
-            render::FrameSlot& slot = slots.begin(frame);
-            renderer.record(slot, targets, params);
-            if (frame + 1 == options.frames) readback.record(slot.cmd, targets);
-            slots.submit(slot);
+        uint64_t frameNumber = 0;
+        for (size_t c = 0; c < configs.size(); ++c) {
+            HeadlessResult& result = results[c];
+            result.width = extent.width;
+            result.height = extent.height;
+            result.deviceName = device.info().name;
+            renderer.configure(scene, configs[c]); // the same renderer, reconfigured
+            result.stats = renderer.stats();
+            const size_t timedBefore = slots.gpuMilliseconds().size();
+            for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
+                render::FrameSlot& slot = slots.begin(frameNumber);
+                renderer.record(slot, targets, params);
+                if (frame + 1 == options.frames) readback.record(slot.cmd, targets);
+                slots.submit(slot);
+            }
+            slots.finish();
+            result.gpuMs.assign(slots.gpuMilliseconds().begin() + long(timedBefore),
+                                slots.gpuMilliseconds().end());
+            const size_t pixels = size_t(extent.width) * extent.height;
+            result.color.resize(pixels * 4);
+            result.ids.resize(pixels);
+            std::memcpy(result.color.data(), readback.color.mapped, pixels * 4);
+            std::memcpy(result.ids.data(), readback.ids.mapped, pixels * 4);
         }
-        slots.finish();
-        result.gpuMs = slots.gpuMilliseconds();
-
-        const size_t pixels = size_t(extent.width) * extent.height;
-        result.color.resize(pixels * 4);
-        result.ids.resize(pixels);
-        std::memcpy(result.color.data(), readback.color.mapped, pixels * 4);
-        std::memcpy(result.ids.data(), readback.ids.mapped, pixels * 4);
     }
-    result.validationMessages = instance.validationMessages();
-    return result;
+    for (HeadlessResult& result : results)
+        result.validationMessages = instance.validationMessages();
+    return results;
+}
+
+HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
+                              const scene::Camera& camera) {
+    return renderHeadlessSequence(options, scene, camera, {renderConfig(options)}).front();
 }
 
 int runHeadless(const Options& options) {
@@ -136,10 +147,11 @@ int runHeadless(const Options& options) {
         writePng(options.screenshot, result.width, result.height, result.color);
     if (!options.idImage.empty()) writeIdImage(options.idImage, result.ids);
 
-    std::printf("idview: %u frames of %ux%u on %s, %s + %s: %zu draws, %llu triangles, %u parts, "
+    std::printf("idview: %u frames of %ux%u on %s, %s%s + %s: %zu draws, %llu triangles, %u parts, "
                 "scene pass GPU median %.3f ms\n",
                 options.frames, result.width, result.height, result.deviceName.c_str(),
-                options.renderer.c_str(), options.mode.c_str(), result.stats.draws,
+                options.renderer.c_str(), result.stats.gsPassthrough ? " (passthrough)" : "",
+                options.mode.c_str(), result.stats.draws,
                 static_cast<unsigned long long>(scene.drawnTriangleCount()),
                 scene.uniquePartCount(), median(result.gpuMs));
     if (result.validationMessages > 0) {

@@ -30,6 +30,14 @@ render::RenderConfig renderConfig(const Options& options);
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 
+// The same with one device and one renderer, reconfigured for each entry of `configs` in
+// turn (as the viewer switches techniques at run time). validationMessages counts the whole
+// sequence.
+std::vector<HeadlessResult>
+renderHeadlessSequence(const Options& options, const scene::Scene& scene,
+                       const scene::Camera& camera,
+                       const std::vector<render::RenderConfig>& configs);
+
 // `idview --headless`: renders, writes the requested files, prints a summary line and returns
 // the exit code (3 when validation reported anything).
 int runHeadless(const Options& options);
