@@ -3,6 +3,7 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_control_flow_attributes : require
+#extension GL_EXT_shader_atomic_int64 : require
 
 #include "shared.h"
 
@@ -21,6 +22,11 @@ layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer Dra
 };
 layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer UintsRef {
     uint values[];
+};
+
+// Written only by the fragment at the pick pixel; `last` is read by every fragment.
+layout(buffer_reference, std430, buffer_reference_align = 8) buffer PickRef {
+    PickData pick;
 };
 
 layout(push_constant, std430) uniform PushBlock {

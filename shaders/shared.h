@@ -44,6 +44,9 @@ IDV_CONST BACKGROUND_ID = 0xFFFFFFFFu;
 // FrameData::flags bits.
 IDV_CONST FRAME_COLORIZE_DRAWS = 1u;
 
+// FrameData::pickPixel.x when no pixel is picked this frame.
+IDV_CONST NO_PICK = 0xFFFFFFFFu;
+
 // One vertex of the shared vertex buffer. Each CAD face has its own vertices, so normals
 // are per face and edges stay hard.
 struct Vertex {
@@ -62,7 +65,26 @@ struct FrameData {
     uint64_t materialsAddress; // Material[]
     uint64_t idsAddress;       // the technique's ID buffer (see DrawData::idsOffset), or 0
     uint64_t drawsAddress;     // DrawData[] of the mdi modes, or 0
+    uint64_t pickAddress;      // PickData, shared by all frames (see PickData)
+    uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
+    uint selectedPart;         // unique part ID drawn with the steady highlight, or BACKGROUND_ID
+    float time;                // seconds, drives the blink of the hovered part
+    uvec2 padding;             // std430 rounds the struct to 16 bytes: say so explicitly
 };
+
+// The pick: during the scene pass, fragments at FrameData::pickPixel atomicMin `current` with
+// (depth bits << 32 | unique part ID); positive floats order like their bits, so the nearest
+// surface wins. After the pass `current` is copied to `last`, which the next frame's shading
+// reads to highlight the hovered part, and to the frame slot's host-visible readback.
+struct PickData {
+    uint64_t current; // reset to PICK_NONE before each pass
+    uint64_t last;
+};
+#ifdef __cplusplus
+constexpr uint64_t PICK_NONE = ~uint64_t(0);
+#else
+const uint64_t PICK_NONE = 0xFFFFFFFFFFFFFFFFul;
+#endif
 
 // What one draw of a draw list needs. `push` mode pushes it; the mdi modes read it from the
 // per-draw buffer at the draw's index.
@@ -102,7 +124,8 @@ IDV_CONST DRAW_PUSH_DRAW_OFFSET = 8;
 
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 128 && offsetof(FrameData, drawsAddress) == 120);
+static_assert(sizeof(FrameData) == 160 && offsetof(FrameData, pickPixel) == 136);
+static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(DrawData) == 24);
 static_assert(sizeof(ObjectData) == 144);
 static_assert(sizeof(Material) == 16);

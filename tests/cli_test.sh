@@ -67,6 +67,28 @@ fi
 [[ $(head -c 4 "$work/t.ids" | od -An -tx1 | tr -d ' \n') == ffffffff ]] &&
     echo "ok   id-image-top-left" || { echo "FAIL id-image-top-left"; failures=$((failures + 1)); }
 
+# --pick: one JSON line per point on stdout, naming the part the ID image holds there (in
+# the right format) and null on background.
+picks=$("$idview" --headless --validation --scene tiles --size 160x100 --frames 1 \
+    --pick 80,50 --pick 0,0 --pick 40,30 --id-image "$work/p.ids" 2>/dev/null)
+pick_ok=1
+[[ $(wc -l <<<"$picks") -eq 3 ]] || pick_ok=0
+while read -r line; do
+    x=$(sed -E 's/.*"x":([0-9]+).*/\1/' <<<"$line")
+    y=$(sed -E 's/.*"y":([0-9]+).*/\1/' <<<"$line")
+    id=$(od -An -tu4 -j $(((y * 160 + x) * 4)) -N4 "$work/p.ids" | tr -d ' ')
+    if [[ $id == 4294967295 ]]; then
+        [[ $line == "{\"x\":$x,\"y\":$y,\"part\":null,\"object\":null,\"local_part\":null,\"depth\":null}" ]] ||
+            pick_ok=0
+    else
+        [[ $line =~ ^\{\"x\":$x,\"y\":$y,\"part\":$id,\"object\":[0-9]+,\"local_part\":[0-9]+,\"depth\":0\.[0-9]+\}$ ]] ||
+            pick_ok=0
+    fi
+done <<<"$picks"
+[[ $pick_ok -eq 1 && $picks == *'"part":null'* && $picks == *'"part":'[0-9]* ]] && echo "ok   pick-json" ||
+    { echo "FAIL pick-json:"; echo "$picks"; failures=$((failures + 1)); }
+expect pick-outside 2 'pixel 200,10 is outside the 160x100 image' -- "$idview" --headless --size 160x100 --pick 200,10
+
 # Without --headless (no window yet) idview says so and renders the default scene to idview.png.
 (cd "$work" && expect default-run 0 'not built yet.*idview.png' -- "$idview" --frames 1 --size 64x48)
 [[ -s $work/idview.png ]] && echo "ok   default-run-png" ||

@@ -36,6 +36,13 @@ void parseSize(const std::string& text, Options& o) {
     o.height = parseCount("--size height", text.substr(x + 1), 1, 16384);
 }
 
+Options::Pixel parsePixel(const std::string& flag, const std::string& text) {
+    auto comma = text.find(',');
+    if (comma == std::string::npos) throw UsageError(flag + " expects X,Y, not '" + text + "'");
+    return {parseCount(flag + " x", text.substr(0, comma), 0, 16383),
+            parseCount(flag + " y", text.substr(comma + 1), 0, 16383)};
+}
+
 struct Flag {
     const char* name;
     const char* value; // nullptr for a switch
@@ -115,6 +122,13 @@ const std::vector<Flag>& flags() {
          "VK_NV_geometry_shader_passthrough "
          "is offered",
          [](Options& o, auto&) { o.gsPassthrough = false; }},
+        {"--pick", "X,Y",
+         "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
+         "{x,y,part,object,local_part,depth}; repeatable; the last point stays hovered in "
+         "the images",
+         [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
+        {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
+         [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
         {"--list-renderers", nullptr, "print the renderers and modes, then exit",
          [](Options& o, auto&) { o.listRenderers = true; }},
         {"--validation", nullptr, "enable the Khronos validation layer; messages make exit 3",
@@ -154,6 +168,15 @@ Options parseArgs(const std::vector<std::string>& args) {
         }
         flag->apply(options, value);
     }
+    auto outside = [&](const Options::Pixel& p) {
+        return p.x >= options.width || p.y >= options.height;
+    };
+    for (const auto* list : {&options.picks, &options.selects})
+        for (const auto& p : *list)
+            if (outside(p))
+                throw UsageError("pixel " + std::to_string(p.x) + "," + std::to_string(p.y) +
+                                 " is outside the " + std::to_string(options.width) + "x" +
+                                 std::to_string(options.height) + " image");
     return options;
 }
 

@@ -35,6 +35,14 @@ struct Options {
     bool sortDraws = true;     // by geometry, then material
     bool gsPassthrough = true; // where the device offers it
     std::string shaderDir;
+    // Headless picking: one frame per point picks it and prints a JSON line; `select` is
+    // picked first and selected as a click there would (steady highlight in the images).
+    struct Pixel {
+        uint32_t x = 0, y = 0;
+        bool operator==(const Pixel&) const = default;
+    };
+    std::vector<Pixel> picks;
+    std::vector<Pixel> selects; // at most one; a vector keeps "not given" apart from 0,0
 };
 
 // A bad command line: main() prints the message and the usage, and exits 2.

@@ -58,6 +58,19 @@ struct Readback {
     }
 };
 
+std::string pickJson(const scene::Scene& scene, const render::PickReading& pick) {
+    char head[64];
+    std::snprintf(head, sizeof head, "{\"x\":%u,\"y\":%u,", pick.pixel.x, pick.pixel.y);
+    const auto info = pick.part ? scene::describePart(scene, *pick.part) : std::nullopt;
+    if (!info)
+        return std::string(head) + "\"part\":null,\"object\":null,\"local_part\":null,"
+                                   "\"depth\":null}";
+    char body[160];
+    std::snprintf(body, sizeof body, "\"part\":%u,\"object\":%u,\"local_part\":%u,\"depth\":%.9g}",
+                  info->uniquePartId, info->object, info->localPart, double(pick.depth));
+    return std::string(head) + body;
+}
+
 double median(std::vector<double> values) {
     if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
@@ -101,6 +114,16 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
         params.partColorWeight = options.partWeight;
         params.colorizeDraws = options.colorizeDraws;
         uint64_t frameNumber = 0;
+        // One frame that picks `pixel`, waited for: headless has nothing else to overlap.
+        auto pickFrame = [&](const Options::Pixel& pixel) {
+            render::FrameParams pickParams = params;
+            pickParams.pickPixel = glm::uvec2(pixel.x, pixel.y);
+            render::FrameSlot& slot = slots.begin(frameNumber++);
+            renderer.record(slot, targets, pickParams);
+            slots.submit(slot);
+            slots.finish();
+            return *slots.latestPick();
+        };
         for (size_t c = 0; c < configs.size(); ++c) {
             HeadlessResult& result = results[c];
             result.width = extent.width;
@@ -108,6 +131,16 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             result.deviceName = device.info().name;
             renderer.configure(scene, configs[c]); // the same renderer, reconfigured
             result.stats = renderer.stats();
+            params.selectedPart = gpu::BACKGROUND_ID;
+            params.pickPixel.reset();
+            for (const auto& pixel : options.selects) {
+                result.selected = pickFrame(pixel).part;
+                params.selectedPart = result.selected.value_or(gpu::BACKGROUND_ID);
+            }
+            for (const auto& pixel : options.picks) {
+                result.picks.push_back(pickFrame(pixel));
+                params.pickPixel = result.picks.back().pixel;
+            }
             const size_t timedBefore = slots.gpuMilliseconds().size();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
@@ -146,14 +179,18 @@ int runHeadless(const Options& options) {
     if (!options.screenshot.empty())
         writePng(options.screenshot, result.width, result.height, result.color);
     if (!options.idImage.empty()) writeIdImage(options.idImage, result.ids);
+    for (const auto& pick : result.picks) std::printf("%s\n", pickJson(scene, pick).c_str());
 
-    std::printf("idview: %u frames of %ux%u on %s, %s%s + %s: %zu draws, %llu triangles, %u parts, "
-                "scene pass GPU median %.3f ms\n",
-                options.frames, result.width, result.height, result.deviceName.c_str(),
-                options.renderer.c_str(), result.stats.gsPassthrough ? " (passthrough)" : "",
-                options.mode.c_str(), result.stats.draws,
-                static_cast<unsigned long long>(scene.drawnTriangleCount()),
-                scene.uniquePartCount(), median(result.gpuMs));
+    // With picks, stdout carries only their JSON lines; the summary goes to stderr.
+    std::fprintf(
+        options.picks.empty() ? stdout : stderr,
+        "idview: %u frames of %ux%u on %s, %s%s + %s: %zu draws, %llu triangles, %u parts, "
+        "scene pass GPU median %.3f ms\n",
+        options.frames, result.width, result.height, result.deviceName.c_str(),
+        options.renderer.c_str(), result.stats.gsPassthrough ? " (passthrough)" : "",
+        options.mode.c_str(), result.stats.draws,
+        static_cast<unsigned long long>(scene.drawnTriangleCount()), scene.uniquePartCount(),
+        median(result.gpuMs));
     if (result.validationMessages > 0) {
         std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
                      result.validationMessages);

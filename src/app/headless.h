@@ -2,6 +2,7 @@
 // renderer the window uses. Used by `idview --headless` and, in-process, by the tests.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct HeadlessResult {
     std::vector<uint8_t> color; // RGBA8 of the last frame, top row first
     std::vector<uint32_t> ids;  // unique part IDs of the last frame, gpu::BACKGROUND_ID if none
     std::vector<double> gpuMs;  // scene pass time of each frame
+    std::vector<render::PickReading> picks; // one per Options::picks entry, in order
+    std::optional<uint32_t> selected;       // the part Options::selects picked, if any
     std::string deviceName;
     render::RenderStats stats;
     uint32_t validationMessages = 0; // counted until the device is destroyed
@@ -26,6 +29,8 @@ struct HeadlessResult {
 render::RenderConfig renderConfig(const Options& options);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
+// Picks come first: Options::selects (one frame, its part becomes the selection), then one
+// frame per Options::picks entry; the timed frames keep the last pick point hovered.
 // Throws vk::Error / vk::ShaderError with a message for people.
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);

@@ -1,6 +1,7 @@
 // frame_slots.cpp - fences, command buffers and timestamp reads of the frames in flight.
 #include "render/frame_slots.h"
 
+#include <cstring>
 #include <string>
 
 #include "shared.h"
@@ -53,6 +54,10 @@ void FrameSlots::create() {
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                  VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
                              0, "frame data" + suffix);
+        slot.pickReadback = vk::createBuffer(
+            device, sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+            "pick readback" + suffix);
     }
 }
 
@@ -65,6 +70,7 @@ void FrameSlots::release() {
     VkDevice dev = device_.handle();
     for (FrameSlot& slot : slots_) {
         vk::destroyBuffer(device_, slot.frameData);
+        vk::destroyBuffer(device_, slot.pickReadback);
         if (slot.timestamps) vkDestroyQueryPool(dev, slot.timestamps, nullptr);
         if (slot.done) vkDestroyFence(dev, slot.done, nullptr);
         if (slot.pool) vkDestroyCommandPool(dev, slot.pool, nullptr);
@@ -76,8 +82,10 @@ FrameSlot& FrameSlots::begin(uint64_t frameNumber) {
     FrameSlot& slot = slots_[frameNumber % count];
     VkDevice dev = device_.handle();
     vk::check(vkWaitForFences(dev, 1, &slot.done, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-    collectTimings(slot);
+    collect(slot);
     vk::check(vkResetFences(dev, 1, &slot.done), "vkResetFences");
+    slot.frameNumber = frameNumber;
+    slot.pickPixel.reset();
     vk::check(vkResetCommandPool(dev, slot.pool, 0), "vkResetCommandPool");
     auto info = vk::init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -106,13 +114,18 @@ void FrameSlots::finish() {
     for (FrameSlot& slot : slots_) {
         vk::check(vkWaitForFences(device_.handle(), 1, &slot.done, VK_TRUE, UINT64_MAX),
                   "vkWaitForFences");
-        collectTimings(slot);
+        collect(slot);
     }
 }
 
-void FrameSlots::collectTimings(FrameSlot& slot) {
+void FrameSlots::collect(FrameSlot& slot) {
     if (!slot.submitted) return;
     slot.submitted = false;
+    if (slot.pickPixel && (!latestPick_ || latestPick_->frame < slot.frameNumber)) {
+        uint64_t value;
+        std::memcpy(&value, slot.pickReadback.mapped, sizeof value);
+        latestPick_ = decodePick(value, slot.frameNumber, *slot.pickPixel);
+    }
     uint64_t ticks[2];
     VkResult result = vkGetQueryPoolResults(device_.handle(), slot.timestamps, 0, 2, sizeof ticks,
                                             ticks, sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "render/pick.h"
 #include "vk/resources.h"
 
 namespace render {
@@ -17,7 +18,10 @@ struct FrameSlot {
     VkFence done = VK_NULL_HANDLE;
     VkQueryPool timestamps = VK_NULL_HANDLE; // [0] before the scene pass, [1] after it
     vk::Buffer frameData;                    // gpu::FrameData, written with vkCmdUpdateBuffer
+    vk::Buffer pickReadback;                 // host-visible uint64: the frame's PickData::current
     bool submitted = false;                  // has work whose timestamps are not read yet
+    uint64_t frameNumber = 0;
+    std::optional<glm::uvec2> pickPixel; // set by Renderer::record when the frame picks
 };
 
 class FrameSlots {
@@ -29,8 +33,8 @@ class FrameSlots {
     FrameSlots(const FrameSlots&) = delete;
     FrameSlots& operator=(const FrameSlots&) = delete;
 
-    // Waits for the slot of frame `frameNumber`, collects its previous GPU time, resets it
-    // and begins its command buffer.
+    // Waits for the slot of frame `frameNumber`, collects its previous GPU time and pick,
+    // resets it and begins its command buffer.
     FrameSlot& begin(uint64_t frameNumber);
     // Ends and submits the slot's command buffer, signalling its fence.
     void submit(FrameSlot& slot, const std::vector<VkSemaphore>& wait = {},
@@ -41,15 +45,19 @@ class FrameSlots {
 
     // GPU milliseconds of the scene pass, one per completed frame, oldest first.
     const std::vector<double>& gpuMilliseconds() const { return gpuMs_; }
+    // The pick of the newest completed frame that picked a pixel. Read from a slot whose
+    // fence has signalled, so asking never stalls the CPU.
+    const std::optional<PickReading>& latestPick() const { return latestPick_; }
 
   private:
     void create();
     void release();
-    void collectTimings(FrameSlot& slot);
+    void collect(FrameSlot& slot);
 
     vk::Device& device_;
     std::array<FrameSlot, count> slots_;
     std::vector<double> gpuMs_;
+    std::optional<PickReading> latestPick_;
 };
 
 } // namespace render

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstring>
 
 #include "render/pipeline.h"
@@ -15,12 +16,24 @@ namespace render {
 Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler, const ScenePass& pass)
     : device_(device), compiler_(compiler), pass_(pass) {
     layout_ = createScenePipelineLayout(device);
+    const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
+    try {
+        pick_ = vk::createBufferWithData(
+            device, &none, sizeof none,
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+            "pick");
+    } catch (...) {
+        vkDestroyPipelineLayout(device_.handle(), layout_, nullptr);
+        throw;
+    }
 }
 
 Renderer::~Renderer() {
     sceneGpu_.reset();
     destroyDraws(drawBuffers_);
     if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
+    vk::destroyBuffer(device_, pick_);
     vkDestroyPipelineLayout(device_.handle(), layout_, nullptr);
 }
 
@@ -144,11 +157,18 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
     frame.materialsAddress = sceneGpu_->materialsAddress();
     frame.idsAddress = drawBuffers_.ids.address;
     frame.drawsAddress = drawBuffers_.draws.address;
+    frame.pickAddress = pick_.address;
+    frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
+    frame.selectedPart = params.selectedPart;
+    frame.time = params.time;
     vkCmdUpdateBuffer(cmd, slot.frameData.buffer, 0, sizeof frame, &frame);
+    slot.pickPixel = params.pickPixel;
+    recordPickReset(cmd);
 
+    // Frame data and the pick reset (this frame), `last` (the previous frame's copy).
     auto toShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     toShaders.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toShaders.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    toShaders.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
                              VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
@@ -191,6 +211,41 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
 
     vkCmdEndRenderPass(cmd);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps, 1);
+    recordPickCopies(cmd, slot);
+}
+
+// Before the pass: the previous frame's shaders and copies are done with the pick buffer
+// (write-after-read and write-after-write across frames on the one queue), then reset it.
+void Renderer::recordPickReset(VkCommandBuffer cmd) const {
+    auto before = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    before.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                           VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    before.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd,
+                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
+    vkCmdFillBuffer(cmd, pick_.buffer, offsetof(gpu::PickData, current), sizeof(uint64_t),
+                    0xFFFFFFFFu);
+}
+
+// After the pass: `current` becomes `last` for the next frame's highlight and goes to the
+// slot's host-visible readback, read when the slot's fence has signalled.
+void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const {
+    auto fromShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    fromShaders.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    fromShaders.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         0, 1, &fromShaders, 0, nullptr, 0, nullptr);
+    VkBufferCopy toLast{offsetof(gpu::PickData, current), offsetof(gpu::PickData, last),
+                        sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, pick_.buffer, pick_.buffer, 1, &toLast);
+    VkBufferCopy toHost{offsetof(gpu::PickData, current), 0, sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, pick_.buffer, slot.pickReadback.buffer, 1, &toHost);
+    auto toHostRead = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    toHostRead.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHostRead.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &toHostRead, 0, nullptr, 0, nullptr);
 }
 
 // `push` mode: per draw, push only the span of DrawData fields that differ from the last draw.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -22,6 +23,11 @@ struct FrameParams {
     glm::vec3 eye{0.0f};
     float partColorWeight = 0.5f;
     bool colorizeDraws = false;
+    float time = 0.0f; // seconds; drives the blink of the hovered part
+    // The pixel (top-left origin) whose nearest part this frame picks; the result reaches
+    // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.
+    std::optional<glm::uvec2> pickPixel;
+    uint32_t selectedPart = gpu::BACKGROUND_ID; // drawn with the steady highlight
 };
 
 struct RenderConfig {
@@ -67,6 +73,8 @@ class Renderer {
     void destroyDraws(DrawBuffers& buffers) const;
     void recordPushDraws(VkCommandBuffer cmd) const;
     void recordIndirectDraws(VkCommandBuffer cmd) const;
+    void recordPickReset(VkCommandBuffer cmd) const;
+    void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
 
     vk::Device& device_;
     const vk::ShaderCompiler& compiler_;
@@ -78,6 +86,7 @@ class Renderer {
     DrawList drawList_;
     DrawBuffers drawBuffers_;
     RenderStats stats_;
+    vk::Buffer pick_; // gpu::PickData, shared by all frames in flight (ordered by barriers)
 };
 
 } // namespace render

@@ -31,6 +31,14 @@ std::optional<PartRef> Scene::locate(uint32_t uniquePartId) const {
     return PartRef{static_cast<uint32_t>(it - objects.begin()), local};
 }
 
+std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) {
+    const auto ref = scene.locate(uniquePartId);
+    if (!ref) return std::nullopt;
+    const Object& object = scene.objects[ref->object];
+    return PartInfo{uniquePartId, ref->object, ref->localPart, object.geometry,
+                    scene.part(object, ref->localPart).triangleCount};
+}
+
 Bounds Scene::bounds() const {
     Bounds b;
     b.min = glm::vec3(std::numeric_limits<float>::max());

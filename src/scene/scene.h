@@ -58,6 +58,15 @@ struct PartRef {
     uint32_t localPart = 0;
 };
 
+// Everything a viewer shows about one unique part.
+struct PartInfo {
+    uint32_t uniquePartId = 0;
+    uint32_t object = 0;
+    uint32_t localPart = 0;
+    uint32_t geometry = 0;
+    uint32_t triangleCount = 0;
+};
+
 struct Scene {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;
@@ -76,6 +85,9 @@ struct Scene {
     std::optional<PartRef> locate(uint32_t uniquePartId) const;
     Bounds bounds() const;
 };
+
+// nullopt when the ID names no part of `scene` (background, or a stale ID after a reload).
+std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId);
 
 // Adds an object and gives it the next free range of unique part IDs.
 uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world);

@@ -1,0 +1,30 @@
+// pick.h - what the CPU learns from a frame's pick: the nearest part at the picked pixel and
+// its depth, decoded from the 64-bit value the fragment shaders atomicMin'ed (see PickData).
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "shared.h"
+
+namespace render {
+
+struct PickReading {
+    uint64_t frame = 0;           // FrameSlots frame number the pick was rendered in
+    glm::uvec2 pixel{0};          // framebuffer pixel, top-left origin
+    std::optional<uint32_t> part; // unique part ID; nullopt: background
+    float depth = 1.0f;           // framebuffer depth of the nearest fragment (0 near, 1 far)
+};
+
+inline PickReading decodePick(uint64_t value, uint64_t frame, glm::uvec2 pixel) {
+    PickReading reading{frame, pixel, std::nullopt, 1.0f};
+    if (value == gpu::PICK_NONE) return reading;
+    reading.part = static_cast<uint32_t>(value & 0xFFFFFFFFu);
+    reading.depth = std::bit_cast<float>(static_cast<uint32_t>(value >> 32));
+    return reading;
+}
+
+} // namespace render

@@ -1,0 +1,220 @@
+// test_pick.cpp - the 64-bit atomicMin pick, for every technique x per-draw mode on lavapipe:
+// it names the part of the ID image at part interiors, part borders and background; a CPU
+// ray cast agrees inside parts (part and depth); the hover and selection highlights change
+// exactly the picked part's pixels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/headless.h"
+#include "app/scene_source.h"
+#include "render/technique.h"
+#include "scene/raycast.h"
+
+namespace {
+
+constexpr uint32_t W = 160, H = 100;
+constexpr uint32_t NONE = gpu::BACKGROUND_ID;
+
+struct Points {
+    std::vector<app::Options::Pixel> interior, border, background;
+};
+
+struct Fixture {
+    app::LoadedScene loaded;
+    scene::Camera camera;
+    std::vector<uint32_t> ids; // per-draw + push, no pick
+    Points points;
+};
+
+app::Options options() {
+    app::Options o;
+    o.headless = true;
+    o.validation = true;
+    o.width = W;
+    o.height = H;
+    o.frames = 1;
+    return o;
+}
+
+uint32_t idAt(const std::vector<uint32_t>& ids, int x, int y) {
+    if (x < 0 || y < 0 || x >= int(W) || y >= int(H)) return NONE;
+    return ids[size_t(y) * W + size_t(x)];
+}
+
+// Classifies pixels of the reference image and keeps a spread of each kind: interior (the
+// 5x5 neighbourhood is one part), border (a 4-neighbour is another part or background) and
+// background.
+Points choosePoints(const std::vector<uint32_t>& ids) {
+    Points all;
+    for (uint32_t y = 1; y + 1 < H; ++y)
+        for (uint32_t x = 1; x + 1 < W; ++x) {
+            const uint32_t id = idAt(ids, int(x), int(y));
+            bool uniform = true, edge = false;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) {
+                    const uint32_t n = idAt(ids, int(x) + dx, int(y) + dy);
+                    uniform = uniform && n == id;
+                    if (std::abs(dx) + std::abs(dy) == 1 && n != id) edge = true;
+                }
+            if (id == NONE)
+                all.background.push_back({x, y});
+            else if (edge)
+                all.border.push_back({x, y});
+            else if (uniform)
+                all.interior.push_back({x, y});
+        }
+    auto spread = [](const std::vector<app::Options::Pixel>& from, size_t n) {
+        std::vector<app::Options::Pixel> kept;
+        for (size_t i = 0; i < n && !from.empty(); ++i)
+            kept.push_back(from[(from.size() - 1) * i / std::max<size_t>(1, n - 1)]);
+        return kept;
+    };
+    return {spread(all.interior, 10), spread(all.border, 10), spread(all.background, 4)};
+}
+
+Fixture& fixture() {
+    static Fixture f = [] {
+        Fixture f;
+        app::Options source;
+        source.scene = "procedural:preset=small,seed=1";
+        source.copies = 2;
+        f.loaded = app::loadScene(source);
+        f.camera = app::initialCamera(f.loaded, float(W) / float(H));
+        f.ids = app::renderHeadless(options(), f.loaded.scene, f.camera).ids;
+        f.points = choosePoints(f.ids);
+        return f;
+    }();
+    return f;
+}
+
+std::vector<render::RenderConfig> modesOf(const std::string& technique) {
+    std::vector<render::RenderConfig> configs;
+    for (const auto& mode : render::drawModes()) {
+        render::RenderConfig c;
+        c.technique = render::findTechnique(technique);
+        c.mode = &mode;
+        configs.push_back(c);
+    }
+    return configs;
+}
+
+// Pixels whose colour differs between two frames.
+std::vector<bool> changed(const app::HeadlessResult& a, const app::HeadlessResult& b) {
+    std::vector<bool> out(size_t(W) * H);
+    for (size_t i = 0; i < out.size(); ++i)
+        for (size_t c = 0; c < 3; ++c) out[i] = out[i] || a.color[i * 4 + c] != b.color[i * 4 + c];
+    return out;
+}
+
+// The changed pixels are exactly the pixels of `part` in the ID image.
+void expectExactlyPartChanged(const app::HeadlessResult& plain, const app::HeadlessResult& lit,
+                              uint32_t part, const std::string& what) {
+    const std::vector<bool> diff = changed(plain, lit);
+    size_t partPixels = 0, unchangedInPart = 0, changedOutside = 0;
+    for (size_t i = 0; i < diff.size(); ++i) {
+        const bool inPart = lit.ids[i] == part;
+        partPixels += inPart;
+        unchangedInPart += inPart && !diff[i];
+        changedOutside += !inPart && diff[i];
+    }
+    EXPECT_GT(partPixels, 0u) << what;
+    EXPECT_EQ(unchangedInPart, 0u)
+        << what << ": part " << part << " has " << partPixels << " pixels";
+    EXPECT_EQ(changedOutside, 0u) << what;
+}
+
+class PickPerTechnique : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
+    Fixture& f = fixture();
+    const Points& p = f.points;
+    ASSERT_EQ(p.interior.size(), 10u);
+    ASSERT_EQ(p.border.size(), 10u);
+    ASSERT_EQ(p.background.size(), 4u);
+
+    // Picks end on an interior point, so the timed frame shows it hovered; `plain` ends on
+    // background and shows nothing highlighted.
+    app::Options o = options();
+    o.picks = p.background;
+    o.picks.insert(o.picks.end(), p.border.begin(), p.border.end());
+    o.picks.insert(o.picks.end(), p.interior.begin(), p.interior.end());
+    const auto configs = modesOf(GetParam());
+    const auto results = app::renderHeadlessSequence(o, f.loaded.scene, f.camera, configs);
+    app::Options plainOptions = options();
+    plainOptions.picks = {p.background.front()};
+    plainOptions.selects = {p.background.front()};
+    const auto plain = app::renderHeadlessSequence(plainOptions, f.loaded.scene, f.camera, configs);
+    app::Options selectOptions = plainOptions;
+    selectOptions.selects = {p.interior.front()};
+    const auto selected =
+        app::renderHeadlessSequence(selectOptions, f.loaded.scene, f.camera, configs);
+
+    scene::RayCaster caster(f.loaded.scene);
+    const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
+    for (size_t c = 0; c < configs.size(); ++c) {
+        const std::string name = GetParam() + " + " + configs[c].mode->name;
+        const app::HeadlessResult& r = results[c];
+        EXPECT_EQ(r.validationMessages, 0u);
+        ASSERT_EQ(r.ids, f.ids) << name;
+        ASSERT_EQ(r.picks.size(), o.picks.size());
+        for (const auto& pick : r.picks) {
+            const uint32_t expected = idAt(r.ids, int(pick.pixel.x), int(pick.pixel.y));
+            const std::string where =
+                name + " at " + std::to_string(pick.pixel.x) + "," + std::to_string(pick.pixel.y);
+            if (expected == NONE) {
+                EXPECT_FALSE(pick.part.has_value()) << where;
+                continue;
+            }
+            ASSERT_TRUE(pick.part.has_value()) << where;
+            EXPECT_EQ(*pick.part, expected) << where;
+            EXPECT_GT(pick.depth, 0.0f) << where;
+            EXPECT_LT(pick.depth, 1.0f) << where;
+        }
+        // Inside parts the CPU ray through the pixel centre hits the same part at the depth
+        // the GPU recorded.
+        for (size_t i = p.background.size() + p.border.size(); i < r.picks.size(); ++i) {
+            const auto& pick = r.picks[i];
+            const glm::vec2 centre = glm::vec2(pick.pixel) + 0.5f;
+            const auto hit =
+                caster.cast(scene::pixelRay(viewProj, glm::vec2(float(W), float(H)), centre));
+            ASSERT_TRUE(hit.has_value()) << name;
+            EXPECT_EQ(hit->uniquePartId, pick.part.value_or(NONE)) << name;
+            const scene::Ray ray = scene::pixelRay(viewProj, glm::vec2(float(W), float(H)), centre);
+            const glm::vec4 clip = viewProj * glm::vec4(ray.origin + hit->t * ray.direction, 1.0f);
+            EXPECT_NEAR(clip.z / clip.w, pick.depth, 1e-4) << name;
+        }
+
+        ASSERT_TRUE(plain[c].picks.front().part == std::nullopt);
+        expectExactlyPartChanged(plain[c], r, *r.picks.back().part, name + " hover");
+        ASSERT_TRUE(selected[c].selected.has_value()) << name;
+        EXPECT_EQ(*selected[c].selected,
+                  idAt(f.ids, int(p.interior.front().x), int(p.interior.front().y)));
+        expectExactlyPartChanged(plain[c], selected[c], *selected[c].selected, name + " select");
+        EXPECT_FALSE(plain[c].selected.has_value()) << name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Lavapipe, PickPerTechnique,
+                         ::testing::Values("per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs",
+                                           "bsearch-fs"),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             for (char& ch : name)
+                                 if (ch == '-') ch = '_';
+                             return name;
+                         });
+
+// The decode of the packed value: depth bits high, part low, all ones for nothing.
+TEST(PickDecode, SplitsDepthAndPart) {
+    const float depth = 0.25f;
+    const uint64_t value = (uint64_t(std::bit_cast<uint32_t>(depth)) << 32) | 1234u;
+    const auto reading = render::decodePick(value, 7, {3, 4});
+    EXPECT_EQ(reading.part, 1234u);
+    EXPECT_EQ(reading.depth, depth);
+    EXPECT_EQ(reading.frame, 7u);
+    EXPECT_FALSE(render::decodePick(gpu::PICK_NONE, 0, {}).part.has_value());
+}
+
+} // namespace
