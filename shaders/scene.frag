@@ -21,6 +21,19 @@ layout(location = VARYING_GS_PART_INDEX) flat in uint inGsPartIndex;
 layout(location = OUT_COLOR) out vec4 outColor;
 layout(location = OUT_PART_ID) out uint outPartId;
 
+// The depth the pick compares: the depth at sample 0, which decides the pixel. Without MSAA
+// that is the pixel centre, where the rasterizer's own depth is exact. With MSAA the centre
+// can see two surfaces that meet inside the pixel in the other order, so extrapolate to the
+// sample: window-space depth is affine across a triangle, so its screen derivatives carry it
+// there exactly up to rounding. Derivatives need uniform control flow: hence outside the
+// pick's branch, and the branch on sampleZero is the same for the whole draw.
+float pickDepth(FrameData frame) {
+    float z = gl_FragCoord.z;
+    if (frame.sampleZero == vec2(0.5)) return z;
+    vec2 offset = frame.sampleZero - vec2(0.5);
+    return clamp(z + dFdx(z) * offset.x + dFdy(z) * offset.y, 0.0, 1.0);
+}
+
 void main() {
     FrameData frame = loadFrame();
     DrawData draw = loadDraw(frame, inDrawIndex);
@@ -38,9 +51,12 @@ void main() {
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
     vec3 color = headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
 
+    float depth = pickDepth(frame);
     PickRef pick = PickRef(frame.pickAddress);
-    if (uvec2(gl_FragCoord.xy) == frame.pickPixel) {
-        uint64_t depthBits = uint64_t(floatBitsToUint(gl_FragCoord.z));
+    // With MSAA, sample 0 decides, as in the resolve of the ID attachment (see targets.h):
+    // only fragments covering it take part. Without MSAA the mask is always 1.
+    if (uvec2(gl_FragCoord.xy) == frame.pickPixel && (gl_SampleMaskIn[0] & 1) != 0) {
+        uint64_t depthBits = uint64_t(floatBitsToUint(depth));
         atomicMin(pick.pick.current, (depthBits << 32) | uint64_t(uniquePartId));
     }
     if (uniquePartId == uint(pick.pick.last)) color = highlightHovered(color, frame.time);

@@ -15,6 +15,7 @@ using uint = uint32_t;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec2 = glm::uvec2;
+using vec2 = glm::vec2;
 using mat4 = glm::mat4;
 #define IDV_CONST constexpr uint32_t
 #else
@@ -69,7 +70,7 @@ struct FrameData {
     uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     uint selectedPart;         // unique part ID drawn with the steady highlight, or BACKGROUND_ID
     float time;                // seconds, drives the blink of the hovered part
-    uvec2 padding;             // std430 rounds the struct to 16 bytes: say so explicitly
+    vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
 };
 
 // The pick: during the scene pass, fragments at FrameData::pickPixel atomicMin `current` with

@@ -1,11 +1,14 @@
-// test_pick.cpp - the 64-bit atomicMin pick, for every technique x per-draw mode on lavapipe:
+// test_pick.cpp - the 64-bit atomicMin pick, for every technique x per-draw mode on lavapipe,
+// without MSAA and with 4x (where sample 0 decides, in the pick as in the ID image):
 // it names the part of the ID image at part interiors, part borders and background; a CPU
 // ray cast agrees inside parts (part and depth); the hover and selection highlights change
 // exactly the picked part's pixels.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
+#include <tuple>
 
 #include "app/headless.h"
 #include "app/scene_source.h"
@@ -28,8 +31,9 @@ struct Fixture {
     Points points;
 };
 
-app::Options options() {
+app::Options options(uint32_t msaa) {
     app::Options o;
+    o.msaa = msaa;
     o.headless = true;
     o.validation = true;
     o.width = W;
@@ -74,18 +78,20 @@ Points choosePoints(const std::vector<uint32_t>& ids) {
     return {spread(all.interior, 10), spread(all.border, 10), spread(all.background, 4)};
 }
 
-Fixture& fixture() {
-    static Fixture f = [] {
-        Fixture f;
+// Per sample count, since MSAA moves the edges of the ID image (sample 0 decides there).
+Fixture& fixture(uint32_t msaa) {
+    static std::map<uint32_t, Fixture> cache;
+    if (auto found = cache.find(msaa); found != cache.end()) return found->second;
+    Fixture& f = cache[msaa];
+    {
         app::Options source;
         source.scene = "procedural:preset=small,seed=1";
         source.copies = 2;
         f.loaded = app::loadScene(source);
         f.camera = app::initialCamera(f.loaded, float(W) / float(H));
-        f.ids = app::renderHeadless(options(), f.loaded.scene, f.camera).ids;
+        f.ids = app::renderHeadless(options(msaa), f.loaded.scene, f.camera).ids;
         f.points = choosePoints(f.ids);
-        return f;
-    }();
+    }
     return f;
 }
 
@@ -108,16 +114,27 @@ std::vector<bool> changed(const app::HeadlessResult& a, const app::HeadlessResul
     return out;
 }
 
-// The changed pixels are exactly the pixels of `part` in the ID image.
+// The changed pixels are exactly the pixels of `part` in the ID image. With MSAA the resolved
+// colour also changes where samples other than sample 0 (which the ID image shows) belong to
+// the part (its thin slivers that no sample 0 hits): there a changed pixel outside the part
+// must lie within `margin` pixels of it (2 with MSAA, measured on lavapipe at 4x).
 void expectExactlyPartChanged(const app::HeadlessResult& plain, const app::HeadlessResult& lit,
-                              uint32_t part, const std::string& what) {
+                              uint32_t part, int margin, const std::string& what) {
     const std::vector<bool> diff = changed(plain, lit);
     size_t partPixels = 0, unchangedInPart = 0, changedOutside = 0;
     for (size_t i = 0; i < diff.size(); ++i) {
         const bool inPart = lit.ids[i] == part;
         partPixels += inPart;
         unchangedInPart += inPart && !diff[i];
-        changedOutside += !inPart && diff[i];
+        if (inPart || !diff[i]) continue;
+        bool near = false;
+        for (int dy = -margin; dy <= margin; ++dy)
+            for (int dx = -margin; dx <= margin; ++dx)
+                near = near || idAt(lit.ids, int(i % W) + dx, int(i / W) + dy) == part;
+        if (!near) {
+            ++changedOutside;
+            ADD_FAILURE() << what << ": pixel " << i % W << "," << i / W << " changed";
+        }
     }
     EXPECT_GT(partPixels, 0u) << what;
     EXPECT_EQ(unchangedInPart, 0u)
@@ -125,10 +142,26 @@ void expectExactlyPartChanged(const app::HeadlessResult& plain, const app::Headl
     EXPECT_EQ(changedOutside, 0u) << what;
 }
 
-class PickPerTechnique : public ::testing::TestWithParam<std::string> {};
+// Where sample 0 lies in a pixel: Vulkan's standard sample locations.
+glm::vec2 sampleZero(uint32_t msaa) {
+    switch (msaa) {
+    case 2:
+        return {0.75f, 0.75f};
+    case 4:
+        return {0.375f, 0.125f};
+    case 8:
+        return {0.5625f, 0.3125f};
+    default:
+        return {0.5f, 0.5f};
+    }
+}
+
+using Param = std::tuple<std::string, uint32_t>; // technique, MSAA samples
+class PickPerTechnique : public ::testing::TestWithParam<Param> {};
 
 TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
-    Fixture& f = fixture();
+    const auto& [technique, msaa] = GetParam();
+    Fixture& f = fixture(msaa);
     const Points& p = f.points;
     ASSERT_EQ(p.interior.size(), 10u);
     ASSERT_EQ(p.border.size(), 10u);
@@ -136,13 +169,13 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
 
     // Picks end on an interior point, so the timed frame shows it hovered; `plain` ends on
     // background and shows nothing highlighted.
-    app::Options o = options();
+    app::Options o = options(msaa);
     o.picks = p.background;
     o.picks.insert(o.picks.end(), p.border.begin(), p.border.end());
     o.picks.insert(o.picks.end(), p.interior.begin(), p.interior.end());
-    const auto configs = modesOf(GetParam());
+    const auto configs = modesOf(technique);
     const auto results = app::renderHeadlessSequence(o, f.loaded.scene, f.camera, configs);
-    app::Options plainOptions = options();
+    app::Options plainOptions = options(msaa);
     plainOptions.picks = {p.background.front()};
     plainOptions.selects = {p.background.front()};
     const auto plain = app::renderHeadlessSequence(plainOptions, f.loaded.scene, f.camera, configs);
@@ -154,7 +187,8 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
     scene::RayCaster caster(f.loaded.scene);
     const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
     for (size_t c = 0; c < configs.size(); ++c) {
-        const std::string name = GetParam() + " + " + configs[c].mode->name;
+        const std::string name =
+            technique + " + " + configs[c].mode->name + " msaa " + std::to_string(msaa);
         const app::HeadlessResult& r = results[c];
         EXPECT_EQ(r.validationMessages, 0u);
         ASSERT_EQ(r.ids, f.ids) << name;
@@ -172,11 +206,12 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
             EXPECT_GT(pick.depth, 0.0f) << where;
             EXPECT_LT(pick.depth, 1.0f) << where;
         }
-        // Inside parts the CPU ray through the pixel centre hits the same part at the depth
+        // Inside parts the CPU ray through the deciding point (pixel centre, or sample 0 of the
+        // standard MSAA pattern) hits the same part at the depth
         // the GPU recorded.
         for (size_t i = p.background.size() + p.border.size(); i < r.picks.size(); ++i) {
             const auto& pick = r.picks[i];
-            const glm::vec2 centre = glm::vec2(pick.pixel) + 0.5f;
+            const glm::vec2 centre = glm::vec2(pick.pixel) + sampleZero(msaa);
             const auto hit =
                 caster.cast(scene::pixelRay(viewProj, glm::vec2(float(W), float(H)), centre));
             ASSERT_TRUE(hit.has_value()) << name;
@@ -187,20 +222,25 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
         }
 
         ASSERT_TRUE(plain[c].picks.front().part == std::nullopt);
-        expectExactlyPartChanged(plain[c], r, *r.picks.back().part, name + " hover");
+        expectExactlyPartChanged(plain[c], r, *r.picks.back().part, msaa > 1 ? 2 : 0,
+                                 name + " hover");
         ASSERT_TRUE(selected[c].selected.has_value()) << name;
         EXPECT_EQ(*selected[c].selected,
                   idAt(f.ids, int(p.interior.front().x), int(p.interior.front().y)));
-        expectExactlyPartChanged(plain[c], selected[c], *selected[c].selected, name + " select");
+        expectExactlyPartChanged(plain[c], selected[c], *selected[c].selected, msaa > 1 ? 2 : 0,
+                                 name + " select");
         EXPECT_FALSE(plain[c].selected.has_value()) << name;
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Lavapipe, PickPerTechnique,
-                         ::testing::Values("per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs",
-                                           "bsearch-fs"),
+                         ::testing::Combine(::testing::Values("per-draw", "tri-fs", "tri-gs",
+                                                              "search-fs", "search-gs",
+                                                              "bsearch-fs"),
+                                            ::testing::Values(1u, 4u)),
                          [](const auto& info) {
-                             std::string name = info.param;
+                             std::string name = std::get<0>(info.param) + "_msaa" +
+                                                std::to_string(std::get<1>(info.param));
                              for (char& ch : name)
                                  if (ch == '-') ch = '_';
                              return name;

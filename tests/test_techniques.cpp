@@ -148,3 +148,41 @@ TEST(SearchBatch, ChangesAtRunTimeKeepIdsAndFollowTheFormula) {
 }
 
 } // namespace
+
+namespace {
+
+// With 4x MSAA every technique and mode resolves the same ID image (sample 0 of each pixel),
+// which differs from the 1x image only near edges: pixels inside a 5x5 block of one part
+// keep it (a 3x3 block is not enough: sub-pixel features can hide between pixel centres).
+TEST(Msaa, EveryTechniqueAndModeResolvesTheSameIdImage) {
+    Reference& ref = reference("small-x2");
+    std::vector<render::RenderConfig> configs;
+    for (const auto& t : render::techniques())
+        for (const auto& m : render::drawModes()) configs.push_back({&t, &m});
+    app::Options o = renderOptions("per-draw", "push");
+    o.msaa = 4;
+    const auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    for (size_t i = 0; i < results.size(); ++i)
+        EXPECT_EQ(results[i].ids, results.front().ids)
+            << configs[i].technique->name << " + " << configs[i].mode->name;
+
+    const auto& ms = results.front().ids;
+    const auto& single = ref.image.ids;
+    size_t edgeDifferences = 0, interiorDifferences = 0;
+    for (uint32_t y = 2; y + 2 < o.height; ++y)
+        for (uint32_t x = 2; x + 2 < o.width; ++x) {
+            const size_t i = size_t(y) * o.width + x;
+            if (ms[i] == single[i]) continue;
+            bool interior = true; // a 5x5 block of one part: no edge can reach sample 0
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx)
+                    interior =
+                        interior && single[size_t(int(i) + dy * int(o.width) + dx)] == single[i];
+            ++(interior ? interiorDifferences : edgeDifferences);
+        }
+    EXPECT_GT(edgeDifferences, 0u) << "MSAA changed nothing: is it on?";
+    EXPECT_EQ(interiorDifferences, 0u);
+}
+
+} // namespace

@@ -57,6 +57,11 @@ const std::vector<Flag>& flags() {
          [](Options& o, auto&) { o.headless = true; }},
         {"--size", "WxH", "render size in pixels (default 1280x720)",
          [](Options& o, auto& v) { parseSize(v, o); }},
+        {"--msaa", "N", "samples per pixel: 1 (default), 2, 4 or 8, as the device offers",
+         [](Options& o, auto& v) {
+             o.msaa = parseCount("--msaa", v, 1, 8);
+             if (o.msaa & (o.msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
+         }},
         {"--frames", "N", "frames to render headless (default 10); files hold the last one",
          [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }},
         {"--screenshot", "FILE", "write the last frame's colour image as PNG",

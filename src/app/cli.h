@@ -19,6 +19,7 @@ struct Options {
     uint32_t width = 1280;
     uint32_t height = 720;
     uint32_t frames = 10;
+    uint32_t msaa = 1; // samples per pixel of the scene pass: 1, 2, 4 or 8
     std::string screenshot; // PNG path
     std::string idImage;    // raw little-endian uint32 path
     std::string model;      // glTF file; with scene empty too, the default model

@@ -100,7 +100,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
         const auto devices = instance.devices();
         vk::Device device(instance, vk::chooseDevice(devices, options.device));
         vk::ShaderCompiler compiler(vk::ShaderCompiler::locate(options.shaderDir));
-        render::ScenePass pass(device);
+        render::ScenePass pass(device, render::checkedSampleCount(device, options.msaa));
         const VkExtent2D extent{options.width, options.height};
         render::SceneTargets targets(device, pass, extent);
         render::FrameSlots slots(device);

@@ -21,6 +21,7 @@ VkPipelineLayout createScenePipelineLayout(vk::Device& device) {
 }
 
 VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
+                               VkSampleCountFlagBits samples,
                                const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
                                const std::string& name) {
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
@@ -74,7 +75,7 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
 
     auto multisample = vk::init<VkPipelineMultisampleStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    multisample.rasterizationSamples = samples;
 
     auto depth = vk::init<VkPipelineDepthStencilStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);

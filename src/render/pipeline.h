@@ -22,6 +22,7 @@ VkPipelineLayout createScenePipelineLayout(vk::Device& device);
 
 // drawIndexAttribute adds the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute mode).
 VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
+                               VkSampleCountFlagBits samples,
                                const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
                                const std::string& name);
 

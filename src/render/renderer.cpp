@@ -89,8 +89,8 @@ VkPipeline Renderer::buildPipeline(const Variant& variant) const {
             device_.name(VK_OBJECT_TYPE_SHADER_MODULE, stages.back().module, request.label());
         }
         const std::string name = std::string(variant.technique->name) + " + " + variant.mode->name;
-        VkPipeline pipeline = createScenePipeline(device_, layout_, pass_.handle(), stages,
-                                                  variant.mode->drawIndexAttribute, name);
+        VkPipeline pipeline = createScenePipeline(device_, layout_, pass_.handle(), pass_.samples(),
+                                                  stages, variant.mode->drawIndexAttribute, name);
         destroyModules();
         return pipeline;
     } catch (...) {
@@ -153,6 +153,7 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
     frame.viewport = {targets.extent().width, targets.extent().height};
     frame.partColorWeight = params.partColorWeight;
     frame.flags = params.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u;
+    frame.sampleZero = pass_.sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();
     frame.idsAddress = drawBuffers_.ids.address;

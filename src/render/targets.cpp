@@ -2,6 +2,8 @@
 #include "render/targets.h"
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include "vk/check.h"
 
@@ -18,13 +20,53 @@ static VkFormat pickDepthFormat(VkPhysicalDevice physical) {
     throw vk::Error("the device offers no depth attachment format");
 }
 
-ScenePass::ScenePass(vk::Device& device) : device_(device) {
-    depthFormat_ = pickDepthFormat(device.physical());
+// The framebuffer limits are what every format guarantees; the formats we render to may offer
+// more (lavapipe: 4x for R32_UINT though its integer-colour limit says 1x), so ask per format.
+VkSampleCountFlags supportedSampleCounts(const vk::Device& device) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(device.physical(), &props);
+    VkSampleCountFlags counts =
+        props.limits.framebufferColorSampleCounts & props.limits.framebufferDepthSampleCounts;
+    const VkFormat depth = pickDepthFormat(device.physical());
+    for (VkFormat format : {ScenePass::colorFormat, ScenePass::idFormat, depth}) {
+        const VkImageUsageFlags usage = format == depth
+                                            ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                            : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+        VkImageFormatProperties formatProps{};
+        if (vkGetPhysicalDeviceImageFormatProperties(device.physical(), format, VK_IMAGE_TYPE_2D,
+                                                     VK_IMAGE_TILING_OPTIMAL, usage, 0,
+                                                     &formatProps) != VK_SUCCESS)
+            return VK_SAMPLE_COUNT_1_BIT;
+        counts &= formatProps.sampleCounts;
+    }
+    return counts | VK_SAMPLE_COUNT_1_BIT;
+}
 
-    auto colorAttachment = [](VkFormat format) {
+VkSampleCountFlagBits checkedSampleCount(const vk::Device& device, uint32_t samples) {
+    const VkSampleCountFlags supported = supportedSampleCounts(device);
+    if ((samples & (samples - 1)) == 0 && (supported & samples))
+        return static_cast<VkSampleCountFlagBits>(samples);
+    std::string offered;
+    for (uint32_t n = 1; n <= 64; n *= 2)
+        if (supported & n) offered += (offered.empty() ? "" : ", ") + std::to_string(n);
+    throw vk::Error("MSAA " + std::to_string(samples) + "x is not supported by " +
+                    device.info().name + " (it offers " + offered + ")");
+}
+
+ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples)
+    : device_(device), samples_(samples) {
+    depthFormat_ = pickDepthFormat(device.physical());
+    const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(device.physical(), &props);
+    if (msaa && !props.limits.standardSampleLocations)
+        throw vk::Error("MSAA needs the standard sample locations, which " +
+                        std::string(props.deviceName) + " does not use");
+
+    auto colorAttachment = [](VkFormat format, VkSampleCountFlagBits count) {
         VkAttachmentDescription a{};
         a.format = format;
-        a.samples = VK_SAMPLE_COUNT_1_BIT;
+        a.samples = count;
         a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
@@ -33,12 +75,27 @@ ScenePass::ScenePass(vk::Device& device) : device_(device) {
         a.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         return a;
     };
-    std::array<VkAttachmentDescription, 3> attachments = {
-        colorAttachment(colorFormat), colorAttachment(idFormat), {}};
+    // 0 colour, 1 IDs, 2 depth; with MSAA also 3 and 4, the single-sample colour and IDs the
+    // multisampled ones resolve into (the multisampled contents are not kept).
+    std::vector<VkAttachmentDescription> attachments = {colorAttachment(colorFormat, samples),
+                                                        colorAttachment(idFormat, samples),
+                                                        colorAttachment(depthFormat_, samples)};
     VkAttachmentDescription& depth = attachments[2];
-    depth = colorAttachment(depthFormat_);
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    std::array<VkAttachmentReference, 2> resolveRefs = {
+        VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
+        VkAttachmentReference{4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+    if (msaa) {
+        for (uint32_t i : {0u, 1u}) {
+            attachments[i].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+            attachments[i].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        }
+        for (VkFormat format : {colorFormat, idFormat}) {
+            attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT));
+            attachments.back().loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // fully overwritten
+        }
+    }
 
     std::array<VkAttachmentReference, 2> colorRefs = {
         VkAttachmentReference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
@@ -48,6 +105,7 @@ ScenePass::ScenePass(vk::Device& device) : device_(device) {
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
     subpass.pColorAttachments = colorRefs.data();
+    subpass.pResolveAttachments = msaa ? resolveRefs.data() : nullptr;
     subpass.pDepthStencilAttachment = &depthRef;
 
     // In: the previous frame's pass and its copies out of the colour and ID images must be
@@ -84,6 +142,19 @@ ScenePass::ScenePass(vk::Device& device) : device_(device) {
     device.name(VK_OBJECT_TYPE_RENDER_PASS, pass_, "scene pass");
 }
 
+glm::vec2 ScenePass::sampleZero() const {
+    switch (samples_) {
+    case VK_SAMPLE_COUNT_2_BIT:
+        return {0.75f, 0.75f};
+    case VK_SAMPLE_COUNT_4_BIT:
+        return {0.375f, 0.125f};
+    case VK_SAMPLE_COUNT_8_BIT:
+        return {0.5625f, 0.3125f};
+    default:
+        return {0.5f, 0.5f};
+    }
+}
+
 ScenePass::~ScenePass() {
     vkDestroyRenderPass(device_.handle(), pass_, nullptr);
 }
@@ -97,10 +168,20 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
                                    VK_IMAGE_ASPECT_COLOR_BIT, "scene colour");
         ids_ = vk::createImage2D(device, extent, ScenePass::idFormat, readable,
                                  VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs");
+        const VkSampleCountFlagBits samples = pass.samples();
         depth_ = vk::createImage2D(device, extent, pass.depthFormat(),
                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                   VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth");
-        std::array<VkImageView, 3> views = {color_.view, ids_.view, depth_.view};
+                                   VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
+        std::vector<VkImageView> views = {color_.view, ids_.view, depth_.view};
+        if (samples != VK_SAMPLE_COUNT_1_BIT) {
+            // Only ever rendered to and resolved within the pass.
+            const VkImageUsageFlags inPass = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+            msColor_ = vk::createImage2D(device, extent, ScenePass::colorFormat, inPass,
+                                         VK_IMAGE_ASPECT_COLOR_BIT, "scene colour (MSAA)", samples);
+            msIds_ = vk::createImage2D(device, extent, ScenePass::idFormat, inPass,
+                                       VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs (MSAA)", samples);
+            views = {msColor_.view, msIds_.view, depth_.view, color_.view, ids_.view};
+        }
         auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
         info.renderPass = pass.handle();
         info.attachmentCount = static_cast<uint32_t>(views.size());
@@ -127,6 +208,8 @@ void SceneTargets::release() {
     vk::destroyImage(device_, color_);
     vk::destroyImage(device_, ids_);
     vk::destroyImage(device_, depth_);
+    vk::destroyImage(device_, msColor_);
+    vk::destroyImage(device_, msIds_);
 }
 
 } // namespace render

@@ -1,32 +1,48 @@
 // targets.h - the scene render pass and the images it renders to: colour, the R32_UINT part-ID
-// attachment and depth. The window path (later) blits the colour image to the swapchain, so
-// headless and windowed rendering share this pass unchanged.
+// attachment and depth, multisampled or not. The window blits the (resolved) colour image to
+// the swapchain, so headless and windowed rendering share this pass unchanged.
+//
+// With MSAA the pass resolves colour (average) and IDs into single-sample images at its end.
+// Part IDs cannot be averaged: integer attachments resolve to sample 0, so sample 0 decides
+// which part a pixel shows, and the pick follows the same rule (see scene.frag).
 #pragma once
+
+#include <glm/glm.hpp>
 
 #include "vk/resources.h"
 
 namespace render {
+
+// Sample counts the device can render the scene pass with: colour, integer colour and depth.
+VkSampleCountFlags supportedSampleCounts(const vk::Device& device);
+// Throws vk::Error naming the counts the device offers when `samples` is not among them.
+VkSampleCountFlagBits checkedSampleCount(const vk::Device& device, uint32_t samples);
 
 class ScenePass {
   public:
     static constexpr VkFormat colorFormat = VK_FORMAT_R8G8B8A8_UNORM;
     static constexpr VkFormat idFormat = VK_FORMAT_R32_UINT;
 
-    explicit ScenePass(vk::Device& device);
+    ScenePass(vk::Device& device, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
     ~ScenePass();
     ScenePass(const ScenePass&) = delete;
     ScenePass& operator=(const ScenePass&) = delete;
 
     VkRenderPass handle() const { return pass_; }
     VkFormat depthFormat() const { return depthFormat_; }
+    VkSampleCountFlagBits samples() const { return samples_; }
+    // Position of sample 0 inside a pixel: Vulkan's standard locations, which the pass
+    // requires of MSAA devices (standardSampleLocations, checked at construction).
+    glm::vec2 sampleZero() const;
 
   private:
     vk::Device& device_;
+    VkSampleCountFlagBits samples_;
     VkFormat depthFormat_ = VK_FORMAT_UNDEFINED;
     VkRenderPass pass_ = VK_NULL_HANDLE;
 };
 
-// After the pass, colour and ID images are in TRANSFER_SRC_OPTIMAL layout.
+// After the pass, the single-sample colour and ID images are in TRANSFER_SRC_OPTIMAL layout.
 class SceneTargets {
   public:
     SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent);
@@ -45,6 +61,7 @@ class SceneTargets {
     vk::Device& device_;
     VkExtent2D extent_;
     vk::Image color_, ids_, depth_;
+    vk::Image msColor_, msIds_; // multisampled attachments, resolved into color_ and ids_
     VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
 };
 

@@ -87,7 +87,8 @@ Buffer createBufferWithData(Device& device, const void* data, VkDeviceSize size,
 }
 
 Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                    VkImageAspectFlags aspect, const std::string& name) {
+                    VkImageAspectFlags aspect, const std::string& name,
+                    VkSampleCountFlagBits samples) {
     Image image;
     image.format = format;
     image.extent = extent;
@@ -97,7 +98,7 @@ Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageU
     info.extent = {extent.width, extent.height, 1};
     info.mipLevels = 1;
     info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;

@@ -36,7 +36,8 @@ struct Image {
 };
 
 Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                    VkImageAspectFlags aspect, const std::string& name);
+                    VkImageAspectFlags aspect, const std::string& name,
+                    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
 void destroyImage(Device& device, Image& image);
 
 } // namespace vk
