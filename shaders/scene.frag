@@ -3,8 +3,10 @@
 // geometry shader), writes it to the ID attachment and shades the fragment with it.
 #include "prelude.glsl"
 #include "shading.glsl"
+#if !IDV_NO_ID
 // Resolved by the shader compiler to the technique's lookup file (src/render/technique.cpp).
 #include "technique.glsl"
+#endif
 
 // Depth test before the shader, even though the pick writes memory: keeps early-Z for every
 // technique, and only fragments that pass the test at their time take part in the pick, which
@@ -19,7 +21,9 @@ layout(location = VARYING_GS_PART_INDEX) flat in uint inGsPartIndex;
 #endif
 
 layout(location = OUT_COLOR) out vec4 outColor;
-layout(location = OUT_PART_ID) out uint outPartId;
+#if !IDV_NO_ID
+layout(location = OUT_PART_ID) out uint outPartId; // no-id masks the attachment off
+#endif
 
 // The depth the pick compares: the depth at sample 0, which decides the pixel. Without MSAA
 // that is the pixel centre, where the rasterizer's own depth is exact. With MSAA the centre
@@ -38,6 +42,12 @@ void main() {
     FrameData frame = loadFrame();
     DrawData draw = loadDraw(frame, inDrawIndex);
     ObjectData object = loadObject(frame.objectsAddress, draw.objectIndex);
+    vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
+    if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(draw.drawIndex ^ 0x9e3779b9u);
+#if IDV_NO_ID
+    // The benchmark's floor: no lookup, no ID, no pick, no part colour.
+    outColor = vec4(headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz), 1.0);
+#else
 #if IDV_LOOKUP_IN_GS
     uint localPart = inGsPartIndex;
 #else
@@ -46,8 +56,6 @@ void main() {
     uint uniquePartId = object.uniquePartOffset + localPart;
     outPartId = uniquePartId;
 
-    vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
-    if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(draw.drawIndex ^ 0x9e3779b9u);
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
     vec3 color = headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
 
@@ -62,4 +70,5 @@ void main() {
     if (uniquePartId == uint(pick.pick.last)) color = highlightHovered(color, frame.time);
     if (uniquePartId == frame.selectedPart) color = highlightSelected(color);
     outColor = vec4(color, 1.0);
+#endif
 }

@@ -14,7 +14,8 @@ vk::DeviceInfo capable(uint32_t index, const char* name, VkPhysicalDeviceType ty
     d.type = type;
     d.apiVersion = VK_API_VERSION_1_3;
     d.bufferDeviceAddress = d.shaderInt64 = d.shaderBufferInt64Atomics = d.geometryShader = true;
-    d.multiDrawIndirect = d.drawIndirectFirstInstance = d.fragmentStoresAndAtomics = true;
+    d.multiDrawIndirect = d.drawIndirectFirstInstance = d.fragmentStoresAndAtomics =
+        d.independentBlend = true;
     d.graphicsQueueFamily = 0;
     return d;
 }
@@ -49,7 +50,7 @@ TEST(DeviceSelect, NamesEveryMissingRequirement) {
     EXPECT_EQ(missing[3], "a graphics queue with timestamps");
 
     vk::DeviceInfo none;
-    EXPECT_EQ(vk::missingRequirements(none).size(), 9u);
+    EXPECT_EQ(vk::missingRequirements(none).size(), 10u);
 }
 
 TEST(DeviceSelect, PrefersDiscreteThenIntegratedThenCpu) {

@@ -48,8 +48,9 @@ TEST(Shaders, EveryVariantCompiles) {
     vk::ShaderCompiler compiler(IDVIEW_SOURCE_SHADER_DIR);
     const auto variants = render::allShaderVariants();
     // Per mode: per-draw, tri-fs, bsearch-fs (2 stages); tri-gs in two forms (3 stages each);
-    // search-fs at 32 batch sizes (2 stages); search-gs at 32 sizes in two forms (3 stages).
-    const size_t perMode = 3 * 2 + 2 * 3 + 32 * 2 + 32 * 2 * 3;
+    // search-fs at 32 batch sizes (2 stages); search-gs at 32 sizes in two forms (3 stages);
+    // the no-id reference (2 stages).
+    const size_t perMode = 3 * 2 + 2 * 3 + 32 * 2 + 32 * 2 * 3 + 2;
     ASSERT_EQ(variants.size(), perMode * render::drawModes().size());
     for (const auto& request : variants) {
         std::vector<uint32_t> spirv;

@@ -23,7 +23,7 @@ VkPipelineLayout createScenePipelineLayout(vk::Device& device) {
 VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
                                VkSampleCountFlagBits samples,
                                const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
-                               const std::string& name) {
+                               bool writeIds, const std::string& name) {
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
     for (const auto& s : stages) {
         auto info = vk::init<VkPipelineShaderStageCreateInfo>(
@@ -83,12 +83,13 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
     depth.depthWriteEnable = VK_TRUE;
     depth.depthCompareOp = VK_COMPARE_OP_LESS;
 
-    // Both attachments get the same state (a full write mask; R32_UINT ignores G, B and A):
-    // differing states would need the independentBlend feature.
+    // Full write masks; no-id masks the ID attachment off entirely (its shader writes no ID),
+    // which needs the independentBlend feature.
     std::array<VkPipelineColorBlendAttachmentState, 2> blend{};
     for (auto& attachment : blend)
         attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (!writeIds) blend[1].colorWriteMask = 0;
     auto colorBlend = vk::init<VkPipelineColorBlendStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     colorBlend.attachmentCount = static_cast<uint32_t>(blend.size());

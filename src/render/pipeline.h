@@ -24,6 +24,6 @@ VkPipelineLayout createScenePipelineLayout(vk::Device& device);
 VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
                                VkSampleCountFlagBits samples,
                                const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
-                               const std::string& name);
+                               bool writeIds, const std::string& name);
 
 } // namespace render

@@ -89,8 +89,9 @@ VkPipeline Renderer::buildPipeline(const Variant& variant) const {
             device_.name(VK_OBJECT_TYPE_SHADER_MODULE, stages.back().module, request.label());
         }
         const std::string name = std::string(variant.technique->name) + " + " + variant.mode->name;
-        VkPipeline pipeline = createScenePipeline(device_, layout_, pass_.handle(), pass_.samples(),
-                                                  stages, variant.mode->drawIndexAttribute, name);
+        VkPipeline pipeline = createScenePipeline(
+            device_, layout_, pass_.handle(), pass_.samples(), stages,
+            variant.mode->drawIndexAttribute, variant.technique->stage != LookupStage::None, name);
         destroyModules();
         return pipeline;
     } catch (...) {

@@ -13,12 +13,14 @@ std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const 
     std::vector<std::pair<std::string, std::string>> defines;
     for (const auto& m : drawModes()) defines.push_back({m.define, &m == &mode ? "1" : "0"});
     defines.push_back({"IDV_LOOKUP_IN_GS", inGeometry ? "1" : "0"});
+    defines.push_back({"IDV_NO_ID", technique.stage == LookupStage::None ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", inGeometry && options.gsPassthrough ? "1" : "0"});
     const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
     defines.push_back(
         {"IDV_SEARCH_COUNT", std::to_string(searches ? options.searchCount : 1) + "u"});
 
-    const std::map<std::string, std::string> aliases = {{"technique.glsl", technique.lookupFile}};
+    std::map<std::string, std::string> aliases;
+    if (technique.lookupFile) aliases["technique.glsl"] = technique.lookupFile;
     std::vector<vk::ShaderRequest> requests;
     requests.push_back({"scene.vert", VK_SHADER_STAGE_VERTEX_BIT, defines, aliases});
     if (inGeometry)
@@ -41,6 +43,7 @@ std::vector<vk::ShaderRequest> allShaderVariants() {
                 if (technique.stage == LookupStage::Geometry) add(technique, mode, {count, true});
             }
         }
+    for (const auto& mode : drawModes()) add(noIdTechnique(), mode, {1, false});
     return all;
 }
 

@@ -60,14 +60,26 @@ const std::vector<DrawMode>& drawModes() {
     return list;
 }
 
+const Technique& noIdTechnique() {
+    static const Technique noId{"no-id",
+                                "reference floor: one draw per object, no part ID in any stage "
+                                "(material colour only, ID attachment masked)",
+                                nullptr,
+                                LookupStage::None,
+                                IdBuffer::None,
+                                DrawSplit::PerObject};
+    return noId;
+}
+
 const Technique* findTechnique(const std::string& name) {
+    if (name == noIdTechnique().name) return &noIdTechnique();
     return findByName(techniques(), name);
 }
 const DrawMode* findDrawMode(const std::string& name) {
     return findByName(drawModes(), name);
 }
 std::string techniqueNames() {
-    return namesOf(techniques());
+    return namesOf(techniques()) + ", " + noIdTechnique().name;
 }
 std::string drawModeNames() {
     return namesOf(drawModes());

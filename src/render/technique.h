@@ -25,12 +25,13 @@ enum class IdBuffer {
 enum class DrawSplit { PerPart, PerObject, PerBatch };
 
 // Where the part lookup runs: the fragment shader, or a geometry shader once per triangle.
-enum class LookupStage { Fragment, Geometry };
+// None: no part ID at all, the benchmark's reference floor (no-id).
+enum class LookupStage { Fragment, Geometry, None };
 
 struct Technique {
     const char* name;        // as the CLI spells it
     const char* description; // one line for --list-renderers and the panel
-    const char* lookupFile;  // defines lookupLocalPart(); included as "technique.glsl"
+    const char* lookupFile;  // defines lookupLocalPart(); included as "technique.glsl" (or null)
     LookupStage stage;
     IdBuffer ids;
     DrawSplit split;
@@ -45,7 +46,10 @@ struct DrawMode {
     bool drawIndexAttribute; // the draw index comes from an instanced vertex attribute
 };
 
+// The part-ID techniques. The no-id reference is not among them (it has no ID image to
+// compare); findTechnique() knows it by name.
 const std::vector<Technique>& techniques();
+const Technique& noIdTechnique();
 const std::vector<DrawMode>& drawModes();
 
 // nullptr when there is no such name.

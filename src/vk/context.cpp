@@ -152,6 +152,7 @@ Device::Device(const Instance& instance, const DeviceInfo& info)
     features.features.multiDrawIndirect = VK_TRUE;
     features.features.drawIndirectFirstInstance = VK_TRUE;
     features.features.fragmentStoresAndAtomics = VK_TRUE;
+    features.features.independentBlend = VK_TRUE;
 
     std::vector<const char*> extensions;
     if (info.geometryShaderPassthrough)

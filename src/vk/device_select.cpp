@@ -60,6 +60,7 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     info.multiDrawIndirect = features.multiDrawIndirect;
     info.drawIndirectFirstInstance = features.drawIndirectFirstInstance;
     info.fragmentStoresAndAtomics = features.fragmentStoresAndAtomics;
+    info.independentBlend = features.independentBlend;
 
     uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
@@ -85,6 +86,7 @@ std::vector<std::string> missingRequirements(const DeviceInfo& info) {
     if (!info.multiDrawIndirect) missing.push_back("multiDrawIndirect");
     if (!info.drawIndirectFirstInstance) missing.push_back("drawIndirectFirstInstance");
     if (!info.fragmentStoresAndAtomics) missing.push_back("fragmentStoresAndAtomics");
+    if (!info.independentBlend) missing.push_back("independentBlend");
     if (info.graphicsQueueFamily == UINT32_MAX)
         missing.push_back("a graphics queue with timestamps");
     return missing;

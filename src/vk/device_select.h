@@ -29,6 +29,7 @@ struct DeviceInfo {
     bool multiDrawIndirect = false;
     bool drawIndirectFirstInstance = false;
     bool fragmentStoresAndAtomics = false;
+    bool independentBlend = false; // no-id pipelines mask the ID attachment
     // A queue family with graphics and timestamps; UINT32_MAX if there is none.
     uint32_t graphicsQueueFamily = UINT32_MAX;
     float timestampPeriodNs = 0.0f;
