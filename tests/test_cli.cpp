@@ -1,6 +1,7 @@
 // test_cli.cpp - command-line parsing: every flag, both value spellings, and every refusal.
 #include <gtest/gtest.h>
 
+#include "app/benchmark.h"
 #include "app/cli.h"
 
 using app::Options;
@@ -117,4 +118,46 @@ TEST(Cli, UsageListsEveryFlag) {
           "--part-weight", "--colorize-draws", "--scene",        "--shader-dir", "--model",
           "--parts",       "--copies",         "--stats",        "--export",     "--search-batch"})
         EXPECT_NE(text.find(flag), std::string::npos) << flag;
+}
+
+TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
+    app::Options o = app::parseArgs(std::vector<std::string>{"--benchmark"});
+    EXPECT_TRUE(o.benchmark && o.headless);
+    EXPECT_EQ(o.width, 2560u);
+    EXPECT_EQ(o.height, 1440u);
+    EXPECT_EQ(o.msaa, 4u);
+    EXPECT_EQ(o.copies, 3u);
+    EXPECT_EQ(o.frames, 200u);
+    EXPECT_EQ(o.searchBatch, 16u);
+    EXPECT_EQ(o.renderer, "all");
+    o = app::parseArgs(std::vector<std::string>{"--size", "64x48", "--benchmark", "--msaa", "1",
+                                                "--renderer", "tri-fs,per-draw"});
+    EXPECT_EQ(o.width, 64u);
+    EXPECT_EQ(o.msaa, 1u);
+    EXPECT_EQ(o.copies, 3u);
+    EXPECT_EQ(app::rendererList(o.renderer), (std::vector<std::string>{"tri-fs", "per-draw"}));
+    EXPECT_EQ(app::modeList("all").size(), 3u);
+    EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--mode", "push,mdi-attribute"}),
+                 app::UsageError); // lists only with --benchmark
+    EXPECT_THROW(app::rendererList("tri-fs,"), app::UsageError);
+}
+
+TEST(Cli, PickAndMsaaFlags) {
+    auto o = app::parseArgs(std::vector<std::string>{"--size", "100x50", "--pick", "3,4", "--pick",
+                                                     "99,49", "--select", "0,0", "--msaa", "8"});
+    ASSERT_EQ(o.picks.size(), 2u);
+    EXPECT_EQ(o.picks[1], (app::Options::Pixel{99, 49}));
+    EXPECT_EQ(o.selects.size(), 1u);
+    EXPECT_EQ(o.msaa, 8u);
+    EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--size", "100x50", "--pick", "100,0"}),
+                 app::UsageError);
+    EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--pick", "3"}), app::UsageError);
+    EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--msaa", "3"}), app::UsageError);
+}
+
+TEST(Benchmark, PercentileIsNearestRank) {
+    EXPECT_EQ(app::percentile({}, 0.5), 0.0);
+    EXPECT_EQ(app::percentile({3, 1, 2}, 0.5), 2.0);
+    EXPECT_EQ(app::percentile({5, 1, 4, 2, 3, 6, 7, 8, 9, 10}, 0.9), 9.0);
+    EXPECT_EQ(app::percentile({1, 2}, 1.0), 2.0);
 }

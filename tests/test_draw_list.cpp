@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "app/scene_source.h"
 #include "render/draw_list.h"
 #include "scene/copies.h"
 #include "scene/procedural.h"
@@ -114,4 +115,16 @@ TEST(DrawList, StatsCountWhatEachModeUploads) {
     EXPECT_EQ(base.perDrawBytes, 24 * list.ranges.size());
     EXPECT_EQ(base.indirectBytes, 20 * list.ranges.size());
     EXPECT_EQ(attr.indirectBytes, 24 * list.ranges.size());
+}
+
+// The benchmark's floor: one draw per object and no ID data.
+TEST(DrawList, NoIdDrawsOncePerObjectWithoutIdData) {
+    app::Options source;
+    source.scene = "assembly";
+    const scene::Scene scene = app::loadScene(source).scene;
+    const render::Technique& noId = render::noIdTechnique();
+    EXPECT_EQ(render::findTechnique("no-id"), &noId);
+    const auto list = render::buildDrawList(scene, noId, {});
+    EXPECT_EQ(list.ranges.size(), scene.objects.size());
+    EXPECT_TRUE(list.idBytes.empty());
 }

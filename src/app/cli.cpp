@@ -1,6 +1,7 @@
 // cli.cpp - flag table, value parsing and usage text.
 #include "app/cli.h"
 
+#include <algorithm>
 #include <charconv>
 #include <functional>
 
@@ -101,20 +102,25 @@ const std::vector<Flag>& flags() {
          [](Options& o, auto&) { o.stats = true; }},
         {"--export", "FILE", "write the scene (after copies) as binary glTF and exit",
          [](Options& o, auto& v) { o.exportPath = v; }},
-        {"--renderer", "NAME", "part-ID technique (see --list-renderers; default per-draw)",
+        {"--renderer", "NAME",
+         "part-ID technique (see --list-renderers; default per-draw); with --benchmark a comma "
+         "list or all (default)",
          [](Options& o, auto& v) {
-             if (!render::findTechnique(v))
-                 throw UsageError("--renderer: unknown renderer '" + v +
-                                  "' (known: " + render::techniqueNames() + ")");
+             rendererList(v); // throws on unknown names
              o.renderer = v;
          }},
-        {"--mode", "NAME", "per-draw parameter mode (default push)",
+        {"--mode", "NAME",
+         "per-draw parameter mode (default push); with --benchmark a comma list or all (default)",
          [](Options& o, auto& v) {
-             if (!render::findDrawMode(v))
-                 throw UsageError("--mode: unknown mode '" + v +
-                                  "' (known: " + render::drawModeNames() + ")");
+             modeList(v);
              o.mode = v;
          }},
+        {"--benchmark", nullptr,
+         "headless: time every renderer x mode and the no-id floor; defaults 2560x1440, "
+         "--msaa 4, --copies 3, --frames 200 (each flag overrides)",
+         [](Options& o, auto&) { o.benchmark = o.headless = true; }},
+        {"--benchmark-out", "FILE", "write the benchmark as JSON (CSV when FILE ends in .csv)",
+         [](Options& o, auto& v) { o.benchmarkOut = v; }},
         {"--part-weight", "F", "blend of part colour over material colour, 0 to 1 (default 0.5)",
          [](Options& o, auto& v) { o.partWeight = parseFraction("--part-weight", v); }},
         {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
@@ -148,7 +154,39 @@ const std::vector<Flag>& flags() {
     return table;
 }
 
+template <typename Entry, typename Find>
+std::vector<std::string> splitNames(const char* flag, const std::string& value,
+                                    const std::vector<Entry>& all, Find find,
+                                    const std::string& known) {
+    std::vector<std::string> names;
+    if (value == "all") {
+        for (const auto& entry : all) names.push_back(entry.name);
+        return names;
+    }
+    size_t start = 0;
+    while (start <= value.size()) {
+        const size_t comma = std::min(value.find(',', start), value.size());
+        const std::string name = value.substr(start, comma - start);
+        if (!find(name))
+            throw UsageError(std::string(flag) + ": unknown name '" + name + "' (known: " + known +
+                             ", or all)");
+        names.push_back(name);
+        start = comma + 1;
+    }
+    return names;
+}
+
 } // namespace
+
+std::vector<std::string> rendererList(const std::string& value) {
+    return splitNames("--renderer", value, render::techniques(), render::findTechnique,
+                      render::techniqueNames());
+}
+
+std::vector<std::string> modeList(const std::string& value) {
+    return splitNames("--mode", value, render::drawModes(), render::findDrawMode,
+                      render::drawModeNames());
+}
 
 Options parseArgs(const std::vector<std::string>& args) {
     Options options;
@@ -172,6 +210,21 @@ Options parseArgs(const std::vector<std::string>& args) {
             throw UsageError(name + " takes no value");
         }
         flag->apply(options, value);
+        options.given.push_back(name);
+    }
+    auto given = [&](const char* name) {
+        return std::find(options.given.begin(), options.given.end(), name) != options.given.end();
+    };
+    if (options.benchmark) {
+        if (!given("--size")) options.width = 2560, options.height = 1440;
+        if (!given("--msaa")) options.msaa = 4;
+        if (!given("--copies")) options.copies = 3;
+        if (!given("--frames")) options.frames = 200;
+        if (!given("--renderer")) options.renderer = "all";
+        if (!given("--mode")) options.mode = "all";
+    } else if (rendererList(options.renderer).size() != 1 || modeList(options.mode).size() != 1 ||
+               options.renderer == "all" || options.mode == "all") {
+        throw UsageError("--renderer and --mode take one name each unless --benchmark is given");
     }
     auto outside = [&](const Options::Pixel& p) {
         return p.x >= options.width || p.y >= options.height;

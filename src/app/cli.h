@@ -19,7 +19,7 @@ struct Options {
     uint32_t width = 1280;
     uint32_t height = 720;
     uint32_t frames = 10;
-    uint32_t msaa = 1; // samples per pixel of the scene pass: 1, 2, 4 or 8
+    uint32_t msaa = 1;      // samples per pixel of the scene pass: 1, 2, 4 or 8
     std::string screenshot; // PNG path
     std::string idImage;    // raw little-endian uint32 path
     std::string model;      // glTF file; with scene empty too, the default model
@@ -36,6 +36,9 @@ struct Options {
     bool sortDraws = true;     // by geometry, then material
     bool gsPassthrough = true; // where the device offers it
     std::string shaderDir;
+    bool benchmark = false;         // --renderer and --mode then take comma lists or "all"
+    std::string benchmarkOut;       // JSON, or CSV when the name ends in .csv
+    std::vector<std::string> given; // flags on the command line, for mode-specific defaults
     // Headless picking: one frame per point picks it and prints a JSON line; `select` is
     // picked first and selected as a click there would (steady highlight in the images).
     struct Pixel {
@@ -52,7 +55,14 @@ struct UsageError : std::runtime_error {
 };
 
 // Accepts "--flag value" and "--flag=value". Throws UsageError.
+// With --benchmark, flags not given take the benchmark's defaults (the seed's results table:
+// 2560x1440, 4x MSAA, 3 copies, 200 frames, all renderers and modes).
 Options parseArgs(const std::vector<std::string>& args);
+
+// The names a --renderer or --mode value lists ("all" expands to every one; no-id is never
+// in a list: the benchmark adds it itself).
+std::vector<std::string> rendererList(const std::string& value);
+std::vector<std::string> modeList(const std::string& value);
 Options parseArgs(int argc, char** argv);
 
 std::string usage();

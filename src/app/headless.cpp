@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "app/image_io.h"
+#include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "render/frame_slots.h"
 #include "render/renderer.h"
@@ -97,14 +98,12 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
     std::vector<HeadlessResult> results(configs.size());
     vk::Instance instance({options.validation, {}});
     {
-        const auto devices = instance.devices();
-        vk::Device device(instance, vk::chooseDevice(devices, options.device));
-        vk::ShaderCompiler compiler(vk::ShaderCompiler::locate(options.shaderDir));
-        render::ScenePass pass(device, render::checkedSampleCount(device, options.msaa));
-        const VkExtent2D extent{options.width, options.height};
-        render::SceneTargets targets(device, pass, extent);
-        render::FrameSlots slots(device);
-        render::Renderer renderer(device, compiler, pass);
+        Offscreen rig(instance, options);
+        vk::Device& device = rig.device;
+        const VkExtent2D extent = rig.extent;
+        const render::SceneTargets& targets = rig.targets;
+        render::FrameSlots& slots = rig.slots;
+        render::Renderer& renderer = rig.renderer;
         renderer.setScene(scene);
         Readback readback(device, extent);
 

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "app/benchmark.h"
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/scene_source.h"
@@ -16,6 +17,9 @@ int listRenderers() {
     for (const auto& t : render::techniques()) std::printf("  %-12s %s\n", t.name, t.description);
     std::printf("per-draw modes:\n");
     for (const auto& m : render::drawModes()) std::printf("  %-12s %s\n", m.name, m.description);
+    const render::Technique& floor = render::noIdTechnique();
+    std::printf("reference (the benchmark's floor, no part IDs):\n  %-12s %s\n", floor.name,
+                floor.description);
     return 0;
 }
 
@@ -56,6 +60,7 @@ int main(int argc, char** argv) {
             if (options.stats) std::printf("%s\n", app::statsJson(loaded, options).c_str());
             return 0;
         }
+        if (options.benchmark) return app::benchmarkCommand(options);
         if (!options.headless) {
             // The interactive window arrives with the viewer; until then say what happens.
             if (options.screenshot.empty()) options.screenshot = "idview.png";

@@ -97,7 +97,7 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect) {
     return scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
 }
 
-static std::string jsonString(const std::string& text) {
+std::string jsonString(const std::string& text) {
     std::string out = "\"";
     for (char c : text) {
         if (c == '"' || c == '\\') out += '\\';

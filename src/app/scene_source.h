@@ -41,6 +41,9 @@ LoadedScene loadScene(const Options& options);
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 
+// `text` as a JSON string literal, quotes included.
+std::string jsonString(const std::string& text);
+
 // One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ...
 std::string statsJson(const LoadedScene& loaded, const Options& options);
 

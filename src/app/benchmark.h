@@ -1,0 +1,46 @@
+// benchmark.h - `idview --headless --benchmark`: every chosen renderer x mode, and the no-id
+// floor in each mode, timed on one device with the same scene, camera and settings.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "app/scene_source.h"
+
+namespace app {
+
+struct BenchmarkRow {
+    std::string renderer, mode;
+    double gpuMsMedian = 0, gpuMsP90 = 0; // timestamps around the scene pass
+    double cpuMsMedian = 0;               // recording and submitting one frame
+    size_t draws = 0;
+    uint64_t triangles = 0;
+    uint64_t idBytes = 0;   // the technique's ID data
+    double ratioToNoId = 0; // gpuMsMedian / no-id's gpuMsMedian in the same mode
+    uint32_t frames = 0;    // timed frames (after warm-up)
+};
+
+struct BenchmarkReport {
+    std::string deviceName, driver, api;
+    std::string size, scene;
+    uint32_t msaa = 1, copies = 1, searchBatch = 16, frames = 0;
+    std::vector<BenchmarkRow> rows; // no-id rows first, then renderer-major order
+    uint32_t validationMessages = 0;
+};
+
+// Runs the benchmark `options` describe on `scene` (already loaded, copies applied).
+// Progress goes to stderr.
+BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded);
+
+std::string benchmarkJson(const BenchmarkReport& report);
+std::string benchmarkCsv(const BenchmarkReport& report);
+std::string benchmarkTable(const BenchmarkReport& report);
+
+// The command: loads the scene, runs, prints the table, writes --benchmark-out. Exit code.
+int benchmarkCommand(const Options& options);
+
+// Median and nearest-rank percentile of `values` (0 when empty).
+double percentile(std::vector<double> values, double fraction);
+
+} // namespace app
