@@ -123,6 +123,17 @@ struct DrawPush {
 };
 IDV_CONST DRAW_PUSH_DRAW_OFFSET = 8;
 
+// animate.comp: objects[i].world = rest[i] with its translation moved by offsets[i] * explode
+// (the exploded view, see src/scene/explode.h). One thread per object.
+IDV_CONST ANIMATE_GROUP_SIZE = 64;
+struct AnimationPush {
+    uint64_t objectsAddress; // ObjectData[], world written
+    uint64_t restAddress;    // mat4[]: the scene's world matrices
+    uint64_t offsetsAddress; // vec4[]: per-object offset at explode 1 (w unused)
+    uint objectCount;
+    float explode; // 0: at rest, 1: twice as far from the scene centre
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
 static_assert(sizeof(FrameData) == 160 && offsetof(FrameData, pickPixel) == 136);
@@ -131,6 +142,7 @@ static_assert(sizeof(DrawData) == 24);
 static_assert(sizeof(ObjectData) == 144);
 static_assert(sizeof(Material) == 16);
 static_assert(sizeof(DrawPush) == 32 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
+static_assert(sizeof(AnimationPush) == 32 && offsetof(AnimationPush, explode) == 28);
 } // namespace gpu
 #endif
 #undef IDV_CONST

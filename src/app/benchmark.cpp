@@ -11,6 +11,7 @@
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
+#include "scene/explode.h"
 #include "vk/check.h"
 
 namespace app {
@@ -95,6 +96,10 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             std::vector<double> cpuMs;
             for (uint32_t f = 0; f < warmup + options.frames; ++f, ++frameNumber) {
                 render::FrameSlot& slot = rig.slots.begin(frameNumber);
+                // --animate: objects move while being timed, the compute pass included.
+                if (options.animate)
+                    params.explode =
+                        scene::explodeLoop(options.time.value_or(float(frameNumber) / 60.0f));
                 const auto start = Clock::now();
                 rig.renderer.record(slot, rig.targets, params);
                 rig.slots.submit(slot);

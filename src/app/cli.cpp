@@ -30,6 +30,16 @@ float parseFraction(const std::string& flag, const std::string& text) {
     throw UsageError(flag + " expects a number from 0 to 1, not '" + text + "'");
 }
 
+float parseSeconds(const std::string& flag, const std::string& text) {
+    try {
+        size_t used = 0;
+        float value = std::stof(text, &used);
+        if (used == text.size() && value >= 0.0f && value <= 1e6f) return value;
+    } catch (const std::exception&) {
+    }
+    throw UsageError(flag + " expects seconds from 0 to 1000000, not '" + text + "'");
+}
+
 void parseSize(const std::string& text, Options& o) {
     auto x = text.find('x');
     if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, not '" + text + "'");
@@ -140,6 +150,14 @@ const std::vector<Flag>& flags() {
          [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
         {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
          [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
+        {"--animate", nullptr,
+         "exploded-view animation: objects move out from the scene centre to twice their "
+         "distance and back every 4 s, their matrices written on the GPU each frame; headless "
+         "at --time, else at frame / 60 s",
+         [](Options& o, auto&) { o.animate = true; }},
+        {"--time", "SECONDS",
+         "with --animate: the moment of the loop to render (default: frame / 60)",
+         [](Options& o, auto& v) { o.time = parseSeconds("--time", v); }},
         {"--list-renderers", nullptr, "print the renderers and modes, then exit",
          [](Options& o, auto&) { o.listRenderers = true; }},
         {"--validation", nullptr, "enable the Khronos validation layer; messages make exit 3",
@@ -226,6 +244,7 @@ Options parseArgs(const std::vector<std::string>& args) {
                options.renderer == "all" || options.mode == "all") {
         throw UsageError("--renderer and --mode take one name each unless --benchmark is given");
     }
+    if (options.time && !options.animate) throw UsageError("--time needs --animate");
     auto outside = [&](const Options::Pixel& p) {
         return p.x >= options.width || p.y >= options.height;
     };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,12 @@ struct Options {
     };
     std::vector<Pixel> picks;
     std::vector<Pixel> selects; // at most one; a vector keeps "not given" apart from 0,0
+    // Exploded view: with `animate` it follows scene::explodeLoop at `time` seconds, or at
+    // frame / 60 without --time; otherwise it stays at `explode` (0..1, set by in-process
+    // callers such as the tests).
+    bool animate = false;
+    std::optional<float> time;
+    float explode = 0.0f;
 };
 
 // A bad command line: main() prints the message and the usage, and exits 2.

@@ -11,6 +11,7 @@
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
+#include "scene/explode.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
@@ -113,10 +114,16 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
         params.partColorWeight = options.partWeight;
         params.colorizeDraws = options.colorizeDraws;
         uint64_t frameNumber = 0;
+        // --animate: the exploded view at --time, else at frame / 60 s; otherwise it stays put.
+        auto explodeAt = [&](uint64_t frame) {
+            return options.animate ? scene::explodeLoop(options.time.value_or(float(frame) / 60))
+                                   : options.explode;
+        };
         // One frame that picks `pixel`, waited for: headless has nothing else to overlap.
         auto pickFrame = [&](const Options::Pixel& pixel) {
             render::FrameParams pickParams = params;
             pickParams.pickPixel = glm::uvec2(pixel.x, pixel.y);
+            pickParams.explode = explodeAt(frameNumber);
             render::FrameSlot& slot = slots.begin(frameNumber++);
             renderer.record(slot, targets, pickParams);
             slots.submit(slot);
@@ -143,6 +150,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             const size_t timedBefore = slots.gpuMilliseconds().size();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
+                params.explode = explodeAt(frameNumber);
                 renderer.record(slot, targets, params);
                 if (frame + 1 == options.frames) readback.record(slot.cmd, targets);
                 slots.submit(slot);

@@ -39,9 +39,12 @@ Renderer::~Renderer() {
 
 void Renderer::setScene(const scene::Scene& scene) {
     auto uploaded = std::make_unique<SceneGpu>(device_, scene);
+    auto animator =
+        std::make_unique<Animator>(device_, compiler_, scene, uploaded->objectsAddress());
     // The old buffers may still be read by frames in flight.
     vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
     sceneGpu_ = std::move(uploaded);
+    animator_ = std::move(animator);
 }
 
 void Renderer::configure(const scene::Scene& scene, const RenderConfig& config) {
@@ -177,6 +180,7 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                          0, 1, &toShaders, 0, nullptr, 0, nullptr);
 
+    animator_->record(cmd, params.explode); // outside the pass and its timestamps
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, slot.timestamps, 0);
     std::array<VkClearValue, 3> clears{};
     clears[0].color = {{0.16f, 0.17f, 0.19f, 1.0f}};

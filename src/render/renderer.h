@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/animator.h"
 #include "render/draw_list.h"
 #include "render/frame_slots.h"
 #include "render/scene_gpu.h"
@@ -28,6 +29,7 @@ struct FrameParams {
     // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.
     std::optional<glm::uvec2> pickPixel;
     uint32_t selectedPart = gpu::BACKGROUND_ID; // drawn with the steady highlight
+    float explode = 0.0f; // exploded view, 0 (at rest) to 1; see render/animator.h
 };
 
 struct RenderConfig {
@@ -83,6 +85,7 @@ class Renderer {
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     Variant variant_;
     std::unique_ptr<SceneGpu> sceneGpu_;
+    std::unique_ptr<Animator> animator_; // writes sceneGpu_'s world matrices each frame
     DrawList drawList_;
     DrawBuffers drawBuffers_;
     RenderStats stats_;

@@ -132,7 +132,8 @@ std::vector<DeviceInfo> Instance::devices() const {
     return infos;
 }
 
-Device::Device(const Instance& instance, const DeviceInfo& info)
+Device::Device(const Instance& instance, const DeviceInfo& info,
+               const std::vector<const char*>& extraExtensions)
     : info_(info), debug_(instance.debug()) {
     float priority = 1.0f;
     auto queue = vk::init<VkDeviceQueueCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO);
@@ -154,7 +155,7 @@ Device::Device(const Instance& instance, const DeviceInfo& info)
     features.features.fragmentStoresAndAtomics = VK_TRUE;
     features.features.independentBlend = VK_TRUE;
 
-    std::vector<const char*> extensions;
+    std::vector<const char*> extensions = extraExtensions;
     if (info.geometryShaderPassthrough)
         extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
     auto create = vk::init<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);

@@ -47,8 +47,10 @@ class Instance {
 class Device {
   public:
     // Creates the logical device on `info` (already chosen and checked) with every feature
-    // idview needs enabled.
-    Device(const Instance& instance, const DeviceInfo& info);
+    // idview needs enabled. `extraExtensions` are enabled too (the window adds
+    // VK_KHR_swapchain; headless rendering needs none).
+    Device(const Instance& instance, const DeviceInfo& info,
+           const std::vector<const char*>& extraExtensions = {});
     ~Device();
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;
