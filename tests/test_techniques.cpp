@@ -186,3 +186,31 @@ TEST(Msaa, EveryTechniqueAndModeResolvesTheSameIdImage) {
 }
 
 } // namespace
+
+namespace {
+
+// The layer's synchronization validation over every technique and mode (and the no-id
+// floor), with what adds barriers: MSAA resolve, the pick's reset and copies, the animation's
+// compute pass and the readback. Any hazard it reports counts as a validation message.
+TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
+    Reference& ref = reference("small-x2");
+    std::vector<render::RenderConfig> configs;
+    for (const auto& m : render::drawModes()) {
+        for (const auto& t : render::techniques()) configs.push_back({&t, &m});
+        configs.push_back({&render::noIdTechnique(), &m});
+    }
+    for (uint32_t msaa : {1u, 4u}) {
+        app::Options o = renderOptions("per-draw", "push");
+        o.width = 96;
+        o.height = 64;
+        o.msaa = msaa;
+        o.syncValidation = true;
+        o.picks = {{48, 32}};
+        o.selects = {{40, 30}};
+        o.explode = 0.4f;
+        const auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
+        EXPECT_EQ(results.front().validationMessages, 0u) << "MSAA " << msaa;
+    }
+}
+
+} // namespace

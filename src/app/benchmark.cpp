@@ -66,7 +66,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
     const uint32_t warmup = std::clamp(options.frames / 5, 5u, 50u);
 
-    vk::Instance instance({options.validation, {}});
+    vk::Instance instance({options.validation, {}, options.syncValidation});
     {
         Offscreen rig(instance, options);
         const vk::DeviceInfo& info = rig.device.info();

@@ -16,6 +16,7 @@ struct Options {
     bool listRenderers = false;
     bool headless = false;
     bool validation = false;
+    bool syncValidation = false; // implies validation
     std::string device; // index or name substring; empty: best device
     uint32_t width = 1280;
     uint32_t height = 720;

@@ -97,7 +97,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                        const scene::Camera& camera,
                        const std::vector<render::RenderConfig>& configs) {
     std::vector<HeadlessResult> results(configs.size());
-    vk::Instance instance({options.validation, {}});
+    vk::Instance instance({options.validation, {}, options.syncValidation});
     {
         Offscreen rig(instance, options);
         vk::Device& device = rig.device;

@@ -24,7 +24,7 @@ int listRenderers() {
 }
 
 int listDevices(const app::Options& options) {
-    vk::Instance instance({options.validation, {}});
+    vk::Instance instance({options.validation, {}, options.syncValidation});
     const auto devices = instance.devices();
     if (devices.empty()) std::printf("no Vulkan devices\n");
     for (const auto& info : devices) {

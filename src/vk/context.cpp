@@ -71,8 +71,19 @@ Instance::Instance(const InstanceOptions& options) : verbose_(options.validation
     messenger.pfnUserCallback = &Instance::onMessage;
     messenger.pUserData = this;
 
+    const VkValidationFeatureEnableEXT syncEnable =
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    auto features = vk::init<VkValidationFeaturesEXT>(VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT);
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = &syncEnable;
+    if (options.validation && options.syncValidation) {
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME); // from the layer
+        features.pNext = &messenger;
+    }
+
     auto info = vk::init<VkInstanceCreateInfo>(VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO);
     info.pNext = debugUtils ? &messenger : nullptr;
+    if (options.validation && options.syncValidation) info.pNext = &features;
     info.pApplicationInfo = &app;
     info.enabledLayerCount = static_cast<uint32_t>(layers.size());
     info.ppEnabledLayerNames = layers.data();

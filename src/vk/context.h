@@ -15,6 +15,9 @@ namespace vk {
 struct InstanceOptions {
     bool validation = false;
     std::vector<const char*> extensions; // e.g. surface extensions; empty when headless
+    // With validation: also the layer's synchronization validation (hazards between
+    // commands, across frames and queue submissions), through VK_EXT_validation_features.
+    bool syncValidation = false;
 };
 
 class Instance {
