@@ -103,7 +103,7 @@ const std::vector<Flag>& flags() {
              o.parts = v;
          }},
         {"--copies", "N", "replicate the model N times on a grid (default 1)",
-         [](Options& o, auto& v) { o.copies = parseCount("--copies", v, 1, 4096); }},
+         [](Options& o, auto& v) { o.copies = parseCount("--copies", v, 1, 1000000); }},
         {"--search-batch", "N", "parts per draw of the search techniques, 1 to 32 (default 16)",
          [](Options& o, auto& v) { o.searchBatch = parseCount("--search-batch", v, 1, 32); }},
         {"--stats", nullptr,
@@ -171,6 +171,10 @@ const std::vector<Flag>& flags() {
          [](Options& o, auto&) { o.listDevices = true; }},
         {"--shader-dir", "DIR", "read shaders from DIR instead of the built-in location",
          [](Options& o, auto& v) { o.shaderDir = v; }},
+        {"--script", "FILE",
+         "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
+         "drag, scroll, resize, renderer, mode, msaa, screenshot, quit)",
+         [](Options& o, auto& v) { o.script = v; }},
     };
     return table;
 }

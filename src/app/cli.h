@@ -55,6 +55,8 @@ struct Options {
     bool animate = false;
     std::optional<float> time;
     float explode = 0.0f;
+    // Viewer: scripted input, one `<seconds> <command> [args]` per line (app/input_script.h).
+    std::string script;
 };
 
 // A bad command line: main() prints the message and the usage, and exits 2.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 #include "render/draw_list.h"
 #include "scene/copies.h"
@@ -63,6 +64,20 @@ std::string defaultModelPath() {
     return IDVIEW_SOURCE_ASSET_DIR "/default.glb";
 }
 
+// Copies add objects: refuse in words, before allocating, a count whose object arrays (the
+// scene's on the host, the GPU's copy, the draw lists) would not fit in this machine's RAM.
+static void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
+    const uint64_t objects = uint64_t(scene.objects.size()) * copies;
+    const uint64_t perObject = sizeof(scene::Object) + 2 * sizeof(gpu::ObjectData);
+    const uint64_t needed = objects * perObject;
+    const uint64_t ram = uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGE_SIZE));
+    if (needed > ram / 2)
+        throw std::runtime_error(std::to_string(copies) + " copies make " +
+                                 std::to_string(objects) + " objects, about " +
+                                 std::to_string(needed >> 30) + " GiB for their arrays alone; " +
+                                 "this machine has " + std::to_string(ram >> 30) + " GiB");
+}
+
 LoadedScene loadScene(const Options& options) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
@@ -81,7 +96,10 @@ LoadedScene loadScene(const Options& options) {
             loaded.scene = scene::makeScene(spec.builtin);
         loaded.tilesLayout = spec.builtin == "tiles" && options.copies == 1;
     }
-    if (options.copies > 1) loaded.scene = scene::replicate(loaded.scene, options.copies);
+    if (options.copies > 1) {
+        checkCopiesFit(loaded.scene, options.copies);
+        loaded.scene = scene::replicate(loaded.scene, options.copies);
+    }
     loaded.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return loaded;

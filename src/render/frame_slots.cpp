@@ -78,10 +78,20 @@ void FrameSlots::release() {
     }
 }
 
+// A frame that has not finished after a minute means a hung GPU (the slowest frames seen, on
+// lavapipe with millions of draws, take seconds): say so instead of waiting forever.
+static void waitForFrame(vk::Device& device, VkFence fence) {
+    constexpr uint64_t minute = 60'000'000'000ull;
+    const VkResult result = vkWaitForFences(device.handle(), 1, &fence, VK_TRUE, minute);
+    if (result == VK_TIMEOUT)
+        throw vk::Error("the GPU has not finished a frame in 60 s: it hangs or was lost");
+    vk::check(result, "waiting for a frame");
+}
+
 FrameSlot& FrameSlots::begin(uint64_t frameNumber) {
     FrameSlot& slot = slots_[frameNumber % count];
     VkDevice dev = device_.handle();
-    vk::check(vkWaitForFences(dev, 1, &slot.done, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    waitForFrame(device_, slot.done);
     collect(slot);
     vk::check(vkResetFences(dev, 1, &slot.done), "vkResetFences");
     slot.frameNumber = frameNumber;
@@ -112,8 +122,7 @@ void FrameSlots::submit(FrameSlot& slot, const std::vector<VkSemaphore>& wait,
 
 void FrameSlots::finish() {
     for (FrameSlot& slot : slots_) {
-        vk::check(vkWaitForFences(device_.handle(), 1, &slot.done, VK_TRUE, UINT64_MAX),
-                  "vkWaitForFences");
+        waitForFrame(device_, slot.done);
         collect(slot);
     }
 }

@@ -4,13 +4,18 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
+#include <string>
 
 namespace scene {
 
 Scene replicate(const Scene& scene, uint32_t copies) {
     if (copies == 0) throw std::invalid_argument("copies must be at least 1");
-    if (uint64_t(scene.uniquePartCount()) * copies >= 0xFFFFFFFFull)
-        throw std::invalid_argument("too many copies: unique part IDs would not fit in 32 bits");
+    const uint64_t ids = uint64_t(scene.uniquePartCount()) * copies;
+    if (ids >= 0xFFFFFFFFull)
+        throw std::invalid_argument(std::to_string(copies) + " copies of " +
+                                    std::to_string(scene.uniquePartCount()) + " parts need " +
+                                    std::to_string(ids) +
+                                    " unique part IDs, more than 32-bit IDs can name");
     Scene result = scene;
     result.objects.clear();
     result.objects.reserve(scene.objects.size() * copies);

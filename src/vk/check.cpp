@@ -37,6 +37,10 @@ const char* resultName(VkResult result) {
 
 void check(VkResult result, const char* what) {
     if (result == VK_SUCCESS) return;
+    if (result == VK_ERROR_DEVICE_LOST)
+        throw Error(std::string("the GPU was lost during ") + what +
+                    " (VK_ERROR_DEVICE_LOST: a driver crash, a GPU reset or a removed device); "
+                    "idview cannot continue");
     throw Error(std::string(what) + " failed: " + resultName(result) + " (" +
                 std::to_string(static_cast<int>(result)) + ")");
 }

@@ -69,6 +69,18 @@ class Device {
     // Index of a memory type in `typeBits` with all of `flags`; throws if there is none.
     uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const;
 
+    // Device memory idview holds right now (vk/resources.cpp keeps these up to date), for
+    // the leak checks and the viewer's panel.
+    struct LiveMemory {
+        int64_t allocations = 0;
+        int64_t bytes = 0;
+    };
+    LiveMemory liveMemory() const { return {liveAllocations_.load(), liveBytes_.load()}; }
+    void countAllocation(int64_t bytes, int sign) {
+        liveAllocations_ += sign;
+        liveBytes_ += sign * bytes;
+    }
+
     // Records `record` into a one-time command buffer, submits it and waits. For uploads at
     // scene load, never on the per-frame path.
     template <typename Fn>
@@ -93,6 +105,7 @@ class Device {
     VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool uploadPool_ = VK_NULL_HANDLE;
     VkPhysicalDeviceMemoryProperties memory_{};
+    std::atomic<int64_t> liveAllocations_{0}, liveBytes_{0};
 };
 
 } // namespace vk

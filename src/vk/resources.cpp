@@ -3,22 +3,45 @@
 #include "vk/resources.h"
 
 #include <cstring>
+#include <string>
 
 #include "vk/check.h"
 
 namespace vk {
 
+static std::string mebibytes(VkDeviceSize bytes) {
+    return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
+}
+
+// Too large for the memory heap at all: say so in words instead of letting the driver fail
+// (or the validation layer object). Out of memory at allocation: the same, with the cause.
 static VkDeviceMemory allocate(Device& device, const VkMemoryRequirements& requirements,
-                               VkMemoryPropertyFlags flags, bool deviceAddress) {
+                               VkMemoryPropertyFlags flags, bool deviceAddress,
+                               const std::string& name) {
+    const uint32_t type = device.memoryType(requirements.memoryTypeBits, flags);
+    const VkMemoryHeap& heap =
+        device.memory().memoryHeaps[device.memory().memoryTypes[type].heapIndex];
+    const std::string where = (heap.flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) ? "GPU" : "host";
+    if (requirements.size > heap.size)
+        throw Error("out of " + where + " memory: '" + name + "' needs " +
+                    mebibytes(requirements.size) + " but " + device.info().name + " has " +
+                    mebibytes(heap.size) + " in that heap; try fewer --copies or a smaller model");
     auto flagsInfo =
         vk::init<VkMemoryAllocateFlagsInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO);
     flagsInfo.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
     auto info = vk::init<VkMemoryAllocateInfo>(VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO);
     info.pNext = deviceAddress ? &flagsInfo : nullptr;
     info.allocationSize = requirements.size;
-    info.memoryTypeIndex = device.memoryType(requirements.memoryTypeBits, flags);
+    info.memoryTypeIndex = type;
     VkDeviceMemory memory;
-    check(vkAllocateMemory(device.handle(), &info, nullptr, &memory), "vkAllocateMemory");
+    const VkResult result = vkAllocateMemory(device.handle(), &info, nullptr, &memory);
+    if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+        throw Error("out of " + where + " memory allocating " + mebibytes(requirements.size) +
+                    " for '" + name + "' (idview holds " +
+                    mebibytes(VkDeviceSize(device.liveMemory().bytes)) +
+                    "); try fewer --copies or a smaller model");
+    check(result, "vkAllocateMemory");
+    device.countAllocation(int64_t(requirements.size), +1);
     return memory;
 }
 
@@ -36,7 +59,8 @@ Buffer createBuffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
         vkGetBufferMemoryRequirements(device.handle(), buffer.buffer, &requirements);
         const bool deviceAddress = usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
         if (!memoryFlags) memoryFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-        buffer.memory = allocate(device, requirements, memoryFlags, deviceAddress);
+        buffer.memory = allocate(device, requirements, memoryFlags, deviceAddress, name);
+        buffer.allocated = requirements.size;
         check(vkBindBufferMemory(device.handle(), buffer.buffer, buffer.memory, 0),
               "vkBindBufferMemory");
         if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
@@ -59,7 +83,10 @@ Buffer createBuffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
 
 void destroyBuffer(Device& device, Buffer& buffer) {
     if (buffer.buffer) vkDestroyBuffer(device.handle(), buffer.buffer, nullptr);
-    if (buffer.memory) vkFreeMemory(device.handle(), buffer.memory, nullptr);
+    if (buffer.memory) {
+        vkFreeMemory(device.handle(), buffer.memory, nullptr);
+        device.countAllocation(int64_t(buffer.allocated), -1);
+    }
     buffer = {};
 }
 
@@ -106,7 +133,9 @@ Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageU
     try {
         VkMemoryRequirements requirements;
         vkGetImageMemoryRequirements(device.handle(), image.image, &requirements);
-        image.memory = allocate(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false);
+        image.memory =
+            allocate(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false, name);
+        image.allocated = requirements.size;
         check(vkBindImageMemory(device.handle(), image.image, image.memory, 0),
               "vkBindImageMemory");
         auto view = vk::init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
@@ -128,7 +157,10 @@ Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageU
 void destroyImage(Device& device, Image& image) {
     if (image.view) vkDestroyImageView(device.handle(), image.view, nullptr);
     if (image.image) vkDestroyImage(device.handle(), image.image, nullptr);
-    if (image.memory) vkFreeMemory(device.handle(), image.memory, nullptr);
+    if (image.memory) {
+        vkFreeMemory(device.handle(), image.memory, nullptr);
+        device.countAllocation(int64_t(image.allocated), -1);
+    }
     image = {};
 }
 

@@ -15,6 +15,7 @@ struct Buffer {
     VkDeviceSize size = 0;
     VkDeviceAddress address = 0; // when created with SHADER_DEVICE_ADDRESS usage
     void* mapped = nullptr;      // when host-visible: persistently mapped
+    VkDeviceSize allocated = 0;  // bytes of `memory`
 };
 
 // Device-local unless `memoryFlags` says otherwise. Buffers with SHADER_DEVICE_ADDRESS usage
@@ -33,6 +34,7 @@ struct Image {
     VkImageView view = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{};
+    VkDeviceSize allocated = 0; // bytes of `memory`
 };
 
 Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
