@@ -93,10 +93,14 @@ done <<<"$picks"
     { echo "FAIL pick-json:"; echo "$picks"; failures=$((failures + 1)); }
 expect pick-outside 2 'pixel 200,10 is outside the 160x100 image' -- "$idview" --headless --size 160x100 --pick 200,10
 
-# Without --headless (no window yet) idview says so and renders the default scene to idview.png.
-(cd "$work" && expect default-run 0 'not built yet.*idview.png' -- "$idview" --frames 1 --size 64x48)
-[[ -s $work/idview.png ]] && echo "ok   default-run-png" ||
-    { echo "FAIL default-run-png"; failures=$((failures + 1)); }
+# Without --headless idview opens a window; with no display it says so in one line, exit 1.
+out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$idview" --frames 1 2>&1)
+rc=$?
+if [[ $rc -eq 1 && $(wc -l <<<"$out") -eq 1 && $out == "idview: error: "*"cannot open a window"* ]]; then
+    echo "ok   no-display"
+else
+    echo "FAIL no-display: exit $rc, output:"; echo "$out"; failures=$((failures + 1))
+fi
 
 # --stats: one JSON object with the scene's counts; --export writes a .glb that loads back.
 expect stats-json 0 '^\{"source":"assembly".*"objects":32,.*"parts":312,.*"triangles":2360,.*"load_ms":' -- \

@@ -109,7 +109,8 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             }
             rig.slots.finish();
             const auto& all = rig.slots.gpuMilliseconds();
-            const std::vector<double> gpuMs(all.end() - long(options.frames), all.end());
+            const size_t timed = std::min<size_t>(options.frames, all.size());
+            const std::vector<double> gpuMs(all.end() - long(timed), all.end());
 
             BenchmarkRow row;
             row.renderer = c.technique->name;

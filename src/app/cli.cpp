@@ -173,7 +173,7 @@ const std::vector<Flag>& flags() {
          [](Options& o, auto& v) { o.shaderDir = v; }},
         {"--script", "FILE",
          "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
-         "drag, scroll, resize, renderer, mode, msaa, screenshot, quit)",
+         "drag, scroll, resize, renderer, mode, msaa, screenshot, drop, quit)",
          [](Options& o, auto& v) { o.script = v; }},
     };
     return table;

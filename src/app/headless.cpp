@@ -147,7 +147,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 result.picks.push_back(pickFrame(pixel));
                 params.pickPixel = result.picks.back().pixel;
             }
-            const size_t timedBefore = slots.gpuMilliseconds().size();
+            const uint64_t timedBefore = slots.timedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
                 params.explode = explodeAt(frameNumber);
@@ -156,8 +156,9 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 slots.submit(slot);
             }
             slots.finish();
-            result.gpuMs.assign(slots.gpuMilliseconds().begin() + long(timedBefore),
-                                slots.gpuMilliseconds().end());
+            const auto& gpuMs = slots.gpuMilliseconds(); // the last historyLimit at most
+            const size_t timed = std::min<size_t>(slots.timedFrames() - timedBefore, gpuMs.size());
+            result.gpuMs.assign(gpuMs.end() - long(timed), gpuMs.end());
             const size_t pixels = size_t(extent.width) * extent.height;
             result.color.resize(pixels * 4);
             result.ids.resize(pixels);

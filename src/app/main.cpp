@@ -6,6 +6,7 @@
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/scene_source.h"
+#include "app/viewer.h"
 #include "render/technique.h"
 #include "scene/gltf_writer.h"
 #include "vk/context.h"
@@ -61,13 +62,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (options.benchmark) return app::benchmarkCommand(options);
-        if (!options.headless) {
-            // The interactive window arrives with the viewer; until then say what happens.
-            if (options.screenshot.empty()) options.screenshot = "idview.png";
-            std::printf("idview: the interactive window is not built yet; rendering the default "
-                        "scene headless to %s\n",
-                        options.screenshot.c_str());
-        }
+        if (!options.headless) return app::runViewer(options);
         return app::runHeadless(options);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "idview: error: %s\n", e.what());

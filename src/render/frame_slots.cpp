@@ -142,6 +142,9 @@ void FrameSlots::collect(FrameSlot& slot) {
     vk::check(result, "vkGetQueryPoolResults");
     const double period = device_.info().timestampPeriodNs;
     gpuMs_.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
+    ++timedFrames_;
+    if (gpuMs_.size() >= 2 * historyLimit)
+        gpuMs_.erase(gpuMs_.begin(), gpuMs_.end() - long(historyLimit));
 }
 
 } // namespace render

@@ -43,8 +43,12 @@ class FrameSlots {
     // Waits for every slot and collects the remaining GPU times.
     void finish();
 
-    // GPU milliseconds of the scene pass, one per completed frame, oldest first.
+    // GPU milliseconds of the scene pass, one per completed frame, oldest first: the last
+    // historyLimit frames at least (older ones are dropped, so a long session stays small).
     const std::vector<double>& gpuMilliseconds() const { return gpuMs_; }
+    // GPU times collected since the start, dropped ones included.
+    uint64_t timedFrames() const { return timedFrames_; }
+    static constexpr size_t historyLimit = 1 << 16;
     // The pick of the newest completed frame that picked a pixel. Read from a slot whose
     // fence has signalled, so asking never stalls the CPU.
     const std::optional<PickReading>& latestPick() const { return latestPick_; }
@@ -57,6 +61,7 @@ class FrameSlots {
     vk::Device& device_;
     std::array<FrameSlot, count> slots_;
     std::vector<double> gpuMs_;
+    uint64_t timedFrames_ = 0;
     std::optional<PickReading> latestPick_;
 };
 

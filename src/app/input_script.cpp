@@ -1,0 +1,181 @@
+// input_script.cpp - the script parser and the player that hands out due commands.
+#include "app/input_script.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "render/technique.h"
+
+// Only the key code constants are used; no GLFW function is called here.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace app {
+namespace {
+
+struct CommandSpec {
+    const char* name;
+    ScriptOp op;
+    size_t numbers;    // numeric arguments
+    const char* usage; // for the error message
+};
+
+const CommandSpec commandSpecs[] = {
+    {"key", ScriptOp::Key, 0, "key NAME"},
+    {"move", ScriptOp::Move, 2, "move X Y"},
+    {"click", ScriptOp::Click, 2, "click X Y"},
+    {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1"},
+    {"scroll", ScriptOp::Scroll, 1, "scroll DY"},
+    {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT"},
+    {"renderer", ScriptOp::Renderer, 0, "renderer NAME"},
+    {"mode", ScriptOp::Mode, 0, "mode NAME"},
+    {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
+    {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
+    {"drop", ScriptOp::Drop, 0, "drop FILE"},
+    {"quit", ScriptOp::Quit, 0, "quit"},
+};
+
+std::string upper(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return text;
+}
+
+bool parseNumber(const std::string& text, double& value) {
+    std::istringstream in(text);
+    in >> value;
+    return in && in.peek() == std::char_traits<char>::eof() && std::isfinite(value);
+}
+
+// One line's command; `where` is "file:line" and prefixes every message.
+ScriptCommand parseLine(const std::string& line, const std::string& where) {
+    std::istringstream in(line);
+    std::string time, name;
+    in >> time >> name;
+    auto fail = [&](const std::string& message) { throw ScriptError(where + ": " + message); };
+    ScriptCommand command;
+    command.where = where;
+    if (!parseNumber(time, command.seconds) || command.seconds < 0.0)
+        fail("expected '<seconds> <command> [args]', and '" + time +
+             "' is not a time in seconds (0 or more)");
+    if (name.empty()) fail("a command must follow the time");
+    const CommandSpec* spec = nullptr;
+    for (const auto& candidate : commandSpecs)
+        if (name == candidate.name) spec = &candidate;
+    if (!spec)
+        fail("unknown command '" + name +
+             "' (known: key, move, click, drag, scroll, resize, renderer, mode, msaa, "
+             "screenshot, drop, quit)");
+    command.op = spec->op;
+
+    std::vector<std::string> args;
+    for (std::string word; in >> word;) args.push_back(word);
+    const bool takesText = spec->op == ScriptOp::Key || spec->op == ScriptOp::Renderer ||
+                           spec->op == ScriptOp::Mode || spec->op == ScriptOp::Screenshot ||
+                           spec->op == ScriptOp::Drop;
+    const size_t expected = takesText ? 1 : spec->numbers;
+    if (args.size() != expected) fail(std::string("'") + spec->name + "' takes: " + spec->usage);
+    for (size_t i = 0; i < spec->numbers; ++i)
+        if (!parseNumber(args[i], command.values[i]))
+            fail("'" + args[i] + "' is not a number (" + spec->usage + ")");
+    if (takesText) command.text = args[0];
+
+    switch (spec->op) {
+    case ScriptOp::Key:
+        if (auto code = scriptKeyCode(command.text))
+            command.key = *code;
+        else
+            fail("unknown key '" + command.text + "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB)");
+        break;
+    case ScriptOp::Move:
+    case ScriptOp::Click:
+    case ScriptOp::Drag:
+        for (size_t i = 0; i < spec->numbers; ++i)
+            if (command.values[i] < 0.0) fail("window coordinates cannot be negative");
+        break;
+    case ScriptOp::Resize:
+        for (size_t i = 0; i < 2; ++i)
+            if (command.values[i] < 1.0 || command.values[i] > 16384.0 ||
+                command.values[i] != std::floor(command.values[i]))
+                fail("window size must be whole numbers from 1 to 16384");
+        break;
+    case ScriptOp::Msaa: {
+        const double n = command.values[0];
+        if (n != 1.0 && n != 2.0 && n != 4.0 && n != 8.0) fail("msaa takes 1, 2, 4 or 8");
+        break;
+    }
+    case ScriptOp::Renderer:
+        if (!render::findTechnique(command.text) || command.text == render::noIdTechnique().name)
+            fail("unknown renderer '" + command.text + "' (known: " + render::techniqueNames() +
+                 ")");
+        break;
+    case ScriptOp::Mode:
+        if (!render::findDrawMode(command.text))
+            fail("unknown mode '" + command.text + "' (known: " + render::drawModeNames() + ")");
+        break;
+    default:
+        break;
+    }
+    return command;
+}
+
+} // namespace
+
+std::optional<int> scriptKeyCode(const std::string& name) {
+    const std::string key = upper(name);
+    if (key.size() == 1 && key[0] >= 'A' && key[0] <= 'Z') return GLFW_KEY_A + (key[0] - 'A');
+    if (key.size() == 1 && key[0] >= '0' && key[0] <= '9') return GLFW_KEY_0 + (key[0] - '0');
+    if (key.size() >= 2 && key.size() <= 3 && key[0] == 'F') {
+        double number = 0.0;
+        if (parseNumber(key.substr(1), number) && number >= 1 && number <= 12 &&
+            std::isdigit(static_cast<unsigned char>(key[1])))
+            return GLFW_KEY_F1 + int(number) - 1;
+    }
+    if (key == "ESC" || key == "ESCAPE") return GLFW_KEY_ESCAPE;
+    if (key == "SPACE") return GLFW_KEY_SPACE;
+    if (key == "ENTER") return GLFW_KEY_ENTER;
+    if (key == "TAB") return GLFW_KEY_TAB;
+    return std::nullopt;
+}
+
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name) {
+    std::vector<ScriptCommand> commands;
+    std::istringstream in(text);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (!line.empty() && line.back() == '\r') line.pop_back(); // files written on Windows
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line[first] == '#') continue;
+        commands.push_back(parseLine(line, name + ":" + std::to_string(number)));
+    }
+    return commands;
+}
+
+std::vector<ScriptCommand> loadScript(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw ScriptError("cannot read script '" + path + "'");
+    std::ostringstream text;
+    text << file.rdbuf();
+    return parseScript(text.str(), path);
+}
+
+ScriptPlayer::ScriptPlayer(std::vector<ScriptCommand> commands) : commands_(std::move(commands)) {
+    std::stable_sort(commands_.begin(), commands_.end(),
+                     [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+}
+
+std::vector<ScriptCommand> ScriptPlayer::due(double seconds) {
+    std::vector<ScriptCommand> ready;
+    while (next_ < commands_.size() && commands_[next_].seconds <= seconds)
+        ready.push_back(commands_[next_++]);
+    return ready;
+}
+
+std::optional<double> ScriptPlayer::nextTime() const {
+    if (finished()) return std::nullopt;
+    return commands_[next_].seconds;
+}
+
+} // namespace app

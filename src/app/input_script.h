@@ -1,0 +1,86 @@
+// input_script.h - scripted input for the viewer (`--script FILE`), so tests can drive the
+// real window: one command per line, `<seconds> <command> [args]`, run when that many
+// seconds have passed since the first frame. The viewer feeds each command to the same
+// handlers as real keys, mouse and panel widgets. Parsing is plain C++ and unit-tested.
+//
+//   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB)
+//   1   move 320 200        cursor to window coordinates (top-left origin)
+//   1.2 click 320 200       move there, press and release the left button
+//   1.5 drag 100 100 300 120  left-button drag (orbit) from the first point to the second
+//   2   scroll 2            wheel steps, positive zooms in
+//   2.5 resize 800 500      window size
+//   3   renderer tri-fs     switch technique, as the panel's combo box does
+//   3   mode push           switch per-draw mode
+//   3.5 msaa 4              samples per pixel
+//   4   screenshot out.png  the presented image, panel included
+//   4.5 drop model.glb      a file dropped on the window
+//   5   quit
+//
+// Blank lines and lines starting with '#' are ignored.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace app {
+
+enum class ScriptOp {
+    Key,
+    Move,
+    Click,
+    Drag,
+    Scroll,
+    Resize,
+    Renderer,
+    Mode,
+    Msaa,
+    Screenshot,
+    Drop,
+    Quit
+};
+
+struct ScriptCommand {
+    double seconds = 0.0;
+    ScriptOp op = ScriptOp::Quit;
+    std::string text;               // key name, renderer or mode name, file path
+    int key = 0;                    // Key: the GLFW key code
+    std::array<double, 4> values{}; // coordinates, wheel steps, window size or sample count
+    std::string where;              // "file:line", for messages while it runs
+};
+
+// A script that cannot run; what() is "file:line: what is wrong".
+struct ScriptError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// `name` is the file name used in messages. Throws ScriptError at the first bad line.
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name);
+// Reads and parses a file; throws ScriptError (also when it cannot be read).
+std::vector<ScriptCommand> loadScript(const std::string& path);
+
+// The GLFW key code of a key name as scripts spell it (case-insensitive); nullopt if unknown.
+std::optional<int> scriptKeyCode(const std::string& name);
+
+// Hands out commands in time order as their time comes.
+class ScriptPlayer {
+  public:
+    ScriptPlayer() = default;
+    // Commands with equal times keep their order in the file.
+    explicit ScriptPlayer(std::vector<ScriptCommand> commands);
+
+    // The commands due at `seconds` since the first frame that were not handed out yet.
+    std::vector<ScriptCommand> due(double seconds);
+    // The time of the next command, so an idle (minimised) viewer knows when to wake up.
+    std::optional<double> nextTime() const;
+    bool finished() const { return next_ >= commands_.size(); }
+
+  private:
+    std::vector<ScriptCommand> commands_;
+    size_t next_ = 0;
+};
+
+} // namespace app

@@ -1,0 +1,61 @@
+// orbit_camera.h - the viewer's camera: it orbits, pans and zooms around a target point and
+// turns that into a scene::Camera whose near and far planes hug the scene's bounding sphere
+// as seen from the current eye, so depth precision follows the model whatever its size.
+// Plain maths (no window, no Vulkan), so it is unit-tested.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace app {
+
+class OrbitCamera {
+  public:
+    // Radians of orbit per pixel dragged, and the zoom factor per wheel step.
+    static constexpr float radiansPerPixel = 0.005f;
+    static constexpr float zoomPerStep = 0.85f;
+
+    OrbitCamera() = default;
+    // Starts from `initial` (its eye, target, up axis and field of view) around a scene with
+    // `bounds`; R (resetView) comes back to exactly this view.
+    OrbitCamera(const scene::Camera& initial, const scene::Bounds& bounds);
+
+    // The scene changed size (copies) but the user keeps the view.
+    void setBounds(const scene::Bounds& bounds);
+
+    // Turns around the target: x about the up axis, y up and down (never over the pole).
+    void orbit(glm::vec2 pixels);
+    // Moves eye and target in the view plane so the point under the cursor follows it.
+    void pan(glm::vec2 pixels, float viewportHeight);
+    // Wheel steps (positive: closer). Scales the distance to the target, so the eye never
+    // reaches or crosses it.
+    void zoom(float steps);
+    // Keeps the view direction and frames the whole scene (F).
+    void fit(float aspect);
+    // Back to the initial view (R).
+    void resetView();
+
+    glm::vec3 eye() const;
+    glm::vec3 target() const { return target_; }
+    float distance() const { return distance_; }
+    // The camera for this frame, near and far planes fitted to the bounds. `reach` is how
+    // far from the centre the scene may extend, in bounding radii (an exploded view: 2).
+    scene::Camera camera(float reach = 1.0f) const;
+
+  private:
+    glm::vec3 direction() const; // unit vector from target to eye
+    void setFrom(const scene::Camera& camera);
+
+    // Orthonormal frame: up_, and a_ x b_ = up_ spanning the horizontal plane.
+    glm::vec3 up_{0, 0, 1}, a_{1, 0, 0}, b_{0, 1, 0};
+    glm::vec3 target_{0.0f};
+    float distance_ = 10.0f;
+    float yaw_ = 0.0f, pitch_ = 0.0f; // radians, pitch in (-pi/2, pi/2)
+    float fovY_ = glm::radians(40.0f);
+    scene::Bounds bounds_;
+    scene::Camera initial_;
+};
+
+} // namespace app

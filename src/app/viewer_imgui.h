@@ -1,0 +1,50 @@
+// viewer_imgui.h - Dear ImGui (1.86, Debian's libimgui) drawn over the scene on the swapchain
+// image: its GLFW and Vulkan backends, the descriptor pool its font texture needs, a render
+// pass that keeps what the blit put there (loadOp LOAD) and ends in PRESENT_SRC, and one
+// framebuffer per swapchain image.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "vk/context.h"
+#include "vk/swapchain.h"
+
+struct GLFWwindow;
+
+namespace app {
+
+class ImGuiLayer {
+  public:
+    ImGuiLayer(GLFWwindow* window, const vk::Instance& instance, vk::Device& device,
+               const vk::Swapchain& swapchain);
+    ~ImGuiLayer();
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    // Around Swapchain::recreate: the framebuffers hold the old image views.
+    void releaseFramebuffers();
+    void createFramebuffers(const vk::Swapchain& swapchain);
+
+    // Starts an ImGui frame. The cursor comes from the viewer's input state (window
+    // coordinates, nullopt outside the window) instead of the backend polling the window
+    // system, so scripted input moves ImGui's cursor exactly like real input.
+    void newFrame(std::optional<glm::vec2> cursor);
+    // Records the panel pass on swapchain image `index` (in COLOR_ATTACHMENT_OPTIMAL; left in
+    // PRESENT_SRC_KHR). ImGui::Render() must have run this frame.
+    void record(VkCommandBuffer cmd, uint32_t index) const;
+
+  private:
+    void release();
+
+    vk::Device& device_;
+    VkRenderPass pass_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    std::vector<VkFramebuffer> framebuffers_;
+    VkExtent2D extent_{};
+    bool context_ = false, glfw_ = false, vulkan_ = false; // what release() must shut down
+};
+
+} // namespace app

@@ -1,0 +1,116 @@
+// test_input_script.cpp - the viewer's --script format: every command parses, bad lines name
+// file and line, and the player hands commands out in time order.
+#include <gtest/gtest.h>
+
+#include "app/input_script.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace {
+
+std::string errorOf(const std::string& text) {
+    try {
+        app::parseScript(text, "s.txt");
+    } catch (const app::ScriptError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+} // namespace
+
+TEST(InputScript, ParsesEveryCommand) {
+    const auto commands = app::parseScript("# a comment\n"
+                                           "0.5 key V\n"
+                                           "\n"
+                                           "1 move 10 20\n"
+                                           "1.5 click 30.5 40\n"
+                                           "2 drag 1 2 3 4\n"
+                                           "2.5 scroll -2\n"
+                                           "3 resize 800 600\r\n"
+                                           "3.5 renderer tri-fs\n"
+                                           "4 mode mdi-attribute\n"
+                                           "4.5 msaa 4\n"
+                                           "5 screenshot out.png\n"
+                                           "  6 key esc\n"
+                                           "6.5 drop m.glb\n"
+                                           "7 quit\n",
+                                           "s.txt");
+    ASSERT_EQ(commands.size(), 13u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Key);
+    EXPECT_EQ(commands[0].key, GLFW_KEY_V);
+    EXPECT_DOUBLE_EQ(commands[0].seconds, 0.5);
+    EXPECT_EQ(commands[0].where, "s.txt:2");
+    EXPECT_EQ(commands[1].op, app::ScriptOp::Move);
+    EXPECT_DOUBLE_EQ(commands[1].values[1], 20.0);
+    EXPECT_DOUBLE_EQ(commands[2].values[0], 30.5);
+    EXPECT_EQ(commands[3].op, app::ScriptOp::Drag);
+    EXPECT_DOUBLE_EQ(commands[3].values[3], 4.0);
+    EXPECT_DOUBLE_EQ(commands[4].values[0], -2.0);
+    EXPECT_EQ(commands[5].op, app::ScriptOp::Resize);
+    EXPECT_EQ(commands[6].text, "tri-fs");
+    EXPECT_EQ(commands[7].op, app::ScriptOp::Mode);
+    EXPECT_DOUBLE_EQ(commands[8].values[0], 4.0);
+    EXPECT_EQ(commands[9].text, "out.png");
+    EXPECT_EQ(commands[10].key, GLFW_KEY_ESCAPE);
+    EXPECT_EQ(commands[10].where, "s.txt:13");
+    EXPECT_EQ(commands[11].op, app::ScriptOp::Drop);
+    EXPECT_EQ(commands[11].text, "m.glb");
+    EXPECT_EQ(commands[12].op, app::ScriptOp::Quit);
+}
+
+TEST(InputScript, KeyNames) {
+    EXPECT_EQ(app::scriptKeyCode("f"), GLFW_KEY_F);
+    EXPECT_EQ(app::scriptKeyCode("F1"), GLFW_KEY_F1);
+    EXPECT_EQ(app::scriptKeyCode("f12"), GLFW_KEY_F12);
+    EXPECT_EQ(app::scriptKeyCode("7"), GLFW_KEY_7);
+    EXPECT_EQ(app::scriptKeyCode("Escape"), GLFW_KEY_ESCAPE);
+    EXPECT_FALSE(app::scriptKeyCode("F13").has_value());
+    EXPECT_FALSE(app::scriptKeyCode("FOO").has_value());
+    EXPECT_FALSE(app::scriptKeyCode("").has_value());
+}
+
+TEST(InputScript, BadLinesNameFileAndLine) {
+    EXPECT_EQ(errorOf("1 quit\nsoon quit\n"),
+              "s.txt:2: expected '<seconds> <command> [args]', and 'soon' is not a time in "
+              "seconds (0 or more)");
+    EXPECT_EQ(errorOf("-1 quit"), "s.txt:1: expected '<seconds> <command> [args]', and '-1' is "
+                                  "not a time in seconds (0 or more)");
+    EXPECT_EQ(errorOf("1\n"), "s.txt:1: a command must follow the time");
+    EXPECT_NE(errorOf("\n\n1 jump\n").find("s.txt:3: unknown command 'jump'"), std::string::npos);
+    EXPECT_EQ(errorOf("1 move 10\n"), "s.txt:1: 'move' takes: move X Y");
+    EXPECT_EQ(errorOf("1 click 1 2 3\n"), "s.txt:1: 'click' takes: click X Y");
+    EXPECT_EQ(errorOf("1 move ten 20\n"), "s.txt:1: 'ten' is not a number (move X Y)");
+    EXPECT_EQ(errorOf("1 move -1 20\n"), "s.txt:1: window coordinates cannot be negative");
+    EXPECT_EQ(errorOf("1 resize 0 20\n"),
+              "s.txt:1: window size must be whole numbers from 1 to 16384");
+    EXPECT_EQ(errorOf("1 msaa 3\n"), "s.txt:1: msaa takes 1, 2, 4 or 8");
+    EXPECT_NE(errorOf("1 key HYPER\n").find("s.txt:1: unknown key 'HYPER'"), std::string::npos);
+    EXPECT_NE(errorOf("1 renderer fastest\n").find("s.txt:1: unknown renderer 'fastest'"),
+              std::string::npos);
+    EXPECT_NE(errorOf("1 renderer no-id\n").find("unknown renderer"), std::string::npos);
+    EXPECT_NE(errorOf("1 mode pull\n").find("s.txt:1: unknown mode 'pull'"), std::string::npos);
+    EXPECT_EQ(errorOf("1 quit now\n"), "s.txt:1: 'quit' takes: quit");
+    EXPECT_EQ(errorOf("1 screenshot\n"), "s.txt:1: 'screenshot' takes: screenshot FILE");
+}
+
+TEST(InputScript, MissingFileIsAnError) {
+    EXPECT_THROW(app::loadScript("/nonexistent/script.txt"), app::ScriptError);
+}
+
+TEST(InputScript, PlayerHandsOutCommandsInTimeOrder) {
+    app::ScriptPlayer player(app::parseScript("2 key A\n1 key B\n1 key C\n3 quit\n", "s"));
+    EXPECT_EQ(player.nextTime(), 1.0);
+    EXPECT_TRUE(player.due(0.5).empty());
+    const auto first = player.due(1.0);
+    ASSERT_EQ(first.size(), 2u); // equal times keep the file's order
+    EXPECT_EQ(first[0].text, "B");
+    EXPECT_EQ(first[1].text, "C");
+    const auto rest = player.due(10.0);
+    ASSERT_EQ(rest.size(), 2u);
+    EXPECT_EQ(rest[0].text, "A");
+    EXPECT_EQ(rest[1].op, app::ScriptOp::Quit);
+    EXPECT_TRUE(player.finished());
+    EXPECT_FALSE(player.nextTime().has_value());
+}

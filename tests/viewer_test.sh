@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# viewer_test.sh IDVIEW LAVAPIPE_ICD - the real window, as a user drives it: idview under Xvfb
+# on lavapipe with validation (synchronization validation too), fed a --script that switches
+# through every renderer and mode, changes MSAA, presses V twice, orbits, zooms, resizes,
+# clicks the model, takes a screenshot and drops files on the window. Checks the exit code
+# (3 means validation messages), the title following vsync, the click selecting a part, the
+# drops, and that the screenshot shows a picture. Exit 77: skipped.
+set -uo pipefail
+idview=$1
+icd=$2
+export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
+if ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; then
+    echo "SKIP: xvfb-run and xauth are needed (Debian packages xvfb, xauth)"
+    exit 77
+fi
+work=$(mktemp -d)
+# VIEWER_TEST_KEEP=1 keeps the script, output and screenshot for a look.
+[[ ${VIEWER_TEST_KEEP:-} == 1 ]] && echo "keeping $work" || trap 'rm -rf "$work"' EXIT
+failures=0
+fail() {
+    echo "FAIL $*"
+    failures=$((failures + 1))
+}
+
+# The renderers and modes idview lists, so a new technique is covered without editing this.
+renderers=$("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
+modes=$("$idview" --list-renderers | awk '/^per-draw modes:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
+[[ -n $renderers && -n $modes ]] || fail "could not read --list-renderers"
+
+# Commands queue behind slow ones (a pipeline compile), so the times are only an order.
+# The window is 720x450; the procedural small preset sits in the middle, right of the panel.
+t=0.5
+at() { # at COMMAND...: one script line, 0.1 s after the previous one
+    echo "$t $*"
+    t=$(awk -v t="$t" 'BEGIN{print t + 0.1}')
+}
+wait_s() { # a pause, e.g. for a pick to come back from the GPU (a frame or two)
+    t=$(awk -v t="$t" -v d="$1" 'BEGIN{print t + d}')
+}
+{
+    at move 420 230
+    for r in $renderers; do
+        at renderer "$r"
+        for m in $modes; do at mode "$m"; done
+    done
+    at renderer per-draw
+    at mode push
+    at msaa 4
+    at msaa 1
+    at key V
+    at key V
+    at drag 600 300 560 320
+    at scroll 1
+    at key F
+    at resize 800 500
+    at move 470 260
+    at click 470 260
+    wait_s 0.5
+    at screenshot "$work/window.png"
+    wait_s 0.5
+    at key ESC
+    at drop "$work/broken.glb"
+    at drop "$work/small.glb"
+    wait_s 0.5
+    at quit
+} >"$work/script.txt"
+# Dropped files: one that is not glTF at all, and the same scene exported as .glb.
+echo "not a model" >"$work/broken.glb"
+"$idview" --scene procedural:preset=small --export "$work/small.glb" >/dev/null ||
+    fail "could not export the small scene"
+
+start=$(date +%s)
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --sync-validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/script.txt" >"$work/out.txt" 2>"$work/err.txt"
+rc=$?
+echo "viewer ran for $(($(date +%s) - start)) s"
+if [[ $rc -ne 0 ]]; then
+    fail "exit code $rc (3: validation messages)"
+    head -c 4000 "$work/err.txt"
+fi
+
+# The title: vsync on, then off after the first V, then on again after the second.
+vsync=$(sed -n 's/^idview: title: .* - vsync \(on\|off\).*/\1/p' "$work/out.txt" | uniq | tr '\n' ' ')
+if [[ $vsync == *"on off on"* ]]; then
+    echo "ok   title follows vsync: $vsync"
+else
+    fail "title should go vsync on, off, on; it went: $vsync"
+    head -20 "$work/out.txt"
+fi
+for r in $renderers; do
+    grep -q "^idview: title: idview - $r + " "$work/out.txt" || fail "title never named renderer $r"
+done
+
+# The click on the model selected a part; Esc cleared it (and so did not close the window).
+if grep -q '^idview: selected: part [0-9]' "$work/out.txt"; then
+    echo "ok   click selected: $(grep -m1 '^idview: selected: part' "$work/out.txt")"
+else
+    fail "the click selected no part"
+fi
+grep -q '^idview: selected: none' "$work/out.txt" || fail "Esc did not clear the selection"
+
+# A broken drop names the file and keeps the scene; a good one opens.
+grep -q "^idview: .*broken.glb" "$work/err.txt" || fail "the broken drop reported nothing"
+if grep -q "^idview: opened: .*small.glb" "$work/out.txt"; then
+    echo "ok   dropped model opened"
+else
+    fail "the dropped model did not open"
+fi
+
+# The screenshot is a picture: the window's size and many distinct colours.
+png=$work/window.png
+if [[ ! -s $png ]]; then
+    fail "no screenshot written"
+elif command -v python3 >/dev/null; then
+    if report=$(python3 - "$png" 2>&1 <<'EOF'
+import struct, sys, zlib
+data = open(sys.argv[1], "rb").read()
+assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+pos, idat, head = 8, b"", None
+while pos < len(data):
+    length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+    body = data[pos + 8:pos + 8 + length]
+    if kind == b"IHDR": head = struct.unpack(">IIBBBBB", body)
+    if kind == b"IDAT": idat += body
+    pos += 12 + length
+width, height, depth, colour = head[:4]
+assert depth == 8 and colour == 6, "expected 8-bit RGBA"
+raw, stride, rows, prev = zlib.decompress(idat), width * 4, [], bytearray(width * 4)
+for y in range(height):  # undo the PNG row filters
+    kind, row = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+    for i in range(stride):
+        a = row[i - 4] if i >= 4 else 0
+        b, c = prev[i], (prev[i - 4] if i >= 4 else 0)
+        p = a + b - c
+        pred = [0, a, b, (a + b) // 2,
+                a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else b if abs(p - b) <= abs(p - c) else c][kind]
+        row[i] = (row[i] + pred) & 255
+    rows.append(bytes(row))
+    prev = row
+colours = {r[i:i + 3] for r in rows for i in range(0, stride, 4)}
+print(f"{width}x{height}, {len(colours)} distinct colours")
+assert (width, height) == (800, 500), "expected the resized 800x500 window"
+assert len(colours) >= 200, "too few colours for the model and the panel"
+EOF
+    ); then
+        echo "ok   screenshot $report"
+    else
+        fail "screenshot check: $report"
+    fi
+elif [[ $(stat -c %s "$png") -lt 20000 ]]; then # without python3: a blank PNG is tiny
+    fail "screenshot is suspiciously small ($(stat -c %s "$png") bytes)"
+fi
+
+((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
+echo "viewer test passed"
