@@ -44,5 +44,11 @@ cmake --build build -j"$(nproc)"
 if [[ $what == run ]]; then
     exec build/idview "$@"
 fi
-cd build
-exec ctest --output-on-failure -j"$(nproc)" "$@"
+(cd build && ctest --output-on-failure -j"$(nproc)" "$@")
+# Then the unit and lavapipe tests again under ASan + UBSan + LeakSanitizer, in build-asan/.
+# Only for the whole suite (CI): with ctest arguments, run scripts/sanitize-tests.sh yourself.
+if (($#)); then
+    echo "setup: ctest arguments given, sanitizer pass skipped (scripts/sanitize-tests.sh)"
+    exit 0
+fi
+exec scripts/sanitize-tests.sh

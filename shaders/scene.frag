@@ -43,6 +43,7 @@ void main() {
     DrawData draw = loadDraw(frame, inDrawIndex);
     ObjectData object = loadObject(frame.objectsAddress, draw.objectIndex);
     vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
+    if ((frame.flags & FRAME_IGNORE_MATERIALS) != 0u) base = vec3(NEUTRAL_MATERIAL);
     if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(draw.drawIndex ^ 0x9e3779b9u);
 #if IDV_NO_ID
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.

@@ -44,6 +44,14 @@ IDV_CONST BACKGROUND_ID = 0xFFFFFFFFu;
 
 // FrameData::flags bits.
 IDV_CONST FRAME_COLORIZE_DRAWS = 1u;
+IDV_CONST FRAME_IGNORE_MATERIALS = 2u; // every object shaded with NEUTRAL_MATERIAL
+// The one material of FRAME_IGNORE_MATERIALS (linear RGB): a mid grey, so that only part
+// colours (--part-weight) tint the image.
+#ifdef __cplusplus
+constexpr float NEUTRAL_MATERIAL = 0.5f;
+#else
+const float NEUTRAL_MATERIAL = 0.5;
+#endif
 
 // FrameData::pickPixel.x when no pixel is picked this frame.
 IDV_CONST NO_PICK = 0xFFFFFFFFu;

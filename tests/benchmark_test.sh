@@ -19,8 +19,9 @@ cat "$work/table.txt"
 renderers=$("$idview" --list-renderers | awk '/^renderers:/{r=1;next} /^per-draw modes:/{r=0} r{print $1}')
 modes=$("$idview" --list-renderers | awk '/^per-draw modes:/{m=1;next} /^reference/{m=0} m{print $1}')
 [[ $(wc -w <<<"$renderers") -ge 6 && $(wc -w <<<"$modes") -eq 3 ]] || fail "renderer list: $renderers / $modes"
-[[ $(grep -c '"renderer":' "$work/b.json") -eq $(((7) * 3)) ]] ||
-    fail "expected 21 rows in the JSON, got $(grep -c '"renderer":' "$work/b.json")"
+rows=$((($(wc -w <<<"$renderers") + 1) * 3)) # every renderer and the no-id floor, x 3 modes
+[[ $(grep -c '"renderer":' "$work/b.json") -eq $rows ]] ||
+    fail "expected $rows rows in the JSON, got $(grep -c '"renderer":' "$work/b.json")"
 for r in no-id $renderers; do
     for m in $modes; do
         row=$(grep "\"renderer\":\"$r\",\"mode\":\"$m\"" "$work/b.json")
@@ -38,7 +39,7 @@ for key in '"device":{"name":"llvmpipe' '"driver":"' '"api":"1\.' '"size":"64x48
     '"scene":"procedural:preset=small"' '"copies":2' '"search_batch":16' '"frames":3'; do
     grep -qE "$key" "$work/b.json" || fail "JSON lacks $key"
 done
-grep -q 'benchmark: \[21/21\]' "$work/progress.txt" || fail "progress lines on stderr"
+grep -q "benchmark: \[$rows/$rows\]" "$work/progress.txt" || fail "progress lines on stderr"
 
 # CSV: a header and the same 21 rows.
 "$idview" "${common[@]}" --renderer tri-fs,per-draw --mode push --benchmark-out "$work/b.csv" \

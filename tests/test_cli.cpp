@@ -161,3 +161,34 @@ TEST(Benchmark, PercentileIsNearestRank) {
     EXPECT_EQ(app::percentile({5, 1, 4, 2, 3, 6, 7, 8, 9, 10}, 0.9), 9.0);
     EXPECT_EQ(app::percentile({1, 2}, 1.0), 2.0);
 }
+
+TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
+    Options d = parseArgs(std::vector<std::string>{});
+    EXPECT_EQ(d.nsearchN, 8u);
+    EXPECT_TRUE(d.nsearchGuess);
+    EXPECT_EQ(d.nsearchLinear, 8u);
+    EXPECT_EQ(d.nsearchSteps, 16u);
+    EXPECT_FLOAT_EQ(d.visible, 1.0f);
+    EXPECT_FALSE(d.ignoreMaterials);
+    EXPECT_EQ(d.copyAxes, "xy");
+    Options o = parseArgs({"--renderer", "nsearch-fs", "--nsearch-n", "3", "--nsearch-guess=off",
+                           "--nsearch-linear", "0", "--nsearch-steps", "64", "--visible", "0.25",
+                           "--ignore-materials", "--copy-axes", "zx"});
+    EXPECT_EQ(o.renderer, "nsearch-fs");
+    EXPECT_EQ(o.nsearchN, 3u);
+    EXPECT_FALSE(o.nsearchGuess);
+    EXPECT_EQ(o.nsearchLinear, 0u);
+    EXPECT_EQ(o.nsearchSteps, 64u);
+    EXPECT_FLOAT_EQ(o.visible, 0.25f);
+    EXPECT_TRUE(o.ignoreMaterials);
+    EXPECT_EQ(o.copyAxes, "zx");
+    EXPECT_TRUE(parseArgs({"--nsearch-guess", "on"}).nsearchGuess);
+    EXPECT_EQ(parseArgs({"--nsearch-n", "16", "--nsearch-linear", "64"}).nsearchN, 16u);
+    EXPECT_EQ(parseArgs({"--renderer", "nsearch-gs"}).renderer, "nsearch-gs");
+    const std::vector<std::vector<std::string>> bad = {
+        {"--nsearch-n", "2"},       {"--nsearch-n", "17"},    {"--nsearch-guess", "yes"},
+        {"--nsearch-linear", "65"}, {"--nsearch-steps", "0"}, {"--nsearch-steps", "65"},
+        {"--visible", "1.5"},       {"--visible", "-0.1"},    {"--copy-axes", ""},
+        {"--copy-axes", "xw"},      {"--copy-axes", "xx"},    {"--ignore-materials=1"}};
+    for (const auto& args : bad) EXPECT_THROW(parseArgs(args), UsageError) << args[0];
+}

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/scene_source.h"
 #include "render/draw_list.h"
@@ -127,4 +128,38 @@ TEST(DrawList, NoIdDrawsOncePerObjectWithoutIdData) {
     const auto list = render::buildDrawList(scene, noId, {});
     EXPECT_EQ(list.ranges.size(), scene.objects.size());
     EXPECT_TRUE(list.idBytes.empty());
+}
+
+// --visible: only the first ceil(F * objects) objects are drawn, whatever the technique; draws
+// and triangles follow from those objects alone.
+TEST(DrawList, VisibleFractionDrawsTheFirstObjects) {
+    const scene::Scene& s = smallTwice();
+    EXPECT_EQ(visibleObjectCount(0.0f, 10), 0u);
+    EXPECT_EQ(visibleObjectCount(0.1f, 10), 1u); // not 2: 0.1f is a hair above 0.1
+    EXPECT_EQ(visibleObjectCount(0.25f, 10), 3u);
+    EXPECT_EQ(visibleObjectCount(1.0f, 10), 10u);
+    for (float fraction : {0.0f, 0.25f, 1.0f}) {
+        const size_t objects = size_t(std::ceil(double(fraction) * double(s.objects.size())));
+        size_t parts = 0, batches = 0;
+        uint64_t triangles = 0;
+        for (size_t o = 0; o < objects; ++o) {
+            const scene::Geometry& g = s.geometries[s.objects[o].geometry];
+            parts += g.partCount;
+            batches += (g.partCount + 15) / 16;
+            triangles += g.triangleCount;
+        }
+        for (const auto& t : techniques())
+            for (const auto& m : drawModes()) {
+                const DrawList list = buildDrawList(s, t, {16, true, fraction});
+                const RenderStats stats = statsFor(list, m);
+                const size_t draws = t.split == DrawSplit::PerPart     ? parts
+                                     : t.split == DrawSplit::PerObject ? objects
+                                                                       : batches;
+                EXPECT_EQ(stats.draws, draws) << t.name << " " << fraction;
+                EXPECT_EQ(stats.triangles, triangles) << t.name << " " << fraction;
+                for (const DrawItem& d : list.ranges) EXPECT_LT(d.object, objects) << t.name;
+            }
+    }
+    EXPECT_EQ(statsFor(buildDrawList(s, techniques()[0], {}), drawModes()[0]).triangles,
+              s.drawnTriangleCount());
 }

@@ -114,3 +114,12 @@ TEST(InputScript, PlayerHandsOutCommandsInTimeOrder) {
     EXPECT_TRUE(player.finished());
     EXPECT_FALSE(player.nextTime().has_value());
 }
+
+TEST(InputScript, FramesWaitsAWholeNumberOfFrames) {
+    const auto commands = app::parseScript("1 frames 6\n", "s.txt");
+    ASSERT_EQ(commands.size(), 1u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Frames);
+    EXPECT_EQ(commands[0].values[0], 6.0);
+    EXPECT_THROW(app::parseScript("1 frames 0\n", "s.txt"), app::ScriptError);
+    EXPECT_THROW(app::parseScript("1 frames 2.5\n", "s.txt"), app::ScriptError);
+}

@@ -233,18 +233,18 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Lavapipe, PickPerTechnique,
-                         ::testing::Combine(::testing::Values("per-draw", "tri-fs", "tri-gs",
-                                                              "search-fs", "search-gs",
-                                                              "bsearch-fs"),
-                                            ::testing::Values(1u, 4u)),
-                         [](const auto& info) {
-                             std::string name = std::get<0>(info.param) + "_msaa" +
-                                                std::to_string(std::get<1>(info.param));
-                             for (char& ch : name)
-                                 if (ch == '-') ch = '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Lavapipe, PickPerTechnique,
+    ::testing::Combine(::testing::Values("per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs",
+                                         "bsearch-fs", "nsearch-fs", "nsearch-gs"),
+                       ::testing::Values(1u, 4u)),
+    [](const auto& info) {
+        std::string name =
+            std::get<0>(info.param) + "_msaa" + std::to_string(std::get<1>(info.param));
+        for (char& ch : name)
+            if (ch == '-') ch = '_';
+        return name;
+    });
 
 // The decode of the packed value: depth bits high, part low, all ones for nothing.
 TEST(PickDecode, SplitsDepthAndPart) {

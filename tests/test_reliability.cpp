@@ -52,7 +52,8 @@ SwitchRun switchHundredTimes(bool validation) {
                 current = wanted;
             }
             render::RenderConfig config;
-            config.technique = &render::techniques()[i % render::techniques().size()];
+            // i % 30 first: whatever the technique count, switches 30, 60 and 90 match.
+            config.technique = &render::techniques()[i % 30 % render::techniques().size()];
             config.mode = &render::drawModes()[i % render::drawModes().size()];
             rig.renderer.configure(scenes[current].scene, config);
             render::FrameParams params;
@@ -86,13 +87,15 @@ TEST(Reliability, HundredSwitchesStaySilentAndKeepDeviceMemoryFlat) {
 }
 
 // Host memory without the validation layer, whose own bookkeeping grows with every object
-// created. Allocator and driver caches settle within a few tens of KB; leaking a draw list
-// per switch would add megabytes.
+// created. The first cycles warm the driver's and compiler's caches (lavapipe: about 1 MB,
+// once); from the second cycle on the heap must stay flat within allocator noise, where
+// leaking a draw list per switch would add megabytes.
 TEST(Reliability, HundredSwitchesKeepHostMemoryFlat) {
     const SwitchRun run = switchHundredTimes(false);
     ASSERT_EQ(run.hostBytes.size(), 3u);
-    EXPECT_LT(run.hostBytes[2], run.hostBytes[0] + 128 * 1024)
-        << "host heap grew by " << (run.hostBytes[2] - run.hostBytes[0]) << " bytes";
+    EXPECT_LT(run.hostBytes[2], run.hostBytes[1] + 128 * 1024)
+        << "host heap grew by " << (run.hostBytes[2] - run.hostBytes[1])
+        << " bytes from switch 60 to 90";
     EXPECT_EQ(run.deviceBytes[2], run.deviceBytes[0]);
 }
 

@@ -49,8 +49,11 @@ TEST(Shaders, EveryVariantCompiles) {
     const auto variants = render::allShaderVariants();
     // Per mode: per-draw, tri-fs, bsearch-fs (2 stages); tri-gs in two forms (3 stages each);
     // search-fs at 32 batch sizes (2 stages); search-gs at 32 sizes in two forms (3 stages);
-    // the no-id reference (2 stages).
-    const size_t perMode = 3 * 2 + 2 * 3 + 32 * 2 + 32 * 2 * 3 + 2;
+    // nsearch-fs at each test parameter set (2 stages); nsearch-gs at each set in two forms
+    // (3 stages); the no-id reference (2 stages).
+    const size_t sets = render::narySearchTestSets().size();
+    ASSERT_GE(sets, 4u); // the default and the corners of the flags' ranges
+    const size_t perMode = 3 * 2 + 2 * 3 + 32 * 2 + 32 * 2 * 3 + sets * 2 + sets * 2 * 3 + 2;
     ASSERT_EQ(variants.size(), perMode * render::drawModes().size());
     for (const auto& request : variants) {
         std::vector<uint32_t> spirv;

@@ -214,3 +214,40 @@ TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
 }
 
 } // namespace
+
+namespace {
+
+// nsearch at the corners of its parameters (fan-out 3 and 16, guess on and off, linear scan
+// from 0 and 64 parts, 1 and 64 steps) equals per-draw + push pixel for pixel: a step cap too
+// low to finish leaves the rest to the linear scan, so every set is exact. One renderer
+// switches between the sets, so each change must rebuild the pipeline.
+TEST(NarySearch, EveryParameterSetEqualsPerDraw) {
+    const std::vector<render::NarySearch> sets = {
+        {3, false, 0, 1}, {3, true, 0, 64},  {16, true, 64, 1}, {16, false, 0, 64},
+        {16, true, 0, 1}, {3, true, 64, 64}, {8, true, 8, 16},  {5, false, 1, 2},
+    };
+    for (const char* scene : {"small-x2", "engine-components"}) {
+        Reference& ref = reference(scene);
+        std::vector<render::RenderConfig> configs;
+        for (size_t i = 0; i < sets.size(); ++i) {
+            render::RenderConfig config;
+            config.technique = render::findTechnique(i % 3 == 2 ? "nsearch-gs" : "nsearch-fs");
+            config.mode = &render::drawModes()[i % render::drawModes().size()];
+            config.nsearch = sets[i];
+            configs.push_back(config);
+        }
+        app::Options o = renderOptions("nsearch-fs", "push");
+        auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
+        ASSERT_EQ(results.size(), configs.size());
+        EXPECT_EQ(results.front().validationMessages, 0u);
+        for (size_t i = 0; i < results.size(); ++i) {
+            const render::NarySearch& n = sets[i];
+            EXPECT_EQ(results[i].ids, ref.image.ids)
+                << scene << " " << configs[i].technique->name << " n " << n.n << " guess "
+                << n.guess << " linear " << n.linearBelow << " steps " << n.maxSteps;
+            EXPECT_EQ(results[i].stats.draws, ref.loaded.scene.objects.size());
+        }
+    }
+}
+
+} // namespace

@@ -34,9 +34,6 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
     echo "$t $*"
     t=$(awk -v t="$t" 'BEGIN{print t + 0.1}')
 }
-wait_s() { # a pause, e.g. for a pick to come back from the GPU (a frame or two)
-    t=$(awk -v t="$t" -v d="$1" 'BEGIN{print t + d}')
-}
 {
     at move 420 230
     for r in $renderers; do
@@ -55,13 +52,13 @@ wait_s() { # a pause, e.g. for a pick to come back from the GPU (a frame or two)
     at resize 800 500
     at move 470 260
     at click 470 260
-    wait_s 0.5
+    at frames 6 # the click's pick comes back a frame or two later, however slow frames are
     at screenshot "$work/window.png"
-    wait_s 0.5
+    at frames 3
     at key ESC
     at drop "$work/broken.glb"
     at drop "$work/small.glb"
-    wait_s 0.5
+    at frames 6 # drops open between frames
     at quit
 } >"$work/script.txt"
 # Dropped files: one that is not glTF at all, and the same scene exported as .glb.

@@ -81,6 +81,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         params.viewProj = camera.viewProjection(aspect);
         params.eye = camera.eye;
         params.partColorWeight = options.partWeight;
+        params.ignoreMaterials = options.ignoreMaterials;
 
         std::map<std::string, double> floorByMode;
         uint64_t frameNumber = 0;
@@ -92,6 +93,9 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             config.searchBatch = options.searchBatch;
             config.sortDraws = options.sortDraws;
             config.gsPassthrough = options.gsPassthrough;
+            config.nsearch = {options.nsearchN, options.nsearchGuess, options.nsearchLinear,
+                              options.nsearchSteps};
+            config.visible = options.visible;
             rig.renderer.configure(scene, config);
             std::vector<double> cpuMs;
             for (uint32_t f = 0; f < warmup + options.frames; ++f, ++frameNumber) {

@@ -7,6 +7,7 @@
 
 #include "app/scene_source.h"
 #include "render/technique.h"
+#include "scene/copies.h"
 
 namespace app {
 namespace {
@@ -104,8 +105,39 @@ const std::vector<Flag>& flags() {
          }},
         {"--copies", "N", "replicate the model N times on a grid (default 1)",
          [](Options& o, auto& v) { o.copies = parseCount("--copies", v, 1, 1000000); }},
+        {"--copy-axes", "AXES",
+         "axes the copies' grid spans: any of x, y, z, e.g. x, xz or xyz (default xy)",
+         [](Options& o, auto& v) {
+             try {
+                 scene::parseCopyAxes(v);
+             } catch (const std::invalid_argument& e) {
+                 throw UsageError(std::string("--copy-axes: ") + e.what());
+             }
+             o.copyAxes = v;
+         }},
         {"--search-batch", "N", "parts per draw of the search techniques, 1 to 32 (default 16)",
          [](Options& o, auto& v) { o.searchBatch = parseCount("--search-batch", v, 1, 32); }},
+        {"--nsearch-n", "N", "nsearch renderers: offsets read per step, 3 to 16 (default 8)",
+         [](Options& o, auto& v) { o.nsearchN = parseCount("--nsearch-n", v, 3, 16); }},
+        {"--nsearch-guess", "on|off",
+         "nsearch renderers: start at the part a uniform part size predicts (default on)",
+         [](Options& o, auto& v) {
+             if (v != "on" && v != "off")
+                 throw UsageError("--nsearch-guess expects on or off, not '" + v + "'");
+             o.nsearchGuess = v == "on";
+         }},
+        {"--nsearch-linear", "N",
+         "nsearch renderers: scan linearly from N parts left, 0 to 64 (default 8)",
+         [](Options& o, auto& v) { o.nsearchLinear = parseCount("--nsearch-linear", v, 0, 64); }},
+        {"--nsearch-steps", "N",
+         "nsearch renderers: N-ary steps at most, 1 to 64, a linear scan finishes (default 16)",
+         [](Options& o, auto& v) { o.nsearchSteps = parseCount("--nsearch-steps", v, 1, 64); }},
+        {"--visible", "F",
+         "draw only the first ceil(F * objects) objects in scene order, 0 to 1 (default 1)",
+         [](Options& o, auto& v) { o.visible = parseFraction("--visible", v); }},
+        {"--ignore-materials", nullptr,
+         "shade every object with one neutral grey, so only part colours show",
+         [](Options& o, auto&) { o.ignoreMaterials = true; }},
         {"--stats", nullptr,
          "print the scene's statistics as one JSON object (objects, geometries, parts, "
          "triangles, load_ms, ID buffer bytes) and exit",

@@ -17,7 +17,7 @@ struct Options {
     bool headless = false;
     bool validation = false;
     bool syncValidation = false; // implies validation
-    std::string device; // index or name substring; empty: best device
+    std::string device;          // index or name substring; empty: best device
     uint32_t width = 1280;
     uint32_t height = 720;
     uint32_t frames = 10;
@@ -28,7 +28,15 @@ struct Options {
     std::string scene;      // built-in or procedural scene spec (scene_source.h)
     std::string parts = "primitives";
     uint32_t copies = 1;
+    std::string copyAxes = "xy"; // axes the copies' grid spans (scene/copies.h)
     uint32_t searchBatch = 16;
+    // nsearch-*: render::NarySearch, flag by flag.
+    uint32_t nsearchN = 8;
+    bool nsearchGuess = true;
+    uint32_t nsearchLinear = 8;
+    uint32_t nsearchSteps = 16;
+    float visible = 1.0f; // draw the first ceil(visible * objects) objects
+    bool ignoreMaterials = false;
     bool stats = false;
     std::string exportPath; // write the scene as .glb and exit
     std::string renderer = "per-draw";

@@ -89,6 +89,9 @@ render::RenderConfig renderConfig(const Options& options) {
     config.searchBatch = options.searchBatch;
     config.sortDraws = options.sortDraws;
     config.gsPassthrough = options.gsPassthrough;
+    config.nsearch = {options.nsearchN, options.nsearchGuess, options.nsearchLinear,
+                      options.nsearchSteps};
+    config.visible = options.visible;
     return config;
 }
 
@@ -113,6 +116,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
         params.eye = camera.eye;
         params.partColorWeight = options.partWeight;
         params.colorizeDraws = options.colorizeDraws;
+        params.ignoreMaterials = options.ignoreMaterials;
         uint64_t frameNumber = 0;
         // --animate: the exploded view at --time, else at frame / 60 s; otherwise it stays put.
         auto explodeAt = [&](uint64_t frame) {

@@ -35,6 +35,7 @@ const CommandSpec commandSpecs[] = {
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
+    {"frames", ScriptOp::Frames, 1, "frames N"},
     {"quit", ScriptOp::Quit, 0, "quit"},
 };
 
@@ -67,7 +68,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     if (!spec)
         fail("unknown command '" + name +
              "' (known: key, move, click, drag, scroll, resize, renderer, mode, msaa, "
-             "screenshot, drop, quit)");
+             "screenshot, drop, frames, quit)");
     command.op = spec->op;
 
     std::vector<std::string> args;
@@ -88,6 +89,11 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             command.key = *code;
         else
             fail("unknown key '" + command.text + "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB)");
+        break;
+    case ScriptOp::Frames:
+        if (command.values[0] < 1.0 || command.values[0] > 1000.0 ||
+            command.values[0] != std::floor(command.values[0]))
+            fail("frames takes a whole number from 1 to 1000");
         break;
     case ScriptOp::Move:
     case ScriptOp::Click:

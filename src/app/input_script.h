@@ -14,6 +14,8 @@
 //   3.5 msaa 4              samples per pixel
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
+//   4.8 frames 5            let 5 frames pass before the next command (results of a pick
+//                           arrive a frame or two later, however slow the frames are)
 //   5   quit
 //
 // Blank lines and lines starting with '#' are ignored.
@@ -40,6 +42,7 @@ enum class ScriptOp {
     Msaa,
     Screenshot,
     Drop,
+    Frames,
     Quit
 };
 

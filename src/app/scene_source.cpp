@@ -98,7 +98,8 @@ LoadedScene loadScene(const Options& options) {
     }
     if (options.copies > 1) {
         checkCopiesFit(loaded.scene, options.copies);
-        loaded.scene = scene::replicate(loaded.scene, options.copies);
+        loaded.scene =
+            scene::replicate(loaded.scene, options.copies, scene::parseCopyAxes(options.copyAxes));
     }
     loaded.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -151,10 +152,13 @@ std::string statsJson(const LoadedScene& loaded, const Options& options) {
     const render::DrawMode* mode = render::findDrawMode(options.mode);
     if (technique && mode) {
         const render::RenderStats r = render::statsFor(
-            render::buildDrawList(s, *technique, {options.searchBatch, options.sortDraws}), *mode);
+            render::buildDrawList(s, *technique,
+                                  {options.searchBatch, options.sortDraws, options.visible}),
+            *mode);
         json << ",\"renderer\":" << jsonString(technique->name)
              << ",\"mode\":" << jsonString(mode->name) << ",\"draws\":" << r.draws
-             << ",\"pipelines\":" << r.pipelines << ",\"id_buffer_bytes\":" << r.idBufferBytes
+             << ",\"drawn_triangles\":" << r.triangles << ",\"pipelines\":" << r.pipelines
+             << ",\"id_buffer_bytes\":" << r.idBufferBytes
              << ",\"per_draw_bytes\":" << r.perDrawBytes
              << ",\"indirect_bytes\":" << r.indirectBytes;
     }

@@ -130,6 +130,10 @@ Viewer::Viewer(const Options& options, GLFWwindow* window, vk::Instance& instanc
     settings_.searchBatch = options.searchBatch;
     settings_.partWeight = options.partWeight;
     settings_.colorizeDraws = options.colorizeDraws;
+    settings_.ignoreMaterials = options.ignoreMaterials;
+    settings_.nsearch = {options.nsearchN, options.nsearchGuess, options.nsearchLinear,
+                         options.nsearchSteps};
+    settings_.visible = options.visible;
     settings_.copies = options.copies;
     settings_.animate = options.animate;
     sampleCounts_ = render::supportedSampleCounts(device_);

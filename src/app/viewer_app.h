@@ -25,6 +25,7 @@
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
+#include "scene/copies.h"
 #include "vk/shader_compiler.h"
 #include "vk/swapchain.h"
 
@@ -97,6 +98,7 @@ class Viewer {
     void setMsaa(uint32_t samples);
     bool openScene(const Options& source);
     void setCopies(uint32_t copies);
+    uint32_t copyAxes() const { return scene::parseCopyAxes(options_.copyAxes); } // checked by cli
     void sceneChanged(bool newModel);
     const scene::Scene& scene() const { return copies_ ? *copies_ : base_.scene; }
     float aspect() const;

@@ -120,6 +120,7 @@ void Viewer::drawFrame(double seconds) {
     params.eye = camera.eye;
     params.partColorWeight = settings_.partWeight;
     params.colorizeDraws = settings_.colorizeDraws;
+    params.ignoreMaterials = settings_.ignoreMaterials;
     params.time = float(seconds);
     params.pickPixel = pickPixel();
     if (!params.pickPixel)

@@ -194,6 +194,9 @@ void Viewer::queueCommand(const ScriptCommand& c) {
     case ScriptOp::Drop:
         step([this, path = c.text] { onDrop(path); }, true);
         break;
+    case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
+        for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
+        break;
     case ScriptOp::Quit:
         step([this] { glfwSetWindowShouldClose(window_, GLFW_TRUE); }, true);
         break;

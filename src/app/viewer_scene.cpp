@@ -14,6 +14,8 @@ render::RenderConfig renderConfig(const ViewerSettings& s, const Options& option
     config.technique = &render::techniques()[size_t(s.technique)];
     config.mode = &render::drawModes()[size_t(s.mode)];
     config.searchBatch = s.searchBatch;
+    config.nsearch = s.nsearch;
+    config.visible = s.visible;
     config.sortDraws = options.sortDraws;
     config.gsPassthrough = options.gsPassthrough;
     return config;
@@ -28,6 +30,7 @@ void Viewer::applySettings(const ViewerSettings& wanted) {
     }
     settings_.partWeight = wanted.partWeight;
     settings_.colorizeDraws = wanted.colorizeDraws;
+    settings_.ignoreMaterials = wanted.ignoreMaterials;
     settings_.animate = wanted.animate;
     if (wanted.componentParts != settings_.componentParts) {
         Options source = options_;
@@ -39,7 +42,8 @@ void Viewer::applySettings(const ViewerSettings& wanted) {
     if (wanted.copies != settings_.copies) setCopies(wanted.copies);
     if (wanted.msaa != settings_.msaa) setMsaa(wanted.msaa);
     if (wanted.technique != settings_.technique || wanted.mode != settings_.mode ||
-        wanted.searchBatch != settings_.searchBatch)
+        wanted.searchBatch != settings_.searchBatch || wanted.nsearch != settings_.nsearch ||
+        wanted.visible != settings_.visible)
         configure(wanted);
 }
 
@@ -56,6 +60,8 @@ void Viewer::configure(const ViewerSettings& wanted) {
     settings_.technique = wanted.technique;
     settings_.mode = wanted.mode;
     settings_.searchBatch = wanted.searchBatch;
+    settings_.nsearch = wanted.nsearch;
+    settings_.visible = wanted.visible;
     idBytes_ = scene::idDataBytes(scene(), settings_.searchBatch);
     error_.clear();
     updateTitle(elapsed(), true);
@@ -103,7 +109,7 @@ bool Viewer::openScene(const Options& source) {
     vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
     base_ = std::move(loaded);
     copies_.reset();
-    if (settings_.copies > 1) copies_ = scene::replicate(base_.scene, settings_.copies);
+    if (settings_.copies > 1) copies_ = scene::replicate(base_.scene, settings_.copies, copyAxes());
     settings_.componentParts = source.parts == "components";
     sceneChanged(true);
     error_.clear();
@@ -117,7 +123,7 @@ bool Viewer::openScene(const Options& source) {
 void Viewer::setCopies(uint32_t copies) {
     vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
     copies_.reset();
-    if (copies > 1) copies_ = scene::replicate(base_.scene, copies);
+    if (copies > 1) copies_ = scene::replicate(base_.scene, copies, copyAxes());
     settings_.copies = copies;
     sceneChanged(false);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <type_traits>
 
 #include <imgui.h>
 
@@ -48,19 +49,43 @@ int registryCombo(const char* label, int current, const Entries& entries) {
     return chosen;
 }
 
+// A slider applied on release, not on every step of a drag: each value is its own pipeline
+// or draw list. Only one slider is dragged at a time, so one value in flight is enough.
+template <typename T>
+void sliderOnRelease(const char* label, T& value, T min, T max) {
+    static ImGuiID editing = 0;
+    static T editingValue{};
+    const ImGuiID id = ImGui::GetID(label);
+    T shown = editing == id ? editingValue : value;
+    if constexpr (std::is_same_v<T, float>)
+        ImGui::SliderFloat(label, &shown, min, max, "%.2f");
+    else
+        ImGui::SliderScalar(label, ImGuiDataType_U32, &shown, &min, &max);
+    if (ImGui::IsItemActive()) {
+        editing = id;
+        editingValue = shown;
+    } else if (editing == id) {
+        editing = 0;
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) value = shown;
+}
+
+void narySearch(render::NarySearch& n) {
+    sliderOnRelease("N-ary fan-out", n.n, 3u, 16u);
+    ImGui::Checkbox("N-ary initial guess", &n.guess);
+    sliderOnRelease("N-ary linear below", n.linearBelow, 0u, 64u);
+    sliderOnRelease("N-ary max steps", n.maxSteps, 1u, 64u);
+}
+
 void rendering(ViewerSettings& s, const PanelInfo& info) {
     s.technique = registryCombo("renderer", s.technique, render::techniques());
     s.mode = registryCombo("per-draw mode", s.mode, render::drawModes());
-    // Each batch size is its own pipeline: apply on release, not on every step of a drag.
-    static bool editing = false;
-    static int editingBatch = 0;
-    int batch = editing ? editingBatch : int(s.searchBatch);
-    ImGui::SliderInt("search batch", &batch, 1, 32);
-    editing = ImGui::IsItemActive();
-    editingBatch = batch;
-    if (ImGui::IsItemDeactivatedAfterEdit()) s.searchBatch = uint32_t(batch);
+    sliderOnRelease("search batch", s.searchBatch, 1u, 32u);
+    if (render::techniques()[size_t(s.technique)].narySearch) narySearch(s.nsearch);
+    sliderOnRelease("visible objects", s.visible, 0.0f, 1.0f);
     ImGui::SliderFloat("part weight", &s.partWeight, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("colorize draws", &s.colorizeDraws);
+    ImGui::Checkbox("ignore materials", &s.ignoreMaterials);
     char label[8];
     std::snprintf(label, sizeof label, "%ux", s.msaa);
     if (ImGui::BeginCombo("MSAA", label)) {
@@ -92,7 +117,7 @@ void sceneSection(ViewerSettings& s, const PanelInfo& info) {
     if (!info.scene) return;
     const scene::Scene& scene = *info.scene;
     ImGui::Text("draw calls     %zu", info.stats.draws);
-    ImGui::Text("triangles      %llu", static_cast<unsigned long long>(scene.drawnTriangleCount()));
+    ImGui::Text("triangles      %llu", static_cast<unsigned long long>(info.stats.triangles));
     ImGui::Text("parts          %u", scene.uniquePartCount());
     ImGui::Text("objects        %zu", scene.objects.size());
     ImGui::Text("triangle IDs   %s", bytes(info.idBytes.trianglePartIds).c_str());

@@ -21,8 +21,11 @@ struct ViewerSettings {
     int technique = 0; // index into render::techniques()
     int mode = 0;      // index into render::drawModes()
     uint32_t searchBatch = 16;
+    render::NarySearch nsearch{}; // the nsearch techniques' parameters
+    float visible = 1.0f;         // fraction of the objects drawn, in scene order
     float partWeight = 0.5f;
     bool colorizeDraws = false;
+    bool ignoreMaterials = false;
     uint32_t copies = 1;
     bool componentParts = false; // glTF parts mode: connected components, not primitives
     uint32_t msaa = 1;

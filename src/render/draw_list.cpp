@@ -2,6 +2,7 @@
 #include "render/draw_list.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <tuple>
 
@@ -29,9 +30,15 @@ std::vector<uint8_t> bytesOf(const std::vector<T>& values) {
 
 } // namespace
 
+size_t visibleObjectCount(float fraction, size_t objects) {
+    const double wanted = std::ceil(double(fraction) * double(objects) - 1e-3);
+    return size_t(std::clamp(wanted, 0.0, double(objects)));
+}
+
 RenderStats statsFor(const DrawList& list, const DrawMode& mode) {
     RenderStats stats;
     stats.draws = list.ranges.size();
+    for (const DrawItem& d : list.ranges) stats.triangles += d.indexCount / 3;
     stats.pipelines = 1;
     stats.idBufferBytes = list.idBytes.size();
     if (mode.indirect) {
@@ -46,6 +53,9 @@ DrawList buildDrawList(const scene::Scene& scene, const Technique& technique,
                        const DrawOptions& options) {
     DrawList list;
     list.ranges = splitDraws(scene, technique.split, options.searchBatch);
+    // Before sorting, so "first" means scene order; draws come in object order.
+    const size_t visible = visibleObjectCount(options.visibleFraction, scene.objects.size());
+    std::erase_if(list.ranges, [&](const DrawItem& d) { return d.object >= visible; });
     if (options.sortByGeometryAndMaterial) {
         auto key = [&](const DrawItem& d) {
             const scene::Object& o = scene.objects[d.object];

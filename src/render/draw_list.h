@@ -14,7 +14,14 @@ struct DrawOptions {
     uint32_t searchBatch = 16;
     // Order draws by geometry, then material, so consecutive draws share state.
     bool sortByGeometryAndMaterial = true;
+    // Draw only the first visibleObjectCount(visibleFraction, objects) objects in scene
+    // order: load can be dialled without changing the scene or its unique part IDs.
+    float visibleFraction = 1.0f;
 };
+
+// ceil(fraction * objects), clamped to [0, objects]. A product within 1/1000 of a whole
+// number counts as that number, so float fractions such as 0.1f of 10 objects give 1, not 2.
+size_t visibleObjectCount(float fraction, size_t objects);
 
 struct DrawList {
     std::vector<DrawItem> ranges;
@@ -25,6 +32,7 @@ struct DrawList {
 // What a configuration costs, for --stats and the panel (no GPU needed).
 struct RenderStats {
     size_t draws = 0;
+    uint64_t triangles = 0; // drawn, over all draws
     uint32_t pipelines = 0;
     uint64_t idBufferBytes = 0; // the technique's ID data
     uint64_t perDrawBytes = 0;  // DrawData buffer (mdi modes)

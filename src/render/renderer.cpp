@@ -53,10 +53,12 @@ void Renderer::configure(const scene::Scene& scene, const RenderConfig& config) 
     Variant variant{&technique, config.mode,
                     technique.ids == IdBuffer::PartTriangleCounts ? config.searchBatch : 0u,
                     technique.stage == LookupStage::Geometry && config.gsPassthrough &&
-                        device_.info().geometryShaderPassthrough};
+                        device_.info().geometryShaderPassthrough,
+                    technique.narySearch ? config.nsearch : NarySearch{}};
     // Build everything new first, so a failure leaves the current configuration intact.
     VkPipeline pipeline = variant == variant_ ? VK_NULL_HANDLE : buildPipeline(variant);
-    DrawList list = buildDrawList(scene, technique, {config.searchBatch, config.sortDraws});
+    DrawList list =
+        buildDrawList(scene, technique, {config.searchBatch, config.sortDraws, config.visible});
     DrawBuffers buffers;
     try {
         buffers = uploadDraws(list, *config.mode);
@@ -85,8 +87,9 @@ VkPipeline Renderer::buildPipeline(const Variant& variant) const {
         for (auto& s : stages) vkDestroyShaderModule(device_.handle(), s.module, nullptr);
     };
     try {
-        for (const auto& request : shaderVariants(*variant.technique, *variant.mode,
-                                                  {variant.searchCount, variant.passthrough})) {
+        for (const auto& request :
+             shaderVariants(*variant.technique, *variant.mode,
+                            {variant.searchCount, variant.passthrough, variant.nsearch})) {
             auto spirv = compiler_.compile(request);
             stages.push_back({request.stage, vk::createShaderModule(device_.handle(), spirv)});
             device_.name(VK_OBJECT_TYPE_SHADER_MODULE, stages.back().module, request.label());
@@ -156,7 +159,8 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
     frame.eyePosition = glm::vec4(params.eye, 1.0f);
     frame.viewport = {targets.extent().width, targets.extent().height};
     frame.partColorWeight = params.partColorWeight;
-    frame.flags = params.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u;
+    frame.flags = (params.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
+                  (params.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u);
     frame.sampleZero = pass_.sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();

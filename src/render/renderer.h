@@ -24,7 +24,8 @@ struct FrameParams {
     glm::vec3 eye{0.0f};
     float partColorWeight = 0.5f;
     bool colorizeDraws = false;
-    float time = 0.0f; // seconds; drives the blink of the hovered part
+    bool ignoreMaterials = false; // one neutral grey for every object: only part colours show
+    float time = 0.0f;            // seconds; drives the blink of the hovered part
     // The pixel (top-left origin) whose nearest part this frame picks; the result reaches
     // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.
     std::optional<glm::uvec2> pickPixel;
@@ -38,6 +39,8 @@ struct RenderConfig {
     uint32_t searchBatch = 16;
     bool sortDraws = true;
     bool gsPassthrough = true; // used where the device offers VK_NV_geometry_shader_passthrough
+    NarySearch nsearch{};      // nsearch techniques: compiled in, so a change rebuilds the pipeline
+    float visible = 1.0f;      // draw the first ceil(visible * objects) objects (DrawOptions)
 };
 
 class Renderer {
@@ -64,6 +67,7 @@ class Renderer {
         const DrawMode* mode = nullptr;
         uint32_t searchCount = 0;
         bool passthrough = false;
+        NarySearch nsearch{}; // the default for the techniques that do not read it
         bool operator==(const Variant&) const = default;
     };
     struct DrawBuffers {

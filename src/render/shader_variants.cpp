@@ -18,6 +18,12 @@ std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const 
     const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
     defines.push_back(
         {"IDV_SEARCH_COUNT", std::to_string(searches ? options.searchCount : 1) + "u"});
+    // Other techniques get the defaults, so their source never varies with these.
+    const NarySearch nary = technique.narySearch ? options.nsearch : NarySearch{};
+    defines.push_back({"IDV_NSEARCH_N", std::to_string(nary.n) + "u"});
+    defines.push_back({"IDV_NSEARCH_GUESS", nary.guess ? "1" : "0"});
+    defines.push_back({"IDV_NSEARCH_LINEAR", std::to_string(nary.linearBelow) + "u"});
+    defines.push_back({"IDV_NSEARCH_STEPS", std::to_string(nary.maxSteps) + "u"});
 
     std::map<std::string, std::string> aliases;
     if (technique.lookupFile) aliases["technique.glsl"] = technique.lookupFile;
@@ -29,6 +35,10 @@ std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const 
     return requests;
 }
 
+std::vector<NarySearch> narySearchTestSets() {
+    return {{}, {3, false, 0, 1}, {16, true, 64, 64}, {5, true, 0, 2}, {16, false, 1, 64}};
+}
+
 std::vector<vk::ShaderRequest> allShaderVariants() {
     std::vector<vk::ShaderRequest> all;
     auto add = [&](const Technique& t, const DrawMode& m, VariantOptions o) {
@@ -38,10 +48,14 @@ std::vector<vk::ShaderRequest> allShaderVariants() {
     for (const auto& technique : techniques())
         for (const auto& mode : drawModes()) {
             const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
-            for (uint32_t count = 1; count <= (searches ? 32u : 1u); ++count) {
-                add(technique, mode, {count, false});
-                if (technique.stage == LookupStage::Geometry) add(technique, mode, {count, true});
-            }
+            std::vector<NarySearch> sets{NarySearch{}};
+            if (technique.narySearch) sets = narySearchTestSets();
+            for (uint32_t count = 1; count <= (searches ? 32u : 1u); ++count)
+                for (const NarySearch& nary : sets) {
+                    add(technique, mode, {count, false, nary});
+                    if (technique.stage == LookupStage::Geometry)
+                        add(technique, mode, {count, true, nary});
+                }
         }
     for (const auto& mode : drawModes()) add(noIdTechnique(), mode, {1, false});
     return all;

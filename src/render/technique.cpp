@@ -41,6 +41,14 @@ const std::vector<Technique>& techniques() {
          "one draw per object; fragment shader binary-searches running triangle offsets",
          "techniques/binary_search.glsl", Fragment, IdBuffer::PartTriangleOffsets,
          DrawSplit::PerObject},
+        {"nsearch-fs",
+         "one draw per object; fragment shader N-ary-searches running triangle offsets",
+         "techniques/nary_search.glsl", Fragment, IdBuffer::PartTriangleOffsets,
+         DrawSplit::PerObject, true},
+        {"nsearch-gs",
+         "one draw per object; geometry shader N-ary-searches running triangle offsets",
+         "techniques/nary_search.glsl", Geometry, IdBuffer::PartTriangleOffsets,
+         DrawSplit::PerObject, true},
     };
     return list;
 }

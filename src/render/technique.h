@@ -3,6 +3,7 @@
 // needs a new one, and its name in the test lists; nothing else switches on technique names.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,16 @@ enum class DrawSplit { PerPart, PerObject, PerBatch };
 // None: no part ID at all, the benchmark's reference floor (no-id).
 enum class LookupStage { Fragment, Geometry, None };
 
+// Parameters of the N-ary search (nsearch-*), compiled into the shader as IDV_NSEARCH_*
+// defines, so each set is its own pipeline (the loop unrolls over n - 1 independent loads).
+struct NarySearch {
+    uint32_t n = 8;           // 3..16: each step reads n - 1 offsets and narrows n-fold
+    bool guess = true;        // start where a uniform part size puts the triangle, then widen
+    uint32_t linearBelow = 8; // 0..64: scan linearly once the range has at most this many parts
+    uint32_t maxSteps = 16;   // 1..64: N-ary steps at most; a linear scan finishes the rest
+    bool operator==(const NarySearch&) const = default;
+};
+
 struct Technique {
     const char* name;        // as the CLI spells it
     const char* description; // one line for --list-renderers and the panel
@@ -35,6 +46,7 @@ struct Technique {
     LookupStage stage;
     IdBuffer ids;
     DrawSplit split;
+    bool narySearch = false; // reads RenderConfig::nsearch (the IDV_NSEARCH_* defines)
 };
 
 // How per-draw parameters reach the shaders.

@@ -1,14 +1,48 @@
 // copies.cpp - grid replication of a scene's objects.
 #include "scene/copies.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace scene {
 
-Scene replicate(const Scene& scene, uint32_t copies) {
+uint32_t parseCopyAxes(const std::string& text) {
+    uint32_t axes = 0;
+    for (char c : text) {
+        const uint32_t bit = c == 'x' ? COPY_X : c == 'y' ? COPY_Y : c == 'z' ? COPY_Z : 0u;
+        if (!bit || (axes & bit))
+            throw std::invalid_argument("expects some of x, y and z, each at most once, not '" +
+                                        text + "'");
+        axes |= bit;
+    }
+    if (!axes) throw std::invalid_argument("expects at least one of x, y and z");
+    return axes;
+}
+
+namespace {
+
+// The smallest side such that side^dimensions >= copies: the grid is as compact as it can be.
+uint32_t gridSide(uint32_t copies, int dimensions) {
+    auto fits = [&](uint64_t side) {
+        uint64_t cells = 1;
+        for (int d = 0; d < dimensions && cells < copies; ++d) cells *= side;
+        return cells >= copies;
+    };
+    uint64_t side = uint64_t(std::max(1.0, std::floor(std::pow(double(copies), 1.0 / dimensions))));
+    while (side > 1 && fits(side - 1)) --side; // pow's rounding, either way
+    while (!fits(side)) ++side;
+    return uint32_t(side);
+}
+
+} // namespace
+
+Scene replicate(const Scene& scene, uint32_t copies, uint32_t axes) {
+    if ((axes & (COPY_X | COPY_Y | COPY_Z)) == 0 || (axes & ~uint32_t(COPY_X | COPY_Y | COPY_Z)))
+        throw std::invalid_argument("copy axes must be a non-empty set of x, y and z");
     if (copies == 0) throw std::invalid_argument("copies must be at least 1");
     const uint64_t ids = uint64_t(scene.uniquePartCount()) * copies;
     if (ids >= 0xFFFFFFFFull)
@@ -20,10 +54,22 @@ Scene replicate(const Scene& scene, uint32_t copies) {
     result.objects.clear();
     result.objects.reserve(scene.objects.size() * copies);
     const Bounds bounds = scene.bounds();
-    const glm::vec3 step = (bounds.max - bounds.min) * 1.1f;
-    const uint32_t columns = static_cast<uint32_t>(std::ceil(std::sqrt(double(copies))));
+    glm::vec3 step = (bounds.max - bounds.min) * 1.1f;
+    // A flat scene would put its copies on top of each other along its flat axis.
+    const float largest = std::max(step.x, std::max(step.y, step.z));
+    for (int a = 0; a < 3; ++a)
+        if (step[a] <= 0.0f) step[a] = largest > 0.0f ? largest : 1.0f;
+    std::vector<int> chosen;
+    for (int a = 0; a < 3; ++a)
+        if (axes & (1u << a)) chosen.push_back(a);
+    const uint32_t side = gridSide(copies, int(chosen.size()));
     for (uint32_t copy = 0; copy < copies; ++copy) {
-        const glm::vec3 shift(float(copy % columns) * step.x, float(copy / columns) * step.y, 0.0f);
+        glm::vec3 shift(0.0f);
+        uint32_t rest = copy; // the copy's grid cell, digit by digit in base `side`
+        for (int a : chosen) {
+            shift[a] = float(rest % side) * step[a];
+            rest /= side;
+        }
         const glm::mat4 move = glm::translate(glm::mat4(1.0f), shift);
         for (const Object& o : scene.objects)
             addObject(result, o.geometry, o.material, move * o.world);

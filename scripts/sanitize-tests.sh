@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# sanitize-tests.sh [CTEST ARGS...] - builds idview, idview_core and the tests with
+# AddressSanitizer + UndefinedBehaviorSanitizer (gcc, RelWithDebInfo, -DIDVIEW_SANITIZE=ON) in
+# build-asan/ and runs the unit and lavapipe tests there (cli_test.sh and benchmark_test.sh
+# get build-asan/idview). Any ASan, UBSan or LeakSanitizer report fails. The fuzz label has
+# its own ASan/UBSan build (fuzz/run_fuzz.sh) and the viewer label needs Xvfb: neither runs
+# here. scripts/setup.sh test runs this after the normal ctest; it needs the packages
+# setup.sh installs.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build-asan
+san=$root/tests/sanitizers
+
+[[ -f $build/CMakeCache.txt ]] ||
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIDVIEW_SANITIZE=ON
+cmake --build "$build" -j"$(nproc)"
+
+# Keeps lavapipe and the validation layer mapped until the exit-time leak check (see
+# keep_loaded.c), so their frames have module names and lsan.supp can match them. Plain C,
+# not instrumented; it does nothing in processes without ASan.
+cc -O2 -shared -fPIC -o "$build/libidview_keep_loaded.so" "$san/keep_loaded.c"
+icd=$(echo /usr/share/vulkan/icd.d/lvp_icd.*.json)
+lvp=$(sed -nE 's/.*"library_path": *"([^"]+)".*/\1/p' "$icd")
+export IDVIEW_SAN_KEEP_LOADED="$lvp:libVkLayer_khronos_validation.so"
+export LD_PRELOAD="$build/libidview_keep_loaded.so${LD_PRELOAD:+ $LD_PRELOAD}"
+
+# exitcode=86 everywhere: a report must never pass for an exit code a test expects (idview
+# exits 1 and 2 on purpose, and the sanitizers' default is 1).
+# verify_asan_link_order=0 only because of the LD_PRELOAD above: it puts the helper ahead of
+# libasan, and ASan would refuse to start ("ASan runtime does not come first"). The drivers
+# that the loader dlopens need no ASan option of their own.
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:exitcode=86:detect_leaks=1:\
+check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1:\
+verify_asan_link_order=0"
+export LSAN_OPTIONS="suppressions=$san/lsan.supp:print_suppressions=1:exitcode=86"
+export UBSAN_OPTIONS="suppressions=$san/ubsan.supp:halt_on_error=1:print_stacktrace=1:exitcode=86"
+
+cd "$build"
+ctest --output-on-failure -j"$(nproc)" -L 'unit|lavapipe' "$@"
