@@ -49,6 +49,7 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
     at drag 600 300 560 320
     at scroll 1
     at key F
+    at key R
     at resize 800 500
     at move 470 260
     at click 470 260
@@ -87,6 +88,8 @@ fi
 for r in $renderers; do
     grep -q "^idview: title: idview - $r + " "$work/out.txt" || fail "title never named renderer $r"
 done
+
+grep -q '^idview: shaders reloaded' "$work/out.txt" || fail "R did not reload the shaders"
 
 # The click on the model selected a part; Esc cleared it (and so did not close the window).
 if grep -q '^idview: selected: part [0-9]' "$work/out.txt"; then

@@ -143,6 +143,7 @@ std::optional<int> scriptKeyCode(const std::string& name) {
     if (key == "SPACE") return GLFW_KEY_SPACE;
     if (key == "ENTER") return GLFW_KEY_ENTER;
     if (key == "TAB") return GLFW_KEY_TAB;
+    if (key == "HOME") return GLFW_KEY_HOME;
     return std::nullopt;
 }
 

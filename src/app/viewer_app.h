@@ -94,6 +94,7 @@ class Viewer {
     void openDroppedFiles();
     void applySettings(const ViewerSettings& wanted);
     void configure(const ViewerSettings& wanted);
+    void reloadShaders(); // R: recompile from shaders/, keep the last good pipeline on error
     void buildRig(uint32_t samples);
     void setMsaa(uint32_t samples);
     bool openScene(const Options& source);

@@ -47,6 +47,9 @@ void Viewer::onKey(int key, int scancode, int action, int mods) {
         camera_.fit(aspect());
         break;
     case GLFW_KEY_R:
+        reloadShaders();
+        break;
+    case GLFW_KEY_HOME:
         camera_.resetView();
         break;
     case GLFW_KEY_F1:

@@ -47,6 +47,18 @@ void Viewer::applySettings(const ViewerSettings& wanted) {
         configure(wanted);
 }
 
+void Viewer::reloadShaders() {
+    try {
+        rig_->renderer.reloadShaders();
+        error_.clear();
+        std::printf("idview: shaders reloaded\n");
+        std::fflush(stdout);
+    } catch (const vk::ShaderError& e) {
+        error_ = e.what(); // shown in the panel; the last good pipeline keeps drawing
+        std::fprintf(stderr, "idview: %s\n", error_.c_str());
+    }
+}
+
 void Viewer::configure(const ViewerSettings& wanted) {
     vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle"); // buffers get replaced
     try {

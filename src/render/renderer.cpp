@@ -81,6 +81,14 @@ void Renderer::configure(const scene::Scene& scene, const RenderConfig& config) 
     stats_.gsPassthrough = variant_.passthrough;
 }
 
+void Renderer::reloadShaders() {
+    if (!variant_.technique) return; // nothing configured yet
+    VkPipeline pipeline = buildPipeline(variant_);
+    vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle"); // frames in flight
+    vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
+    pipeline_ = pipeline;
+}
+
 VkPipeline Renderer::buildPipeline(const Variant& variant) const {
     std::vector<ShaderStage> stages;
     auto destroyModules = [&] {

@@ -56,6 +56,10 @@ class Renderer {
     // variant changes; a compile error throws and leaves the previous configuration working.
     void configure(const scene::Scene& scene, const RenderConfig& config);
 
+    // Compiles the current pipeline again from the shader files (edited while running). A
+    // compile error throws vk::ShaderError and the previous pipeline keeps drawing.
+    void reloadShaders();
+
     // Records the scene pass with timestamps around it into the slot's command buffer.
     void record(FrameSlot& slot, const SceneTargets& targets, const FrameParams& params) const;
 
