@@ -164,19 +164,19 @@ TEST(Benchmark, PercentileIsNearestRank) {
 
 TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
     Options d = parseArgs(std::vector<std::string>{});
-    EXPECT_EQ(d.nsearchN, 8u);
-    EXPECT_TRUE(d.nsearchGuess);
+    EXPECT_EQ(d.nsearchN, 3u);
+    EXPECT_FALSE(d.nsearchGuess);
     EXPECT_EQ(d.nsearchLinear, 8u);
     EXPECT_EQ(d.nsearchSteps, 16u);
     EXPECT_FLOAT_EQ(d.visible, 1.0f);
     EXPECT_FALSE(d.ignoreMaterials);
     EXPECT_EQ(d.copyAxes, "xy");
-    Options o = parseArgs({"--renderer", "nsearch-fs", "--nsearch-n", "3", "--nsearch-guess=off",
+    Options o = parseArgs({"--renderer", "nsearch-fs", "--nsearch-n", "5", "--nsearch-guess=on",
                            "--nsearch-linear", "0", "--nsearch-steps", "64", "--visible", "0.25",
                            "--ignore-materials", "--copy-axes", "zx"});
     EXPECT_EQ(o.renderer, "nsearch-fs");
-    EXPECT_EQ(o.nsearchN, 3u);
-    EXPECT_FALSE(o.nsearchGuess);
+    EXPECT_EQ(o.nsearchN, 5u);
+    EXPECT_TRUE(o.nsearchGuess);
     EXPECT_EQ(o.nsearchLinear, 0u);
     EXPECT_EQ(o.nsearchSteps, 64u);
     EXPECT_FLOAT_EQ(o.visible, 0.25f);

@@ -117,10 +117,10 @@ const std::vector<Flag>& flags() {
          }},
         {"--search-batch", "N", "parts per draw of the search techniques, 1 to 32 (default 16)",
          [](Options& o, auto& v) { o.searchBatch = parseCount("--search-batch", v, 1, 32); }},
-        {"--nsearch-n", "N", "nsearch renderers: offsets read per step, 3 to 16 (default 8)",
+        {"--nsearch-n", "N", "nsearch renderers: offsets read per step, 3 to 16 (default 3)",
          [](Options& o, auto& v) { o.nsearchN = parseCount("--nsearch-n", v, 3, 16); }},
         {"--nsearch-guess", "on|off",
-         "nsearch renderers: start at the part a uniform part size predicts (default on)",
+         "nsearch renderers: start at the part a uniform part size predicts (default off)",
          [](Options& o, auto& v) {
              if (v != "on" && v != "off")
                  throw UsageError("--nsearch-guess expects on or off, not '" + v + "'");

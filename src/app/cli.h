@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "render/technique.h" // NarySearch defaults (plain C++)
+
 namespace app {
 
 struct Options {
@@ -31,8 +33,8 @@ struct Options {
     std::string copyAxes = "xy"; // axes the copies' grid spans (scene/copies.h)
     uint32_t searchBatch = 16;
     // nsearch-*: render::NarySearch, flag by flag.
-    uint32_t nsearchN = 8;
-    bool nsearchGuess = true;
+    uint32_t nsearchN = render::NarySearch{}.n; // defaults measured best on the H100
+    bool nsearchGuess = render::NarySearch{}.guess;
     uint32_t nsearchLinear = 8;
     uint32_t nsearchSteps = 16;
     float visible = 1.0f; // draw the first ceil(visible * objects) objects

@@ -66,7 +66,7 @@ std::string defaultModelPath() {
 
 // Copies add objects: refuse in words, before allocating, a count whose object arrays (the
 // scene's on the host, the GPU's copy, the draw lists) would not fit in this machine's RAM.
-static void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
+void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
     const uint64_t objects = uint64_t(scene.objects.size()) * copies;
     const uint64_t perObject = sizeof(scene::Object) + 2 * sizeof(gpu::ObjectData);
     const uint64_t needed = objects * perObject;

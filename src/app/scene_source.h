@@ -38,6 +38,10 @@ std::string defaultModelPath();
 // scene::ModelError / std::runtime_error with a one-line message.
 LoadedScene loadScene(const Options& options);
 
+// Throws std::runtime_error, one line, when `copies` of `scene` would not fit in this
+// machine's memory (checked before any allocation).
+void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
+
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 

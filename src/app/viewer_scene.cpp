@@ -132,12 +132,28 @@ bool Viewer::openScene(const Options& source) {
     return true;
 }
 
+// A count that cannot fit (IDs, host or GPU memory) is refused in the panel; the scene drawn
+// before stays (Renderer::setScene uploads the new scene before letting go of the old).
 void Viewer::setCopies(uint32_t copies) {
-    vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
-    copies_.reset();
-    if (copies > 1) copies_ = scene::replicate(base_.scene, copies, copyAxes());
-    settings_.copies = copies;
-    sceneChanged(false);
+    const uint32_t before = settings_.copies;
+    std::optional<scene::Scene> next;
+    try {
+        if (copies > 1) {
+            checkCopiesFit(base_.scene, copies);
+            next = scene::replicate(base_.scene, copies, copyAxes());
+        }
+        vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
+        std::swap(copies_, next); // `next` now holds the previous copies
+        settings_.copies = copies;
+        sceneChanged(false);
+    } catch (const std::exception& e) {
+        error_ = e.what();
+        std::fprintf(stderr, "idview: %s\n", error_.c_str());
+        if (settings_.copies != before) {
+            std::swap(copies_, next);
+            settings_.copies = before;
+        }
+    }
 }
 
 void Viewer::sceneChanged(bool newModel) {

@@ -31,9 +31,10 @@ enum class LookupStage { Fragment, Geometry, None };
 
 // Parameters of the N-ary search (nsearch-*), compiled into the shader as IDV_NSEARCH_*
 // defines, so each set is its own pipeline (the loop unrolls over n - 1 independent loads).
+// Defaults: the fastest set of the H100 sweep in docs/benchmarks.md (3, off, 8, 16).
 struct NarySearch {
-    uint32_t n = 8;           // 3..16: each step reads n - 1 offsets and narrows n-fold
-    bool guess = true;        // start where a uniform part size puts the triangle, then widen
+    uint32_t n = 3;           // 3..16: each step reads n - 1 offsets and narrows n-fold
+    bool guess = false;       // start where a uniform part size puts the triangle, then widen
     uint32_t linearBelow = 8; // 0..64: scan linearly once the range has at most this many parts
     uint32_t maxSteps = 16;   // 1..64: N-ary steps at most; a linear scan finishes the rest
     bool operator==(const NarySearch&) const = default;
