@@ -50,6 +50,9 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
     at scroll 1
     at key F
     at key R
+    at copies 1000000 # cannot fit: refused in words, the scene stays
+    at copies 2
+    at copies 1
     at resize 800 500
     at move 470 260
     at click 470 260
@@ -90,6 +93,8 @@ for r in $renderers; do
 done
 
 grep -q '^idview: shaders reloaded' "$work/out.txt" || fail "R did not reload the shaders"
+grep -q '^idview: 1000000 copies make .* objects' "$work/err.txt" ||
+    fail "1000000 copies were not refused in words"
 
 # The click on the model selected a part; Esc cleared it (and so did not close the window).
 if grep -q '^idview: selected: part [0-9]' "$work/out.txt"; then

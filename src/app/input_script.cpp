@@ -33,6 +33,7 @@ const CommandSpec commandSpecs[] = {
     {"renderer", ScriptOp::Renderer, 0, "renderer NAME"},
     {"mode", ScriptOp::Mode, 0, "mode NAME"},
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
+    {"copies", ScriptOp::Copies, 1, "copies N"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
@@ -67,7 +68,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (name == candidate.name) spec = &candidate;
     if (!spec)
         fail("unknown command '" + name +
-             "' (known: key, move, click, drag, scroll, resize, renderer, mode, msaa, "
+             "' (known: key, move, click, drag, scroll, resize, renderer, mode, msaa, copies, "
              "screenshot, drop, frames, quit)");
     command.op = spec->op;
 
@@ -89,6 +90,11 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             command.key = *code;
         else
             fail("unknown key '" + command.text + "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB)");
+        break;
+    case ScriptOp::Copies:
+        if (command.values[0] < 1.0 || command.values[0] > 1e6 ||
+            command.values[0] != std::floor(command.values[0]))
+            fail("copies takes a whole number from 1 to 1000000");
         break;
     case ScriptOp::Frames:
         if (command.values[0] < 1.0 || command.values[0] > 1000.0 ||

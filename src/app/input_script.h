@@ -12,6 +12,7 @@
 //   3   renderer tri-fs     switch technique, as the panel's combo box does
 //   3   mode push           switch per-draw mode
 //   3.5 msaa 4              samples per pixel
+//   3.6 copies 3            model copies, as the panel's field does
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
 //   4.8 frames 5            let 5 frames pass before the next command (results of a pick
@@ -40,6 +41,7 @@ enum class ScriptOp {
     Renderer,
     Mode,
     Msaa,
+    Copies,
     Screenshot,
     Drop,
     Frames,

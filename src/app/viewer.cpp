@@ -135,6 +135,7 @@ Viewer::Viewer(const Options& options, GLFWwindow* window, vk::Instance& instanc
                          options.nsearchSteps};
     settings_.visible = options.visible;
     settings_.copies = options.copies;
+    settings_.copyAxes = scene::parseCopyAxes(options.copyAxes); // checked by the CLI
     settings_.animate = options.animate;
     sampleCounts_ = render::supportedSampleCounts(device_);
     render::checkedSampleCount(device_, options.msaa); // one line naming what is offered

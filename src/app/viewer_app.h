@@ -98,8 +98,8 @@ class Viewer {
     void buildRig(uint32_t samples);
     void setMsaa(uint32_t samples);
     bool openScene(const Options& source);
-    void setCopies(uint32_t copies);
-    uint32_t copyAxes() const { return scene::parseCopyAxes(options_.copyAxes); } // checked by cli
+    bool setCopies(uint32_t copies); // false: refused, the error is in the panel
+    uint32_t copyAxes() const { return settings_.copyAxes; }
     void sceneChanged(bool newModel);
     const scene::Scene& scene() const { return copies_ ? *copies_ : base_.scene; }
     float aspect() const;

@@ -188,6 +188,9 @@ void Viewer::queueCommand(const ScriptCommand& c) {
             settings([i = indexOf(render::drawModes(), c.text)](ViewerSettings& s) { s.mode = i; }),
             true);
         break;
+    case ScriptOp::Copies:
+        step(settings([n = uint32_t(v[0])](ViewerSettings& s) { s.copies = n; }), true);
+        break;
     case ScriptOp::Msaa:
         step(settings([n = uint32_t(v[0])](ViewerSettings& s) { s.msaa = n; }), true);
         break;

@@ -39,7 +39,11 @@ void Viewer::applySettings(const ViewerSettings& wanted) {
         source.parts = wanted.componentParts ? "components" : "primitives";
         openScene(source); // keeps the old scene and its mode if the reload fails
     }
-    if (wanted.copies != settings_.copies) setCopies(wanted.copies);
+    if (wanted.copies != settings_.copies || wanted.copyAxes != settings_.copyAxes) {
+        const uint32_t axes = settings_.copyAxes;
+        settings_.copyAxes = wanted.copyAxes; // setCopies lays the grid out along these
+        if (!setCopies(wanted.copies)) settings_.copyAxes = axes;
+    }
     if (wanted.msaa != settings_.msaa) setMsaa(wanted.msaa);
     if (wanted.technique != settings_.technique || wanted.mode != settings_.mode ||
         wanted.searchBatch != settings_.searchBatch || wanted.nsearch != settings_.nsearch ||
@@ -134,9 +138,10 @@ bool Viewer::openScene(const Options& source) {
 
 // A count that cannot fit (IDs, host or GPU memory) is refused in the panel; the scene drawn
 // before stays (Renderer::setScene uploads the new scene before letting go of the old).
-void Viewer::setCopies(uint32_t copies) {
+bool Viewer::setCopies(uint32_t copies) {
     const uint32_t before = settings_.copies;
     std::optional<scene::Scene> next;
+    bool swapped = false;
     try {
         if (copies > 1) {
             checkCopiesFit(base_.scene, copies);
@@ -144,15 +149,16 @@ void Viewer::setCopies(uint32_t copies) {
         }
         vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
         std::swap(copies_, next); // `next` now holds the previous copies
+        swapped = true;
         settings_.copies = copies;
         sceneChanged(false);
+        return true;
     } catch (const std::exception& e) {
         error_ = e.what();
         std::fprintf(stderr, "idview: %s\n", error_.c_str());
-        if (settings_.copies != before) {
-            std::swap(copies_, next);
-            settings_.copies = before;
-        }
+        if (swapped) std::swap(copies_, next);
+        settings_.copies = before;
+        return false;
     }
 }
 

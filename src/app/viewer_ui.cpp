@@ -106,6 +106,15 @@ void sceneSection(ViewerSettings& s, const PanelInfo& info) {
     int copies = int(s.copies);
     if (ImGui::InputInt("model copies", &copies, 1, 4, ImGuiInputTextFlags_EnterReturnsTrue))
         s.copies = uint32_t(std::clamp(copies, 1, 256));
+    ImGui::Text("copies along");
+    for (uint32_t bit = 0; bit < 3; ++bit) {
+        ImGui::SameLine();
+        bool on = s.copyAxes & (1u << bit);
+        const char* names[] = {"x", "y", "z"};
+        // At least one axis stays on: unticking the last one is ignored.
+        if (ImGui::Checkbox(names[bit], &on) && (on || (s.copyAxes & ~(1u << bit))))
+            s.copyAxes = on ? (s.copyAxes | (1u << bit)) : (s.copyAxes & ~(1u << bit));
+    }
     if (info.gltf) {
         int parts = s.componentParts ? 1 : 0;
         ImGui::Text("parts");

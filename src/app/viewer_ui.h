@@ -27,6 +27,7 @@ struct ViewerSettings {
     bool colorizeDraws = false;
     bool ignoreMaterials = false;
     uint32_t copies = 1;
+    uint32_t copyAxes = 3;       // scene::CopyAxis bits the copies' grid spans (x and y)
     bool componentParts = false; // glTF parts mode: connected components, not primitives
     uint32_t msaa = 1;
     bool animate = false;
