@@ -87,16 +87,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
             const Combination& c = list[i];
-            render::RenderConfig config;
-            config.technique = c.technique;
-            config.mode = c.mode;
-            config.searchBatch = options.searchBatch;
-            config.sortDraws = options.sortDraws;
-            config.gsPassthrough = options.gsPassthrough;
-            config.nsearch = {options.nsearchN, options.nsearchGuess, options.nsearchLinear,
-                              options.nsearchSteps};
-            config.visible = options.visible;
-            rig.renderer.configure(scene, config);
+            rig.renderer.configure(scene, renderConfig(options, *c.technique, *c.mode));
             std::vector<double> cpuMs;
             for (uint32_t f = 0; f < warmup + options.frames; ++f, ++frameNumber) {
                 render::FrameSlot& slot = rig.slots.begin(frameNumber);
@@ -206,12 +197,7 @@ int benchmarkCommand(const Options& options) {
         file << (csv ? benchmarkCsv(report) : benchmarkJson(report));
         if (!file.flush()) throw vk::Error("cannot write '" + path + "'");
     }
-    if (report.validationMessages > 0) {
-        std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
-                     report.validationMessages);
-        return 3;
-    }
-    return 0;
+    return exitCode(report.validationMessages);
 }
 
 } // namespace app

@@ -82,10 +82,17 @@ double median(std::vector<double> values) {
 } // namespace
 
 render::RenderConfig renderConfig(const Options& options) {
+    const render::Technique* technique = render::findTechnique(options.renderer);
+    const render::DrawMode* mode = render::findDrawMode(options.mode);
+    if (!technique || !mode) throw vk::Error("unknown renderer or mode");
+    return renderConfig(options, *technique, *mode);
+}
+
+render::RenderConfig renderConfig(const Options& options, const render::Technique& technique,
+                                  const render::DrawMode& mode) {
     render::RenderConfig config;
-    config.technique = render::findTechnique(options.renderer);
-    config.mode = render::findDrawMode(options.mode);
-    if (!config.technique || !config.mode) throw vk::Error("unknown renderer or mode");
+    config.technique = &technique;
+    config.mode = &mode;
     config.searchBatch = options.searchBatch;
     config.sortDraws = options.sortDraws;
     config.gsPassthrough = options.gsPassthrough;
@@ -203,12 +210,14 @@ int runHeadless(const Options& options) {
         options.mode.c_str(), result.stats.draws,
         static_cast<unsigned long long>(scene.drawnTriangleCount()), scene.uniquePartCount(),
         median(result.gpuMs));
-    if (result.validationMessages > 0) {
-        std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
-                     result.validationMessages);
-        return 3;
-    }
-    return 0;
+    return exitCode(result.validationMessages);
+}
+
+int exitCode(uint32_t validationMessages) {
+    if (validationMessages == 0) return 0;
+    std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
+                 validationMessages);
+    return 3;
 }
 
 } // namespace app

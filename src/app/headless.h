@@ -27,6 +27,9 @@ struct HeadlessResult {
 
 // The renderer configuration the options ask for (throws vk::Error for unknown names).
 render::RenderConfig renderConfig(const Options& options);
+// The same for a technique and mode chosen by the caller (the benchmark's lists).
+render::RenderConfig renderConfig(const Options& options, const render::Technique& technique,
+                                  const render::DrawMode& mode);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
 // Picks come first: Options::selects (one frame, its part becomes the selection), then one
@@ -42,6 +45,9 @@ std::vector<HeadlessResult>
 renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                        const scene::Camera& camera,
                        const std::vector<render::RenderConfig>& configs);
+
+// 0, or 3 with a line on stderr when validation reported anything (the CLI's exit codes).
+int exitCode(uint32_t validationMessages);
 
 // `idview --headless`: renders, writes the requested files, prints a summary line and returns
 // the exit code (3 when validation reported anything).

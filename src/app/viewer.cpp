@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 
+#include "app/headless.h" // exitCode
 #include "app/viewer_app.h"
 #include "vk/check.h"
 
@@ -228,12 +229,7 @@ int runViewer(const Options& options) {
         Viewer viewer(options, window.handle, instance, std::move(script));
         viewer.run();
     }
-    if (instance.validationMessages() > 0) {
-        std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
-                     instance.validationMessages());
-        return 3;
-    }
-    return 0;
+    return exitCode(instance.validationMessages());
 }
 
 } // namespace app
