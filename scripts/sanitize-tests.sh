@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # sanitize-tests.sh [CTEST ARGS...] - builds idview, idview_core and the tests with
 # AddressSanitizer + UndefinedBehaviorSanitizer (gcc, RelWithDebInfo, -DIDVIEW_SANITIZE=ON) in
-# build-asan/ and runs the unit and lavapipe tests there (cli_test.sh and benchmark_test.sh
-# get build-asan/idview). Any ASan, UBSan or LeakSanitizer report fails. The fuzz label has
-# its own ASan/UBSan build (fuzz/run_fuzz.sh) and the viewer label needs Xvfb: neither runs
-# here. scripts/setup.sh test runs this after the normal ctest; it needs the packages
-# setup.sh installs.
+# build-asan/ and runs the unit, lavapipe and viewer tests there (cli_test.sh,
+# benchmark_test.sh and viewer_test.sh get build-asan/idview; the viewer runs under Xvfb with
+# GLFW, X11 and Dear ImGui in the process). Any ASan, UBSan or LeakSanitizer report fails.
+# The fuzz label has its own ASan/UBSan build (fuzz/run_fuzz.sh) and does not run here.
+# scripts/setup.sh test runs this after the normal ctest; it needs the packages setup.sh
+# installs.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build-asan
@@ -36,4 +37,4 @@ export LSAN_OPTIONS="suppressions=$san/lsan.supp:print_suppressions=1:exitcode=8
 export UBSAN_OPTIONS="suppressions=$san/ubsan.supp:halt_on_error=1:print_stacktrace=1:exitcode=86"
 
 cd "$build"
-ctest --output-on-failure -j"$(nproc)" -L 'unit|lavapipe' "$@"
+ctest --output-on-failure -j"$(nproc)" -L 'unit|lavapipe|viewer' "$@"

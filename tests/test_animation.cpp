@@ -10,7 +10,9 @@
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
+#include "render/technique.h"
 #include "scene/explode.h"
+#include "test_support.h"
 #include "vk/context.h"
 
 namespace {
@@ -73,10 +75,10 @@ TEST(ExplodeMaths, LoopGoesOutAndBackInFourSeconds) {
 
 TEST(AnimationFlags, ParseAnimateAndTime) {
     const app::Options o = app::parseArgs({"--animate", "--time", "1.5"});
-    EXPECT_TRUE(o.animate);
-    ASSERT_TRUE(o.time.has_value());
-    EXPECT_EQ(*o.time, 1.5f);
-    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).time.has_value());
+    EXPECT_TRUE(o.animation.animate);
+    ASSERT_TRUE(o.animation.time.has_value());
+    EXPECT_EQ(*o.animation.time, 1.5f);
+    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).animation.time.has_value());
     EXPECT_THROW(app::parseArgs({"--time", "1"}), app::UsageError); // needs --animate
     EXPECT_THROW(app::parseArgs({"--animate", "--time", "soon"}), app::UsageError);
     EXPECT_THROW(app::parseArgs({"--animate", "--time=-1"}), app::UsageError);
@@ -84,15 +86,9 @@ TEST(AnimationFlags, ParseAnimateAndTime) {
     EXPECT_NE(app::usage().find("--animate"), std::string::npos);
 }
 
-app::Options renderOptions(const std::string& renderer, const std::string& mode) {
-    app::Options o;
-    o.headless = true;
-    o.validation = true;
-    o.width = W;
-    o.height = H;
-    o.frames = 2;
-    o.renderer = renderer;
-    o.mode = mode;
+app::Options renderOptions(const render::Technique& technique, const render::DrawMode& mode) {
+    app::Options o = testing_support::headlessOptions(W, H, 2);
+    o.render = testing_support::settingsFor(technique, mode);
     return o;
 }
 
@@ -103,8 +99,8 @@ struct Fixture {
 
 Fixture& fixture() {
     static Fixture f = [] {
-        app::Options source;
-        source.scene = "procedural:preset=small,seed=1";
+        app::SceneSettings source;
+        source.builtin = "procedural:preset=small,seed=1";
         Fixture made;
         made.loaded = app::loadScene(source);
         made.camera = app::initialCamera(made.loaded, float(W) / float(H));
@@ -120,11 +116,12 @@ size_t countDifferences(const std::vector<uint32_t>& a, const std::vector<uint32
 }
 
 struct Combination {
-    std::string renderer, mode;
+    const render::Technique* technique;
+    const render::DrawMode* mode;
 };
 
 void PrintTo(const Combination& c, std::ostream* os) {
-    *os << c.renderer << " + " << c.mode;
+    *os << c.technique->name << " + " << c.mode->name;
 }
 
 class GpuAnimation : public ::testing::TestWithParam<Combination> {};
@@ -134,13 +131,13 @@ TEST_P(GpuAnimation, MatchesCpuExplodedSceneBitForBitAndPicksWhatItShows) {
     Fixture& f = fixture();
     const float explode = 0.6f;
 
-    app::Options animated = renderOptions(c.renderer, c.mode);
-    animated.explode = explode;
+    app::Options animated = renderOptions(*c.technique, *c.mode);
+    animated.animation.explode = explode;
     // Picks across the image: they run before the timed frames, at the same explode.
     for (uint32_t y = 5; y < H; y += 18)
         for (uint32_t x = 5; x < W; x += 25) animated.picks.push_back({x, y});
     const app::HeadlessResult gpu = app::renderHeadless(animated, f.loaded.scene, f.camera);
-    const app::Options still = renderOptions(c.renderer, c.mode);
+    const app::Options still = renderOptions(*c.technique, *c.mode);
     const app::HeadlessResult cpu =
         app::renderHeadless(still, scene::explodedScene(f.loaded.scene, explode), f.camera);
     const app::HeadlessResult rest = app::renderHeadless(still, f.loaded.scene, f.camera);
@@ -170,27 +167,31 @@ TEST_P(GpuAnimation, MatchesCpuExplodedSceneBitForBitAndPicksWhatItShows) {
 }
 
 std::string nameOf(const ::testing::TestParamInfo<Combination>& info) {
-    std::string name = info.param.renderer + "_" + info.param.mode;
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    return name;
+    return testing_support::testName(std::string(info.param.technique->name) + "_" +
+                                     info.param.mode->name);
 }
 
-INSTANTIATE_TEST_SUITE_P(Lavapipe, GpuAnimation,
-                         ::testing::Values(Combination{"per-draw", "push"},
-                                           Combination{"tri-fs", "mdi-baseinstance"},
-                                           Combination{"search-gs", "mdi-attribute"}),
-                         nameOf);
+// Every part-ID technique of the registry, the modes taken in turn.
+std::vector<Combination> combinations() {
+    std::vector<Combination> all;
+    const auto& modes = render::drawModes();
+    for (const render::Technique* t : render::partIdTechniques())
+        all.push_back({t, &modes[all.size() % modes.size()]});
+    return all;
+}
+
+INSTANTIATE_TEST_SUITE_P(Lavapipe, GpuAnimation, ::testing::ValuesIn(combinations()), nameOf);
 
 // --animate --time T renders the loop's explode at T, identical to the CPU reference.
 TEST(GpuAnimationLoop, AnimateAtTimeFollowsTheLoop) {
     Fixture& f = fixture();
-    app::Options o = renderOptions("bsearch-fs", "push");
-    o.animate = true;
-    o.time = 1.3f;
+    const render::Technique& technique = *render::partIdTechniques().back();
+    app::Options o = renderOptions(technique, render::defaultDrawMode());
+    o.animation.animate = true;
+    o.animation.time = 1.3f;
     const app::HeadlessResult gpu = app::renderHeadless(o, f.loaded.scene, f.camera);
     const app::HeadlessResult cpu = app::renderHeadless(
-        renderOptions("bsearch-fs", "push"),
+        renderOptions(technique, render::defaultDrawMode()),
         scene::explodedScene(f.loaded.scene, scene::explodeLoop(1.3f)), f.camera);
     EXPECT_EQ(gpu.validationMessages, 0u);
     EXPECT_EQ(countDifferences(gpu.ids, cpu.ids), 0u);
@@ -200,7 +201,7 @@ TEST(GpuAnimationLoop, AnimateAtTimeFollowsTheLoop) {
 // rest matrices (the dispatch runs once more) even though nothing is recorded afterwards.
 TEST(GpuAnimationLoop, ExplodeZeroAfterMotionRestoresTheRestPose) {
     Fixture& f = fixture();
-    const app::Options o = renderOptions("tri-fs", "push");
+    const app::Options o = renderOptions(render::defaultTechnique(), render::drawModes().back());
     const app::HeadlessResult rest = app::renderHeadless(o, f.loaded.scene, f.camera);
     const app::HeadlessResult moved =
         app::renderHeadless(o, scene::explodedScene(f.loaded.scene, 1.0f), f.camera);
@@ -217,11 +218,8 @@ TEST(GpuAnimationLoop, ExplodeZeroAfterMotionRestoresTheRestPose) {
     std::vector<std::optional<uint32_t>> picked;
     {
         app::Offscreen rig(instance, o);
-        rig.renderer.setScene(f.loaded.scene);
-        rig.renderer.configure(f.loaded.scene, app::renderConfig(o));
-        render::FrameParams params;
-        params.viewProj = f.camera.viewProjection(float(W) / float(H));
-        params.eye = f.camera.eye;
+        rig.renderer.setScene(f.loaded.scene, o.render);
+        render::FrameParams params = app::cameraFrame(f.camera, rig.extent);
         params.pickPixel = pixel;
         uint64_t frame = 0;
         // Two frames in flight per explode value, then wait and read the pick.

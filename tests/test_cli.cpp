@@ -3,6 +3,7 @@
 
 #include "app/benchmark.h"
 #include "app/cli.h"
+#include "render/technique.h"
 
 using app::Options;
 using app::parseArgs;
@@ -14,15 +15,18 @@ TEST(Cli, DefaultsWithoutArguments) {
     EXPECT_FALSE(o.validation);
     EXPECT_EQ(o.width, 1280u);
     EXPECT_EQ(o.height, 720u);
-    EXPECT_EQ(o.scene, ""); // the default model
-    EXPECT_EQ(o.model, "");
-    EXPECT_EQ(o.parts, "primitives");
-    EXPECT_EQ(o.copies, 1u);
-    EXPECT_EQ(o.searchBatch, 16u);
+    EXPECT_EQ(o.scene.builtin, ""); // the default model
+    EXPECT_EQ(o.scene.model, "");
+    EXPECT_EQ(o.scene.parts, scene::PartMode::Primitives);
+    EXPECT_EQ(o.scene.copies, 1u);
+    EXPECT_EQ(o.render.pipeline.searchBatch, 16u);
     EXPECT_FALSE(o.stats);
-    EXPECT_EQ(o.renderer, "per-draw");
-    EXPECT_EQ(o.mode, "push");
-    EXPECT_FLOAT_EQ(o.partWeight, 0.5f);
+    EXPECT_EQ(o.render.pipeline.technique, &render::defaultTechnique());
+    EXPECT_EQ(o.render.pipeline.mode, &render::defaultDrawMode());
+    EXPECT_FLOAT_EQ(o.render.shading.partWeight, 0.5f);
+    // The defaults are the settings structs' own, untouched by parsing.
+    EXPECT_EQ(o.render, render::RenderSettings{});
+    EXPECT_EQ(o.scene, app::SceneSettings{});
 }
 
 TEST(Cli, EveryFlagIsApplied) {
@@ -53,9 +57,9 @@ TEST(Cli, EveryFlagIsApplied) {
     EXPECT_EQ(o.frames, 7u);
     EXPECT_EQ(o.screenshot, "a.png");
     EXPECT_EQ(o.idImage, "a.ids");
-    EXPECT_EQ(o.scene, "tiles");
-    EXPECT_FLOAT_EQ(o.partWeight, 0.25f);
-    EXPECT_TRUE(o.colorizeDraws);
+    EXPECT_EQ(o.scene.builtin, "tiles");
+    EXPECT_FLOAT_EQ(o.render.shading.partWeight, 0.25f);
+    EXPECT_TRUE(o.render.shading.colorizeDraws);
     EXPECT_TRUE(o.validation);
     EXPECT_EQ(o.device, "llvm");
     EXPECT_EQ(o.shaderDir, "/x");
@@ -64,15 +68,15 @@ TEST(Cli, EveryFlagIsApplied) {
     EXPECT_TRUE(parseArgs({"--help"}).help);
     Options m = parseArgs({"--model", "a.glb", "--parts", "components", "--copies", "3", "--stats",
                            "--search-batch", "8", "--export", "out.glb"});
-    EXPECT_EQ(m.model, "a.glb");
-    EXPECT_EQ(m.parts, "components");
-    EXPECT_EQ(m.copies, 3u);
-    EXPECT_EQ(m.searchBatch, 8u);
+    EXPECT_EQ(m.scene.model, "a.glb");
+    EXPECT_EQ(m.scene.parts, scene::PartMode::Components);
+    EXPECT_EQ(m.scene.copies, 3u);
+    EXPECT_EQ(m.render.pipeline.searchBatch, 8u);
     EXPECT_TRUE(m.stats);
     EXPECT_EQ(m.exportPath, "out.glb");
-    EXPECT_EQ(parseArgs({"--scene", "procedural:preset=car-like,seed=42"}).scene,
+    EXPECT_EQ(parseArgs({"--scene", "procedural:preset=car-like,seed=42"}).scene.builtin,
               "procedural:preset=car-like,seed=42");
-    EXPECT_EQ(parseArgs({"--scene=procedural"}).scene, "procedural");
+    EXPECT_EQ(parseArgs({"--scene=procedural"}).scene.builtin, "procedural");
 }
 
 TEST(Cli, RefusesBadCommandLines) {
@@ -125,21 +129,27 @@ TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
     EXPECT_TRUE(o.benchmark && o.headless);
     EXPECT_EQ(o.width, 2560u);
     EXPECT_EQ(o.height, 1440u);
-    EXPECT_EQ(o.msaa, 4u);
-    EXPECT_EQ(o.copies, 3u);
+    EXPECT_EQ(o.render.pipeline.msaa, 4u);
+    EXPECT_EQ(o.scene.copies, 3u);
     EXPECT_EQ(o.frames, 200u);
-    EXPECT_EQ(o.searchBatch, 16u);
-    EXPECT_EQ(o.renderer, "all");
-    o = app::parseArgs(std::vector<std::string>{"--size", "64x48", "--benchmark", "--msaa", "1",
-                                                "--renderer", "tri-fs,per-draw"});
+    EXPECT_EQ(o.render.pipeline.searchBatch, 16u);
+    // Every part-ID technique of the registry and every mode; the floor is the benchmark's own.
+    EXPECT_EQ(o.benchmarkTechniques, render::partIdTechniques());
+    EXPECT_EQ(o.benchmarkModes.size(), render::drawModes().size());
+    const auto ids = render::partIdTechniques();
+    o = app::parseArgs(std::vector<std::string>{
+        "--size", "64x48", "--benchmark", "--msaa", "1", "--renderer",
+        std::string(ids[1]->name) + "," + ids[0]->name, "--colorize-draws"});
     EXPECT_EQ(o.width, 64u);
-    EXPECT_EQ(o.msaa, 1u);
-    EXPECT_EQ(o.copies, 3u);
-    EXPECT_EQ(app::rendererList(o.renderer), (std::vector<std::string>{"tri-fs", "per-draw"}));
-    EXPECT_EQ(app::modeList("all").size(), 3u);
+    EXPECT_EQ(o.render.pipeline.msaa, 1u);
+    EXPECT_EQ(o.scene.copies, 3u);
+    EXPECT_TRUE(o.render.shading.colorizeDraws);
+    EXPECT_EQ(o.benchmarkTechniques, (std::vector<const render::Technique*>{ids[1], ids[0]}));
+    EXPECT_EQ(app::modeList("all").size(), render::drawModes().size());
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--mode", "push,mdi-attribute"}),
                  app::UsageError); // lists only with --benchmark
-    EXPECT_THROW(app::rendererList("tri-fs,"), app::UsageError);
+    EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--renderer", "all"}), app::UsageError);
+    EXPECT_THROW(app::techniqueList(std::string(ids[0]->name) + ","), app::UsageError);
 }
 
 TEST(Cli, PickAndMsaaFlags) {
@@ -148,7 +158,7 @@ TEST(Cli, PickAndMsaaFlags) {
     ASSERT_EQ(o.picks.size(), 2u);
     EXPECT_EQ(o.picks[1], (app::Options::Pixel{99, 49}));
     EXPECT_EQ(o.selects.size(), 1u);
-    EXPECT_EQ(o.msaa, 8u);
+    EXPECT_EQ(o.render.pipeline.msaa, 8u);
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--size", "100x50", "--pick", "100,0"}),
                  app::UsageError);
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--pick", "3"}), app::UsageError);
@@ -164,27 +174,28 @@ TEST(Benchmark, PercentileIsNearestRank) {
 
 TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
     Options d = parseArgs(std::vector<std::string>{});
-    EXPECT_EQ(d.nsearchN, 3u);
-    EXPECT_FALSE(d.nsearchGuess);
-    EXPECT_EQ(d.nsearchLinear, 8u);
-    EXPECT_EQ(d.nsearchSteps, 16u);
-    EXPECT_FLOAT_EQ(d.visible, 1.0f);
-    EXPECT_FALSE(d.ignoreMaterials);
-    EXPECT_EQ(d.copyAxes, "xy");
-    Options o = parseArgs({"--renderer", "nsearch-fs", "--nsearch-n", "5", "--nsearch-guess=on",
+    EXPECT_EQ(d.render.pipeline.nsearch, render::NarySearch{});
+    EXPECT_FLOAT_EQ(d.render.draws.visible, 1.0f);
+    EXPECT_FALSE(d.render.shading.ignoreMaterials);
+    EXPECT_EQ(d.scene.copyAxes, scene::COPY_XY);
+    const render::Technique* nary = nullptr;
+    for (const auto& t : render::techniques())
+        if (t.narySearch && !nary) nary = &t;
+    ASSERT_NE(nary, nullptr);
+    Options o = parseArgs({"--renderer", nary->name, "--nsearch-n", "5", "--nsearch-guess=on",
                            "--nsearch-linear", "0", "--nsearch-steps", "64", "--visible", "0.25",
                            "--ignore-materials", "--copy-axes", "zx"});
-    EXPECT_EQ(o.renderer, "nsearch-fs");
-    EXPECT_EQ(o.nsearchN, 5u);
-    EXPECT_TRUE(o.nsearchGuess);
-    EXPECT_EQ(o.nsearchLinear, 0u);
-    EXPECT_EQ(o.nsearchSteps, 64u);
-    EXPECT_FLOAT_EQ(o.visible, 0.25f);
-    EXPECT_TRUE(o.ignoreMaterials);
-    EXPECT_EQ(o.copyAxes, "zx");
-    EXPECT_TRUE(parseArgs({"--nsearch-guess", "on"}).nsearchGuess);
-    EXPECT_EQ(parseArgs({"--nsearch-n", "16", "--nsearch-linear", "64"}).nsearchN, 16u);
-    EXPECT_EQ(parseArgs({"--renderer", "nsearch-gs"}).renderer, "nsearch-gs");
+    EXPECT_EQ(o.render.pipeline.technique, nary);
+    EXPECT_EQ(o.render.pipeline.nsearch, (render::NarySearch{5, true, 0, 64}));
+    EXPECT_FLOAT_EQ(o.render.draws.visible, 0.25f);
+    EXPECT_TRUE(o.render.shading.ignoreMaterials);
+    EXPECT_EQ(o.scene.copyAxes, scene::COPY_X | scene::COPY_Z);
+    EXPECT_TRUE(parseArgs({"--nsearch-guess", "on"}).render.pipeline.nsearch.guess);
+    EXPECT_EQ(parseArgs({"--nsearch-n", "16", "--nsearch-linear", "64"}).render.pipeline.nsearch.n,
+              16u);
+    // Every technique of the registry is a valid --renderer, the no-id floor included.
+    for (const auto& t : render::techniques())
+        EXPECT_EQ(parseArgs({"--renderer", t.name}).render.pipeline.technique, &t) << t.name;
     const std::vector<std::vector<std::string>> bad = {
         {"--nsearch-n", "2"},       {"--nsearch-n", "17"},    {"--nsearch-guess", "yes"},
         {"--nsearch-linear", "65"}, {"--nsearch-steps", "0"}, {"--nsearch-steps", "65"},

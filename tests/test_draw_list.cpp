@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "app/scene_source.h"
 #include "render/draw_list.h"
@@ -19,6 +20,25 @@ const scene::Scene& smallTwice() {
     return s;
 }
 
+PipelineKey keyFor(const Technique& technique, uint32_t batch = 16) {
+    PipelineKey key;
+    key.technique = &technique;
+    key.searchBatch = batch;
+    return key;
+}
+
+DrawSettings drawn(bool sorted = true, float visible = 1.0f) {
+    return {sorted, visible};
+}
+
+// The first technique of the registry that `matches`.
+template <typename Pred>
+const Technique& firstWith(Pred matches) {
+    for (const auto& t : techniques())
+        if (matches(t)) return t;
+    throw std::logic_error("no such technique in the registry");
+}
+
 } // namespace
 
 TEST(DrawList, CountsFollowTheFormulae) {
@@ -28,7 +48,7 @@ TEST(DrawList, CountsFollowTheFormulae) {
         for (const auto& o : s.objects)
             batches += (s.geometries[o.geometry].partCount + batch - 1) / batch;
         for (const auto& t : techniques()) {
-            const size_t draws = buildDrawList(s, t, {batch, true}).ranges.size();
+            const size_t draws = buildDrawList(s, keyFor(t, batch), drawn()).ranges.size();
             switch (t.split) {
             case DrawSplit::PerPart:
                 EXPECT_EQ(draws, s.uniquePartCount()) << t.name;
@@ -47,7 +67,7 @@ TEST(DrawList, CountsFollowTheFormulae) {
 TEST(DrawList, DrawDataPointsAtEachDrawsIds) {
     const scene::Scene& s = smallTwice();
     for (const auto& t : techniques()) {
-        DrawList list = buildDrawList(s, t, {16, true});
+        DrawList list = buildDrawList(s, keyFor(t), drawn());
         ASSERT_EQ(list.data.size(), list.ranges.size());
         const uint32_t* words = reinterpret_cast<const uint32_t*>(list.idBytes.data());
         for (uint32_t i = 0; i < list.data.size(); ++i) {
@@ -84,16 +104,17 @@ TEST(DrawList, DrawDataPointsAtEachDrawsIds) {
 
 TEST(DrawList, SortedByGeometryThenMaterialUnlessAskedNot) {
     const scene::Scene& s = smallTwice();
-    const Technique& perDraw = *findTechnique("per-draw");
+    const Technique& perDraw =
+        firstWith([](const Technique& t) { return t.split == DrawSplit::PerPart; });
     auto key = [&](const DrawItem& d) {
         const auto& o = s.objects[d.object];
         return std::pair(o.geometry, o.material);
     };
-    DrawList sorted = buildDrawList(s, perDraw, {16, true});
+    DrawList sorted = buildDrawList(s, keyFor(perDraw), drawn(true));
     EXPECT_TRUE(
         std::is_sorted(sorted.ranges.begin(), sorted.ranges.end(),
                        [&](const DrawItem& a, const DrawItem& b) { return key(a) < key(b); }));
-    DrawList scene = buildDrawList(s, perDraw, {16, false});
+    DrawList scene = buildDrawList(s, keyFor(perDraw), drawn(false));
     EXPECT_TRUE(
         std::is_sorted(scene.ranges.begin(), scene.ranges.end(),
                        [](const DrawItem& a, const DrawItem& b) { return a.object < b.object; }));
@@ -105,10 +126,16 @@ TEST(DrawList, SortedByGeometryThenMaterialUnlessAskedNot) {
 
 TEST(DrawList, StatsCountWhatEachModeUploads) {
     const scene::Scene& s = smallTwice();
-    DrawList list = buildDrawList(s, *findTechnique("search-fs"), {16, true});
-    RenderStats push = statsFor(list, *findDrawMode("push"));
-    RenderStats base = statsFor(list, *findDrawMode("mdi-baseinstance"));
-    RenderStats attr = statsFor(list, *findDrawMode("mdi-attribute"));
+    const Technique& search = firstWith([](const Technique& t) { return t.readsSearchBatch(); });
+    DrawList list = buildDrawList(s, keyFor(search), drawn());
+    auto modeWith = [](bool indirect, bool attribute) {
+        for (const auto& m : drawModes())
+            if (m.indirect == indirect && m.drawIndexAttribute == attribute) return &m;
+        throw std::logic_error("no such mode in the registry");
+    };
+    RenderStats push = statsFor(list, *modeWith(false, false));
+    RenderStats base = statsFor(list, *modeWith(true, false));
+    RenderStats attr = statsFor(list, *modeWith(true, true));
     EXPECT_EQ(push.draws, list.ranges.size());
     EXPECT_EQ(push.pipelines, 1u);
     EXPECT_EQ(push.idBufferBytes, 4 * (s.parts.size() + 15));
@@ -120,12 +147,17 @@ TEST(DrawList, StatsCountWhatEachModeUploads) {
 
 // The benchmark's floor: one draw per object and no ID data.
 TEST(DrawList, NoIdDrawsOncePerObjectWithoutIdData) {
-    app::Options source;
-    source.scene = "assembly";
+    app::SceneSettings source;
+    source.builtin = "assembly";
     const scene::Scene scene = app::loadScene(source).scene;
-    const render::Technique& noId = render::noIdTechnique();
-    EXPECT_EQ(render::findTechnique("no-id"), &noId);
-    const auto list = render::buildDrawList(scene, noId, {});
+    const render::Technique& noId = render::floorTechnique();
+    EXPECT_EQ(render::findTechnique(noId.name), &noId);
+    // The one floor, in the registry with the rest, and not among the part-ID techniques.
+    EXPECT_EQ(std::count_if(techniques().begin(), techniques().end(),
+                            [](const Technique& t) { return t.isFloor(); }),
+              1);
+    EXPECT_EQ(render::partIdTechniques().size() + 1, techniques().size());
+    const auto list = render::buildDrawList(scene, keyFor(noId), drawn());
     EXPECT_EQ(list.ranges.size(), scene.objects.size());
     EXPECT_TRUE(list.idBytes.empty());
 }
@@ -150,7 +182,7 @@ TEST(DrawList, VisibleFractionDrawsTheFirstObjects) {
         }
         for (const auto& t : techniques())
             for (const auto& m : drawModes()) {
-                const DrawList list = buildDrawList(s, t, {16, true, fraction});
+                const DrawList list = buildDrawList(s, keyFor(t), drawn(true, fraction));
                 const RenderStats stats = statsFor(list, m);
                 const size_t draws = t.split == DrawSplit::PerPart     ? parts
                                      : t.split == DrawSplit::PerObject ? objects
@@ -160,6 +192,27 @@ TEST(DrawList, VisibleFractionDrawsTheFirstObjects) {
                 for (const DrawItem& d : list.ranges) EXPECT_LT(d.object, objects) << t.name;
             }
     }
-    EXPECT_EQ(statsFor(buildDrawList(s, techniques()[0], {}), drawModes()[0]).triangles,
+    EXPECT_EQ(statsFor(buildDrawList(s, PipelineKey{}, DrawSettings{}), drawModes()[0]).triangles,
               s.drawnTriangleCount());
+}
+
+// The pipeline cache keys on the effective key: what the technique does not read is reset, and
+// passthrough holds only where a geometry stage meets a device that offers it.
+TEST(PipelineKey, EffectiveKeyKeepsOnlyWhatTheTechniqueReads) {
+    for (const auto& t : techniques()) {
+        PipelineKey key = keyFor(t, 7);
+        key.nsearch = {5, true, 3, 9};
+        key.gsPassthrough = true;
+        for (bool device : {false, true}) {
+            const PipelineKey e = key.effective(device);
+            EXPECT_EQ(e.technique, &t);
+            EXPECT_EQ(e.searchBatch, t.readsSearchBatch() ? 7u : PipelineKey{}.searchBatch)
+                << t.name;
+            EXPECT_EQ(e.nsearch, t.narySearch ? key.nsearch : NarySearch{}) << t.name;
+            EXPECT_EQ(e.gsPassthrough, device && t.stage == LookupStage::Geometry) << t.name;
+            EXPECT_EQ(e.effective(device), e); // settled
+        }
+        key.gsPassthrough = false; // --gs-ordinary wins over the device
+        EXPECT_FALSE(key.effective(true).gsPassthrough) << t.name;
+    }
 }

@@ -12,6 +12,7 @@
 #include "app/scene_source.h"
 #include "scene/generator.h"
 #include "scene/raycast.h"
+#include "test_support.h"
 
 namespace fs = std::filesystem;
 using app::HeadlessResult;
@@ -19,13 +20,8 @@ using app::HeadlessResult;
 namespace {
 
 app::Options testOptions(uint32_t width, uint32_t height) {
-    app::Options o;
-    o.headless = true;
-    o.validation = true;
-    o.width = width;
-    o.height = height;
-    o.frames = 3; // more than the frames in flight, so slots are reused
-    return o;
+    // More frames than are in flight, so slots are reused.
+    return testing_support::headlessOptions(width, height, 3);
 }
 
 // Every render of these tests goes through here: any validation message fails the test.
@@ -198,9 +194,9 @@ TEST(HeadlessRenderAssembly, IdsNamePartsAndAgreeWithRaycast) {
 TEST(HeadlessRenderAssembly, ShadingOptionsChangeColoursButNotIds) {
     scene::Scene s = scene::makeTiles();
     app::Options plain = testOptions(160, 100);
-    plain.partWeight = 0.0f;
+    plain.render.shading.partWeight = 0.0f;
     app::Options colorized = plain;
-    colorized.colorizeDraws = true;
+    colorized.render.shading.colorizeDraws = true;
     HeadlessResult a = renderChecked(plain, s, scene::tilesCamera());
     HeadlessResult b = renderChecked(colorized, s, scene::tilesCamera());
     EXPECT_EQ(a.ids, b.ids);
@@ -245,14 +241,15 @@ void expectIdsMatchRaycast(const app::LoadedScene& loaded, uint32_t width, uint3
 } // namespace
 
 TEST(HeadlessRenderScenes, ProceduralSmallAgreesWithRaycast) {
-    app::Options o;
-    o.scene = "procedural:preset=small,seed=3";
-    expectIdsMatchRaycast(app::loadScene(o), 192, 120, 100);
+    app::SceneSettings source;
+    source.builtin = "procedural:preset=small,seed=3";
+    expectIdsMatchRaycast(app::loadScene(source), 192, 120, 100);
 }
 
 TEST(HeadlessRenderScenes, EngineFromGltfInComponentsModeAgreesWithRaycast) {
-    app::Options o;
-    o.model = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
-    o.parts = "components"; // 1,410 parts instead of 115: many more borders to get right
-    expectIdsMatchRaycast(app::loadScene(o), 192, 120, 100);
+    app::SceneSettings source;
+    source.model = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+    // 1,410 parts instead of 115: many more borders to get right.
+    source.parts = scene::PartMode::Components;
+    expectIdsMatchRaycast(app::loadScene(source), 192, 120, 100);
 }

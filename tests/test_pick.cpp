@@ -14,6 +14,7 @@
 #include "app/scene_source.h"
 #include "render/technique.h"
 #include "scene/raycast.h"
+#include "test_support.h"
 
 namespace {
 
@@ -32,13 +33,8 @@ struct Fixture {
 };
 
 app::Options options(uint32_t msaa) {
-    app::Options o;
-    o.msaa = msaa;
-    o.headless = true;
-    o.validation = true;
-    o.width = W;
-    o.height = H;
-    o.frames = 1;
+    app::Options o = testing_support::headlessOptions(W, H);
+    o.render.pipeline.msaa = msaa;
     return o;
 }
 
@@ -84,8 +80,8 @@ Fixture& fixture(uint32_t msaa) {
     if (auto found = cache.find(msaa); found != cache.end()) return found->second;
     Fixture& f = cache[msaa];
     {
-        app::Options source;
-        source.scene = "procedural:preset=small,seed=1";
+        app::SceneSettings source;
+        source.builtin = "procedural:preset=small,seed=1";
         source.copies = 2;
         f.loaded = app::loadScene(source);
         f.camera = app::initialCamera(f.loaded, float(W) / float(H));
@@ -95,13 +91,11 @@ Fixture& fixture(uint32_t msaa) {
     return f;
 }
 
-std::vector<render::RenderConfig> modesOf(const std::string& technique) {
-    std::vector<render::RenderConfig> configs;
+std::vector<render::RenderSettings> modesOf(const render::Technique& technique, uint32_t msaa) {
+    std::vector<render::RenderSettings> configs;
     for (const auto& mode : render::drawModes()) {
-        render::RenderConfig c;
-        c.technique = render::findTechnique(technique);
-        c.mode = &mode;
-        configs.push_back(c);
+        configs.push_back(testing_support::settingsFor(technique, mode));
+        configs.back().pipeline.msaa = msaa;
     }
     return configs;
 }
@@ -156,7 +150,7 @@ glm::vec2 sampleZero(uint32_t msaa) {
     }
 }
 
-using Param = std::tuple<std::string, uint32_t>; // technique, MSAA samples
+using Param = std::tuple<const render::Technique*, uint32_t>; // technique, MSAA samples
 class PickPerTechnique : public ::testing::TestWithParam<Param> {};
 
 TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
@@ -173,7 +167,7 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
     o.picks = p.background;
     o.picks.insert(o.picks.end(), p.border.begin(), p.border.end());
     o.picks.insert(o.picks.end(), p.interior.begin(), p.interior.end());
-    const auto configs = modesOf(technique);
+    const auto configs = modesOf(*technique, msaa);
     const auto results = app::renderHeadlessSequence(o, f.loaded.scene, f.camera, configs);
     app::Options plainOptions = options(msaa);
     plainOptions.picks = {p.background.front()};
@@ -187,8 +181,8 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
     scene::RayCaster caster(f.loaded.scene);
     const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
     for (size_t c = 0; c < configs.size(); ++c) {
-        const std::string name =
-            technique + " + " + configs[c].mode->name + " msaa " + std::to_string(msaa);
+        const std::string name = std::string(technique->name) + " + " +
+                                 configs[c].pipeline.mode->name + " msaa " + std::to_string(msaa);
         const app::HeadlessResult& r = results[c];
         EXPECT_EQ(r.validationMessages, 0u);
         ASSERT_EQ(r.ids, f.ids) << name;
@@ -233,18 +227,15 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Lavapipe, PickPerTechnique,
-    ::testing::Combine(::testing::Values("per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs",
-                                         "bsearch-fs", "nsearch-fs", "nsearch-gs"),
-                       ::testing::Values(1u, 4u)),
-    [](const auto& info) {
-        std::string name =
-            std::get<0>(info.param) + "_msaa" + std::to_string(std::get<1>(info.param));
-        for (char& ch : name)
-            if (ch == '-') ch = '_';
-        return name;
-    });
+// Every part-ID technique the registry lists, without MSAA and at 4x.
+INSTANTIATE_TEST_SUITE_P(Lavapipe, PickPerTechnique,
+                         ::testing::Combine(::testing::ValuesIn(render::partIdTechniques()),
+                                            ::testing::Values(1u, 4u)),
+                         [](const auto& info) {
+                             return testing_support::testName(
+                                 std::string(std::get<0>(info.param)->name) + "_msaa" +
+                                 std::to_string(std::get<1>(info.param)));
+                         });
 
 // The decode of the packed value: depth bits high, part low, all ones for nothing.
 TEST(PickDecode, SplitsDepthAndPart) {

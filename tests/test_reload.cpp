@@ -11,33 +11,14 @@
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "render/technique.h"
+#include "test_support.h"
 #include "vk/shader_compiler.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<uint32_t> renderIds(app::Offscreen& rig, uint64_t& frame) {
-    render::FrameParams params;
-    params.viewProj = glm::mat4(1.0f);
-    render::FrameSlot& slot = rig.slots.begin(frame++);
-    rig.renderer.record(slot, rig.targets, params);
-    const VkExtent2D e = rig.extent;
-    vk::Buffer readback = vk::createBuffer(
-        rig.device, VkDeviceSize(e.width) * e.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, "test ids");
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {e.width, e.height, 1};
-    vkCmdCopyImageToBuffer(slot.cmd, rig.targets.ids().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           readback.buffer, 1, &region);
-    rig.slots.submit(slot);
-    rig.slots.finish();
-    std::vector<uint32_t> ids(size_t(e.width) * e.height);
-    std::memcpy(ids.data(), readback.mapped, ids.size() * 4);
-    vk::destroyBuffer(rig.device, readback);
-    return ids;
-}
+using testing_support::renderIds;
 
 void replaceInFile(const fs::path& path, const std::string& from, const std::string& to) {
     std::ifstream in(path);
@@ -54,17 +35,21 @@ TEST(ShaderReload, EditsTakeEffectAndBrokenShadersKeepTheLastGoodPipeline) {
     fs::copy(IDVIEW_SOURCE_SHADER_DIR, dir, fs::copy_options::recursive);
 
     app::Options o;
-    o.scene = "tiles"; // its parts cover known pixels at an identity camera
+    o.scene.builtin = "tiles"; // its parts cover known pixels at an identity camera
     o.width = 64;
     o.height = 48;
     o.shaderDir = dir.string();
-    const app::LoadedScene loaded = app::loadScene(o);
+    const app::LoadedScene loaded = app::loadScene(o.scene);
+    // The last part-ID technique with a lookup file of its own, in an indirect mode.
+    const render::Technique* technique = nullptr;
+    for (const render::Technique* t : render::partIdTechniques())
+        if (t->lookupFile) technique = t;
+    ASSERT_NE(technique, nullptr);
     vk::Instance instance({true, {}});
     {
         app::Offscreen rig(instance, o);
-        rig.renderer.setScene(loaded.scene);
-        rig.renderer.configure(loaded.scene, {render::findTechnique("tri-fs"),
-                                              render::findDrawMode("mdi-baseinstance")});
+        rig.renderer.setScene(loaded.scene,
+                              testing_support::settingsFor(*technique, render::drawModes().back()));
         uint64_t frame = 0;
         const auto before = renderIds(rig, frame);
         size_t covered = 0;
@@ -84,12 +69,14 @@ TEST(ShaderReload, EditsTakeEffectAndBrokenShadersKeepTheLastGoodPipeline) {
         }
 
         // A broken technique file: the error names file and line; the edited pipeline stays.
-        replaceInFile(dir / "techniques" / "triangle_ids.glsl", "uint shift =", "uint shift = ;");
+        const fs::path broken = dir / technique->lookupFile;
+        std::ofstream(broken, std::ios::app) << "\nthis is not GLSL;\n";
         try {
             rig.renderer.reloadShaders();
             FAIL() << "a broken shader reloaded";
         } catch (const vk::ShaderError& e) {
-            EXPECT_NE(std::string(e.what()).find("triangle_ids.glsl:"), std::string::npos)
+            EXPECT_NE(std::string(e.what()).find(broken.filename().string() + ":"),
+                      std::string::npos)
                 << e.what();
         }
         EXPECT_EQ(renderIds(rig, frame), edited);

@@ -2,7 +2,7 @@
 // technique, mode and MSAA switches because it lives outside the renderer.
 #include <gtest/gtest.h>
 
-#include "app/selection.h"
+#include "app/viewer/selection.h"
 
 TEST(Selection, ClickSelectsHoveredAndClickOnEmptySpaceClears) {
     app::Selection s;

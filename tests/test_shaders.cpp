@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <unistd.h>
 
 #include "render/shader_variants.h"
@@ -44,23 +45,56 @@ std::string compileError(const vk::ShaderCompiler& compiler, const vk::ShaderReq
 
 } // namespace
 
+// The keys cover what the flags and the panel can ask for, checked entry by entry against the
+// registry and the ranges rather than by a count: every technique in every mode, every search
+// batch of the range for the techniques that read it, each N-ary test set for those that
+// read it, both geometry shader forms where there is a geometry stage; nothing twice.
+TEST(Shaders, VariantKeysCoverEveryChoice) {
+    const auto keys = render::allPipelineKeys();
+    auto has = [&](const render::PipelineKey& wanted) {
+        return std::count(keys.begin(), keys.end(), wanted);
+    };
+    const auto sets = render::narySearchTestSets();
+    ASSERT_GE(sets.size(), 4u); // the default and the corners of the flags' ranges
+    size_t expected = 0;
+    for (const auto& t : render::techniques())
+        for (const auto& m : render::drawModes()) {
+            const render::Range batches = t.readsSearchBatch()
+                                              ? render::searchBatchRange
+                                              : render::Range{render::PipelineKey{}.searchBatch,
+                                                              render::PipelineKey{}.searchBatch};
+            for (uint32_t batch = batches.min; batch <= batches.max; ++batch)
+                for (const auto& nary : t.narySearch ? sets : std::vector<render::NarySearch>{{}})
+                    for (bool passthrough : {false, true}) {
+                        if (passthrough && t.stage != render::LookupStage::Geometry) continue;
+                        const render::PipelineKey key{&t, &m, batch, nary, passthrough};
+                        EXPECT_EQ(has(key), 1) << t.name << " + " << m.name << " batch " << batch
+                                               << " passthrough " << passthrough;
+                        ++expected;
+                    }
+        }
+    EXPECT_EQ(keys.size(), expected); // nothing else
+}
+
 TEST(Shaders, EveryVariantCompiles) {
     vk::ShaderCompiler compiler(IDVIEW_SOURCE_SHADER_DIR);
     const auto variants = render::allShaderVariants();
-    // Per mode: per-draw, tri-fs, bsearch-fs (2 stages); tri-gs in two forms (3 stages each);
-    // search-fs at 32 batch sizes (2 stages); search-gs at 32 sizes in two forms (3 stages);
-    // nsearch-fs at each test parameter set (2 stages); nsearch-gs at each set in two forms
-    // (3 stages); the no-id reference (2 stages).
-    const size_t sets = render::narySearchTestSets().size();
-    ASSERT_GE(sets, 4u); // the default and the corners of the flags' ranges
-    const size_t perMode = 3 * 2 + 2 * 3 + 32 * 2 + 32 * 2 * 3 + sets * 2 + sets * 2 * 3 + 2;
-    ASSERT_EQ(variants.size(), perMode * render::drawModes().size());
+    // Vertex and fragment for each key, and geometry where the technique looks up there.
+    size_t stages = 0;
+    for (const auto& key : render::allPipelineKeys())
+        stages += key.technique->stage == render::LookupStage::Geometry ? 3 : 2;
+    ASSERT_EQ(variants.size(), stages);
     for (const auto& request : variants) {
         std::vector<uint32_t> spirv;
         ASSERT_NO_THROW(spirv = compiler.compile(request)) << request.label();
         ASSERT_GT(spirv.size(), 5u) << request.label();
         EXPECT_EQ(spirv[0], 0x07230203u) << request.label(); // SPIR-V magic number
     }
+    // Distinct requests compile once each: the vertex stage is shared by many keys.
+    std::set<std::string> distinct;
+    for (const auto& request : variants) distinct.insert(request.key());
+    EXPECT_EQ(compiler.compilations(), distinct.size());
+    EXPECT_EQ(compiler.remembered(), variants.size() - distinct.size());
 }
 
 TEST(Shaders, ErrorNamesFileAndLine) {
@@ -69,8 +103,7 @@ TEST(Shaders, ErrorNamesFileAndLine) {
                                    "outWorldPos = undeclaredThing;");
     ASSERT_GT(line, 0);
     vk::ShaderCompiler compiler(dir);
-    const auto request =
-        render::shaderVariants(render::techniques()[0], render::drawModes()[0], {})[0];
+    const auto request = render::shaderVariants(render::PipelineKey{})[0];
     const std::string error = compileError(compiler, request);
     EXPECT_NE(error.find((dir / "scene.vert").string() + ":" + std::to_string(line) + ": error:"),
               std::string::npos)
@@ -85,8 +118,7 @@ TEST(Shaders, ErrorInsideAnIncludeNamesTheIncludedFile) {
         replaceInFile(dir / "shading.glsl", "uint h = hashId(id);", "uint h = hashId(id) +;");
     ASSERT_GT(line, 0);
     vk::ShaderCompiler compiler(dir);
-    const auto request =
-        render::shaderVariants(render::techniques()[0], render::drawModes()[0], {})[1];
+    const auto request = render::shaderVariants(render::PipelineKey{})[1];
     const std::string error = compileError(compiler, request);
     EXPECT_NE(error.find((dir / "shading.glsl").string() + ":" + std::to_string(line) + ": error:"),
               std::string::npos)
@@ -107,11 +139,13 @@ TEST(Shaders, MissingFilesAreReported) {
 
 TEST(Shaders, DefinesReachTheSource) {
     fs::path dir = copyShaders("defines");
-    ASSERT_GT(replaceInFile(dir / "techniques/per_draw.glsl", "return draw.firstPart;",
-                            "return draw.firstPart + EXTRA_OFFSET;"),
-              0);
+    // The default technique's own file, which the fragment stage includes.
+    const render::PipelineKey key;
+    ASSERT_NE(key.technique->lookupFile, nullptr);
+    std::ofstream(dir / key.technique->lookupFile, std::ios::app)
+        << "\nconst uint extraOffset = EXTRA_OFFSET;\n";
     vk::ShaderCompiler compiler(dir);
-    auto request = render::shaderVariants(render::techniques()[0], render::drawModes()[0], {})[1];
+    auto request = render::shaderVariants(key).back();
     EXPECT_NE(compileError(compiler, request).find("EXTRA_OFFSET"), std::string::npos);
     request.defines.push_back({"EXTRA_OFFSET", "1u"});
     EXPECT_NO_THROW(compiler.compile(request));

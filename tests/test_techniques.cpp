@@ -11,6 +11,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "render/technique.h"
+#include "test_support.h"
 
 namespace {
 
@@ -20,16 +21,14 @@ struct Reference {
     app::HeadlessResult image; // per-draw + push
 };
 
-app::Options renderOptions(const std::string& renderer, const std::string& mode) {
-    app::Options o;
-    o.headless = true;
-    o.validation = true;
-    o.width = 240;
-    o.height = 150;
-    o.frames = 2;
-    o.renderer = renderer;
-    o.mode = mode;
+app::Options renderOptions(const render::Technique& technique, const render::DrawMode& mode) {
+    app::Options o = testing_support::headlessOptions(240, 150, 2);
+    o.render = testing_support::settingsFor(technique, mode);
     return o;
+}
+
+app::Options referenceOptions() {
+    return renderOptions(render::defaultTechnique(), render::defaultDrawMode());
 }
 
 // Draws each technique must issue: per part, per object, or per batch of search-batch parts.
@@ -53,30 +52,32 @@ Reference& reference(const std::string& name) {
     static std::map<std::string, Reference> cache;
     auto found = cache.find(name);
     if (found != cache.end()) return found->second;
-    app::Options source;
+    app::SceneSettings source;
     if (name == "small-x2") {
-        source.scene = "procedural:preset=small,seed=1";
+        source.builtin = "procedural:preset=small,seed=1";
         source.copies = 2;
     } else {
         source.model =
             "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
-        source.parts = "components";
+        source.parts = scene::PartMode::Components;
     }
     Reference ref;
     ref.loaded = app::loadScene(source);
-    app::Options o = renderOptions("per-draw", "push");
+    app::Options o = referenceOptions();
     ref.camera = app::initialCamera(ref.loaded, float(o.width) / float(o.height));
     ref.image = app::renderHeadless(o, ref.loaded.scene, ref.camera);
     return cache.emplace(name, std::move(ref)).first->second;
 }
 
 struct Combination {
-    std::string scene, renderer, mode;
+    std::string scene;
+    const render::Technique* technique;
+    const render::DrawMode* mode;
 };
 
 // Readable test output instead of gtest's byte dump.
 void PrintTo(const Combination& c, std::ostream* os) {
-    *os << c.scene << " " << c.renderer << " " << c.mode;
+    *os << c.scene << " " << c.technique->name << " " << c.mode->name;
 }
 
 class AllTechniques : public ::testing::TestWithParam<Combination> {};
@@ -88,7 +89,7 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
     const std::set<uint32_t> visible(ref.image.ids.begin(), ref.image.ids.end());
     ASSERT_GT(visible.size(), 100u) << "the reference shows too little to compare";
 
-    app::Options o = renderOptions(c.renderer, c.mode);
+    app::Options o = renderOptions(*c.technique, *c.mode);
     app::HeadlessResult r = app::renderHeadless(o, ref.loaded.scene, ref.camera);
     EXPECT_EQ(r.validationMessages, 0u);
     ASSERT_EQ(r.ids.size(), ref.image.ids.size());
@@ -100,23 +101,21 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
     EXPECT_EQ(differing, 0u) << "first at pixel " << firstDifference % o.width << ","
                              << firstDifference / o.width << ": " << r.ids[firstDifference]
                              << " instead of " << ref.image.ids[firstDifference];
-    const render::Technique& technique = *render::findTechnique(c.renderer);
-    EXPECT_EQ(r.stats.draws, expectedDraws(technique, ref.loaded.scene, o.searchBatch));
+    EXPECT_EQ(r.stats.draws,
+              expectedDraws(*c.technique, ref.loaded.scene, o.render.pipeline.searchBatch));
 }
 
 std::vector<Combination> combinations() {
     std::vector<Combination> all;
     for (const char* scene : {"small-x2", "engine-components"})
-        for (const auto& t : render::techniques())
-            for (const auto& m : render::drawModes()) all.push_back({scene, t.name, m.name});
+        for (const render::Technique* t : render::partIdTechniques())
+            for (const auto& m : render::drawModes()) all.push_back({scene, t, &m});
     return all;
 }
 
 std::string nameOf(const ::testing::TestParamInfo<Combination>& info) {
-    std::string name = info.param.scene + "_" + info.param.renderer + "_" + info.param.mode;
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    return name;
+    return testing_support::testName(info.param.scene + "_" + info.param.technique->name + "_" +
+                                     info.param.mode->name);
 }
 
 INSTANTIATE_TEST_SUITE_P(Lavapipe, AllTechniques, ::testing::ValuesIn(combinations()), nameOf);
@@ -127,22 +126,26 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, AllTechniques, ::testing::ValuesIn(combinatio
 TEST(SearchBatch, ChangesAtRunTimeKeepIdsAndFollowTheFormula) {
     Reference& ref = reference("small-x2");
     const uint32_t batches[] = {16, 1, 7, 32, 16};
-    std::vector<render::RenderConfig> configs;
+    // Every technique that reads the search batch, and the modes, taken in turn.
+    std::vector<const render::Technique*> searching;
+    for (const render::Technique* t : render::partIdTechniques())
+        if (t->readsSearchBatch()) searching.push_back(t);
+    ASSERT_FALSE(searching.empty());
+    std::vector<render::RenderSettings> configs;
     for (uint32_t batch : batches) {
-        render::RenderConfig config;
-        config.technique = render::findTechnique(batch == 7 ? "search-gs" : "search-fs");
-        config.mode = render::findDrawMode(batch == 1 ? "mdi-attribute" : "mdi-baseinstance");
-        config.searchBatch = batch;
-        configs.push_back(config);
+        const size_t i = configs.size();
+        configs.push_back(testing_support::settingsFor(
+            *searching[i % searching.size()], render::drawModes()[i % render::drawModes().size()]));
+        configs.back().pipeline.searchBatch = batch;
     }
-    app::Options o = renderOptions("search-fs", "mdi-baseinstance");
-    auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
+    auto results =
+        app::renderHeadlessSequence(referenceOptions(), ref.loaded.scene, ref.camera, configs);
     ASSERT_EQ(results.size(), configs.size());
     EXPECT_EQ(results.front().validationMessages, 0u);
     for (size_t i = 0; i < results.size(); ++i) {
         EXPECT_EQ(results[i].ids, ref.image.ids) << "batch " << batches[i];
         EXPECT_EQ(results[i].stats.draws,
-                  expectedDraws(*configs[i].technique, ref.loaded.scene, batches[i]));
+                  expectedDraws(*configs[i].pipeline.technique, ref.loaded.scene, batches[i]));
     }
     EXPECT_GT(results[1].stats.draws, results[0].stats.draws); // batch 1: one draw per part
 }
@@ -156,16 +159,18 @@ namespace {
 // keep it (a 3x3 block is not enough: sub-pixel features can hide between pixel centres).
 TEST(Msaa, EveryTechniqueAndModeResolvesTheSameIdImage) {
     Reference& ref = reference("small-x2");
-    std::vector<render::RenderConfig> configs;
-    for (const auto& t : render::techniques())
-        for (const auto& m : render::drawModes()) configs.push_back({&t, &m});
-    app::Options o = renderOptions("per-draw", "push");
-    o.msaa = 4;
+    std::vector<render::RenderSettings> configs;
+    for (const render::Technique* t : render::partIdTechniques())
+        for (const auto& m : render::drawModes()) {
+            configs.push_back(testing_support::settingsFor(*t, m));
+            configs.back().pipeline.msaa = 4;
+        }
+    const app::Options o = referenceOptions();
     const auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
     EXPECT_EQ(results.front().validationMessages, 0u);
     for (size_t i = 0; i < results.size(); ++i)
         EXPECT_EQ(results[i].ids, results.front().ids)
-            << configs[i].technique->name << " + " << configs[i].mode->name;
+            << configs[i].pipeline.technique->name << " + " << configs[i].pipeline.mode->name;
 
     const auto& ms = results.front().ids;
     const auto& single = ref.image.ids;
@@ -194,20 +199,21 @@ namespace {
 // compute pass and the readback. Any hazard it reports counts as a validation message.
 TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
     Reference& ref = reference("small-x2");
-    std::vector<render::RenderConfig> configs;
-    for (const auto& m : render::drawModes()) {
-        for (const auto& t : render::techniques()) configs.push_back({&t, &m});
-        configs.push_back({&render::noIdTechnique(), &m});
-    }
     for (uint32_t msaa : {1u, 4u}) {
-        app::Options o = renderOptions("per-draw", "push");
+        // Every technique of the registry, the no-id floor included, in every mode.
+        std::vector<render::RenderSettings> configs;
+        for (const auto& m : render::drawModes())
+            for (const auto& t : render::techniques()) {
+                configs.push_back(testing_support::settingsFor(t, m));
+                configs.back().pipeline.msaa = msaa;
+            }
+        app::Options o = referenceOptions();
         o.width = 96;
         o.height = 64;
-        o.msaa = msaa;
         o.syncValidation = true;
         o.picks = {{48, 32}};
         o.selects = {{40, 30}};
-        o.explode = 0.4f;
+        o.animation.explode = 0.4f;
         const auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
         EXPECT_EQ(results.front().validationMessages, 0u) << "MSAA " << msaa;
     }
@@ -226,24 +232,27 @@ TEST(NarySearch, EveryParameterSetEqualsPerDraw) {
         {3, false, 0, 1}, {3, true, 0, 64},  {16, true, 64, 1}, {16, false, 0, 64},
         {16, true, 0, 1}, {3, true, 64, 64}, {8, true, 8, 16},  {5, false, 1, 2},
     };
+    // Every technique that reads the N-ary search parameters, taken in turn.
+    std::vector<const render::Technique*> nary;
+    for (const render::Technique* t : render::partIdTechniques())
+        if (t->narySearch) nary.push_back(t);
+    ASSERT_FALSE(nary.empty());
     for (const char* scene : {"small-x2", "engine-components"}) {
         Reference& ref = reference(scene);
-        std::vector<render::RenderConfig> configs;
+        std::vector<render::RenderSettings> configs;
         for (size_t i = 0; i < sets.size(); ++i) {
-            render::RenderConfig config;
-            config.technique = render::findTechnique(i % 3 == 2 ? "nsearch-gs" : "nsearch-fs");
-            config.mode = &render::drawModes()[i % render::drawModes().size()];
-            config.nsearch = sets[i];
-            configs.push_back(config);
+            configs.push_back(testing_support::settingsFor(
+                *nary[i % nary.size()], render::drawModes()[i % render::drawModes().size()]));
+            configs.back().pipeline.nsearch = sets[i];
         }
-        app::Options o = renderOptions("nsearch-fs", "push");
-        auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
+        auto results =
+            app::renderHeadlessSequence(referenceOptions(), ref.loaded.scene, ref.camera, configs);
         ASSERT_EQ(results.size(), configs.size());
         EXPECT_EQ(results.front().validationMessages, 0u);
         for (size_t i = 0; i < results.size(); ++i) {
             const render::NarySearch& n = sets[i];
             EXPECT_EQ(results[i].ids, ref.image.ids)
-                << scene << " " << configs[i].technique->name << " n " << n.n << " guess "
+                << scene << " " << configs[i].pipeline.technique->name << " n " << n.n << " guess "
                 << n.guess << " linear " << n.linearBelow << " steps " << n.maxSteps;
             EXPECT_EQ(results[i].stats.draws, ref.loaded.scene.objects.size());
         }

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # viewer_test.sh IDVIEW LAVAPIPE_ICD - the real window, as a user drives it: idview under Xvfb
 # on lavapipe with validation (synchronization validation too), fed a --script that switches
-# through every renderer and mode, changes MSAA, presses V twice, orbits, zooms, resizes,
-# clicks the model, takes a screenshot and drops files on the window. Checks the exit code
-# (3 means validation messages), the title following vsync, the click selecting a part, the
-# drops, and that the screenshot shows a picture. Exit 77: skipped.
+# through every renderer (the no-id floor included) and mode, changes MSAA, presses V twice,
+# orbits, zooms, resizes, clicks the model, takes a screenshot and drops files on the window.
+# Checks the exit code (3 means validation messages), the title following the renderer and
+# vsync, the click selecting a part, the drops, and that the screenshot shows a picture; and
+# that without --print-events the viewer writes nothing to stdout. Exit 77: skipped.
 set -uo pipefail
 idview=$1
 icd=$2
@@ -25,7 +26,9 @@ fail() {
 # The renderers and modes idview lists, so a new technique is covered without editing this.
 renderers=$("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
 modes=$("$idview" --list-renderers | awk '/^per-draw modes:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
-[[ -n $renderers && -n $modes ]] || fail "could not read --list-renderers"
+floor=$("$idview" --list-renderers | awk '/^reference/{on=1; next} /^[^ ]/{on=0} on{print $1}')
+[[ -n $renderers && -n $modes && -n $floor ]] || fail "could not read --list-renderers"
+renderers="$renderers $floor" # the viewer draws the floor too
 
 # Commands queue behind slow ones (a pipeline compile), so the times are only an order.
 # The window is 720x450; the procedural small preset sits in the middle, right of the panel.
@@ -40,8 +43,8 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
         at renderer "$r"
         for m in $modes; do at mode "$m"; done
     done
-    at renderer per-draw
-    at mode push
+    at renderer "${renderers%%[[:space:]]*}" # the first listed, and the first mode
+    at mode "${modes%%[[:space:]]*}"
     at msaa 4
     at msaa 1
     at key V
@@ -71,8 +74,10 @@ echo "not a model" >"$work/broken.glb"
     fail "could not export the small scene"
 
 start=$(date +%s)
+# It opens on the floor, as --renderer asks: the first title names it.
 xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --sync-validation --size 720x450 \
-    --scene procedural:preset=small --script "$work/script.txt" >"$work/out.txt" 2>"$work/err.txt"
+    --scene procedural:preset=small --renderer "$floor" --script "$work/script.txt" \
+    --print-events >"$work/out.txt" 2>"$work/err.txt"
 rc=$?
 echo "viewer ran for $(($(date +%s) - start)) s"
 if [[ $rc -ne 0 ]]; then
@@ -91,6 +96,8 @@ fi
 for r in $renderers; do
     grep -q "^idview: title: idview - $r + " "$work/out.txt" || fail "title never named renderer $r"
 done
+first=$(grep -m1 '^idview: title:' "$work/out.txt")
+[[ $first == "idview: title: idview - $floor + "* ]] || fail "--renderer $floor opened as: $first"
 
 grep -q '^idview: shaders reloaded' "$work/out.txt" || fail "R did not reload the shaders"
 grep -q '^idview: 1000000 copies make .* objects' "$work/err.txt" ||
@@ -154,6 +161,30 @@ EOF
     fi
 elif [[ $(stat -c %s "$png") -lt 20000 ]]; then # without python3: a blank PNG is tiny
     fail "screenshot is suspiciously small ($(stat -c %s "$png") bytes)"
+fi
+
+# Quiet by default: the same kind of session without --print-events writes nothing to stdout.
+t=0.5
+{
+    at renderer "$floor"
+    at move 420 230
+    at click 420 230
+    at frames 4
+    at key R
+    at key V
+    at screenshot "$work/quiet.png"
+    at quit
+} >"$work/quiet.txt"
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/quiet.txt" >"$work/quiet.out" 2>"$work/quiet.err"
+rc=$?
+[[ $rc -eq 0 ]] || { fail "quiet run: exit code $rc"; head -c 2000 "$work/quiet.err"; }
+[[ -s $work/quiet.png ]] || fail "quiet run: no screenshot (did the script run?)"
+if [[ -s $work/quiet.out ]]; then
+    fail "without --print-events the viewer wrote to stdout:"
+    head -5 "$work/quiet.out"
+else
+    echo "ok   quiet without --print-events"
 fi
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }

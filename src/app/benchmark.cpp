@@ -19,23 +19,29 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct Combination {
-    const render::Technique* technique;
-    const render::DrawMode* mode;
-};
-
-// no-id first in every chosen mode (the floor each row is divided by), then the renderers.
-std::vector<Combination> combinations(const Options& options) {
-    std::vector<Combination> list;
-    const auto modes = modeList(options.mode);
-    for (const auto& mode : modes)
-        list.push_back({&render::noIdTechnique(), render::findDrawMode(mode)});
-    for (const auto& renderer : rendererList(options.renderer)) {
-        if (renderer == render::noIdTechnique().name) continue;
-        for (const auto& mode : modes)
-            list.push_back({render::findTechnique(renderer), render::findDrawMode(mode)});
+// The settings of every row: the options' own, with the floor first in every chosen mode
+// (what each row is divided by), then the chosen techniques.
+std::vector<render::RenderSettings> rows(const Options& options) {
+    std::vector<render::RenderSettings> list;
+    auto add = [&](const render::Technique& technique, const render::DrawMode& mode) {
+        render::RenderSettings settings = options.render;
+        settings.pipeline.technique = &technique;
+        settings.pipeline.mode = &mode;
+        list.push_back(settings);
+    };
+    for (const render::DrawMode* mode : options.benchmarkModes)
+        add(render::floorTechnique(), *mode);
+    for (const render::Technique* technique : options.benchmarkTechniques) {
+        if (technique->isFloor()) continue;
+        for (const render::DrawMode* mode : options.benchmarkModes) add(*technique, *mode);
     }
     return list;
+}
+
+std::string hex(uint64_t value) {
+    char text[24];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
 }
 
 std::string fixed(double value, int digits) {
@@ -45,6 +51,13 @@ std::string fixed(double value, int digits) {
 }
 
 } // namespace
+
+uint64_t imageHash(const void* data, size_t bytes) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    const auto* p = static_cast<const uint8_t*>(data);
+    for (size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 0x100000001b3ull;
+    return hash;
+}
 
 double percentile(std::vector<double> values, double fraction) {
     if (values.empty()) return 0.0;
@@ -58,11 +71,10 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     BenchmarkReport report;
     report.size = std::to_string(options.width) + "x" + std::to_string(options.height);
     report.scene = loaded.source;
-    report.msaa = options.msaa;
-    report.copies = options.copies;
-    report.searchBatch = options.searchBatch;
+    report.copies = loaded.settings.copies;
     report.frames = options.frames;
-    const auto list = combinations(options);
+    report.settings = options.render;
+    const auto list = rows(options);
     // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
     const uint32_t warmup = std::clamp(options.frames / 5, 5u, 50u);
 
@@ -73,30 +85,28 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         report.deviceName = info.name;
         report.driver = info.driverName + " " + vk::driverVersionString(info);
         report.api = vk::versionString(info.apiVersion);
-        rig.renderer.setScene(scene);
+        Readback readback(rig.device, rig.extent);
 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
-        const scene::Camera camera = initialCamera(loaded, aspect); // as headless and viewer
-        render::FrameParams params;
-        params.viewProj = camera.viewProjection(aspect);
-        params.eye = camera.eye;
-        params.partColorWeight = options.partWeight;
-        params.ignoreMaterials = options.ignoreMaterials;
-
+        // As headless and the viewer open the scene.
+        render::FrameParams params = cameraFrame(initialCamera(loaded, aspect), rig.extent);
         std::map<std::string, double> floorByMode;
         uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
-            const Combination& c = list[i];
-            rig.renderer.configure(scene, renderConfig(options, *c.technique, *c.mode));
+            const render::PipelineKey& key = list[i].pipeline;
+            if (i == 0) // the scene's upload is timed with the first switch
+                rig.renderer.setScene(scene, list[i]);
+            else
+                rig.renderer.configure(scene, list[i]);
             std::vector<double> cpuMs;
-            for (uint32_t f = 0; f < warmup + options.frames; ++f, ++frameNumber) {
+            const uint32_t total = warmup + options.frames;
+            for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
                 render::FrameSlot& slot = rig.slots.begin(frameNumber);
                 // --animate: objects move while being timed, the compute pass included.
-                if (options.animate)
-                    params.explode =
-                        scene::explodeLoop(options.time.value_or(float(frameNumber) / 60.0f));
+                params.explode = explodeAt(options.animation, frameNumber);
                 const auto start = Clock::now();
                 rig.renderer.record(slot, rig.targets, params);
+                if (f + 1 == total) readback.record(slot.cmd, *rig.targets); // after the timing
                 rig.slots.submit(slot);
                 if (f >= warmup)
                     cpuMs.push_back(
@@ -108,16 +118,22 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const std::vector<double> gpuMs(all.end() - long(timed), all.end());
 
             BenchmarkRow row;
-            row.renderer = c.technique->name;
-            row.mode = c.mode->name;
+            row.renderer = key.technique->name;
+            row.mode = key.mode->name;
             row.gpuMsMedian = percentile(gpuMs, 0.5);
             row.gpuMsP90 = percentile(gpuMs, 0.9);
             row.cpuMsMedian = percentile(cpuMs, 0.5);
             row.draws = rig.renderer.stats().draws;
-            row.triangles = scene.drawnTriangleCount();
+            row.triangles = rig.renderer.stats().triangles;
             row.idBytes = rig.renderer.stats().idBufferBytes;
             row.frames = options.frames;
-            if (c.technique == &render::noIdTechnique()) floorByMode[row.mode] = row.gpuMsMedian;
+            row.switchMs = rig.renderer.lastSwitch().ms;
+            row.pipelineCached = rig.renderer.lastSwitch().pipelineCached;
+            const std::vector<uint32_t> ids = readback.idValues();
+            const std::vector<uint8_t> color = readback.colorBytes();
+            row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
+            row.colorImageHash = imageHash(color.data(), color.size());
+            if (key.technique->isFloor()) floorByMode[row.mode] = row.gpuMsMedian;
             const double floor = floorByMode[row.mode];
             row.ratioToNoId = floor > 0 ? row.gpuMsMedian / floor : 0.0;
             report.rows.push_back(row);
@@ -132,11 +148,17 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
 
 std::string benchmarkJson(const BenchmarkReport& r) {
     std::ostringstream out;
+    const render::RenderSettings& s = r.settings;
     out << "{\"device\":{\"name\":" << jsonString(r.deviceName)
         << ",\"driver\":" << jsonString(r.driver) << ",\"api\":" << jsonString(r.api) << "},\n"
-        << " \"settings\":{\"size\":" << jsonString(r.size) << ",\"msaa\":" << r.msaa
+        << " \"settings\":{\"size\":" << jsonString(r.size) << ",\"msaa\":" << s.pipeline.msaa
         << ",\"scene\":" << jsonString(r.scene) << ",\"copies\":" << r.copies
-        << ",\"search_batch\":" << r.searchBatch << ",\"frames\":" << r.frames << "},\n"
+        << ",\"search_batch\":" << s.pipeline.searchBatch << ",\"frames\":" << r.frames
+        << ",\"visible\":" << fixed(s.draws.visible, 3)
+        << ",\"sort_draws\":" << (s.draws.sortDraws ? "true" : "false")
+        << ",\"part_weight\":" << fixed(s.shading.partWeight, 3)
+        << ",\"colorize_draws\":" << (s.shading.colorizeDraws ? "true" : "false")
+        << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false") << "},\n"
         << " \"results\":[";
     for (size_t i = 0; i < r.rows.size(); ++i) {
         const BenchmarkRow& row = r.rows[i];
@@ -146,7 +168,11 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
             << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4) << ",\"draws\":" << row.draws
             << ",\"triangles\":" << row.triangles << ",\"id_bytes\":" << row.idBytes
-            << ",\"ratio_to_no_id\":" << fixed(row.ratioToNoId, 3) << "}";
+            << ",\"ratio_to_no_id\":" << fixed(row.ratioToNoId, 3) << ",\"id_image_hash\":\""
+            << hex(row.idImageHash) << "\""
+            << ",\"color_image_hash\":\"" << hex(row.colorImageHash) << "\""
+            << ",\"switch_ms\":" << fixed(row.switchMs, 3)
+            << ",\"pipeline_cached\":" << (row.pipelineCached ? "true" : "false") << "}";
     }
     out << "\n ]}\n";
     return out.str();
@@ -155,19 +181,20 @@ std::string benchmarkJson(const BenchmarkReport& r) {
 std::string benchmarkCsv(const BenchmarkReport& r) {
     std::ostringstream out;
     out << "renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,"
-           "ratio_to_no_id\n";
+           "ratio_to_no_id,id_image_hash,color_image_hash\n";
     for (const BenchmarkRow& row : r.rows)
         out << row.renderer << ',' << row.mode << ',' << fixed(row.gpuMsMedian, 4) << ','
             << fixed(row.gpuMsP90, 4) << ',' << fixed(row.cpuMsMedian, 4) << ',' << row.draws << ','
-            << row.triangles << ',' << row.idBytes << ',' << fixed(row.ratioToNoId, 3) << '\n';
+            << row.triangles << ',' << row.idBytes << ',' << fixed(row.ratioToNoId, 3) << ','
+            << hex(row.idImageHash) << ',' << hex(row.colorImageHash) << '\n';
     return out.str();
 }
 
 std::string benchmarkTable(const BenchmarkReport& r) {
     std::ostringstream out;
     out << r.deviceName << " (" << r.driver << ", Vulkan " << r.api << "), " << r.size << ", "
-        << r.msaa << "x MSAA, " << r.scene << " x" << r.copies << ", search batch " << r.searchBatch
-        << ", " << r.frames << " frames\n";
+        << r.settings.pipeline.msaa << "x MSAA, " << r.scene << " x" << r.copies
+        << ", search batch " << r.settings.pipeline.searchBatch << ", " << r.frames << " frames\n";
     char line[200];
     std::snprintf(line, sizeof line, "%-11s %-17s %9s %9s %9s %8s %11s %7s\n", "renderer", "mode",
                   "GPU ms", "GPU p90", "CPU ms", "draws", "ID bytes", "x no-id");
@@ -183,13 +210,23 @@ std::string benchmarkTable(const BenchmarkReport& r) {
 }
 
 int benchmarkCommand(const Options& options) {
-    const LoadedScene loaded = loadScene(options);
+    const LoadedScene loaded = loadScene(options.scene);
     std::fprintf(stderr, "benchmark: %s, %u objects, %u parts, %llu triangles\n",
                  loaded.source.c_str(), unsigned(loaded.scene.objects.size()),
                  loaded.scene.uniquePartCount(),
                  static_cast<unsigned long long>(loaded.scene.drawnTriangleCount()));
     const BenchmarkReport report = runBenchmark(options, loaded);
     std::printf("%s", benchmarkTable(report).c_str());
+    // Every technique must have drawn the same parts; say so when one did not.
+    const BenchmarkRow* first = nullptr;
+    for (const BenchmarkRow& row : report.rows) {
+        if (row.renderer == render::floorTechnique().name) continue;
+        if (!first) first = &row;
+        if (row.idImageHash != first->idImageHash)
+            std::fprintf(stderr, "benchmark: warning: %s + %s drew another ID image than %s + %s\n",
+                         row.renderer.c_str(), row.mode.c_str(), first->renderer.c_str(),
+                         first->mode.c_str());
+    }
     if (!options.benchmarkOut.empty()) {
         const std::string& path = options.benchmarkOut;
         const bool csv = path.size() > 4 && path.compare(path.size() - 4, 4, ".csv") == 0;

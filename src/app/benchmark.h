@@ -19,13 +19,20 @@ struct BenchmarkRow {
     uint64_t idBytes = 0;   // the technique's ID data
     double ratioToNoId = 0; // gpuMsMedian / no-id's gpuMsMedian in the same mode
     uint32_t frames = 0;    // timed frames (after warm-up)
+    // FNV-1a of the last frame's ID and colour images: every part-ID row of one run must
+    // show the same ID image, and the colour shows that the shading settings took effect.
+    uint64_t idImageHash = 0, colorImageHash = 0;
+    // The switch to this row on the CPU, and whether its pipeline came from the cache.
+    double switchMs = 0;
+    bool pipelineCached = false;
 };
 
 struct BenchmarkReport {
     std::string deviceName, driver, api;
     std::string size, scene;
-    uint32_t msaa = 1, copies = 1, searchBatch = 16, frames = 0;
-    std::vector<BenchmarkRow> rows; // no-id rows first, then renderer-major order
+    uint32_t copies = 1, frames = 0;
+    render::RenderSettings settings; // every row's, but for technique and mode
+    std::vector<BenchmarkRow> rows;  // no-id rows first, then renderer-major order
     uint32_t validationMessages = 0;
 };
 
@@ -42,5 +49,8 @@ int benchmarkCommand(const Options& options);
 
 // Median and nearest-rank percentile of `values` (0 when empty).
 double percentile(std::vector<double> values, double fraction);
+
+// 64-bit FNV-1a over the bytes of `data`.
+uint64_t imageHash(const void* data, size_t bytes);
 
 } // namespace app

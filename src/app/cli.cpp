@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <functional>
+#include <sstream>
 
 #include "app/scene_source.h"
 #include "render/technique.h"
@@ -21,24 +23,21 @@ uint32_t parseCount(const std::string& flag, const std::string& text, uint32_t m
     return value;
 }
 
-float parseFraction(const std::string& flag, const std::string& text) {
+// A number from 0 to `max`; `what` names it in the refusal ("a number", "seconds").
+float parseNumber(const std::string& flag, const std::string& text, float max, const char* what) {
     try {
         size_t used = 0;
         float value = std::stof(text, &used);
-        if (used == text.size() && value >= 0.0f && value <= 1.0f) return value;
-    } catch (const std::exception&) {
+        if (used == text.size() && value >= 0.0f && value <= max) return value;
+    } catch (const std::exception&) { // not a number at all: the same refusal
     }
-    throw UsageError(flag + " expects a number from 0 to 1, not '" + text + "'");
+    char range[48];
+    std::snprintf(range, sizeof range, " from 0 to %.10g", double(max));
+    throw UsageError(flag + " expects " + what + range + ", not '" + text + "'");
 }
 
-float parseSeconds(const std::string& flag, const std::string& text) {
-    try {
-        size_t used = 0;
-        float value = std::stof(text, &used);
-        if (used == text.size() && value >= 0.0f && value <= 1e6f) return value;
-    } catch (const std::exception&) {
-    }
-    throw UsageError(flag + " expects seconds from 0 to 1000000, not '" + text + "'");
+float parseFraction(const std::string& flag, const std::string& text) {
+    return parseNumber(flag, text, 1.0f, "a number");
 }
 
 void parseSize(const std::string& text, Options& o) {
@@ -48,6 +47,16 @@ void parseSize(const std::string& text, Options& o) {
     o.height = parseCount("--size height", text.substr(x + 1), 1, 16384);
 }
 
+uint32_t parseRange(const std::string& flag, const std::string& text, render::Range range) {
+    return parseCount(flag, text, range.min, range.max);
+}
+
+bool parseOnOff(const std::string& flag, const std::string& text) {
+    if (text != "on" && text != "off")
+        throw UsageError(flag + " expects on or off, not '" + text + "'");
+    return text == "on";
+}
+
 Options::Pixel parsePixel(const std::string& flag, const std::string& text) {
     auto comma = text.find(',');
     if (comma == std::string::npos) throw UsageError(flag + " expects X,Y, not '" + text + "'");
@@ -55,194 +64,268 @@ Options::Pixel parsePixel(const std::string& flag, const std::string& text) {
             parseCount(flag + " y", text.substr(comma + 1), 0, 16383)};
 }
 
+// " (default 16)", " 1 to 32 (default 16)": help text from the settings' own defaults.
+template <typename T>
+std::string byDefault(const T& value) {
+    std::ostringstream text;
+    text << " (default " << value << ")";
+    return text.str();
+}
+std::string within(render::Range range, uint32_t value) {
+    return ", " + std::to_string(range.min) + " to " + std::to_string(range.max) + byDefault(value);
+}
+std::string onOff(bool value) {
+    return byDefault(value ? "on" : "off");
+}
+
 struct Flag {
     const char* name;
     const char* value; // nullptr for a switch
-    const char* help;
+    std::string help;
     std::function<void(Options&, const std::string&)> apply;
 };
 
+// A flag whose value is stored as given in a string of Options.
+Flag text(const char* name, const char* value, std::string help, std::string Options::*field) {
+    return {name, value, std::move(help),
+            [field](Options& o, const std::string& v) { o.*field = v; }};
+}
+
+// A switch that sets a bool of Options.
+Flag on(const char* name, std::string help, bool Options::*field) {
+    return {name, nullptr, std::move(help),
+            [field](Options& o, const std::string&) { o.*field = true; }};
+}
+
+// --renderer or --mode: one registry entry into the pipeline key, or with --benchmark a list.
+template <typename Entry>
+Flag registryFlag(const char* name, const char* help, const char* value,
+                  std::vector<const Entry*> (*list)(const std::string&),
+                  std::vector<const Entry*> Options::*benchmarkList,
+                  const Entry* render::PipelineKey::*field) {
+    return {name, "NAME",
+            help + byDefault(value) + "; with --benchmark a comma list or all (default)",
+            [=](Options& o, const std::string& v) {
+                o.*benchmarkList = list(v);
+                o.render.pipeline.*field = (o.*benchmarkList).front();
+            }};
+}
+
+// A whole-number flag within `range`, written into the field `field` names.
+Flag rangeFlag(const char* name, const char* help, render::Range range, uint32_t value,
+               uint32_t& (*field)(Options&)) {
+    return {name, "N", help + within(range, value),
+            [=](Options& o, const std::string& v) { field(o) = parseRange(name, v, range); }};
+}
+
 const std::vector<Flag>& flags() {
-    static const std::vector<Flag> table = {
-        {"--help", nullptr, "print this text", [](Options& o, auto&) { o.help = true; }},
-        {"--headless", nullptr, "render offscreen without a window or surface",
-         [](Options& o, auto&) { o.headless = true; }},
-        {"--size", "WxH", "render size in pixels (default 1280x720)",
-         [](Options& o, auto& v) { parseSize(v, o); }},
-        {"--msaa", "N", "samples per pixel: 1 (default), 2, 4 or 8, as the device offers",
-         [](Options& o, auto& v) {
-             o.msaa = parseCount("--msaa", v, 1, 8);
-             if (o.msaa & (o.msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
-         }},
-        {"--frames", "N", "frames to render headless (default 10); files hold the last one",
-         [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }},
-        {"--screenshot", "FILE", "write the last frame's colour image as PNG",
-         [](Options& o, auto& v) { o.screenshot = v; }},
-        {"--id-image", "FILE",
-         "write the last frame's part IDs: W*H little-endian uint32, row-major, top row first, "
-         "0xFFFFFFFF where no part is",
-         [](Options& o, auto& v) { o.idImage = v; }},
-        {"--model", "FILE", "open a glTF model (.gltf or .glb); default: assets/default.glb",
-         [](Options& o, auto& v) { o.model = v; }},
-        {"--scene", "SPEC",
-         "built-in scene instead of a model: assembly, tiles (the test layout) or "
-         "procedural[:preset=small|car-like][,seed=N]",
-         [](Options& o, auto& v) {
-             try {
-                 parseSceneSpec(v);
-             } catch (const std::invalid_argument& e) {
-                 throw UsageError(std::string("--scene: ") + e.what());
-             }
-             o.scene = v;
-         }},
-        {"--parts", "MODE",
-         "glTF parts: primitives (one part per primitive, default) or components (one per "
-         "connected component, recovers CAD faces merged by an exporter)",
-         [](Options& o, auto& v) {
-             if (v != "primitives" && v != "components")
-                 throw UsageError("--parts expects primitives or components, not '" + v + "'");
-             o.parts = v;
-         }},
-        {"--copies", "N", "replicate the model N times on a grid (default 1)",
-         [](Options& o, auto& v) { o.copies = parseCount("--copies", v, 1, 1000000); }},
-        {"--copy-axes", "AXES",
-         "axes the copies' grid spans: any of x, y, z, e.g. x, xz or xyz (default xy)",
-         [](Options& o, auto& v) {
-             try {
-                 scene::parseCopyAxes(v);
-             } catch (const std::invalid_argument& e) {
-                 throw UsageError(std::string("--copy-axes: ") + e.what());
-             }
-             o.copyAxes = v;
-         }},
-        {"--search-batch", "N", "parts per draw of the search techniques, 1 to 32 (default 16)",
-         [](Options& o, auto& v) { o.searchBatch = parseCount("--search-batch", v, 1, 32); }},
-        {"--nsearch-n", "N", "nsearch renderers: offsets read per step, 3 to 16 (default 3)",
-         [](Options& o, auto& v) { o.nsearchN = parseCount("--nsearch-n", v, 3, 16); }},
-        {"--nsearch-guess", "on|off",
-         "nsearch renderers: start at the part a uniform part size predicts (default off)",
-         [](Options& o, auto& v) {
-             if (v != "on" && v != "off")
-                 throw UsageError("--nsearch-guess expects on or off, not '" + v + "'");
-             o.nsearchGuess = v == "on";
-         }},
-        {"--nsearch-linear", "N",
-         "nsearch renderers: scan linearly from N parts left, 0 to 64 (default 8)",
-         [](Options& o, auto& v) { o.nsearchLinear = parseCount("--nsearch-linear", v, 0, 64); }},
-        {"--nsearch-steps", "N",
-         "nsearch renderers: N-ary steps at most, 1 to 64, a linear scan finishes (default 16)",
-         [](Options& o, auto& v) { o.nsearchSteps = parseCount("--nsearch-steps", v, 1, 64); }},
-        {"--visible", "F",
-         "draw only the first ceil(F * objects) objects in scene order, 0 to 1 (default 1)",
-         [](Options& o, auto& v) { o.visible = parseFraction("--visible", v); }},
-        {"--ignore-materials", nullptr,
-         "shade every object with one neutral grey, so only part colours show",
-         [](Options& o, auto&) { o.ignoreMaterials = true; }},
-        {"--stats", nullptr,
-         "print the scene's statistics as one JSON object (objects, geometries, parts, "
-         "triangles, load_ms, ID buffer bytes) and exit",
-         [](Options& o, auto&) { o.stats = true; }},
-        {"--export", "FILE", "write the scene (after copies) as binary glTF and exit",
-         [](Options& o, auto& v) { o.exportPath = v; }},
-        {"--renderer", "NAME",
-         "part-ID technique (see --list-renderers; default per-draw); with --benchmark a comma "
-         "list or all (default)",
-         [](Options& o, auto& v) {
-             rendererList(v); // throws on unknown names
-             o.renderer = v;
-         }},
-        {"--mode", "NAME",
-         "per-draw parameter mode (default push); with --benchmark a comma list or all (default)",
-         [](Options& o, auto& v) {
-             modeList(v);
-             o.mode = v;
-         }},
-        {"--benchmark", nullptr,
-         "headless: time every renderer x mode and the no-id floor; defaults 2560x1440, "
-         "--msaa 4, --copies 3, --frames 200 (each flag overrides)",
-         [](Options& o, auto&) { o.benchmark = o.headless = true; }},
-        {"--benchmark-out", "FILE", "write the benchmark as JSON (CSV when FILE ends in .csv)",
-         [](Options& o, auto& v) { o.benchmarkOut = v; }},
-        {"--part-weight", "F", "blend of part colour over material colour, 0 to 1 (default 0.5)",
-         [](Options& o, auto& v) { o.partWeight = parseFraction("--part-weight", v); }},
-        {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
-         [](Options& o, auto&) { o.colorizeDraws = true; }},
-        {"--no-sort-draws", nullptr,
-         "keep draws in scene order instead of by geometry and material",
-         [](Options& o, auto&) { o.sortDraws = false; }},
-        {"--gs-ordinary", nullptr,
-         "gs renderers: use an ordinary geometry shader even where "
-         "VK_NV_geometry_shader_passthrough "
-         "is offered",
-         [](Options& o, auto&) { o.gsPassthrough = false; }},
-        {"--pick", "X,Y",
-         "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
-         "{x,y,part,object,local_part,depth}; repeatable; the last point stays hovered in "
-         "the images",
-         [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
-        {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
-         [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
-        {"--animate", nullptr,
-         "exploded-view animation: objects move out from the scene centre to twice their "
-         "distance and back every 4 s, their matrices written on the GPU each frame; headless "
-         "at --time, else at frame / 60 s",
-         [](Options& o, auto&) { o.animate = true; }},
-        {"--time", "SECONDS",
-         "with --animate: the moment of the loop to render (default: frame / 60)",
-         [](Options& o, auto& v) { o.time = parseSeconds("--time", v); }},
-        {"--list-renderers", nullptr, "print the renderers and modes, then exit",
-         [](Options& o, auto&) { o.listRenderers = true; }},
-        {"--validation", nullptr, "enable the Khronos validation layer; messages make exit 3",
-         [](Options& o, auto&) { o.validation = true; }},
-        {"--sync-validation", nullptr,
-         "--validation plus the layer's synchronization validation (slower; for testing)",
-         [](Options& o, auto&) { o.validation = o.syncValidation = true; }},
-        {"--device", "INDEX|NAME", "Vulkan device by index or name substring (default: best)",
-         [](Options& o, auto& v) { o.device = v; }},
-        {"--list-devices", nullptr, "print the Vulkan devices and whether idview runs there",
-         [](Options& o, auto&) { o.listDevices = true; }},
-        {"--shader-dir", "DIR", "read shaders from DIR instead of the built-in location",
-         [](Options& o, auto& v) { o.shaderDir = v; }},
-        {"--script", "FILE",
-         "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
-         "drag, scroll, resize, renderer, mode, msaa, screenshot, drop, quit)",
-         [](Options& o, auto& v) { o.script = v; }},
-    };
+    static const std::vector<Flag> table = [] {
+        const Options d; // the defaults, as the settings structs define them
+        const render::PipelineKey& key = d.render.pipeline;
+        const render::NarySearch& nary = key.nsearch;
+        return std::vector<Flag>{
+            on("--help", "print this text", &Options::help),
+            on("--headless", "render offscreen without a window or surface", &Options::headless),
+            {"--size", "WxH",
+             "render size in pixels" +
+                 byDefault(std::to_string(d.width) + "x" + std::to_string(d.height)),
+             [](Options& o, auto& v) { parseSize(v, o); }},
+            {"--msaa", "N",
+             "samples per pixel: 1, 2, 4 or 8, as the device offers" + byDefault(key.msaa),
+             [](Options& o, auto& v) {
+                 uint32_t& msaa = o.render.pipeline.msaa;
+                 msaa = parseCount("--msaa", v, 1, 8);
+                 if (msaa & (msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
+             }},
+            {"--frames", "N",
+             "frames to render headless" + byDefault(d.frames) + "; files hold the last one",
+             [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }},
+            text("--screenshot", "FILE", "write the last frame's colour image as PNG",
+                 &Options::screenshot),
+            text("--id-image", "FILE",
+                 "write the last frame's part IDs: W*H little-endian uint32, row-major, top row "
+                 "first, "
+                 "0xFFFFFFFF where no part is",
+                 &Options::idImage),
+            {"--model", "FILE", "open a glTF model (.gltf or .glb); default: assets/default.glb",
+             [](Options& o, auto& v) { o.scene.model = v; }},
+            {"--scene", "SPEC",
+             "built-in scene instead of a model: assembly, tiles (the test layout) or "
+             "procedural[:preset=small|car-like][,seed=N]",
+             [](Options& o, auto& v) {
+                 try {
+                     parseSceneSpec(v);
+                 } catch (const std::invalid_argument& e) {
+                     throw UsageError(std::string("--scene: ") + e.what());
+                 }
+                 o.scene.builtin = v;
+             }},
+            {"--parts", "MODE",
+             "glTF parts: primitives (one part per primitive) or components (one per connected "
+             "component, recovers CAD faces merged by an exporter)" +
+                 byDefault(scene::partModeName(d.scene.parts)),
+             [](Options& o, auto& v) {
+                 try {
+                     o.scene.parts = scene::parsePartMode(v);
+                 } catch (const std::invalid_argument&) {
+                     throw UsageError("--parts expects primitives or components, not '" + v + "'");
+                 }
+             }},
+            {"--copies", "N", "replicate the model N times on a grid" + byDefault(d.scene.copies),
+             [](Options& o, auto& v) { o.scene.copies = parseCount("--copies", v, 1, 1000000); }},
+            {"--copy-axes", "AXES",
+             "axes the copies' grid spans: any of x, y, z, e.g. x, xz or xyz" +
+                 byDefault(scene::copyAxesName(d.scene.copyAxes)),
+             [](Options& o, auto& v) {
+                 try {
+                     o.scene.copyAxes = scene::parseCopyAxes(v);
+                 } catch (const std::invalid_argument& e) {
+                     throw UsageError(std::string("--copy-axes: ") + e.what());
+                 }
+             }},
+            rangeFlag("--search-batch", "parts per draw of the search techniques",
+                      render::searchBatchRange, key.searchBatch,
+                      [](Options& o) -> uint32_t& { return o.render.pipeline.searchBatch; }),
+            rangeFlag("--nsearch-n", "nsearch renderers: offsets read per step",
+                      render::nsearchFanOutRange, nary.n,
+                      [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.n; }),
+            {"--nsearch-guess", "on|off",
+             "nsearch renderers: start at the part a uniform part size predicts" +
+                 onOff(nary.guess),
+             [](Options& o, auto& v) {
+                 o.render.pipeline.nsearch.guess = parseOnOff("--nsearch-guess", v);
+             }},
+            rangeFlag(
+                "--nsearch-linear", "nsearch renderers: scan linearly from N parts left",
+                render::nsearchLinearRange, nary.linearBelow,
+                [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.linearBelow; }),
+            rangeFlag("--nsearch-steps",
+                      "nsearch renderers: N-ary steps at most, a linear scan finishes",
+                      render::nsearchStepsRange, nary.maxSteps,
+                      [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.maxSteps; }),
+            {"--visible", "F",
+             "draw only the first ceil(F * objects) objects in scene order, 0 to 1" +
+                 byDefault(d.render.draws.visible),
+             [](Options& o, auto& v) { o.render.draws.visible = parseFraction("--visible", v); }},
+            {"--ignore-materials", nullptr,
+             "shade every object with one neutral grey, so only part colours show",
+             [](Options& o, auto&) { o.render.shading.ignoreMaterials = true; }},
+            on("--stats",
+               "print the scene's statistics as one JSON object (objects, geometries, parts, "
+               "triangles, load_ms, ID buffer bytes) and, for the chosen renderer and mode, draws, "
+               "pipelines and the bytes of each buffer; then exit",
+               &Options::stats),
+            text("--export", "FILE", "write the scene (after copies) as binary glTF and exit",
+                 &Options::exportPath),
+            registryFlag("--renderer", "part-ID technique (see --list-renderers)",
+                         key.technique->name, techniqueList, &Options::benchmarkTechniques,
+                         &render::PipelineKey::technique),
+            registryFlag("--mode", "per-draw parameter mode", key.mode->name, modeList,
+                         &Options::benchmarkModes, &render::PipelineKey::mode),
+            {"--benchmark", nullptr,
+             "headless: time every renderer x mode and the no-id floor; defaults 2560x1440, "
+             "--msaa 4, --copies 3, --frames 200 (each flag overrides)",
+             [](Options& o, auto&) { o.benchmark = o.headless = true; }},
+            text("--benchmark-out", "FILE",
+                 "write the benchmark as JSON (CSV when FILE ends in .csv)",
+                 &Options::benchmarkOut),
+            {"--part-weight", "F",
+             "blend of part colour over material colour, 0 to 1" +
+                 byDefault(d.render.shading.partWeight),
+             [](Options& o, auto& v) {
+                 o.render.shading.partWeight = parseFraction("--part-weight", v);
+             }},
+            {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
+             [](Options& o, auto&) { o.render.shading.colorizeDraws = true; }},
+            {"--no-sort-draws", nullptr,
+             "keep draws in scene order instead of by geometry and material",
+             [](Options& o, auto&) { o.render.draws.sortDraws = false; }},
+            {"--gs-ordinary", nullptr,
+             "gs renderers: use an ordinary geometry shader even where "
+             "VK_NV_geometry_shader_passthrough is offered",
+             [](Options& o, auto&) { o.render.pipeline.gsPassthrough = false; }},
+            {"--pick", "X,Y",
+             "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
+             "{x,y,part,object,local_part,depth}; repeatable; the last point stays hovered in "
+             "the images",
+             [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
+            {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
+             [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
+            {"--animate", nullptr,
+             "exploded-view animation: objects move out from the scene centre to twice their "
+             "distance and back every 4 s, their matrices written on the GPU each frame; headless "
+             "at --time, else at frame / 60 s",
+             [](Options& o, auto&) { o.animation.animate = true; }},
+            {"--time", "SECONDS",
+             "with --animate: the moment of the loop to render (default: frame / 60)",
+             [](Options& o, auto& v) {
+                 o.animation.time = parseNumber("--time", v, 1e6f, "seconds");
+             }},
+            on("--list-renderers", "print the renderers and modes, then exit",
+               &Options::listRenderers),
+            on("--validation", "enable the Khronos validation layer; messages make exit 3",
+               &Options::validation),
+            {"--sync-validation", nullptr,
+             "--validation plus the layer's synchronization validation (slower; for testing)",
+             [](Options& o, auto&) { o.validation = o.syncValidation = true; }},
+            text("--device", "INDEX|NAME",
+                 "Vulkan device by index or name substring (default: best)", &Options::device),
+            on("--list-devices", "print the Vulkan devices and whether idview runs there",
+               &Options::listDevices),
+            text("--shader-dir", "DIR", "read shaders from DIR instead of the built-in location",
+                 &Options::shaderDir),
+            text(
+                "--script", "FILE",
+                "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
+                "drag, scroll, resize, renderer, mode, msaa, copies, frames, screenshot, drop, "
+                "quit)",
+                &Options::script),
+            on("--print-events",
+               "viewer: print one 'idview: ...' line on stdout per event (title, selection, opened "
+               "model, screenshot, shader reload), for scripts and tests; quiet otherwise",
+               &Options::printEvents),
+        };
+    }();
     return table;
 }
 
-template <typename Entry, typename Find>
-std::vector<std::string> splitNames(const char* flag, const std::string& value,
-                                    const std::vector<Entry>& all, Find find,
-                                    const std::string& known) {
-    std::vector<std::string> names;
+template <typename Entry>
+std::vector<const Entry*> namedEntries(const char* flag, const std::string& value,
+                                       const std::vector<Entry>& all,
+                                       const Entry* (*find)(const std::string&),
+                                       const std::string& known, bool (*inAll)(const Entry&)) {
+    std::vector<const Entry*> entries;
     if (value == "all") {
-        for (const auto& entry : all) names.push_back(entry.name);
-        return names;
+        for (const auto& entry : all)
+            if (inAll(entry)) entries.push_back(&entry);
+        return entries;
     }
     size_t start = 0;
     while (start <= value.size()) {
         const size_t comma = std::min(value.find(',', start), value.size());
         const std::string name = value.substr(start, comma - start);
-        if (!find(name))
+        const Entry* entry = find(name);
+        if (!entry)
             throw UsageError(std::string(flag) + ": unknown name '" + name + "' (known: " + known +
                              ", or all)");
-        names.push_back(name);
+        entries.push_back(entry);
         start = comma + 1;
     }
-    return names;
+    return entries;
 }
 
 } // namespace
 
-std::vector<std::string> rendererList(const std::string& value) {
-    return splitNames("--renderer", value, render::techniques(), render::findTechnique,
-                      render::techniqueNames());
+std::vector<const render::Technique*> techniqueList(const std::string& value) {
+    return namedEntries<render::Technique>("--renderer", value, render::techniques(),
+                                           render::findTechnique, render::techniqueNames(),
+                                           [](const render::Technique& t) { return !t.isFloor(); });
 }
 
-std::vector<std::string> modeList(const std::string& value) {
-    return splitNames("--mode", value, render::drawModes(), render::findDrawMode,
-                      render::drawModeNames());
+std::vector<const render::DrawMode*> modeList(const std::string& value) {
+    return namedEntries<render::DrawMode>("--mode", value, render::drawModes(),
+                                          render::findDrawMode, render::drawModeNames(),
+                                          [](const render::DrawMode&) { return true; });
 }
 
 Options parseArgs(const std::vector<std::string>& args) {
@@ -274,16 +357,23 @@ Options parseArgs(const std::vector<std::string>& args) {
     };
     if (options.benchmark) {
         if (!given("--size")) options.width = 2560, options.height = 1440;
-        if (!given("--msaa")) options.msaa = 4;
-        if (!given("--copies")) options.copies = 3;
+        if (!given("--msaa")) options.render.pipeline.msaa = 4;
+        if (!given("--copies")) options.scene.copies = 3;
         if (!given("--frames")) options.frames = 200;
-        if (!given("--renderer")) options.renderer = "all";
-        if (!given("--mode")) options.mode = "all";
-    } else if (rendererList(options.renderer).size() != 1 || modeList(options.mode).size() != 1 ||
-               options.renderer == "all" || options.mode == "all") {
-        throw UsageError("--renderer and --mode take one name each unless --benchmark is given");
+        if (!given("--renderer")) options.benchmarkTechniques = techniqueList("all");
+        if (!given("--mode")) options.benchmarkModes = modeList("all");
+    } else {
+        // One name each: the lists (and "all") are the benchmark's.
+        const bool oneEach = (!given("--renderer") || options.benchmarkTechniques.size() == 1) &&
+                             (!given("--mode") || options.benchmarkModes.size() == 1);
+        if (!oneEach)
+            throw UsageError(
+                "--renderer and --mode take one name each unless --benchmark is given");
+        options.benchmarkTechniques.clear();
+        options.benchmarkModes.clear();
     }
-    if (options.time && !options.animate) throw UsageError("--time needs --animate");
+    if (options.animation.time && !options.animation.animate)
+        throw UsageError("--time needs --animate");
     auto outside = [&](const Options::Pixel& p) {
         return p.x >= options.width || p.y >= options.height;
     };

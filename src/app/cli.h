@@ -1,5 +1,7 @@
-// cli.h - command-line options of idview and their parsing. Parsing never touches Vulkan,
-// so every flag is unit-tested.
+// cli.h - idview's command line: the options a run is made of and their parsing. The flag
+// table writes straight into the settings structs (render/settings.h, SceneSettings,
+// Animation) that headless rendering, the benchmark and the viewer then hold unchanged.
+// Parsing never touches Vulkan, so every flag is unit-tested.
 #pragma once
 
 #include <cstdint>
@@ -8,50 +10,59 @@
 #include <string>
 #include <vector>
 
-#include "render/technique.h" // NarySearch defaults (plain C++)
+#include "render/settings.h"
+#include "scene/copies.h"
+#include "scene/gltf_loader.h"
 
 namespace app {
 
+// Where the scene comes from, and how many times it is placed.
+struct SceneSettings {
+    std::string model;   // glTF file; with `builtin` empty too, the default model
+    std::string builtin; // built-in or procedural scene spec (scene_source.h)
+    scene::PartMode parts = scene::PartMode::Primitives; // glTF: what one part is
+    uint32_t copies = 1;
+    uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans
+    bool operator==(const SceneSettings&) const = default;
+};
+
+// The exploded view: with `animate` it follows scene::explodeLoop, headless at `time`
+// seconds or at frame / 60 without it; otherwise it stays at `explode` (0..1, set by
+// in-process callers such as the tests).
+struct Animation {
+    bool animate = false;
+    std::optional<float> time;
+    float explode = 0.0f;
+};
+
 struct Options {
+    // What to do.
     bool help = false;
     bool listDevices = false;
     bool listRenderers = false;
     bool headless = false;
+    bool stats = false;
+    std::string exportPath; // write the scene as .glb and exit
+    bool benchmark = false;
+    std::string benchmarkOut; // JSON, or CSV when the name ends in .csv
+    // --benchmark: what to time, as --renderer and --mode list it (every part-ID technique
+    // and every mode when not given). Other runs use render.pipeline alone.
+    std::vector<const render::Technique*> benchmarkTechniques;
+    std::vector<const render::DrawMode*> benchmarkModes;
+
+    // The device and how it is driven.
+    std::string device; // index or name substring; empty: best device
     bool validation = false;
     bool syncValidation = false; // implies validation
-    std::string device;          // index or name substring; empty: best device
+    std::string shaderDir;
+
+    // The image.
     uint32_t width = 1280;
     uint32_t height = 720;
     uint32_t frames = 10;
-    uint32_t msaa = 1;      // samples per pixel of the scene pass: 1, 2, 4 or 8
     std::string screenshot; // PNG path
     std::string idImage;    // raw little-endian uint32 path
-    std::string model;      // glTF file; with scene empty too, the default model
-    std::string scene;      // built-in or procedural scene spec (scene_source.h)
-    std::string parts = "primitives";
-    uint32_t copies = 1;
-    std::string copyAxes = "xy"; // axes the copies' grid spans (scene/copies.h)
-    uint32_t searchBatch = 16;
-    // nsearch-*: render::NarySearch, flag by flag.
-    uint32_t nsearchN = render::NarySearch{}.n; // defaults measured best on the H100
-    bool nsearchGuess = render::NarySearch{}.guess;
-    uint32_t nsearchLinear = 8;
-    uint32_t nsearchSteps = 16;
-    float visible = 1.0f; // draw the first ceil(visible * objects) objects
-    bool ignoreMaterials = false;
-    bool stats = false;
-    std::string exportPath; // write the scene as .glb and exit
-    std::string renderer = "per-draw";
-    std::string mode = "push";
-    float partWeight = 0.5f;
-    bool colorizeDraws = false;
-    bool sortDraws = true;     // by geometry, then material
-    bool gsPassthrough = true; // where the device offers it
-    std::string shaderDir;
-    bool benchmark = false;         // --renderer and --mode then take comma lists or "all"
-    std::string benchmarkOut;       // JSON, or CSV when the name ends in .csv
-    std::vector<std::string> given; // flags on the command line, for mode-specific defaults
-    // Headless picking: one frame per point picks it and prints a JSON line; `select` is
+    // Headless picking: one frame per point picks it and prints a JSON line; `selects` is
     // picked first and selected as a click there would (steady highlight in the images).
     struct Pixel {
         uint32_t x = 0, y = 0;
@@ -59,14 +70,17 @@ struct Options {
     };
     std::vector<Pixel> picks;
     std::vector<Pixel> selects; // at most one; a vector keeps "not given" apart from 0,0
-    // Exploded view: with `animate` it follows scene::explodeLoop at `time` seconds, or at
-    // frame / 60 without --time; otherwise it stays at `explode` (0..1, set by in-process
-    // callers such as the tests).
-    bool animate = false;
-    std::optional<float> time;
-    float explode = 0.0f;
-    // Viewer: scripted input, one `<seconds> <command> [args]` per line (app/input_script.h).
+
+    SceneSettings scene;
+    render::RenderSettings render;
+    Animation animation;
+
+    // Viewer: scripted input, one `<seconds> <command> [args]` per line (viewer/script.h),
+    // and the event lines (title, selection, opened, screenshot, reload) on stdout.
     std::string script;
+    bool printEvents = false;
+
+    std::vector<std::string> given; // flags on the command line, for mode-specific defaults
 };
 
 // A bad command line: main() prints the message and the usage, and exits 2.
@@ -78,12 +92,12 @@ struct UsageError : std::runtime_error {
 // With --benchmark, flags not given take the benchmark's defaults (the seed's results table:
 // 2560x1440, 4x MSAA, 3 copies, 200 frames, all renderers and modes).
 Options parseArgs(const std::vector<std::string>& args);
-
-// The names a --renderer or --mode value lists ("all" expands to every one; no-id is never
-// in a list: the benchmark adds it itself).
-std::vector<std::string> rendererList(const std::string& value);
-std::vector<std::string> modeList(const std::string& value);
 Options parseArgs(int argc, char** argv);
+
+// The registry entries a --renderer or --mode value names: a comma list, or "all" (every
+// one; for --renderer every part-ID technique, the benchmark adds the no-id floor itself).
+std::vector<const render::Technique*> techniqueList(const std::string& value);
+std::vector<const render::DrawMode*> modeList(const std::string& value);
 
 std::string usage();
 

@@ -19,47 +19,6 @@
 namespace app {
 namespace {
 
-// Host-visible copies of the last frame's colour and ID images.
-struct Readback {
-    vk::Device& device;
-    vk::Buffer color, ids;
-
-    Readback(vk::Device& d, VkExtent2D extent) : device(d) {
-        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
-        const VkMemoryPropertyFlags host =
-            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-        color =
-            vk::createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host, "readback colour");
-        try {
-            ids =
-                vk::createBuffer(d, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, host, "readback IDs");
-        } catch (...) {
-            vk::destroyBuffer(d, color);
-            throw;
-        }
-    }
-    ~Readback() {
-        vk::destroyBuffer(device, color);
-        vk::destroyBuffer(device, ids);
-    }
-
-    // After the scene pass: both images are in TRANSFER_SRC_OPTIMAL (see ScenePass).
-    void record(VkCommandBuffer cmd, const render::SceneTargets& targets) const {
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {targets.extent().width, targets.extent().height, 1};
-        vkCmdCopyImageToBuffer(cmd, targets.color().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               color.buffer, 1, &region);
-        vkCmdCopyImageToBuffer(cmd, targets.ids().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               ids.buffer, 1, &region);
-        auto toHost = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                             &toHost, 0, nullptr, 0, nullptr);
-    }
-};
-
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick) {
     char head[64];
     std::snprintf(head, sizeof head, "{\"x\":%u,\"y\":%u,", pick.pixel.x, pick.pixel.y);
@@ -81,72 +40,54 @@ double median(std::vector<double> values) {
 
 } // namespace
 
-render::RenderConfig renderConfig(const Options& options) {
-    const render::Technique* technique = render::findTechnique(options.renderer);
-    const render::DrawMode* mode = render::findDrawMode(options.mode);
-    if (!technique || !mode) throw vk::Error("unknown renderer or mode");
-    return renderConfig(options, *technique, *mode);
+render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent) {
+    render::FrameParams params;
+    params.viewProj = camera.viewProjection(float(extent.width) / float(extent.height));
+    params.eye = camera.eye;
+    return params;
 }
 
-render::RenderConfig renderConfig(const Options& options, const render::Technique& technique,
-                                  const render::DrawMode& mode) {
-    render::RenderConfig config;
-    config.technique = &technique;
-    config.mode = &mode;
-    config.searchBatch = options.searchBatch;
-    config.sortDraws = options.sortDraws;
-    config.gsPassthrough = options.gsPassthrough;
-    config.nsearch = {options.nsearchN, options.nsearchGuess, options.nsearchLinear,
-                      options.nsearchSteps};
-    config.visible = options.visible;
-    return config;
+float explodeAt(const Animation& animation, uint64_t frame) {
+    return animation.animate ? scene::explodeLoop(animation.time.value_or(float(frame) / 60))
+                             : animation.explode;
 }
 
 std::vector<HeadlessResult>
 renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                        const scene::Camera& camera,
-                       const std::vector<render::RenderConfig>& configs) {
-    std::vector<HeadlessResult> results(configs.size());
+                       const std::vector<render::RenderSettings>& settings) {
+    std::vector<HeadlessResult> results(settings.size());
     vk::Instance instance({options.validation, {}, options.syncValidation});
     {
         Offscreen rig(instance, options);
         vk::Device& device = rig.device;
-        const VkExtent2D extent = rig.extent;
-        const render::SceneTargets& targets = rig.targets;
         render::FrameSlots& slots = rig.slots;
         render::Renderer& renderer = rig.renderer;
-        renderer.setScene(scene);
-        Readback readback(device, extent);
-
-        render::FrameParams params;
-        params.viewProj = camera.viewProjection(float(extent.width) / float(extent.height));
-        params.eye = camera.eye;
-        params.partColorWeight = options.partWeight;
-        params.colorizeDraws = options.colorizeDraws;
-        params.ignoreMaterials = options.ignoreMaterials;
+        Readback readback(device, rig.extent);
+        render::FrameParams params = cameraFrame(camera, rig.extent);
         uint64_t frameNumber = 0;
-        // --animate: the exploded view at --time, else at frame / 60 s; otherwise it stays put.
-        auto explodeAt = [&](uint64_t frame) {
-            return options.animate ? scene::explodeLoop(options.time.value_or(float(frame) / 60))
-                                   : options.explode;
-        };
         // One frame that picks `pixel`, waited for: headless has nothing else to overlap.
         auto pickFrame = [&](const Options::Pixel& pixel) {
             render::FrameParams pickParams = params;
             pickParams.pickPixel = glm::uvec2(pixel.x, pixel.y);
-            pickParams.explode = explodeAt(frameNumber);
+            pickParams.explode = explodeAt(options.animation, frameNumber);
             render::FrameSlot& slot = slots.begin(frameNumber++);
-            renderer.record(slot, targets, pickParams);
+            renderer.record(slot, rig.targets, pickParams);
             slots.submit(slot);
             slots.finish();
             return *slots.latestPick();
         };
-        for (size_t c = 0; c < configs.size(); ++c) {
+        for (size_t c = 0; c < settings.size(); ++c) {
             HeadlessResult& result = results[c];
-            result.width = extent.width;
-            result.height = extent.height;
+            result.width = rig.extent.width;
+            result.height = rig.extent.height;
             result.deviceName = device.info().name;
-            renderer.configure(scene, configs[c]); // the same renderer, reconfigured
+            // The same renderer, switched.
+            if (c == 0)
+                renderer.setScene(scene, settings[c]);
+            else
+                renderer.configure(scene, settings[c]);
+            rig.useMsaa(settings[c].pipeline.msaa);
             result.stats = renderer.stats();
             params.selectedPart = gpu::BACKGROUND_ID;
             params.pickPixel.reset();
@@ -161,20 +102,17 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             const uint64_t timedBefore = slots.timedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
-                params.explode = explodeAt(frameNumber);
-                renderer.record(slot, targets, params);
-                if (frame + 1 == options.frames) readback.record(slot.cmd, targets);
+                params.explode = explodeAt(options.animation, frameNumber);
+                renderer.record(slot, rig.targets, params);
+                if (frame + 1 == options.frames) readback.record(slot.cmd, *rig.targets);
                 slots.submit(slot);
             }
             slots.finish();
             const auto& gpuMs = slots.gpuMilliseconds(); // the last historyLimit at most
             const size_t timed = std::min<size_t>(slots.timedFrames() - timedBefore, gpuMs.size());
             result.gpuMs.assign(gpuMs.end() - long(timed), gpuMs.end());
-            const size_t pixels = size_t(extent.width) * extent.height;
-            result.color.resize(pixels * 4);
-            result.ids.resize(pixels);
-            std::memcpy(result.color.data(), readback.color.mapped, pixels * 4);
-            std::memcpy(result.ids.data(), readback.ids.mapped, pixels * 4);
+            result.color = readback.colorBytes();
+            result.ids = readback.idValues();
         }
     }
     for (HeadlessResult& result : results)
@@ -184,16 +122,17 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
 
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera) {
-    return renderHeadlessSequence(options, scene, camera, {renderConfig(options)}).front();
+    return renderHeadlessSequence(options, scene, camera, {options.render}).front();
 }
 
 int runHeadless(const Options& options) {
-    const LoadedScene loaded = loadScene(options);
+    const LoadedScene loaded = loadScene(options.scene);
     const scene::Scene& scene = loaded.scene;
     for (const auto& warning : loaded.warnings)
         std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
     const float aspect = float(options.width) / float(options.height);
     HeadlessResult result = renderHeadless(options, scene, initialCamera(loaded, aspect));
+    const render::PipelineKey& key = options.render.pipeline;
 
     if (!options.screenshot.empty())
         writePng(options.screenshot, result.width, result.height, result.color);
@@ -205,9 +144,8 @@ int runHeadless(const Options& options) {
         options.picks.empty() ? stdout : stderr,
         "idview: %u frames of %ux%u on %s, %s%s + %s: %zu draws, %llu triangles, %u parts, "
         "scene pass GPU median %.3f ms\n",
-        options.frames, result.width, result.height, result.deviceName.c_str(),
-        options.renderer.c_str(), result.stats.gsPassthrough ? " (passthrough)" : "",
-        options.mode.c_str(), result.stats.draws,
+        options.frames, result.width, result.height, result.deviceName.c_str(), key.technique->name,
+        result.stats.gsPassthrough ? " (passthrough)" : "", key.mode->name, result.stats.draws,
         static_cast<unsigned long long>(scene.drawnTriangleCount()), scene.uniquePartCount(),
         median(result.gpuMs));
     return exitCode(result.validationMessages);

@@ -25,12 +25,6 @@ struct HeadlessResult {
     uint32_t validationMessages = 0; // counted until the device is destroyed
 };
 
-// The renderer configuration the options ask for (throws vk::Error for unknown names).
-render::RenderConfig renderConfig(const Options& options);
-// The same for a technique and mode chosen by the caller (the benchmark's lists).
-render::RenderConfig renderConfig(const Options& options, const render::Technique& technique,
-                                  const render::DrawMode& mode);
-
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
 // Picks come first: Options::selects (one frame, its part becomes the selection), then one
 // frame per Options::picks entry; the timed frames keep the last pick point hovered.
@@ -38,13 +32,18 @@ render::RenderConfig renderConfig(const Options& options, const render::Techniqu
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 
-// The same with one device and one renderer, reconfigured for each entry of `configs` in
-// turn (as the viewer switches techniques at run time). validationMessages counts the whole
-// sequence.
+// The same with one device and one renderer, switched to each of `settings` in turn (as the
+// viewer switches at run time; options.render is not used). validationMessages counts the
+// whole sequence.
 std::vector<HeadlessResult>
 renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                        const scene::Camera& camera,
-                       const std::vector<render::RenderConfig>& configs);
+                       const std::vector<render::RenderSettings>& settings);
+
+// The frame of `camera` for `extent`, as headless, the benchmark and the viewer draw it.
+render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent);
+// --animate: the exploded view at --time, else at frame / 60 s; otherwise it stays put.
+float explodeAt(const Animation& animation, uint64_t frame);
 
 // 0, or 3 with a line on stderr when validation reported anything (the CLI's exit codes).
 int exitCode(uint32_t validationMessages);

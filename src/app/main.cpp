@@ -6,19 +6,21 @@
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/scene_source.h"
-#include "app/viewer.h"
+#include "app/viewer/viewer.h"
 #include "render/technique.h"
 #include "scene/gltf_writer.h"
 #include "vk/context.h"
 
 namespace {
 
+// One section per kind, each line "  NAME  description": scripts read the names from here.
 int listRenderers() {
     std::printf("renderers:\n");
-    for (const auto& t : render::techniques()) std::printf("  %-12s %s\n", t.name, t.description);
+    for (const render::Technique* t : render::partIdTechniques())
+        std::printf("  %-12s %s\n", t->name, t->description);
     std::printf("per-draw modes:\n");
     for (const auto& m : render::drawModes()) std::printf("  %-12s %s\n", m.name, m.description);
-    const render::Technique& floor = render::noIdTechnique();
+    const render::Technique& floor = render::floorTechnique();
     std::printf("reference (the benchmark's floor, no part IDs):\n  %-12s %s\n", floor.name,
                 floor.description);
     return 0;
@@ -56,9 +58,9 @@ int main(int argc, char** argv) {
         if (options.listRenderers) return listRenderers();
         if (options.listDevices) return listDevices(options);
         if (options.stats || !options.exportPath.empty()) {
-            const app::LoadedScene loaded = app::loadScene(options);
+            const app::LoadedScene loaded = app::loadScene(options.scene);
             if (!options.exportPath.empty()) scene::writeGlb(loaded.scene, options.exportPath);
-            if (options.stats) std::printf("%s\n", app::statsJson(loaded, options).c_str());
+            if (options.stats) std::printf("%s\n", app::statsJson(loaded, options.render).c_str());
             return 0;
         }
         if (options.benchmark) return app::benchmarkCommand(options);

@@ -1,8 +1,13 @@
 // offscreen.h - everything one offscreen rendering needs on a device: the device, shader
-// compiler, scene pass (with the options' MSAA), targets, frames in flight and the renderer.
-// Members are built in order and destroyed in reverse; the Instance outlives it, so the
-// validation count read after destruction includes teardown.
+// compiler, renderer, the targets (at the options' size and MSAA) and the frames in flight.
+// Members are built in order and destroyed in reverse: the frames first, which waits for
+// them, so nothing they use goes while they run. The Instance outlives it, so the validation
+// count read after destruction includes teardown.
 #pragma once
+
+#include <cstring>
+#include <memory>
+#include <vector>
 
 #include "app/cli.h"
 #include "render/frame_slots.h"
@@ -13,21 +18,65 @@
 
 namespace app {
 
+// Host-visible copies of the last frame's colour and ID images.
+struct Readback {
+    vk::Buffer color, ids;
+
+    Readback(vk::Device& device, VkExtent2D extent) {
+        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+        color = vk::hostBuffer(device, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "readback colour");
+        ids = vk::hostBuffer(device, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "readback IDs");
+    }
+
+    // After the scene pass: both images are in TRANSFER_SRC_OPTIMAL (see ScenePass).
+    void record(VkCommandBuffer cmd, const render::SceneTargets& targets) const {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {targets.extent().width, targets.extent().height, 1};
+        vkCmdCopyImageToBuffer(cmd, targets.color().handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               color.handle(), 1, &region);
+        vkCmdCopyImageToBuffer(cmd, targets.ids().handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               ids.handle(), 1, &region);
+        auto toHost = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                             &toHost, 0, nullptr, 0, nullptr);
+    }
+
+    // Once the frame that recorded the copies has finished.
+    std::vector<uint8_t> colorBytes() const { return read<uint8_t>(color); }
+    std::vector<uint32_t> idValues() const { return read<uint32_t>(ids); }
+
+  private:
+    template <typename T>
+    static std::vector<T> read(const vk::Buffer& from) {
+        std::vector<T> values(from.size() / sizeof(T));
+        std::memcpy(values.data(), from.mapped(), values.size() * sizeof(T));
+        return values;
+    }
+};
+
 struct Offscreen {
     Offscreen(vk::Instance& instance, const Options& options)
         : device(instance, vk::chooseDevice(instance.devices(), options.device)),
           compiler(vk::ShaderCompiler::locate(options.shaderDir)),
-          pass(device, render::checkedSampleCount(device, options.msaa)), extent{options.width,
-                                                                                 options.height},
-          targets(device, pass, extent), slots(device), renderer(device, compiler, pass) {}
+          renderer(device, compiler), extent{options.width, options.height}, slots(device) {
+        useMsaa(options.render.pipeline.msaa);
+    }
+
+    // Targets for `msaa` (the ones before stay with the frames that drew into them).
+    void useMsaa(uint32_t msaa) {
+        if (targets && uint32_t(targets->pass().samples()) == msaa) return;
+        targets = std::make_shared<render::SceneTargets>(device, renderer.pass(msaa), extent);
+    }
 
     vk::Device device;
     vk::ShaderCompiler compiler;
-    render::ScenePass pass;
-    VkExtent2D extent;
-    render::SceneTargets targets;
-    render::FrameSlots slots;
     render::Renderer renderer;
+    VkExtent2D extent;
+    std::shared_ptr<const render::SceneTargets> targets;
+    render::FrameSlots slots;
 };
 
 } // namespace app

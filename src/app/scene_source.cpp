@@ -78,28 +78,27 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
                                  "this machine has " + std::to_string(ram >> 30) + " GiB");
 }
 
-LoadedScene loadScene(const Options& options) {
+LoadedScene loadScene(const SceneSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
-    if (!options.model.empty() || options.scene.empty()) {
-        loaded.source = options.model.empty() ? defaultModelPath() : options.model;
-        scene::LoadResult result =
-            scene::loadGltf(loaded.source, {scene::parsePartMode(options.parts)});
+    loaded.settings = settings;
+    if (!settings.model.empty() || settings.builtin.empty()) {
+        loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
+        scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
         loaded.scene = std::move(result.scene);
         loaded.warnings = std::move(result.warnings);
     } else {
-        const SceneSpec spec = parseSceneSpec(options.scene);
-        loaded.source = options.scene;
+        const SceneSpec spec = parseSceneSpec(settings.builtin);
+        loaded.source = settings.builtin;
         if (spec.builtin == "procedural")
             loaded.scene = scene::makeProcedural({spec.preset, spec.seed});
         else
             loaded.scene = scene::makeScene(spec.builtin);
-        loaded.tilesLayout = spec.builtin == "tiles" && options.copies == 1;
+        loaded.tilesLayout = spec.builtin == "tiles" && settings.copies == 1;
     }
-    if (options.copies > 1) {
-        checkCopiesFit(loaded.scene, options.copies);
-        loaded.scene =
-            scene::replicate(loaded.scene, options.copies, scene::parseCopyAxes(options.copyAxes));
+    if (settings.copies > 1) {
+        checkCopiesFit(loaded.scene, settings.copies);
+        loaded.scene = scene::replicate(loaded.scene, settings.copies, settings.copyAxes);
     }
     loaded.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -131,37 +130,31 @@ std::string jsonString(const std::string& text) {
     return out + "\"";
 }
 
-std::string statsJson(const LoadedScene& loaded, const Options& options) {
+std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings) {
     const scene::Scene& s = loaded.scene;
-    const scene::IdDataBytes bytes = scene::idDataBytes(s, options.searchBatch);
+    const render::PipelineKey& key = settings.pipeline;
+    const scene::IdDataBytes bytes = scene::idDataBytes(s, key.searchBatch);
     std::ostringstream json;
     json.precision(3);
     json << std::fixed << "{\"source\":" << jsonString(loaded.source)
-         << ",\"part_mode\":" << jsonString(options.parts) << ",\"copies\":" << options.copies
-         << ",\"objects\":" << s.objects.size() << ",\"geometries\":" << s.geometries.size()
-         << ",\"parts\":" << s.uniquePartCount() << ",\"geometry_parts\":" << s.parts.size()
-         << ",\"triangles\":" << s.drawnTriangleCount()
+         << ",\"part_mode\":" << jsonString(scene::partModeName(loaded.settings.parts))
+         << ",\"copies\":" << loaded.settings.copies << ",\"objects\":" << s.objects.size()
+         << ",\"geometries\":" << s.geometries.size() << ",\"parts\":" << s.uniquePartCount()
+         << ",\"geometry_parts\":" << s.parts.size() << ",\"triangles\":" << s.drawnTriangleCount()
          << ",\"unique_triangles\":" << s.indices.size() / 3
          << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
-         << ",\"search_batch\":" << options.searchBatch
+         << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
          << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets;
     // What the chosen renderer and mode would draw and upload.
-    const render::Technique* technique = render::findTechnique(options.renderer);
-    const render::DrawMode* mode = render::findDrawMode(options.mode);
-    if (technique && mode) {
-        const render::RenderStats r = render::statsFor(
-            render::buildDrawList(s, *technique,
-                                  {options.searchBatch, options.sortDraws, options.visible}),
-            *mode);
-        json << ",\"renderer\":" << jsonString(technique->name)
-             << ",\"mode\":" << jsonString(mode->name) << ",\"draws\":" << r.draws
-             << ",\"drawn_triangles\":" << r.triangles << ",\"pipelines\":" << r.pipelines
-             << ",\"id_buffer_bytes\":" << r.idBufferBytes
-             << ",\"per_draw_bytes\":" << r.perDrawBytes
-             << ",\"indirect_bytes\":" << r.indirectBytes;
-    }
+    const render::RenderStats r =
+        render::statsFor(render::buildDrawList(s, key, settings.draws), *key.mode);
+    json << ",\"renderer\":" << jsonString(key.technique->name)
+         << ",\"mode\":" << jsonString(key.mode->name) << ",\"draws\":" << r.draws
+         << ",\"drawn_triangles\":" << r.triangles << ",\"pipelines\":" << r.pipelines
+         << ",\"id_buffer_bytes\":" << r.idBufferBytes << ",\"per_draw_bytes\":" << r.perDrawBytes
+         << ",\"indirect_bytes\":" << r.indirectBytes;
     json << ",\"warnings\":[";
     for (size_t i = 0; i < loaded.warnings.size(); ++i)
         json << (i ? "," : "") << jsonString(loaded.warnings[i]);

@@ -24,8 +24,9 @@ SceneSpec parseSceneSpec(const std::string& text);
 
 struct LoadedScene {
     scene::Scene scene;
-    std::string source;  // file path or scene spec, for messages and stats
-    double loadMs = 0.0; // loading or generating, copies included
+    SceneSettings settings; // what it was loaded as (copies included)
+    std::string source;     // file path or scene spec, for messages and stats
+    double loadMs = 0.0;    // loading or generating, copies included
     std::vector<std::string> warnings;
     bool tilesLayout = false; // the test layout at its own camera
 };
@@ -34,9 +35,9 @@ struct LoadedScene {
 // (a bundled copy), else in the source tree.
 std::string defaultModelPath();
 
-// Loads or generates the scene the options name and applies --copies. Throws
+// Loads or generates the scene `settings` name and makes its copies. Throws
 // scene::ModelError / std::runtime_error with a one-line message.
-LoadedScene loadScene(const Options& options);
+LoadedScene loadScene(const SceneSettings& settings);
 
 // Throws std::runtime_error, one line, when `copies` of `scene` would not fit in this
 // machine's memory (checked before any allocation).
@@ -48,7 +49,8 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 // `text` as a JSON string literal, quotes included.
 std::string jsonString(const std::string& text);
 
-// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ...
-std::string statsJson(const LoadedScene& loaded, const Options& options);
+// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ... and what
+// the renderer `settings` choose would draw and upload.
+std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings);
 
 } // namespace app

@@ -1,10 +1,9 @@
-// animator.cpp - compute pipeline, per-scene buffers and the recording of the animation.
+// animator.cpp - the compute pipeline and the recording of the animation.
 #include "render/animator.h"
 
 #include <algorithm>
 #include <vector>
 
-#include "scene/explode.h"
 #include "shared.h"
 #include "vk/check.h"
 #include "vk/debug.h"
@@ -27,73 +26,38 @@ void requireCompute(const vk::Device& device) {
 
 } // namespace
 
-Animator::Animator(vk::Device& device, const vk::ShaderCompiler& compiler,
-                   const scene::Scene& scene, VkDeviceAddress objectsAddress)
-    : device_(device), objects_(objectsAddress),
-      count_(static_cast<uint32_t>(scene.objects.size())) {
+Animator::Animator(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
     requireCompute(device);
-    std::vector<glm::mat4> rest;
-    rest.reserve(scene.objects.size());
-    for (const auto& o : scene.objects) rest.push_back(o.world);
-    const std::vector<glm::vec4> offsets = scene::explodeOffsets(scene);
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::AnimationPush)};
+    auto layoutInfo =
+        vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &range;
+    layout_ = vk::make(device, vkCreatePipelineLayout, layoutInfo, "animation pipeline layout");
 
-    VkShaderModule module = VK_NULL_HANDLE;
-    try {
-        const VkBufferUsageFlags shaderRead =
-            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-        rest_ = vk::createBufferWithData(device, rest.data(), rest.size() * sizeof(glm::mat4),
-                                         shaderRead, "animation rest matrices");
-        offsets_ =
-            vk::createBufferWithData(device, offsets.data(), offsets.size() * sizeof(glm::vec4),
-                                     shaderRead, "animation offsets");
-
-        VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::AnimationPush)};
-        auto layoutInfo =
-            vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-        layoutInfo.pushConstantRangeCount = 1;
-        layoutInfo.pPushConstantRanges = &range;
-        vk::check(vkCreatePipelineLayout(device.handle(), &layoutInfo, nullptr, &layout_),
-                  "vkCreatePipelineLayout (animation)");
-        device.name(VK_OBJECT_TYPE_PIPELINE_LAYOUT, layout_, "animation pipeline layout");
-
-        const vk::ShaderRequest request{"animate.comp", VK_SHADER_STAGE_COMPUTE_BIT, {}, {}};
-        module = vk::createShaderModule(device.handle(), compiler.compile(request));
-        auto info =
-            vk::init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-        info.stage = vk::init<VkPipelineShaderStageCreateInfo>(
-            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-        info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        info.stage.module = module;
-        info.stage.pName = "main";
-        info.layout = layout_;
-        vk::check(vkCreateComputePipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr,
-                                           &pipeline_),
-                  "vkCreateComputePipelines (animation)");
-        device.name(VK_OBJECT_TYPE_PIPELINE, pipeline_, "animate objects");
-    } catch (...) {
-        if (module) vkDestroyShaderModule(device.handle(), module, nullptr);
-        release();
-        throw;
-    }
-    vkDestroyShaderModule(device.handle(), module, nullptr);
+    const vk::ShaderRequest request{"animate.comp", VK_SHADER_STAGE_COMPUTE_BIT, {}, {}};
+    const vk::Handle<VkShaderModule> module =
+        vk::createShaderModule(device, compiler.compile(request), request.label());
+    auto info =
+        vk::init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = vk::init<VkPipelineShaderStageCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module.get();
+    info.stage.pName = "main";
+    info.layout = layout_.get();
+    vk::faultPoint("animate objects");
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk::check(
+        vkCreateComputePipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateComputePipelines (animation)");
+    pipeline_ = vk::Handle<VkPipeline>(device.handle(), pipeline);
+    device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, "animate objects");
 }
 
-Animator::~Animator() {
-    release();
-}
-
-void Animator::release() {
-    if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(device_.handle(), layout_, nullptr);
-    pipeline_ = VK_NULL_HANDLE;
-    layout_ = VK_NULL_HANDLE;
-    vk::destroyBuffer(device_, rest_);
-    vk::destroyBuffer(device_, offsets_);
-}
-
-void Animator::record(VkCommandBuffer cmd, float explode) {
+void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const {
     explode = explode > 0.0f ? std::min(explode, 1.0f) : 0.0f; // NaN counts as at rest
-    if (explode == 0.0f && written_ == 0.0f) return;
+    if (explode == 0.0f && scene.explodeWritten == 0.0f) return;
     vk::CmdLabel label(device_.debug(), cmd, "animate objects");
 
     // Write-after-read (and -write) across frames in flight on the one queue: the previous
@@ -108,10 +72,12 @@ void Animator::record(VkCommandBuffer cmd, float explode) {
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0,
                          nullptr);
 
-    gpu::AnimationPush push{objects_, rest_.address, offsets_.address, count_, explode};
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-    vkCmdDispatch(cmd, (count_ + gpu::ANIMATE_GROUP_SIZE - 1) / gpu::ANIMATE_GROUP_SIZE, 1, 1);
+    gpu::AnimationPush push{scene.objectsAddress(), scene.restAddress(), scene.offsetsAddress(),
+                            scene.objectCount(), explode};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+    vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(
+        cmd, (scene.objectCount() + gpu::ANIMATE_GROUP_SIZE - 1) / gpu::ANIMATE_GROUP_SIZE, 1, 1);
 
     // The scene pass reads ObjectData in the vertex shader (world) and in the geometry and
     // fragment shaders (the rest of the struct, in the same memory).
@@ -120,7 +86,7 @@ void Animator::record(VkCommandBuffer cmd, float explode) {
     after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, sceneShaders, 0, 1, &after, 0,
                          nullptr, 0, nullptr);
-    written_ = explode;
+    scene.explodeWritten = explode;
 }
 
 } // namespace render

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <tuple>
 
+#include "vk/check.h"
+
 namespace render {
 namespace {
 
@@ -49,14 +51,15 @@ RenderStats statsFor(const DrawList& list, const DrawMode& mode) {
     return stats;
 }
 
-DrawList buildDrawList(const scene::Scene& scene, const Technique& technique,
-                       const DrawOptions& options) {
+DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key,
+                       const DrawSettings& draws) {
+    const Technique& technique = *key.technique;
     DrawList list;
-    list.ranges = splitDraws(scene, technique.split, options.searchBatch);
+    list.ranges = splitDraws(scene, technique.split, key.searchBatch);
     // Before sorting, so "first" means scene order; draws come in object order.
-    const size_t visible = visibleObjectCount(options.visibleFraction, scene.objects.size());
+    const size_t visible = visibleObjectCount(draws.visible, scene.objects.size());
     std::erase_if(list.ranges, [&](const DrawItem& d) { return d.object >= visible; });
-    if (options.sortByGeometryAndMaterial) {
+    if (draws.sortDraws) {
         auto key = [&](const DrawItem& d) {
             const scene::Object& o = scene.objects[d.object];
             return std::tuple(o.geometry, o.material, d.object, d.firstPart);
@@ -81,8 +84,7 @@ DrawList buildDrawList(const scene::Scene& scene, const Technique& technique,
         break;
     }
     case IdBuffer::PartTriangleCounts: {
-        scene::PartTriangleCounts counts =
-            scene::buildPartTriangleCounts(scene, options.searchBatch);
+        scene::PartTriangleCounts counts = scene::buildPartTriangleCounts(scene, key.searchBatch);
         geometryStart = counts.geometryOffsets;
         list.idBytes = bytesOf(counts.counts);
         break;
@@ -95,6 +97,7 @@ DrawList buildDrawList(const scene::Scene& scene, const Technique& technique,
     }
     }
 
+    vk::faultPoint("draw list"); // the CPU side of a switch can fail too (out of memory)
     list.data.reserve(list.ranges.size());
     for (uint32_t i = 0; i < list.ranges.size(); ++i) {
         const DrawItem& d = list.ranges[i];

@@ -5,19 +5,14 @@
 
 #include <vector>
 
-#include "render/technique.h"
+#include "render/settings.h"
+#include "scene/part_data.h"
 #include "shared.h"
 
 namespace render {
 
-struct DrawOptions {
-    uint32_t searchBatch = 16;
-    // Order draws by geometry, then material, so consecutive draws share state.
-    bool sortByGeometryAndMaterial = true;
-    // Draw only the first visibleObjectCount(visibleFraction, objects) objects in scene
-    // order: load can be dialled without changing the scene or its unique part IDs.
-    float visibleFraction = 1.0f;
-};
+// One draw call: a range of parts of one object's geometry (scene/part_data.h).
+using DrawItem = scene::DrawRange;
 
 // ceil(fraction * objects), clamped to [0, objects]. A product within 1/1000 of a whole
 // number counts as that number, so float fractions such as 0.1f of 10 objects give 1, not 2.
@@ -41,7 +36,8 @@ struct RenderStats {
 };
 RenderStats statsFor(const DrawList& list, const DrawMode& mode);
 
-DrawList buildDrawList(const scene::Scene& scene, const Technique& technique,
-                       const DrawOptions& options);
+// The draws of `key`'s technique (and search batch) under `draws`.
+DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key,
+                       const DrawSettings& draws);
 
 } // namespace render

@@ -1,9 +1,14 @@
 // frame_slots.h - the frames in flight: per slot a command buffer, a fence, the timestamp
 // queries around the scene pass and the slot's FrameData buffer. A slot is reused only after
 // its fence signalled, which is also when its timestamps are read (never with a wait flag).
+//
+// Objects a frame records with are kept alive by the frame's slot (FrameSlot::keep): whoever
+// replaces a pipeline, a buffer or a render target just lets go of it, and the last frame
+// that used it frees it once that frame's fence has signalled. No switch waits for the GPU.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -13,15 +18,19 @@
 namespace render {
 
 struct FrameSlot {
-    VkCommandPool pool = VK_NULL_HANDLE;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    VkFence done = VK_NULL_HANDLE;
-    VkQueryPool timestamps = VK_NULL_HANDLE; // [0] before the scene pass, [1] after it
-    vk::Buffer frameData;                    // gpu::FrameData, written with vkCmdUpdateBuffer
-    vk::Buffer pickReadback;                 // host-visible uint64: the frame's PickData::current
-    bool submitted = false;                  // has work whose timestamps are not read yet
+    vk::Handle<VkCommandPool> pool;
+    VkCommandBuffer cmd = VK_NULL_HANDLE; // from `pool`
+    vk::Handle<VkFence> done;
+    vk::Handle<VkQueryPool> timestamps; // [0] before the scene pass, [1] after it
+    vk::Buffer frameData;               // gpu::FrameData, written with vkCmdUpdateBuffer
+    vk::Buffer pickReadback;            // host-visible uint64: the frame's PickData::current
+    bool submitted = false;             // has work whose timestamps are not read yet
     uint64_t frameNumber = 0;
     std::optional<glm::uvec2> pickPixel; // set by Renderer::record when the frame picks
+    // What this frame's commands use and someone else may let go of meanwhile.
+    std::vector<std::shared_ptr<const void>> kept;
+
+    void keep(std::shared_ptr<const void> object) { kept.push_back(std::move(object)); }
 };
 
 class FrameSlots {
@@ -29,12 +38,13 @@ class FrameSlots {
     static constexpr uint32_t count = 2;
 
     explicit FrameSlots(vk::Device& device);
+    // Waits for the frames in flight, so what they keep goes only when they are done.
     ~FrameSlots();
     FrameSlots(const FrameSlots&) = delete;
     FrameSlots& operator=(const FrameSlots&) = delete;
 
     // Waits for the slot of frame `frameNumber`, collects its previous GPU time and pick,
-    // resets it and begins its command buffer.
+    // frees what it kept, resets it and begins its command buffer.
     FrameSlot& begin(uint64_t frameNumber);
     // Ends and submits the slot's command buffer, signalling its fence.
     void submit(FrameSlot& slot, const std::vector<VkSemaphore>& wait = {},
@@ -42,6 +52,9 @@ class FrameSlots {
                 const std::vector<VkSemaphore>& signal = {});
     // Waits for every slot and collects the remaining GPU times.
     void finish();
+    // Whether frame `frameNumber` has finished on the GPU (or was never submitted); asks the
+    // fence without waiting.
+    bool finished(uint64_t frameNumber) const;
 
     // GPU milliseconds of the scene pass, one per completed frame, oldest first: the last
     // historyLimit frames at least (older ones are dropped, so a long session stays small).
@@ -54,8 +67,6 @@ class FrameSlots {
     const std::optional<PickReading>& latestPick() const { return latestPick_; }
 
   private:
-    void create();
-    void release();
     void collect(FrameSlot& slot);
 
     vk::Device& device_;

@@ -8,28 +8,23 @@
 
 namespace render {
 
-VkPipelineLayout createScenePipelineLayout(vk::Device& device) {
+vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device) {
     VkPushConstantRange range{pushStages, 0, sizeof(gpu::DrawPush)};
     auto info = vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
     info.pushConstantRangeCount = 1;
     info.pPushConstantRanges = &range;
-    VkPipelineLayout layout;
-    vk::check(vkCreatePipelineLayout(device.handle(), &info, nullptr, &layout),
-              "vkCreatePipelineLayout");
-    device.name(VK_OBJECT_TYPE_PIPELINE_LAYOUT, layout, "scene pipeline layout");
-    return layout;
+    return vk::make(device, vkCreatePipelineLayout, info, "scene pipeline layout");
 }
 
-VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
-                               VkSampleCountFlagBits samples,
-                               const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
-                               bool writeIds, const std::string& name) {
+vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& scene,
+                                           const std::vector<ShaderStage>& stages,
+                                           const std::string& name) {
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
     for (const auto& s : stages) {
         auto info = vk::init<VkPipelineShaderStageCreateInfo>(
             VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
         info.stage = s.stage;
-        info.module = s.module;
+        info.module = s.module.get();
         info.pName = "main";
         stageInfos.push_back(info);
     }
@@ -42,7 +37,7 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
         {gpu::LOC_NORMAL, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
          offsetof(gpu::Vertex, normal)},
     };
-    if (drawIndexAttribute) {
+    if (scene.drawIndexAttribute) {
         // One uint per instance; each indirect draw's firstInstance selects its element.
         bindings.push_back(
             {gpu::BINDING_DRAW_INDICES, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE});
@@ -75,7 +70,7 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
 
     auto multisample = vk::init<VkPipelineMultisampleStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = samples;
+    multisample.rasterizationSamples = scene.samples;
 
     auto depth = vk::init<VkPipelineDepthStencilStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
@@ -89,7 +84,7 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
     for (auto& attachment : blend)
         attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    if (!writeIds) blend[1].colorWriteMask = 0;
+    if (!scene.writeIds) blend[1].colorWriteMask = 0;
     auto colorBlend = vk::init<VkPipelineColorBlendStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     colorBlend.attachmentCount = static_cast<uint32_t>(blend.size());
@@ -114,15 +109,16 @@ VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRe
     info.pDepthStencilState = &depth;
     info.pColorBlendState = &colorBlend;
     info.pDynamicState = &dynamic;
-    info.layout = layout;
-    info.renderPass = pass;
+    info.layout = scene.layout;
+    info.renderPass = scene.pass;
     info.subpass = 0;
-    VkPipeline pipeline;
-    vk::check(
-        vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-        "vkCreateGraphicsPipelines");
+    vk::faultPoint(name.c_str());
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk::check(vkCreateGraphicsPipelines(device.handle(), scene.cache, 1, &info, nullptr, &pipeline),
+              ("creating pipeline '" + name + "'").c_str());
+    vk::Handle<VkPipeline> owned(device.handle(), pipeline);
     device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
-    return pipeline;
+    return owned;
 }
 
 } // namespace render

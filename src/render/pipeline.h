@@ -6,24 +6,32 @@
 #include <vector>
 
 #include "vk/context.h"
+#include "vk/handle.h"
 
 namespace render {
 
 struct ShaderStage {
     VkShaderStageFlagBits stage;
-    VkShaderModule module;
+    vk::Handle<VkShaderModule> module;
 };
 
 // Push constants are visible to every stage a technique may use, so one range serves all.
 constexpr VkShaderStageFlags pushStages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-VkPipelineLayout createScenePipelineLayout(vk::Device& device);
+vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device);
 
-// drawIndexAttribute adds the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute mode).
-VkPipeline createScenePipeline(vk::Device& device, VkPipelineLayout layout, VkRenderPass pass,
-                               VkSampleCountFlagBits samples,
-                               const std::vector<ShaderStage>& stages, bool drawIndexAttribute,
-                               bool writeIds, const std::string& name);
+struct ScenePipelineInfo {
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkRenderPass pass = VK_NULL_HANDLE;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineCache cache = VK_NULL_HANDLE; // the driver's cache of compiled pipelines
+    bool drawIndexAttribute = false; // the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute)
+    bool writeIds = true;            // false masks the ID attachment (no-id)
+};
+
+vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& info,
+                                           const std::vector<ShaderStage>& stages,
+                                           const std::string& name);
 
 } // namespace render

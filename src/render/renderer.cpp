@@ -1,184 +1,167 @@
-// renderer.cpp - pipeline and draw buffer (re)building, and the recording of the scene pass.
+// renderer.cpp - configuring (scene, pipeline, draw buffers) and recording the scene pass.
 #include "render/renderer.h"
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstring>
 
 #include "render/pipeline.h"
-#include "render/shader_variants.h"
 #include "vk/check.h"
 #include "vk/debug.h"
 
 namespace render {
+namespace {
 
-Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler, const ScenePass& pass)
-    : device_(device), compiler_(compiler), pass_(pass) {
-    layout_ = createScenePipelineLayout(device);
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+} // namespace
+
+Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler)
+    : device_(device), compiler_(compiler), pipelines_(device, compiler),
+      animator_(std::make_shared<Animator>(device, compiler)) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
-    try {
-        pick_ = vk::createBufferWithData(
-            device, &none, sizeof none,
-            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-            "pick");
-    } catch (...) {
-        vkDestroyPipelineLayout(device_.handle(), layout_, nullptr);
-        throw;
-    }
+    vk::UploadBatch upload(device);
+    pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
+                                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                        VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                                    "pick"));
+    upload.keep(pick_);
+    upload.submit();
 }
 
-Renderer::~Renderer() {
-    sceneGpu_.reset();
-    destroyDraws(drawBuffers_);
-    if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
-    vk::destroyBuffer(device_, pick_);
-    vkDestroyPipelineLayout(device_.handle(), layout_, nullptr);
+const ScenePass& Renderer::pass(uint32_t msaa) {
+    auto found = passes_.find(msaa);
+    if (found == passes_.end())
+        found = passes_
+                    .emplace(msaa, std::make_unique<ScenePass>(device_,
+                                                               checkedSampleCount(device_, msaa)))
+                    .first;
+    return *found->second;
 }
 
-void Renderer::setScene(const scene::Scene& scene) {
-    auto uploaded = std::make_unique<SceneGpu>(device_, scene);
-    auto animator =
-        std::make_unique<Animator>(device_, compiler_, scene, uploaded->objectsAddress());
-    // The old buffers may still be read by frames in flight.
-    vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
-    sceneGpu_ = std::move(uploaded);
-    animator_ = std::move(animator);
+void Renderer::setScene(const scene::Scene& scene, const RenderSettings& settings) {
+    apply(scene, settings, true);
 }
 
-void Renderer::configure(const scene::Scene& scene, const RenderConfig& config) {
-    if (!config.technique || !config.mode) throw vk::Error("Renderer::configure without technique");
-    const Technique& technique = *config.technique;
-    Variant variant{&technique, config.mode,
-                    technique.ids == IdBuffer::PartTriangleCounts ? config.searchBatch : 0u,
-                    technique.stage == LookupStage::Geometry && config.gsPassthrough &&
-                        device_.info().geometryShaderPassthrough,
-                    technique.narySearch ? config.nsearch : NarySearch{}};
-    // Build everything new first, so a failure leaves the current configuration intact.
-    VkPipeline pipeline = variant == variant_ ? VK_NULL_HANDLE : buildPipeline(variant);
-    DrawList list =
-        buildDrawList(scene, technique, {config.searchBatch, config.sortDraws, config.visible});
-    DrawBuffers buffers;
-    try {
-        buffers = uploadDraws(list, *config.mode);
-    } catch (...) {
-        if (pipeline) vkDestroyPipeline(device_.handle(), pipeline, nullptr);
-        throw;
-    }
+void Renderer::configure(const scene::Scene& scene, const RenderSettings& settings) {
+    if (!sceneGpu_) throw vk::Error("Renderer::configure before setScene");
+    apply(scene, settings, false);
+}
 
-    vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle");
-    if (pipeline) {
-        if (pipeline_) vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
-        pipeline_ = pipeline;
-        variant_ = variant;
-    }
-    destroyDraws(drawBuffers_);
-    drawBuffers_ = buffers;
-    drawList_ = std::move(list);
-
-    stats_ = statsFor(drawList_, *config.mode);
-    stats_.gsPassthrough = variant_.passthrough;
+// Everything new is built (and its uploads submitted, in one batch) before anything is
+// replaced, so a throw leaves the previous configuration whole.
+void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene) {
+    const auto start = Clock::now();
+    const PipelineKey key = settings.pipeline.effective(device_.info().geometryShaderPassthrough);
+    bool cached = false;
+    auto pipeline = pipelines_.get(key, pass(key.msaa), cached);
+    const bool keepDraws = !newScene && drawsStillRight(key, settings.draws);
+    vk::UploadBatch upload(device_);
+    auto sceneGpu = newScene ? std::make_shared<SceneGpu>(scene, upload) : sceneGpu_;
+    auto draws = keepDraws ? draws_ : buildDraws(scene, key, settings.draws, upload);
+    upload.keep(sceneGpu);
+    upload.keep(draws);
+    upload.submit(); // nothing when nothing was added
+    pipeline_ = std::move(pipeline);
+    sceneGpu_ = std::move(sceneGpu);
+    draws_ = std::move(draws);
+    settings_ = settings;
+    stats_ = statsFor(draws_->list, *key.mode);
+    stats_.gsPassthrough = key.gsPassthrough;
+    lastSwitch_ = {msSince(start), cached, keepDraws};
 }
 
 void Renderer::reloadShaders() {
-    if (!variant_.technique) return; // nothing configured yet
-    VkPipeline pipeline = buildPipeline(variant_);
-    vk::check(vkDeviceWaitIdle(device_.handle()), "vkDeviceWaitIdle"); // frames in flight
-    vkDestroyPipeline(device_.handle(), pipeline_, nullptr);
-    pipeline_ = pipeline;
+    if (!pipeline_) return; // nothing configured yet
+    const PipelineKey key = pipeline_->key;
+    pipelines_.clear();
+    auto animator = std::make_shared<Animator>(device_, compiler_);
+    bool cached = false;
+    pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
+    animator_ = std::move(animator);
 }
 
-VkPipeline Renderer::buildPipeline(const Variant& variant) const {
-    std::vector<ShaderStage> stages;
-    auto destroyModules = [&] {
-        for (auto& s : stages) vkDestroyShaderModule(device_.handle(), s.module, nullptr);
-    };
-    try {
-        for (const auto& request :
-             shaderVariants(*variant.technique, *variant.mode,
-                            {variant.searchCount, variant.passthrough, variant.nsearch})) {
-            auto spirv = compiler_.compile(request);
-            stages.push_back({request.stage, vk::createShaderModule(device_.handle(), spirv)});
-            device_.name(VK_OBJECT_TYPE_SHADER_MODULE, stages.back().module, request.label());
-        }
-        const std::string name = std::string(variant.technique->name) + " + " + variant.mode->name;
-        VkPipeline pipeline = createScenePipeline(
-            device_, layout_, pass_.handle(), pass_.samples(), stages,
-            variant.mode->drawIndexAttribute, variant.technique->stage != LookupStage::None, name);
-        destroyModules();
-        return pipeline;
-    } catch (...) {
-        destroyModules();
-        throw;
-    }
+// The draw list depends on the technique's split and ID data, the search batch it reads, the
+// mode's buffers and the draw settings; a switch that changes none of them keeps it.
+bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const {
+    if (!draws_) return false;
+    const PipelineKey& built = draws_->key;
+    return built.technique->split == key.technique->split &&
+           built.technique->ids == key.technique->ids && built.searchBatch == key.searchBatch &&
+           built.mode == key.mode && draws_->inputs == draws;
 }
 
-Renderer::DrawBuffers Renderer::uploadDraws(const DrawList& list, const DrawMode& mode) const {
-    DrawBuffers b;
+std::shared_ptr<const Renderer::DrawBuffers> Renderer::buildDraws(const scene::Scene& scene,
+                                                                  const PipelineKey& key,
+                                                                  const DrawSettings& draws,
+                                                                  vk::UploadBatch& upload) const {
+    auto b = std::make_shared<DrawBuffers>();
+    b->list = buildDrawList(scene, key, draws);
+    b->key = key;
+    b->inputs = draws;
+    const DrawList& list = b->list;
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    try {
-        if (!list.idBytes.empty())
-            b.ids = vk::createBufferWithData(device_, list.idBytes.data(), list.idBytes.size(),
-                                             shaderRead, "technique ID data");
-        if (mode.indirect && !list.data.empty()) {
-            b.draws = vk::createBufferWithData(device_, list.data.data(),
-                                               list.data.size() * sizeof(gpu::DrawData), shaderRead,
-                                               "per-draw data");
-            std::vector<VkDrawIndexedIndirectCommand> commands;
-            commands.reserve(list.ranges.size());
-            for (uint32_t i = 0; i < list.ranges.size(); ++i) {
-                const DrawItem& d = list.ranges[i];
-                // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
-                commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
-            }
-            b.indirect = vk::createBufferWithData(
-                device_, commands.data(), commands.size() * sizeof(VkDrawIndexedIndirectCommand),
-                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
-            if (mode.drawIndexAttribute) {
-                std::vector<uint32_t> rows(list.ranges.size());
-                for (uint32_t i = 0; i < rows.size(); ++i) rows[i] = i;
-                b.drawIndices = vk::createBufferWithData(
-                    device_, rows.data(), rows.size() * sizeof(uint32_t),
-                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "draw index attribute");
-            }
-        }
-    } catch (...) {
-        destroyDraws(b);
-        throw;
+    if (!list.idBytes.empty()) b->ids = upload.add(list.idBytes, shaderRead, "technique ID data");
+    if (!key.mode->indirect || list.data.empty()) return b;
+    b->draws = upload.add(list.data, shaderRead, "per-draw data");
+    std::vector<VkDrawIndexedIndirectCommand> commands;
+    commands.reserve(list.ranges.size());
+    for (uint32_t i = 0; i < list.ranges.size(); ++i) {
+        const DrawItem& d = list.ranges[i];
+        // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
+        commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
+    }
+    b->indirect = upload.add(commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
+    if (key.mode->drawIndexAttribute) {
+        std::vector<uint32_t> rows(list.ranges.size());
+        for (uint32_t i = 0; i < rows.size(); ++i) rows[i] = i;
+        b->drawIndices =
+            upload.add(rows, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "draw index attribute");
     }
     return b;
 }
 
-void Renderer::destroyDraws(DrawBuffers& b) const {
-    for (vk::Buffer* buffer : {&b.ids, &b.draws, &b.indirect, &b.drawIndices})
-        vk::destroyBuffer(device_, *buffer);
-}
-
-void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
+void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& target,
                       const FrameParams& params) const {
-    if (!pipeline_ || !sceneGpu_) throw vk::Error("Renderer::record before setScene and configure");
+    if (!pipeline_ || !sceneGpu_) throw vk::Error("Renderer::record before setScene");
+    const SceneTargets& targets = *target;
+    if (uint32_t(targets.pass().samples()) != pipeline_->key.msaa)
+        throw vk::Error("Renderer::record: targets of another MSAA setting than configured");
     VkCommandBuffer cmd = slot.cmd;
+    slot.keep(pipeline_);
+    slot.keep(sceneGpu_);
+    slot.keep(draws_);
+    slot.keep(pick_);
+    slot.keep(animator_);
+    slot.keep(target);
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
+    const Shading& shading = settings_.shading;
     gpu::FrameData frame{};
     frame.viewProj = params.viewProj;
     frame.eyePosition = glm::vec4(params.eye, 1.0f);
     frame.viewport = {targets.extent().width, targets.extent().height};
-    frame.partColorWeight = params.partColorWeight;
-    frame.flags = (params.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
-                  (params.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u);
-    frame.sampleZero = pass_.sampleZero();
+    frame.partColorWeight = shading.partWeight;
+    frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
+                  (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u);
+    frame.sampleZero = targets.pass().sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();
-    frame.idsAddress = drawBuffers_.ids.address;
-    frame.drawsAddress = drawBuffers_.draws.address;
-    frame.pickAddress = pick_.address;
+    frame.idsAddress = draws_->ids.address();
+    frame.drawsAddress = draws_->draws.address();
+    frame.pickAddress = pick_->address();
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.selectedPart = params.selectedPart;
     frame.time = params.time;
-    vkCmdUpdateBuffer(cmd, slot.frameData.buffer, 0, sizeof frame, &frame);
+    vkCmdUpdateBuffer(cmd, slot.frameData.handle(), 0, sizeof frame, &frame);
     slot.pickPixel = params.pickPixel;
     recordPickReset(cmd);
 
@@ -192,14 +175,16 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                          0, 1, &toShaders, 0, nullptr, 0, nullptr);
 
-    animator_->record(cmd, params.explode); // outside the pass and its timestamps
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, slot.timestamps, 0);
+    animator_->record(cmd, *sceneGpu_, params.explode);
+    // The start is written once every earlier command has finished (bottom of the pipe), so
+    // neither the animation's dispatch nor the previous frame's tail counts as the pass.
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 0);
     std::array<VkClearValue, 3> clears{};
     clears[0].color = {{0.16f, 0.17f, 0.19f, 1.0f}};
     clears[1].color.uint32[0] = gpu::BACKGROUND_ID;
     clears[2].depthStencil = {1.0f, 0};
     auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
-    begin.renderPass = pass_.handle();
+    begin.renderPass = targets.pass().handle();
     begin.framebuffer = targets.framebuffer();
     begin.renderArea = {{0, 0}, targets.extent()};
     begin.clearValueCount = static_cast<uint32_t>(clears.size());
@@ -210,25 +195,25 @@ void Renderer::record(FrameSlot& slot, const SceneTargets& targets,
     VkRect2D scissor{{0, 0}, targets.extent()};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle.get());
     VkDeviceSize zero = 0;
-    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &sceneGpu_->vertices().buffer, &zero);
-    if (drawBuffers_.drawIndices.buffer)
-        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &drawBuffers_.drawIndices.buffer,
-                               &zero);
-    vkCmdBindIndexBuffer(cmd, sceneGpu_->indices().buffer, 0, VK_INDEX_TYPE_UINT32);
+    const VkBuffer vertices = sceneGpu_->vertices().handle();
+    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &vertices, &zero);
+    if (const VkBuffer rows = draws_->drawIndices.handle())
+        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &rows, &zero);
+    vkCmdBindIndexBuffer(cmd, sceneGpu_->indices().handle(), 0, VK_INDEX_TYPE_UINT32);
 
     // The whole block once per frame (frame address, zeroed draw); push mode changes the draw.
     gpu::DrawPush push{};
-    push.frameAddress = slot.frameData.address;
-    vkCmdPushConstants(cmd, layout_, pushStages, 0, sizeof push, &push);
-    if (variant_.mode->indirect)
+    push.frameAddress = slot.frameData.address();
+    vkCmdPushConstants(cmd, pipelines_.layout(), pushStages, 0, sizeof push, &push);
+    if (pipeline_->key.mode->indirect)
         recordIndirectDraws(cmd);
     else
         recordPushDraws(cmd);
 
     vkCmdEndRenderPass(cmd);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps, 1);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 1);
     recordPickCopies(cmd, slot);
 }
 
@@ -242,7 +227,7 @@ void Renderer::recordPickReset(VkCommandBuffer cmd) const {
     vkCmdPipelineBarrier(cmd,
                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
-    vkCmdFillBuffer(cmd, pick_.buffer, offsetof(gpu::PickData, current), sizeof(uint64_t),
+    vkCmdFillBuffer(cmd, pick_->handle(), offsetof(gpu::PickData, current), sizeof(uint64_t),
                     0xFFFFFFFFu);
 }
 
@@ -256,9 +241,9 @@ void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) cons
                          0, 1, &fromShaders, 0, nullptr, 0, nullptr);
     VkBufferCopy toLast{offsetof(gpu::PickData, current), offsetof(gpu::PickData, last),
                         sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, pick_.buffer, pick_.buffer, 1, &toLast);
+    vkCmdCopyBuffer(cmd, pick_->handle(), pick_->handle(), 1, &toLast);
     VkBufferCopy toHost{offsetof(gpu::PickData, current), 0, sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, pick_.buffer, slot.pickReadback.buffer, 1, &toHost);
+    vkCmdCopyBuffer(cmd, pick_->handle(), slot.pickReadback.handle(), 1, &toHost);
     auto toHostRead = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     toHostRead.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHostRead.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -270,9 +255,10 @@ void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) cons
 void Renderer::recordPushDraws(VkCommandBuffer cmd) const {
     constexpr uint32_t fieldCount = sizeof(gpu::DrawData) / sizeof(uint32_t);
     std::array<uint32_t, fieldCount> last{}; // as pushed, zeroed, at the start of the frame
-    for (size_t i = 0; i < drawList_.ranges.size(); ++i) {
+    const DrawList& list = draws_->list;
+    for (size_t i = 0; i < list.ranges.size(); ++i) {
         std::array<uint32_t, fieldCount> now;
-        std::memcpy(now.data(), &drawList_.data[i], sizeof(gpu::DrawData));
+        std::memcpy(now.data(), &list.data[i], sizeof(gpu::DrawData));
         uint32_t first = fieldCount, end = 0;
         for (uint32_t f = 0; f < fieldCount; ++f)
             if (now[f] != last[f]) {
@@ -280,22 +266,22 @@ void Renderer::recordPushDraws(VkCommandBuffer cmd) const {
                 end = f + 1;
             }
         if (first < end)
-            vkCmdPushConstants(cmd, layout_, pushStages,
+            vkCmdPushConstants(cmd, pipelines_.layout(), pushStages,
                                gpu::DRAW_PUSH_DRAW_OFFSET + first * sizeof(uint32_t),
                                (end - first) * sizeof(uint32_t), &now[first]);
         last = now;
-        const DrawItem& d = drawList_.ranges[i];
+        const DrawItem& d = list.ranges[i];
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
     }
 }
 
 // mdi modes: the whole draw list in as few indirect calls as the device's limit allows.
 void Renderer::recordIndirectDraws(VkCommandBuffer cmd) const {
-    const uint32_t total = static_cast<uint32_t>(drawList_.ranges.size());
+    const uint32_t total = static_cast<uint32_t>(draws_->list.ranges.size());
     const uint32_t limit = std::max(1u, device_.info().maxDrawIndirectCount);
     constexpr uint32_t stride = sizeof(VkDrawIndexedIndirectCommand);
     for (uint32_t first = 0; first < total; first += limit)
-        vkCmdDrawIndexedIndirect(cmd, drawBuffers_.indirect.buffer, VkDeviceSize(first) * stride,
+        vkCmdDrawIndexedIndirect(cmd, draws_->indirect.handle(), VkDeviceSize(first) * stride,
                                  std::min(limit, total - first), stride);
 }
 

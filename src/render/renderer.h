@@ -1,31 +1,31 @@
-// renderer.h - draws a scene into the scene pass with one part-ID technique and per-draw
-// mode. Pipelines, draw lists, ID, per-draw and indirect buffers are built when the scene,
-// technique, mode or search batch changes, never per frame; record() only writes commands.
+// renderer.h - draws a scene into the scene pass as RenderSettings say. Pipelines come from a
+// cache; draw lists, ID, per-draw and indirect buffers are built when the scene or what
+// selects them changes, never per frame; record() only writes commands. A switch never waits
+// for the GPU: what frames in flight still use stays alive in their slots.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
-#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "render/animator.h"
 #include "render/draw_list.h"
 #include "render/frame_slots.h"
+#include "render/pipeline_cache.h"
 #include "render/scene_gpu.h"
+#include "render/settings.h"
 #include "render/targets.h"
-#include "render/technique.h"
 #include "vk/shader_compiler.h"
 
 namespace render {
 
+// What changes every frame (the settings do not).
 struct FrameParams {
     glm::mat4 viewProj{1.0f};
     glm::vec3 eye{0.0f};
-    float partColorWeight = 0.5f;
-    bool colorizeDraws = false;
-    bool ignoreMaterials = false; // one neutral grey for every object: only part colours show
-    float time = 0.0f;            // seconds; drives the blink of the hovered part
+    float time = 0.0f; // seconds; drives the blink of the hovered part
     // The pixel (top-left origin) whose nearest part this frame picks; the result reaches
     // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.
     std::optional<glm::uvec2> pickPixel;
@@ -33,54 +33,60 @@ struct FrameParams {
     float explode = 0.0f; // exploded view, 0 (at rest) to 1; see render/animator.h
 };
 
-struct RenderConfig {
-    const Technique* technique = nullptr;
-    const DrawMode* mode = nullptr;
-    uint32_t searchBatch = 16;
-    bool sortDraws = true;
-    bool gsPassthrough = true; // used where the device offers VK_NV_geometry_shader_passthrough
-    NarySearch nsearch{};      // nsearch techniques: compiled in, so a change rebuilds the pipeline
-    float visible = 1.0f;      // draw the first ceil(visible * objects) objects (DrawOptions)
+// How the last configure() or setScene() went, for the panel.
+struct SwitchReport {
+    double ms = 0.0;             // on the CPU, from the call to its return
+    bool pipelineCached = false; // the pipeline came from the cache
+    bool drawsKept = false;      // the draw list and its buffers were still right
 };
 
 class Renderer {
   public:
-    Renderer(vk::Device& device, const vk::ShaderCompiler& compiler, const ScenePass& pass);
-    ~Renderer();
-    Renderer(const Renderer&) = delete;
-    Renderer& operator=(const Renderer&) = delete;
+    Renderer(vk::Device& device, const vk::ShaderCompiler& compiler);
 
-    // Uploads the scene's geometry, objects and materials; configure() must follow.
-    void setScene(const scene::Scene& scene);
-    // Builds what `config` needs for `scene`. The pipeline is rebuilt only when its shader
-    // variant changes; a compile error throws and leaves the previous configuration working.
-    void configure(const scene::Scene& scene, const RenderConfig& config);
+    // The scene pass for `msaa` samples per pixel, made on first use (the targets the
+    // frames render into are made with it). Throws vk::Error naming the counts the device
+    // offers when it has no such mode.
+    const ScenePass& pass(uint32_t msaa);
 
-    // Compiles the current pipeline again from the shader files (edited while running). A
-    // compile error throws vk::ShaderError and the previous pipeline keeps drawing.
+    // Uploads `scene` and builds what `settings` needs for it: one staging submit for all of
+    // it. A failure (thrown) leaves the previous scene and configuration drawing.
+    void setScene(const scene::Scene& scene, const RenderSettings& settings);
+    // What `settings` needs for the scene last set (passed again, as the renderer keeps no
+    // copy): the pipeline from the cache (built on a miss), the draw list only if what it
+    // depends on changed. A compile error throws vk::ShaderError; a failure leaves the
+    // previous configuration drawing.
+    void configure(const scene::Scene& scene, const RenderSettings& settings);
+
+    // Forgets every cached pipeline and SPIR-V (shaders edited on disk) and rebuilds the
+    // current pipeline. A compile error throws vk::ShaderError and the last good pipeline
+    // keeps drawing.
     void reloadShaders();
 
-    // Records the scene pass with timestamps around it into the slot's command buffer.
-    void record(FrameSlot& slot, const SceneTargets& targets, const FrameParams& params) const;
+    // Records the scene pass, with timestamps around only it, into the slot's command
+    // buffer; the slot keeps what the commands use, `targets` included. They must be made
+    // with pass(settings().pipeline.msaa).
+    void record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& targets,
+                const FrameParams& params) const;
 
+    const RenderSettings& settings() const { return settings_; }
     const RenderStats& stats() const { return stats_; }
+    const SwitchReport& lastSwitch() const { return lastSwitch_; }
+    size_t cachedPipelines() const { return pipelines_.size(); }
+    VkPipeline pipeline() const { return pipeline_ ? pipeline_->handle.get() : VK_NULL_HANDLE; }
 
   private:
-    struct Variant {
-        const Technique* technique = nullptr;
-        const DrawMode* mode = nullptr;
-        uint32_t searchCount = 0;
-        bool passthrough = false;
-        NarySearch nsearch{}; // the default for the techniques that do not read it
-        bool operator==(const Variant&) const = default;
-    };
     struct DrawBuffers {
+        DrawList list;
         vk::Buffer ids, draws, indirect, drawIndices;
+        PipelineKey key;     // effective key it was built for (technique, mode, batch)
+        DrawSettings inputs; // and the draw settings
     };
-
-    VkPipeline buildPipeline(const Variant& variant) const;
-    DrawBuffers uploadDraws(const DrawList& list, const DrawMode& mode) const;
-    void destroyDraws(DrawBuffers& buffers) const;
+    void apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
+    std::shared_ptr<const DrawBuffers> buildDraws(const scene::Scene& scene, const PipelineKey& key,
+                                                  const DrawSettings& draws,
+                                                  vk::UploadBatch& upload) const;
+    bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const;
     void recordPushDraws(VkCommandBuffer cmd) const;
     void recordIndirectDraws(VkCommandBuffer cmd) const;
     void recordPickReset(VkCommandBuffer cmd) const;
@@ -88,16 +94,19 @@ class Renderer {
 
     vk::Device& device_;
     const vk::ShaderCompiler& compiler_;
-    const ScenePass& pass_;
-    VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
-    Variant variant_;
-    std::unique_ptr<SceneGpu> sceneGpu_;
-    std::unique_ptr<Animator> animator_; // writes sceneGpu_'s world matrices each frame
-    DrawList drawList_;
-    DrawBuffers drawBuffers_;
+    std::map<uint32_t, std::unique_ptr<ScenePass>> passes_; // by sample count
+    PipelineCache pipelines_;
+    std::shared_ptr<const Animator> animator_;
+    // gpu::PickData, shared by all frames in flight (ordered by barriers).
+    std::shared_ptr<const vk::Buffer> pick_;
+
+    // The configuration drawn, each piece kept alive by the frames that record with it.
+    RenderSettings settings_;
+    std::shared_ptr<const Pipeline> pipeline_;
+    std::shared_ptr<SceneGpu> sceneGpu_;
+    std::shared_ptr<const DrawBuffers> draws_;
     RenderStats stats_;
-    vk::Buffer pick_; // gpu::PickData, shared by all frames in flight (ordered by barriers)
+    SwitchReport lastSwitch_;
 };
 
 } // namespace render

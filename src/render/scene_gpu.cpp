@@ -1,19 +1,23 @@
-// scene_gpu.cpp - uploads a scene once, when it is loaded.
+// scene_gpu.cpp - uploads a scene once, when it is loaded or its copies change.
 #include "render/scene_gpu.h"
 
 #include <vector>
 
+#include "scene/explode.h"
 #include "shared.h"
 #include "vk/check.h"
 
 namespace render {
 
-SceneGpu::SceneGpu(vk::Device& device, const scene::Scene& scene) : device_(device) {
+SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
+    : objectCount_(static_cast<uint32_t>(scene.objects.size())) {
     if (scene.objects.empty() || scene.indices.empty())
         throw vk::Error("the scene is empty: nothing to draw");
 
     std::vector<gpu::ObjectData> objects;
+    std::vector<glm::mat4> rest;
     objects.reserve(scene.objects.size());
+    rest.reserve(scene.objects.size());
     for (const auto& o : scene.objects) {
         gpu::ObjectData data{};
         data.world = o.world;
@@ -22,40 +26,19 @@ SceneGpu::SceneGpu(vk::Device& device, const scene::Scene& scene) : device_(devi
         data.uniquePartOffset = o.uniquePartOffset;
         data.geometryIndex = o.geometry;
         objects.push_back(data);
+        rest.push_back(o.world);
     }
     std::vector<gpu::Material> materials;
     for (const auto& m : scene.materials) materials.push_back({m.color});
 
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    try {
-        vertices_ = vk::createBufferWithData(device, scene.vertices.data(),
-                                             scene.vertices.size() * sizeof(gpu::Vertex),
-                                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
-        indices_ = vk::createBufferWithData(device, scene.indices.data(),
-                                            scene.indices.size() * sizeof(uint32_t),
-                                            VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices");
-        objects_ = vk::createBufferWithData(device, objects.data(),
-                                            objects.size() * sizeof(gpu::ObjectData), shaderRead,
-                                            "scene objects");
-        materials_ = vk::createBufferWithData(device, materials.data(),
-                                              materials.size() * sizeof(gpu::Material), shaderRead,
-                                              "scene materials");
-    } catch (...) {
-        release();
-        throw;
-    }
-}
-
-SceneGpu::~SceneGpu() {
-    release();
-}
-
-void SceneGpu::release() {
-    vk::destroyBuffer(device_, vertices_);
-    vk::destroyBuffer(device_, indices_);
-    vk::destroyBuffer(device_, objects_);
-    vk::destroyBuffer(device_, materials_);
+    vertices_ = upload.add(scene.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
+    indices_ = upload.add(scene.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices");
+    objects_ = upload.add(objects, shaderRead, "scene objects");
+    materials_ = upload.add(materials, shaderRead, "scene materials");
+    rest_ = upload.add(rest, shaderRead, "animation rest matrices");
+    offsets_ = upload.add(scene::explodeOffsets(scene), shaderRead, "animation offsets");
 }
 
 } // namespace render

@@ -1,29 +1,35 @@
 // scene_gpu.h - a Scene's arrays in device-local buffers: vertices and indices for drawing,
-// objects and materials for the shaders (read through buffer device addresses).
+// objects and materials for the shaders (read through buffer device addresses), and what the
+// exploded-view animation writes the objects' matrices from.
 #pragma once
 
 #include "scene/scene.h"
 #include "vk/resources.h"
+#include "vk/upload.h"
 
 namespace render {
 
 class SceneGpu {
   public:
-    SceneGpu(vk::Device& device, const scene::Scene& scene);
-    ~SceneGpu();
-    SceneGpu(const SceneGpu&) = delete;
-    SceneGpu& operator=(const SceneGpu&) = delete;
+    // The buffers are filled by `upload`'s submit (the caller's, with the rest of a switch).
+    SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload);
 
     const vk::Buffer& vertices() const { return vertices_; }
     const vk::Buffer& indices() const { return indices_; }
-    VkDeviceAddress objectsAddress() const { return objects_.address; }
-    VkDeviceAddress materialsAddress() const { return materials_.address; }
+    VkDeviceAddress objectsAddress() const { return objects_.address(); }
+    VkDeviceAddress materialsAddress() const { return materials_.address(); }
+    uint32_t objectCount() const { return objectCount_; }
+
+    // The animation's inputs: each object's world matrix at rest (mat4) and its offset at
+    // explode 1 (vec4), see render/animator.h.
+    VkDeviceAddress restAddress() const { return rest_.address(); }
+    VkDeviceAddress offsetsAddress() const { return offsets_.address(); }
+    // The explode value the objects' matrices hold once recorded work has run.
+    float explodeWritten = 0.0f;
 
   private:
-    void release();
-
-    vk::Device& device_;
-    vk::Buffer vertices_, indices_, objects_, materials_;
+    vk::Buffer vertices_, indices_, objects_, materials_, rest_, offsets_;
+    uint32_t objectCount_ = 0;
 };
 
 } // namespace render

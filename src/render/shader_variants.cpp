@@ -1,4 +1,4 @@
-// shader_variants.cpp - technique and mode choices turned into defines and include aliases.
+// shader_variants.cpp - pipeline keys turned into defines and include aliases.
 #include "render/shader_variants.h"
 
 #include <map>
@@ -6,24 +6,23 @@
 
 namespace render {
 
-std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const DrawMode& mode,
-                                              const VariantOptions& options) {
+std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
+    const Technique& technique = *key.technique;
     const bool inGeometry = technique.stage == LookupStage::Geometry;
     // Every switch the shaders test is defined, 0 or 1: GLSL has no implicit 0 in #if.
     std::vector<std::pair<std::string, std::string>> defines;
-    for (const auto& m : drawModes()) defines.push_back({m.define, &m == &mode ? "1" : "0"});
+    for (const auto& m : drawModes()) defines.push_back({m.define, &m == key.mode ? "1" : "0"});
     defines.push_back({"IDV_LOOKUP_IN_GS", inGeometry ? "1" : "0"});
-    defines.push_back({"IDV_NO_ID", technique.stage == LookupStage::None ? "1" : "0"});
-    defines.push_back({"IDV_GS_PASSTHROUGH", inGeometry && options.gsPassthrough ? "1" : "0"});
-    const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
-    defines.push_back(
-        {"IDV_SEARCH_COUNT", std::to_string(searches ? options.searchCount : 1) + "u"});
-    // Other techniques get the defaults, so their source never varies with these.
-    const NarySearch nary = technique.narySearch ? options.nsearch : NarySearch{};
-    defines.push_back({"IDV_NSEARCH_N", std::to_string(nary.n) + "u"});
-    defines.push_back({"IDV_NSEARCH_GUESS", nary.guess ? "1" : "0"});
-    defines.push_back({"IDV_NSEARCH_LINEAR", std::to_string(nary.linearBelow) + "u"});
-    defines.push_back({"IDV_NSEARCH_STEPS", std::to_string(nary.maxSteps) + "u"});
+    defines.push_back({"IDV_NO_ID", technique.isFloor() ? "1" : "0"});
+    defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
+    // An effective key holds defaults where the technique reads nothing, so the source of
+    // other techniques never varies with these.
+    defines.push_back({"IDV_SEARCH_COUNT",
+                       std::to_string(technique.readsSearchBatch() ? key.searchBatch : 1) + "u"});
+    defines.push_back({"IDV_NSEARCH_N", std::to_string(key.nsearch.n) + "u"});
+    defines.push_back({"IDV_NSEARCH_GUESS", key.nsearch.guess ? "1" : "0"});
+    defines.push_back({"IDV_NSEARCH_LINEAR", std::to_string(key.nsearch.linearBelow) + "u"});
+    defines.push_back({"IDV_NSEARCH_STEPS", std::to_string(key.nsearch.maxSteps) + "u"});
 
     std::map<std::string, std::string> aliases;
     if (technique.lookupFile) aliases["technique.glsl"] = technique.lookupFile;
@@ -36,28 +35,42 @@ std::vector<vk::ShaderRequest> shaderVariants(const Technique& technique, const 
 }
 
 std::vector<NarySearch> narySearchTestSets() {
-    return {{}, {3, false, 0, 1}, {16, true, 64, 64}, {5, true, 0, 2}, {16, false, 1, 64}};
+    const Range n = nsearchFanOutRange, linear = nsearchLinearRange, steps = nsearchStepsRange;
+    return {{},
+            {n.min, false, linear.min, steps.min},
+            {n.max, true, linear.max, steps.max},
+            {n.min + 2, true, linear.min, steps.min + 1},
+            {n.max, false, linear.min + 1, steps.max}};
+}
+
+std::vector<PipelineKey> allPipelineKeys() {
+    std::vector<PipelineKey> keys;
+    for (const Technique& technique : techniques())
+        for (const DrawMode& mode : drawModes()) {
+            // The others ignore the batch: their effective key holds the default.
+            const uint32_t fixed = PipelineKey{}.searchBatch;
+            const Range batches =
+                technique.readsSearchBatch() ? searchBatchRange : Range{fixed, fixed};
+            std::vector<NarySearch> sets{NarySearch{}};
+            if (technique.narySearch) sets = narySearchTestSets();
+            for (uint32_t batch = batches.min; batch <= batches.max; ++batch)
+                for (const NarySearch& nary : sets)
+                    for (bool passthrough : {false, true}) {
+                        PipelineKey key{&technique, &mode, batch, nary, passthrough};
+                        key = key.effective(true);
+                        if (passthrough && !key.gsPassthrough) continue; // no gs stage
+                        keys.push_back(key);
+                    }
+        }
+    return keys;
 }
 
 std::vector<vk::ShaderRequest> allShaderVariants() {
     std::vector<vk::ShaderRequest> all;
-    auto add = [&](const Technique& t, const DrawMode& m, VariantOptions o) {
-        auto variants = shaderVariants(t, m, o);
+    for (const PipelineKey& key : allPipelineKeys()) {
+        auto variants = shaderVariants(key);
         all.insert(all.end(), variants.begin(), variants.end());
-    };
-    for (const auto& technique : techniques())
-        for (const auto& mode : drawModes()) {
-            const bool searches = technique.ids == IdBuffer::PartTriangleCounts;
-            std::vector<NarySearch> sets{NarySearch{}};
-            if (technique.narySearch) sets = narySearchTestSets();
-            for (uint32_t count = 1; count <= (searches ? 32u : 1u); ++count)
-                for (const NarySearch& nary : sets) {
-                    add(technique, mode, {count, false, nary});
-                    if (technique.stage == LookupStage::Geometry)
-                        add(technique, mode, {count, true, nary});
-                }
-        }
-    for (const auto& mode : drawModes()) add(noIdTechnique(), mode, {1, false});
+    }
     return all;
 }
 

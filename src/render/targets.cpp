@@ -53,8 +53,7 @@ VkSampleCountFlagBits checkedSampleCount(const vk::Device& device, uint32_t samp
                     device.info().name + " (it offers " + offered + ")");
 }
 
-ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples)
-    : device_(device), samples_(samples) {
+ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : samples_(samples) {
     depthFormat_ = pickDepthFormat(device.physical());
     const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
     VkPhysicalDeviceProperties props;
@@ -138,8 +137,8 @@ ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples)
     info.pSubpasses = &subpass;
     info.dependencyCount = static_cast<uint32_t>(deps.size());
     info.pDependencies = deps.data();
-    vk::check(vkCreateRenderPass(device.handle(), &info, nullptr, &pass_), "vkCreateRenderPass");
-    device.name(VK_OBJECT_TYPE_RENDER_PASS, pass_, "scene pass");
+    pass_ = vk::make(device, vkCreateRenderPass, info,
+                     "scene pass (" + std::to_string(samples) + "x MSAA)");
 }
 
 glm::vec2 ScenePass::sampleZero() const {
@@ -155,61 +154,36 @@ glm::vec2 ScenePass::sampleZero() const {
     }
 }
 
-ScenePass::~ScenePass() {
-    vkDestroyRenderPass(device_.handle(), pass_, nullptr);
-}
-
 SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent)
-    : device_(device), extent_(extent) {
-    try {
-        const VkImageUsageFlags readable =
-            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        color_ = vk::createImage2D(device, extent, ScenePass::colorFormat, readable,
-                                   VK_IMAGE_ASPECT_COLOR_BIT, "scene colour");
-        ids_ = vk::createImage2D(device, extent, ScenePass::idFormat, readable,
-                                 VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs");
-        const VkSampleCountFlagBits samples = pass.samples();
-        depth_ = vk::createImage2D(device, extent, pass.depthFormat(),
-                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                   VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
-        std::vector<VkImageView> views = {color_.view, ids_.view, depth_.view};
-        if (samples != VK_SAMPLE_COUNT_1_BIT) {
-            // Only ever rendered to and resolved within the pass.
-            const VkImageUsageFlags inPass = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
-            msColor_ = vk::createImage2D(device, extent, ScenePass::colorFormat, inPass,
-                                         VK_IMAGE_ASPECT_COLOR_BIT, "scene colour (MSAA)", samples);
-            msIds_ = vk::createImage2D(device, extent, ScenePass::idFormat, inPass,
-                                       VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs (MSAA)", samples);
-            views = {msColor_.view, msIds_.view, depth_.view, color_.view, ids_.view};
-        }
-        auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
-        info.renderPass = pass.handle();
-        info.attachmentCount = static_cast<uint32_t>(views.size());
-        info.pAttachments = views.data();
-        info.width = extent.width;
-        info.height = extent.height;
-        info.layers = 1;
-        vk::check(vkCreateFramebuffer(device.handle(), &info, nullptr, &framebuffer_),
-                  "vkCreateFramebuffer");
-        device.name(VK_OBJECT_TYPE_FRAMEBUFFER, framebuffer_, "scene framebuffer");
-    } catch (...) {
-        release();
-        throw;
+    : pass_(pass), extent_(extent) {
+    const VkImageUsageFlags readable =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    color_ = vk::Image(device, extent, ScenePass::colorFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
+                       "scene colour");
+    ids_ = vk::Image(device, extent, ScenePass::idFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
+                     "scene part IDs");
+    const VkSampleCountFlagBits samples = pass.samples();
+    depth_ =
+        vk::Image(device, extent, pass.depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                  VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
+    std::vector<VkImageView> views = {color_.view(), ids_.view(), depth_.view()};
+    if (samples != VK_SAMPLE_COUNT_1_BIT) {
+        // Only ever rendered to and resolved within the pass.
+        const VkImageUsageFlags inPass = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+        msColor_ = vk::Image(device, extent, ScenePass::colorFormat, inPass,
+                             VK_IMAGE_ASPECT_COLOR_BIT, "scene colour (MSAA)", samples);
+        msIds_ = vk::Image(device, extent, ScenePass::idFormat, inPass, VK_IMAGE_ASPECT_COLOR_BIT,
+                           "scene part IDs (MSAA)", samples);
+        views = {msColor_.view(), msIds_.view(), depth_.view(), color_.view(), ids_.view()};
     }
-}
-
-SceneTargets::~SceneTargets() {
-    release();
-}
-
-void SceneTargets::release() {
-    if (framebuffer_) vkDestroyFramebuffer(device_.handle(), framebuffer_, nullptr);
-    framebuffer_ = VK_NULL_HANDLE;
-    vk::destroyImage(device_, color_);
-    vk::destroyImage(device_, ids_);
-    vk::destroyImage(device_, depth_);
-    vk::destroyImage(device_, msColor_);
-    vk::destroyImage(device_, msIds_);
+    auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
+    info.renderPass = pass.handle();
+    info.attachmentCount = static_cast<uint32_t>(views.size());
+    info.pAttachments = views.data();
+    info.width = extent.width;
+    info.height = extent.height;
+    info.layers = 1;
+    framebuffer_ = vk::make(device, vkCreateFramebuffer, info, "scene framebuffer");
 }
 
 } // namespace render

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "vk/handle.h"
 #include "vk/resources.h"
 
 namespace render {
@@ -24,11 +25,8 @@ class ScenePass {
     static constexpr VkFormat idFormat = VK_FORMAT_R32_UINT;
 
     ScenePass(vk::Device& device, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
-    ~ScenePass();
-    ScenePass(const ScenePass&) = delete;
-    ScenePass& operator=(const ScenePass&) = delete;
 
-    VkRenderPass handle() const { return pass_; }
+    VkRenderPass handle() const { return pass_.get(); }
     VkFormat depthFormat() const { return depthFormat_; }
     VkSampleCountFlagBits samples() const { return samples_; }
     // Position of sample 0 inside a pixel: Vulkan's standard locations, which the pass
@@ -36,33 +34,29 @@ class ScenePass {
     glm::vec2 sampleZero() const;
 
   private:
-    vk::Device& device_;
     VkSampleCountFlagBits samples_;
     VkFormat depthFormat_ = VK_FORMAT_UNDEFINED;
-    VkRenderPass pass_ = VK_NULL_HANDLE;
+    vk::Handle<VkRenderPass> pass_;
 };
 
 // After the pass, the single-sample colour and ID images are in TRANSFER_SRC_OPTIMAL layout.
+// The pass must outlive the targets.
 class SceneTargets {
   public:
     SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent);
-    ~SceneTargets();
-    SceneTargets(const SceneTargets&) = delete;
-    SceneTargets& operator=(const SceneTargets&) = delete;
 
+    const ScenePass& pass() const { return pass_; }
     VkExtent2D extent() const { return extent_; }
-    VkFramebuffer framebuffer() const { return framebuffer_; }
+    VkFramebuffer framebuffer() const { return framebuffer_.get(); }
     const vk::Image& color() const { return color_; }
     const vk::Image& ids() const { return ids_; }
 
   private:
-    void release();
-
-    vk::Device& device_;
+    const ScenePass& pass_;
     VkExtent2D extent_;
     vk::Image color_, ids_, depth_;
     vk::Image msColor_, msIds_; // multisampled attachments, resolved into color_ and ids_
-    VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+    vk::Handle<VkFramebuffer> framebuffer_;
 };
 
 } // namespace render

@@ -1,6 +1,8 @@
 // technique.cpp - the registry of techniques and per-draw modes.
 #include "render/technique.h"
 
+#include <algorithm>
+
 namespace render {
 namespace {
 
@@ -49,8 +51,29 @@ const std::vector<Technique>& techniques() {
          "one draw per object; geometry shader N-ary-searches running triangle offsets",
          "techniques/nary_search.glsl", Geometry, IdBuffer::PartTriangleOffsets,
          DrawSplit::PerObject, true},
+        {"no-id",
+         "reference floor: one draw per object, no part ID in any stage (material colour "
+         "only, ID attachment masked)",
+         nullptr, None, IdBuffer::None, DrawSplit::PerObject},
     };
     return list;
+}
+
+std::vector<const Technique*> partIdTechniques() {
+    std::vector<const Technique*> list;
+    for (const Technique& t : techniques())
+        if (&t != &floorTechnique()) list.push_back(&t);
+    return list;
+}
+
+const Technique& floorTechnique() {
+    static const Technique& floor = *std::find_if(techniques().begin(), techniques().end(),
+                                                  [](const Technique& t) { return t.isFloor(); });
+    return floor;
+}
+
+const Technique& defaultTechnique() {
+    return techniques().front();
 }
 
 const std::vector<DrawMode>& drawModes() {
@@ -68,26 +91,18 @@ const std::vector<DrawMode>& drawModes() {
     return list;
 }
 
-const Technique& noIdTechnique() {
-    static const Technique noId{"no-id",
-                                "reference floor: one draw per object, no part ID in any stage "
-                                "(material colour only, ID attachment masked)",
-                                nullptr,
-                                LookupStage::None,
-                                IdBuffer::None,
-                                DrawSplit::PerObject};
-    return noId;
+const DrawMode& defaultDrawMode() {
+    return drawModes().front();
 }
 
 const Technique* findTechnique(const std::string& name) {
-    if (name == noIdTechnique().name) return &noIdTechnique();
     return findByName(techniques(), name);
 }
 const DrawMode* findDrawMode(const std::string& name) {
     return findByName(drawModes(), name);
 }
 std::string techniqueNames() {
-    return namesOf(techniques()) + ", " + noIdTechnique().name;
+    return namesOf(techniques());
 }
 std::string drawModeNames() {
     return namesOf(drawModes());

@@ -1,19 +1,15 @@
-// technique.h - the part-ID techniques and per-draw modes as data. Adding a technique means
-// one entry in techniques() (technique.cpp), its lookup file in shaders/techniques/ if it
-// needs a new one, and its name in the test lists; nothing else switches on technique names.
+// technique.h - the part-ID techniques and per-draw modes as data: the registry. A technique
+// is one row of techniques() (technique.cpp) plus its lookup file in shaders/techniques/ (and
+// an ID-data builder in draw_list.cpp only if it reads data no technique reads yet). The
+// command line, the panel, --list-renderers, the benchmark, the shader variants and the tests
+// all iterate the registry; nothing else switches on technique names.
 #pragma once
 
 #include <cstdint>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "scene/part_data.h"
-
 namespace render {
-
-// One draw call: a range of parts of one object's geometry (scene/part_data.h).
-using DrawItem = scene::DrawRange;
 
 // The ID data a technique's shaders read (scene/part_data.h builds each).
 enum class IdBuffer {
@@ -31,12 +27,12 @@ enum class LookupStage { Fragment, Geometry, None };
 
 // Parameters of the N-ary search (nsearch-*), compiled into the shader as IDV_NSEARCH_*
 // defines, so each set is its own pipeline (the loop unrolls over n - 1 independent loads).
-// Defaults: the fastest set of the H100 sweep in docs/benchmarks.md (3, off, 8, 16).
+// Defaults: the fastest set of the H100 sweep in docs/benchmarks.md; ranges in settings.h.
 struct NarySearch {
-    uint32_t n = 3;           // 3..16: each step reads n - 1 offsets and narrows n-fold
+    uint32_t n = 3;           // each step reads n - 1 offsets and narrows n-fold
     bool guess = false;       // start where a uniform part size puts the triangle, then widen
-    uint32_t linearBelow = 8; // 0..64: scan linearly once the range has at most this many parts
-    uint32_t maxSteps = 16;   // 1..64: N-ary steps at most; a linear scan finishes the rest
+    uint32_t linearBelow = 8; // scan linearly once the range has at most this many parts
+    uint32_t maxSteps = 16;   // N-ary steps at most; a linear scan finishes the rest
     bool operator==(const NarySearch&) const = default;
 };
 
@@ -47,7 +43,11 @@ struct Technique {
     LookupStage stage;
     IdBuffer ids;
     DrawSplit split;
-    bool narySearch = false; // reads RenderConfig::nsearch (the IDV_NSEARCH_* defines)
+    bool narySearch = false; // reads PipelineKey::nsearch (the IDV_NSEARCH_* defines)
+
+    // The benchmark's floor: no part ID anywhere, nothing in the ID attachment.
+    bool isFloor() const { return stage == LookupStage::None; }
+    bool readsSearchBatch() const { return ids == IdBuffer::PartTriangleCounts; }
 };
 
 // How per-draw parameters reach the shaders.
@@ -59,11 +59,14 @@ struct DrawMode {
     bool drawIndexAttribute; // the draw index comes from an instanced vertex attribute
 };
 
-// The part-ID techniques. The no-id reference is not among them (it has no ID image to
-// compare); findTechnique() knows it by name.
+// Every technique, the no-id floor last; partIdTechniques() leaves the floor out (it has
+// no ID image to compare).
 const std::vector<Technique>& techniques();
-const Technique& noIdTechnique();
+std::vector<const Technique*> partIdTechniques();
+const Technique& floorTechnique();
+const Technique& defaultTechnique(); // the first row
 const std::vector<DrawMode>& drawModes();
+const DrawMode& defaultDrawMode(); // the first row
 
 // nullptr when there is no such name.
 const Technique* findTechnique(const std::string& name);

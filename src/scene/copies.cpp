@@ -23,6 +23,14 @@ uint32_t parseCopyAxes(const std::string& text) {
     return axes;
 }
 
+std::string copyAxesName(uint32_t axes) {
+    std::string name;
+    if (axes & COPY_X) name += 'x';
+    if (axes & COPY_Y) name += 'y';
+    if (axes & COPY_Z) name += 'z';
+    return name;
+}
+
 namespace {
 
 // The smallest side such that side^dimensions >= copies: the grid is as compact as it can be.

@@ -15,6 +15,8 @@ constexpr uint32_t COPY_XY = COPY_X | COPY_Y;
 // "x", "xz", "zyx", ...: a non-empty set of x, y and z, each at most once. Throws
 // std::invalid_argument with a message for people.
 uint32_t parseCopyAxes(const std::string& text);
+// The axes as parseCopyAxes reads them back: "xy", "z", ...
+std::string copyAxesName(uint32_t axes);
 
 // copies >= 1. Copy 0 is the scene itself; copy k is shifted along a grid over the chosen
 // axes (a row, a square-ish grid or a cube-ish block; x varies fastest) by the scene's extent

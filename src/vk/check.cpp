@@ -1,6 +1,8 @@
 // check.cpp - VkResult names for error messages.
 #include "vk/check.h"
 
+#include <atomic>
+
 namespace vk {
 
 const char* resultName(VkResult result) {
@@ -43,6 +45,26 @@ void check(VkResult result, const char* what) {
                     "idview cannot continue");
     throw Error(std::string(what) + " failed: " + resultName(result) + " (" +
                 std::to_string(static_cast<int>(result)) + ")");
+}
+
+namespace {
+std::atomic<uint32_t> faultCountdown{0}; // 0: off
+std::atomic<uint32_t> faultPasses{0};
+} // namespace
+
+void faultPoint(const char* what) {
+    if (faultCountdown.load(std::memory_order_relaxed) == 0) return;
+    faultPasses.fetch_add(1);
+    if (faultCountdown.fetch_sub(1) == 1) throw Error(std::string("injected fault at ") + what);
+}
+
+void failAfter(uint32_t calls) {
+    faultPasses = 0;
+    faultCountdown = calls;
+}
+
+uint32_t faultPointsPassed() {
+    return faultPasses.load();
 }
 
 } // namespace vk

@@ -1,6 +1,7 @@
 // context.cpp - instance, debug messenger and logical device creation.
 #include "vk/context.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -9,27 +10,21 @@
 namespace vk {
 
 static bool hasLayer(const char* name) {
-    uint32_t count = 0;
-    check(vkEnumerateInstanceLayerProperties(&count, nullptr),
-          "vkEnumerateInstanceLayerProperties");
-    std::vector<VkLayerProperties> layers(count);
-    check(vkEnumerateInstanceLayerProperties(&count, layers.data()),
-          "vkEnumerateInstanceLayerProperties");
-    for (const auto& layer : layers)
-        if (std::strcmp(layer.layerName, name) == 0) return true;
-    return false;
+    const auto layers = enumerate<VkLayerProperties>(
+        "vkEnumerateInstanceLayerProperties",
+        [](uint32_t* n, VkLayerProperties* v) { return vkEnumerateInstanceLayerProperties(n, v); });
+    return std::any_of(layers.begin(), layers.end(),
+                       [&](const auto& layer) { return std::strcmp(layer.layerName, name) == 0; });
 }
 
 static bool hasInstanceExtension(const char* name) {
-    uint32_t count = 0;
-    check(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr),
-          "vkEnumerateInstanceExtensionProperties");
-    std::vector<VkExtensionProperties> extensions(count);
-    check(vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data()),
-          "vkEnumerateInstanceExtensionProperties");
-    for (const auto& extension : extensions)
-        if (std::strcmp(extension.extensionName, name) == 0) return true;
-    return false;
+    const auto extensions = enumerate<VkExtensionProperties>(
+        "vkEnumerateInstanceExtensionProperties", [](uint32_t* n, VkExtensionProperties* v) {
+            return vkEnumerateInstanceExtensionProperties(nullptr, n, v);
+        });
+    return std::any_of(extensions.begin(), extensions.end(), [&](const auto& extension) {
+        return std::strcmp(extension.extensionName, name) == 0;
+    });
 }
 
 Instance::Instance(const InstanceOptions& options) : verbose_(options.validation) {
@@ -89,31 +84,32 @@ Instance::Instance(const InstanceOptions& options) : verbose_(options.validation
     info.ppEnabledLayerNames = layers.data();
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
-    VkResult created = vkCreateInstance(&info, nullptr, &instance_);
+    faultPoint("vkCreateInstance");
+    VkResult created = vkCreateInstance(&info, nullptr, &owned_.instance);
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw Error("no Vulkan device found: the loader found no driver (Debian: "
                     "mesa-vulkan-drivers for the CPU device, or your GPU vendor's driver)");
     check(created, "vkCreateInstance");
+    instance_ = owned_.instance;
 
     if (debugUtils) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        VkResult result = create(instance_, &messenger, nullptr, &messenger_);
-        if (result != VK_SUCCESS) {
-            vkDestroyInstance(instance_, nullptr);
-            check(result, "vkCreateDebugUtilsMessengerEXT");
-        }
+        check(create(instance_, &messenger, nullptr, &owned_.messenger),
+              "vkCreateDebugUtilsMessengerEXT");
         debug_.load(instance_);
     }
 }
 
-Instance::~Instance() {
-    if (messenger_) {
+Instance::~Instance() = default;
+
+Instance::Owned::~Owned() {
+    if (messenger) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        destroy(instance_, messenger_, nullptr);
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy(instance, messenger, nullptr);
     }
-    vkDestroyInstance(instance_, nullptr);
+    if (instance) vkDestroyInstance(instance, nullptr);
 }
 
 VkBool32 VKAPI_PTR Instance::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
@@ -133,13 +129,12 @@ VkBool32 VKAPI_PTR Instance::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT se
 }
 
 std::vector<DeviceInfo> Instance::devices() const {
-    uint32_t count = 0;
-    check(vkEnumeratePhysicalDevices(instance_, &count, nullptr), "vkEnumeratePhysicalDevices");
-    std::vector<VkPhysicalDevice> handles(count);
-    check(vkEnumeratePhysicalDevices(instance_, &count, handles.data()),
-          "vkEnumeratePhysicalDevices");
+    const auto handles = enumerate<VkPhysicalDevice>(
+        "vkEnumeratePhysicalDevices", [&](uint32_t* n, VkPhysicalDevice* v) {
+            return vkEnumeratePhysicalDevices(instance_, n, v);
+        });
     std::vector<DeviceInfo> infos;
-    for (uint32_t i = 0; i < count; ++i) infos.push_back(queryDevice(handles[i], i));
+    for (uint32_t i = 0; i < handles.size(); ++i) infos.push_back(queryDevice(handles[i], i));
     return infos;
 }
 
@@ -175,27 +170,35 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     create.pNext = &features;
     create.queueCreateInfoCount = 1;
     create.pQueueCreateInfos = &queue;
-    check(vkCreateDevice(info.handle, &create, nullptr, &device_), "vkCreateDevice");
+    faultPoint("vkCreateDevice");
+    check(vkCreateDevice(info.handle, &create, nullptr, &owned_.device), "vkCreateDevice");
+    device_ = owned_.device;
     vkGetDeviceQueue(device_, info.graphicsQueueFamily, 0, &queue_);
     vkGetPhysicalDeviceMemoryProperties(info.handle, &memory_);
 
     auto pool = vk::init<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     pool.queueFamilyIndex = info.graphicsQueueFamily;
-    VkResult result = vkCreateCommandPool(device_, &pool, nullptr, &uploadPool_);
-    if (result != VK_SUCCESS) {
-        vkDestroyDevice(device_, nullptr);
-        check(result, "vkCreateCommandPool");
-    }
-    name(VK_OBJECT_TYPE_COMMAND_POOL, uploadPool_, "upload pool");
+    uploadPool_ = make(*this, vkCreateCommandPool, pool, "upload pool");
     name(VK_OBJECT_TYPE_QUEUE, queue_, "graphics queue");
 }
 
 Device::~Device() {
-    // Nothing may be in flight when the device goes; a failure here cannot be acted on.
+    // Teardown: nothing may be in flight when the device goes (members go after this, the
+    // uploads' staging memory first). A failure here cannot be acted on.
     vkDeviceWaitIdle(device_);
-    vkDestroyCommandPool(device_, uploadPool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
+}
+
+Device::Owned::~Owned() {
+    if (device) vkDestroyDevice(device, nullptr);
+}
+
+VkDevice rawDevice(const Device& device) {
+    return device.handle();
+}
+
+void nameObject(const Device& device, VkObjectType type, uint64_t handle, const std::string& name) {
+    device.debug().name(device.handle(), type, handle, name.c_str());
 }
 
 uint32_t Device::memoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const {
@@ -205,28 +208,51 @@ uint32_t Device::memoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) cons
     throw Error("no Vulkan memory type with the needed properties on " + info_.name);
 }
 
-VkCommandBuffer Device::beginOneTime() {
+CommandBuffer Device::beginOneTime() {
     auto alloc =
         vk::init<VkCommandBufferAllocateInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO);
-    alloc.commandPool = uploadPool_;
+    alloc.commandPool = uploadPool_.get();
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    check(vkAllocateCommandBuffers(device_, &alloc, &cmd), "vkAllocateCommandBuffers");
+    VkCommandBuffer handle;
+    check(vkAllocateCommandBuffers(device_, &alloc, &handle), "vkAllocateCommandBuffers");
+    CommandBuffer cmd(device_, uploadPool_.get(), handle);
     auto begin = vk::init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    check(vkBeginCommandBuffer(handle, &begin), "vkBeginCommandBuffer");
     return cmd;
 }
 
-void Device::endOneTime(VkCommandBuffer cmd) {
-    check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+void Device::submitUpload(CommandBuffer cmd, std::shared_ptr<void> keep) {
+    collectFinishedUploads();
+    check(vkEndCommandBuffer(cmd.get()), "vkEndCommandBuffer (upload)");
+    Upload upload{make(*this, vkCreateFence,
+                       vk::init<VkFenceCreateInfo>(VK_STRUCTURE_TYPE_FENCE_CREATE_INFO),
+                       "upload done"),
+                  std::move(cmd), std::move(keep)};
+    faultPoint("vkQueueSubmit (upload)");
+    const VkCommandBuffer handle = upload.cmd.get();
     auto submit = vk::init<VkSubmitInfo>(VK_STRUCTURE_TYPE_SUBMIT_INFO);
     submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    check(vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit (upload)");
-    check(vkQueueWaitIdle(queue_), "vkQueueWaitIdle (upload)");
-    vkFreeCommandBuffers(device_, uploadPool_, 1, &cmd);
+    submit.pCommandBuffers = &handle;
+    check(vkQueueSubmit(queue_, 1, &submit, upload.done.get()), "vkQueueSubmit (upload)");
+    uploads_.push_back(std::move(upload));
+}
+
+void Device::collectFinishedUploads() {
+    std::erase_if(uploads_, [&](const Upload& upload) {
+        const VkResult status = vkGetFenceStatus(device_, upload.done.get());
+        if (status == VK_NOT_READY) return false;
+        check(status, "vkGetFenceStatus (upload)");
+        return true; // fence, command buffer and staging memory go with the entry
+    });
+}
+
+void Device::submitAndWait(CommandBuffer cmd) {
+    submitUpload(std::move(cmd), nullptr);
+    const VkFence fence = uploads_.back().done.get();
+    check(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "waiting for an upload");
+    collectFinishedUploads();
 }
 
 } // namespace vk

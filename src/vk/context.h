@@ -3,12 +3,15 @@
 #pragma once
 
 #include <atomic>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 #include <vulkan/vulkan.h>
 
 #include "vk/debug.h"
 #include "vk/device_select.h"
+#include "vk/handle.h"
 
 namespace vk {
 
@@ -40,11 +43,47 @@ class Instance {
                                         const VkDebugUtilsMessengerCallbackDataEXT* data,
                                         void* user);
 
+    // The instance and the messenger, destroyed in that order's reverse.
+    struct Owned {
+        VkInstance instance = VK_NULL_HANDLE;
+        VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+        Owned() = default;
+        Owned(const Owned&) = delete;
+        Owned& operator=(const Owned&) = delete;
+        ~Owned();
+    };
+
     bool verbose_;
+    Owned owned_;
     VkInstance instance_ = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     DebugUtils debug_;
     std::atomic<uint32_t> validationMessages_{0};
+};
+
+// A primary command buffer of a pool, freed when it goes (or with its pool).
+class CommandBuffer {
+  public:
+    CommandBuffer() = default;
+    CommandBuffer(VkDevice device, VkCommandPool pool, VkCommandBuffer cmd)
+        : device_(device), pool_(pool), cmd_(cmd) {}
+    CommandBuffer(CommandBuffer&& other) noexcept
+        : device_(other.device_), pool_(other.pool_),
+          cmd_(std::exchange(other.cmd_, VK_NULL_HANDLE)) {}
+    CommandBuffer& operator=(CommandBuffer&& other) noexcept {
+        std::swap(device_, other.device_);
+        std::swap(pool_, other.pool_);
+        std::swap(cmd_, other.cmd_);
+        return *this;
+    }
+    ~CommandBuffer() {
+        if (cmd_) vkFreeCommandBuffers(device_, pool_, 1, &cmd_);
+    }
+    VkCommandBuffer get() const { return cmd_; }
+
+  private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
 };
 
 class Device {
@@ -81,14 +120,23 @@ class Device {
         liveBytes_ += sign * bytes;
     }
 
-    // Records `record` into a one-time command buffer, submits it and waits. For uploads at
-    // scene load, never on the per-frame path.
+    // Records `record` into a one-time command buffer, submits it and waits for it. Only
+    // where nothing can go on before the result is there (the panel's font at start-up).
     template <typename Fn>
     void submitNow(Fn&& record) {
-        VkCommandBuffer cmd = beginOneTime();
-        record(cmd);
-        endOneTime(cmd);
+        CommandBuffer cmd = beginOneTime();
+        record(cmd.get());
+        submitAndWait(std::move(cmd));
     }
+
+    // Uploads (vk/upload.h): a one-time command buffer to record into, then submitted
+    // without waiting; `keep` (the staging memory) lives until the GPU has run it, which
+    // collectFinishedUploads() notices without waiting. The queue orders the upload before
+    // every later submission, and its final barrier makes the writes visible to them.
+    CommandBuffer beginOneTime();
+    void submitUpload(CommandBuffer cmd, std::shared_ptr<void> keep);
+    void collectFinishedUploads();
+    size_t uploadsInFlight() const { return uploads_.size(); }
 
     template <typename Handle>
     void name(VkObjectType type, Handle handle, const std::string& text) const {
@@ -96,16 +144,31 @@ class Device {
     }
 
   private:
-    VkCommandBuffer beginOneTime();
-    void endOneTime(VkCommandBuffer cmd);
+    void submitAndWait(CommandBuffer cmd);
+
+    struct Upload {
+        Handle<VkFence> done;
+        CommandBuffer cmd;
+        std::shared_ptr<void> keep;
+    };
+    // The VkDevice itself, destroyed after every member below.
+    struct Owned {
+        VkDevice device = VK_NULL_HANDLE;
+        Owned() = default;
+        Owned(const Owned&) = delete;
+        Owned& operator=(const Owned&) = delete;
+        ~Owned();
+    };
 
     DeviceInfo info_;
     DebugUtils debug_;
+    Owned owned_;
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
-    VkCommandPool uploadPool_ = VK_NULL_HANDLE;
     VkPhysicalDeviceMemoryProperties memory_{};
     std::atomic<int64_t> liveAllocations_{0}, liveBytes_{0};
+    Handle<VkCommandPool> uploadPool_;
+    std::vector<Upload> uploads_; // submitted, not yet seen finished
 };
 
 } // namespace vk

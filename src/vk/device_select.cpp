@@ -9,6 +9,15 @@
 
 namespace vk {
 
+bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
+    const auto extensions = enumerate<VkExtensionProperties>(
+        "vkEnumerateDeviceExtensionProperties", [&](uint32_t* n, VkExtensionProperties* v) {
+            return vkEnumerateDeviceExtensionProperties(device, nullptr, n, v);
+        });
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const auto& e) { return std::string(e.extensionName) == name; });
+}
+
 DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     DeviceInfo info;
     info.index = index;
@@ -24,15 +33,8 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     info.timestampPeriodNs = props.limits.timestampPeriod;
     info.maxDrawIndirectCount = props.limits.maxDrawIndirectCount;
 
-    uint32_t extensionCount = 0;
-    check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extensionCount, nullptr),
-          "vkEnumerateDeviceExtensionProperties");
-    std::vector<VkExtensionProperties> extensions(extensionCount);
-    check(vkEnumerateDeviceExtensionProperties(device, nullptr, &extensionCount, extensions.data()),
-          "vkEnumerateDeviceExtensionProperties");
-    for (const auto& e : extensions)
-        if (std::string(e.extensionName) == VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME)
-            info.geometryShaderPassthrough = true;
+    info.geometryShaderPassthrough =
+        hasDeviceExtension(device, VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
 
     const bool vulkan12 = props.apiVersion >= VK_API_VERSION_1_2;
     if (vulkan12) {

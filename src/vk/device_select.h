@@ -39,6 +39,8 @@ struct DeviceInfo {
     uint32_t maxDrawIndirectCount = 1;
 };
 
+bool hasDeviceExtension(VkPhysicalDevice device, const char* name);
+
 // Reads everything above from the driver.
 DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index);
 

@@ -1,23 +1,24 @@
-// resources.cpp - buffer and image creation; one device memory allocation per resource,
-// which is plenty for the few large buffers a scene needs.
+// resources.cpp - buffer and image creation, and the device memory behind them.
 #include "vk/resources.h"
 
-#include <cstring>
 #include <string>
+#include <utility>
 
 #include "vk/check.h"
 
 namespace vk {
+namespace {
 
-static std::string mebibytes(VkDeviceSize bytes) {
+std::string mebibytes(VkDeviceSize bytes) {
     return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
 }
 
+} // namespace
+
 // Too large for the memory heap at all: say so in words instead of letting the driver fail
 // (or the validation layer object). Out of memory at allocation: the same, with the cause.
-static VkDeviceMemory allocate(Device& device, const VkMemoryRequirements& requirements,
-                               VkMemoryPropertyFlags flags, bool deviceAddress,
-                               const std::string& name) {
+Allocation::Allocation(Device& device, const VkMemoryRequirements& requirements,
+                       VkMemoryPropertyFlags flags, bool deviceAddress, const std::string& name) {
     const uint32_t type = device.memoryType(requirements.memoryTypeBits, flags);
     const VkMemoryHeap& heap =
         device.memory().memoryHeaps[device.memory().memoryTypes[type].heapIndex];
@@ -33,92 +34,67 @@ static VkDeviceMemory allocate(Device& device, const VkMemoryRequirements& requi
     info.pNext = deviceAddress ? &flagsInfo : nullptr;
     info.allocationSize = requirements.size;
     info.memoryTypeIndex = type;
-    VkDeviceMemory memory;
-    const VkResult result = vkAllocateMemory(device.handle(), &info, nullptr, &memory);
+    faultPoint(name.c_str());
+    const VkResult result = vkAllocateMemory(device.handle(), &info, nullptr, &memory_);
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
         throw Error("out of " + where + " memory allocating " + mebibytes(requirements.size) +
                     " for '" + name + "' (idview holds " +
                     mebibytes(VkDeviceSize(device.liveMemory().bytes)) +
                     "); try fewer --copies or a smaller model");
     check(result, "vkAllocateMemory");
-    device.countAllocation(int64_t(requirements.size), +1);
-    return memory;
+    device_ = &device;
+    bytes_ = requirements.size;
+    device.countAllocation(int64_t(bytes_), +1);
+    device.name(VK_OBJECT_TYPE_DEVICE_MEMORY, memory_, name + " memory");
 }
 
-Buffer createBuffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
-                    VkMemoryPropertyFlags memoryFlags, const std::string& name) {
-    Buffer buffer;
-    buffer.size = size;
+Allocation::~Allocation() {
+    if (!memory_) return;
+    vkFreeMemory(device_->handle(), memory_, nullptr);
+    device_->countAllocation(int64_t(bytes_), -1);
+}
+
+void Allocation::swap(Allocation& other) noexcept {
+    std::swap(device_, other.device_);
+    std::swap(memory_, other.memory_);
+    std::swap(bytes_, other.bytes_);
+}
+
+Buffer::Buffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
+               VkMemoryPropertyFlags memoryFlags, const std::string& name)
+    : size_(size) {
     auto info = vk::init<VkBufferCreateInfo>(VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO);
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    check(vkCreateBuffer(device.handle(), &info, nullptr, &buffer.buffer), "vkCreateBuffer");
-    try {
-        VkMemoryRequirements requirements;
-        vkGetBufferMemoryRequirements(device.handle(), buffer.buffer, &requirements);
-        const bool deviceAddress = usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-        if (!memoryFlags) memoryFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-        buffer.memory = allocate(device, requirements, memoryFlags, deviceAddress, name);
-        buffer.allocated = requirements.size;
-        check(vkBindBufferMemory(device.handle(), buffer.buffer, buffer.memory, 0),
-              "vkBindBufferMemory");
-        if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
-            check(vkMapMemory(device.handle(), buffer.memory, 0, VK_WHOLE_SIZE, 0, &buffer.mapped),
-                  "vkMapMemory");
-        if (deviceAddress) {
-            auto addressInfo =
-                vk::init<VkBufferDeviceAddressInfo>(VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO);
-            addressInfo.buffer = buffer.buffer;
-            buffer.address = vkGetBufferDeviceAddress(device.handle(), &addressInfo);
-        }
-    } catch (...) {
-        destroyBuffer(device, buffer);
-        throw;
+    buffer_ = make(device, vkCreateBuffer, info, name);
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device.handle(), buffer_.get(), &requirements);
+    const bool deviceAddress = usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+    if (!memoryFlags) memoryFlags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    memory_ = Allocation(device, requirements, memoryFlags, deviceAddress, name);
+    check(vkBindBufferMemory(device.handle(), buffer_.get(), memory_.get(), 0),
+          "vkBindBufferMemory");
+    if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+        check(vkMapMemory(device.handle(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped_),
+              "vkMapMemory");
+    if (deviceAddress) {
+        auto addressInfo =
+            vk::init<VkBufferDeviceAddressInfo>(VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO);
+        addressInfo.buffer = buffer_.get();
+        address_ = vkGetBufferDeviceAddress(device.handle(), &addressInfo);
     }
-    device.name(VK_OBJECT_TYPE_BUFFER, buffer.buffer, name);
-    device.name(VK_OBJECT_TYPE_DEVICE_MEMORY, buffer.memory, name + " memory");
-    return buffer;
 }
 
-void destroyBuffer(Device& device, Buffer& buffer) {
-    if (buffer.buffer) vkDestroyBuffer(device.handle(), buffer.buffer, nullptr);
-    if (buffer.memory) {
-        vkFreeMemory(device.handle(), buffer.memory, nullptr);
-        device.countAllocation(int64_t(buffer.allocated), -1);
-    }
-    buffer = {};
+Buffer hostBuffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
+                  const std::string& name) {
+    return Buffer(device, size, usage,
+                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, name);
 }
 
-Buffer createBufferWithData(Device& device, const void* data, VkDeviceSize size,
-                            VkBufferUsageFlags usage, const std::string& name) {
-    Buffer staging =
-        createBuffer(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                     VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                     name + " staging");
-    std::memcpy(staging.mapped, data, size);
-    Buffer buffer;
-    try {
-        buffer = createBuffer(device, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, 0, name);
-        device.submitNow([&](VkCommandBuffer cmd) {
-            VkBufferCopy region{0, 0, size};
-            vkCmdCopyBuffer(cmd, staging.buffer, buffer.buffer, 1, &region);
-        });
-    } catch (...) {
-        destroyBuffer(device, buffer);
-        destroyBuffer(device, staging);
-        throw;
-    }
-    destroyBuffer(device, staging);
-    return buffer;
-}
-
-Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                    VkImageAspectFlags aspect, const std::string& name,
-                    VkSampleCountFlagBits samples) {
-    Image image;
-    image.format = format;
-    image.extent = extent;
+Image::Image(Device& device, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+             VkImageAspectFlags aspect, const std::string& name, VkSampleCountFlagBits samples)
+    : format_(format), extent_(extent) {
     auto info = vk::init<VkImageCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO);
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
@@ -129,39 +105,17 @@ Image createImage2D(Device& device, VkExtent2D extent, VkFormat format, VkImageU
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    check(vkCreateImage(device.handle(), &info, nullptr, &image.image), "vkCreateImage");
-    try {
-        VkMemoryRequirements requirements;
-        vkGetImageMemoryRequirements(device.handle(), image.image, &requirements);
-        image.memory =
-            allocate(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false, name);
-        image.allocated = requirements.size;
-        check(vkBindImageMemory(device.handle(), image.image, image.memory, 0),
-              "vkBindImageMemory");
-        auto view = vk::init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
-        view.image = image.image;
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        view.format = format;
-        view.subresourceRange = {aspect, 0, 1, 0, 1};
-        check(vkCreateImageView(device.handle(), &view, nullptr, &image.view), "vkCreateImageView");
-    } catch (...) {
-        destroyImage(device, image);
-        throw;
-    }
-    device.name(VK_OBJECT_TYPE_IMAGE, image.image, name);
-    device.name(VK_OBJECT_TYPE_IMAGE_VIEW, image.view, name + " view");
-    device.name(VK_OBJECT_TYPE_DEVICE_MEMORY, image.memory, name + " memory");
-    return image;
-}
-
-void destroyImage(Device& device, Image& image) {
-    if (image.view) vkDestroyImageView(device.handle(), image.view, nullptr);
-    if (image.image) vkDestroyImage(device.handle(), image.image, nullptr);
-    if (image.memory) {
-        vkFreeMemory(device.handle(), image.memory, nullptr);
-        device.countAllocation(int64_t(image.allocated), -1);
-    }
-    image = {};
+    image_ = make(device, vkCreateImage, info, name);
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device.handle(), image_.get(), &requirements);
+    memory_ = Allocation(device, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false, name);
+    check(vkBindImageMemory(device.handle(), image_.get(), memory_.get(), 0), "vkBindImageMemory");
+    auto view = vk::init<VkImageViewCreateInfo>(VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO);
+    view.image = image_.get();
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    view_ = make(device, vkCreateImageView, view, name + " view");
 }
 
 } // namespace vk

@@ -122,7 +122,31 @@ ShaderCompiler::~ShaderCompiler() {
     if (--processUsers == 0) glslang::FinalizeProcess();
 }
 
+std::string ShaderRequest::key() const {
+    std::string text = file + "|" + std::to_string(int(stage));
+    for (const auto& [name, value] : defines) text += "|" + name + "=" + value;
+    for (const auto& [name, target] : includeAliases) text += "|" + name + ">" + target;
+    return text;
+}
+
 std::vector<uint32_t> ShaderCompiler::compile(const ShaderRequest& request) const {
+    faultPoint("shader compile");
+    const std::string key = request.key();
+    if (auto found = memo_.find(key); found != memo_.end()) {
+        ++remembered_;
+        return found->second;
+    }
+    std::vector<uint32_t> spirv = compileNow(request);
+    ++compilations_;
+    memo_.emplace(key, spirv);
+    return spirv;
+}
+
+void ShaderCompiler::forget() const {
+    memo_.clear();
+}
+
+std::vector<uint32_t> ShaderCompiler::compileNow(const ShaderRequest& request) const {
     std::string source;
     if (!readFile(dir_ / request.file, source))
         throw ShaderError("cannot read shader " + (dir_ / request.file).string());
@@ -172,13 +196,12 @@ std::filesystem::path ShaderCompiler::locate(const std::string& overrideDir) {
     return IDVIEW_SOURCE_SHADER_DIR;
 }
 
-VkShaderModule createShaderModule(VkDevice device, const std::vector<uint32_t>& spirv) {
+Handle<VkShaderModule> createShaderModule(const Device& device, const std::vector<uint32_t>& spirv,
+                                          const std::string& name) {
     auto info = vk::init<VkShaderModuleCreateInfo>(VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO);
     info.codeSize = spirv.size() * sizeof(uint32_t);
     info.pCode = spirv.data();
-    VkShaderModule module;
-    check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
-    return module;
+    return make(device, vkCreateShaderModule, info, name);
 }
 
 } // namespace vk

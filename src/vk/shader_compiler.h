@@ -11,6 +11,7 @@
 #include <vulkan/vulkan.h>
 
 #include "vk/check.h"
+#include "vk/handle.h"
 
 namespace vk {
 
@@ -23,6 +24,8 @@ struct ShaderRequest {
 
     // "scene.frag [TECHNIQUE_X=1]": for messages and debug names.
     std::string label() const;
+    // Everything that makes the SPIR-V differ: file, stage, defines and aliases.
+    std::string key() const;
 };
 
 // A compile error: what() holds "path:line: error: message" lines as glslang reported them.
@@ -38,16 +41,29 @@ class ShaderCompiler {
     ShaderCompiler& operator=(const ShaderCompiler&) = delete;
 
     const std::filesystem::path& directory() const { return dir_; }
+    // SPIR-V for the request. Each distinct request is compiled once and remembered, so
+    // switching back to a technique costs no glslang run; forget() drops what was kept
+    // (shaders edited on disk, the viewer's R).
     std::vector<uint32_t> compile(const ShaderRequest& request) const;
+    void forget() const;
+    // glslang runs so far, and requests answered from memory (for the panel and the tests).
+    uint64_t compilations() const { return compilations_; }
+    uint64_t remembered() const { return remembered_; }
 
     // The folder idview reads shaders from: --shader-dir if given, else shaders/ next to the
     // executable (a bundled copy), else the source tree the binary was built from.
     static std::filesystem::path locate(const std::string& overrideDir);
 
   private:
+    std::vector<uint32_t> compileNow(const ShaderRequest& request) const;
+
     std::filesystem::path dir_;
+    mutable std::map<std::string, std::vector<uint32_t>> memo_; // by ShaderRequest::key()
+    mutable uint64_t compilations_ = 0, remembered_ = 0;
 };
 
-VkShaderModule createShaderModule(VkDevice device, const std::vector<uint32_t>& spirv);
+class Device;
+Handle<VkShaderModule> createShaderModule(const Device& device, const std::vector<uint32_t>& spirv,
+                                          const std::string& name);
 
 } // namespace vk

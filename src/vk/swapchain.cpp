@@ -10,16 +10,7 @@
 namespace vk {
 
 void checkPresentSupport(const DeviceInfo& info, VkSurfaceKHR surface) {
-    uint32_t count = 0;
-    check(vkEnumerateDeviceExtensionProperties(info.handle, nullptr, &count, nullptr),
-          "vkEnumerateDeviceExtensionProperties");
-    std::vector<VkExtensionProperties> extensions(count);
-    check(vkEnumerateDeviceExtensionProperties(info.handle, nullptr, &count, extensions.data()),
-          "vkEnumerateDeviceExtensionProperties");
-    const bool swapchain = std::any_of(extensions.begin(), extensions.end(), [](const auto& e) {
-        return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
-    });
-    if (!swapchain)
+    if (!hasDeviceExtension(info.handle, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
         throw Error(info.name +
                     " cannot show a window: it lacks VK_KHR_swapchain (use --headless)");
     // idview renders and presents on one queue, so that queue must be able to present.
@@ -33,12 +24,10 @@ void checkPresentSupport(const DeviceInfo& info, VkSurfaceKHR surface) {
 }
 
 Swapchain::Swapchain(Device& device, VkSurfaceKHR surface) : device_(device), surface_(surface) {
-    uint32_t count = 0;
-    check(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical(), surface, &count, nullptr),
-          "vkGetPhysicalDeviceSurfaceFormatsKHR");
-    std::vector<VkSurfaceFormatKHR> formats(count);
-    check(vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical(), surface, &count, formats.data()),
-          "vkGetPhysicalDeviceSurfaceFormatsKHR");
+    const auto formats = enumerate<VkSurfaceFormatKHR>(
+        "vkGetPhysicalDeviceSurfaceFormatsKHR", [&](uint32_t* n, VkSurfaceFormatKHR* v) {
+            return vkGetPhysicalDeviceSurfaceFormatsKHR(device.physical(), surface, n, v);
+        });
     if (formats.empty()) throw Error("the window surface offers no image formats");
     format_ = formats.front(); // whatever it is, rather than no window at all
     for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
@@ -58,25 +47,16 @@ Swapchain::Swapchain(Device& device, VkSurfaceKHR surface) : device_(device), su
 }
 
 Swapchain::~Swapchain() {
-    // Teardown: a failed wait cannot be acted on, and the images must be unused.
+    // Teardown: the presentation engine may still read the images.
     vkDeviceWaitIdle(device_.handle());
-    releaseImages();
-    if (swapchain_) vkDestroySwapchainKHR(device_.handle(), swapchain_, nullptr);
-}
-
-void Swapchain::releaseImages() {
-    for (SwapchainImage& image : images_) {
-        if (image.renderFinished)
-            vkDestroySemaphore(device_.handle(), image.renderFinished, nullptr);
-        if (image.view) vkDestroyImageView(device_.handle(), image.view, nullptr);
-    }
-    images_.clear();
 }
 
 bool Swapchain::recreate(VkExtent2D size, bool vsync) {
-    VkDevice dev = device_.handle();
     VkPhysicalDevice physical = device_.physical();
-    check(vkDeviceWaitIdle(dev), "vkDeviceWaitIdle (swapchain)");
+    // Vulkan 1.2 gives no fence for a present, so nothing says when the old images and their
+    // semaphores are free but an idle queue. Resizing and vsync changes drain it once; no
+    // technique, scene or MSAA change comes here.
+    check(vkQueueWaitIdle(device_.queue()), "vkQueueWaitIdle (swapchain)");
 
     VkSurfaceCapabilitiesKHR caps;
     check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical, surface_, &caps),
@@ -88,12 +68,10 @@ bool Swapchain::recreate(VkExtent2D size, bool vsync) {
     if (extent.width == 0 || extent.height == 0) return false; // minimised: no images possible
     extent_ = extent;
 
-    uint32_t count = 0;
-    check(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface_, &count, nullptr),
-          "vkGetPhysicalDeviceSurfacePresentModesKHR");
-    std::vector<VkPresentModeKHR> modes(count);
-    check(vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface_, &count, modes.data()),
-          "vkGetPhysicalDeviceSurfacePresentModesKHR");
+    const auto modes = enumerate<VkPresentModeKHR>(
+        "vkGetPhysicalDeviceSurfacePresentModesKHR", [&](uint32_t* n, VkPresentModeKHR* v) {
+            return vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface_, n, v);
+        });
     presentMode_ = VK_PRESENT_MODE_FIFO_KHR; // always offered
     if (!vsync)
         for (VkPresentModeKHR mode : {VK_PRESENT_MODE_IMMEDIATE_KHR, VK_PRESENT_MODE_MAILBOX_KHR})
@@ -131,21 +109,22 @@ bool Swapchain::recreate(VkExtent2D size, bool vsync) {
     info.compositeAlpha = alpha;
     info.presentMode = presentMode_;
     info.clipped = VK_TRUE;
-    info.oldSwapchain = swapchain_; // lets the driver hand resources over
-    VkSwapchainKHR created = VK_NULL_HANDLE;
-    const VkResult result = vkCreateSwapchainKHR(dev, &info, nullptr, &created);
-    releaseImages();
-    if (swapchain_) vkDestroySwapchainKHR(dev, swapchain_, nullptr);
-    swapchain_ = VK_NULL_HANDLE;
-    check(result, "vkCreateSwapchainKHR");
-    swapchain_ = created;
-    device_.name(VK_OBJECT_TYPE_SWAPCHAIN_KHR, swapchain_, "window swapchain");
+    info.oldSwapchain = swapchain_.get(); // lets the driver hand resources over
+    // The old swapchain is retired by this call whether it succeeds or not.
+    Handle<VkSwapchainKHR> old = std::move(swapchain_);
+    images_.clear();
+    swapchain_ = make(device_, vkCreateSwapchainKHR, info, "window swapchain");
+    old.reset();
+    createImages();
+    return true;
+}
 
-    check(vkGetSwapchainImagesKHR(dev, swapchain_, &count, nullptr), "vkGetSwapchainImagesKHR");
-    std::vector<VkImage> handles(count);
-    check(vkGetSwapchainImagesKHR(dev, swapchain_, &count, handles.data()),
-          "vkGetSwapchainImagesKHR");
-    for (uint32_t i = 0; i < count; ++i) {
+void Swapchain::createImages() {
+    const auto handles =
+        enumerate<VkImage>("vkGetSwapchainImagesKHR", [&](uint32_t* n, VkImage* v) {
+            return vkGetSwapchainImagesKHR(device_.handle(), swapchain_.get(), n, v);
+        });
+    for (uint32_t i = 0; i < handles.size(); ++i) {
         SwapchainImage& image = images_.emplace_back();
         image.image = handles[i];
         const std::string suffix = " (swapchain image " + std::to_string(i) + ")";
@@ -155,18 +134,16 @@ bool Swapchain::recreate(VkExtent2D size, bool vsync) {
         view.viewType = VK_IMAGE_VIEW_TYPE_2D;
         view.format = format_.format;
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        check(vkCreateImageView(dev, &view, nullptr, &image.view), "vkCreateImageView");
-        device_.name(VK_OBJECT_TYPE_IMAGE_VIEW, image.view, "window view" + suffix);
-        auto semaphore = vk::init<VkSemaphoreCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO);
-        check(vkCreateSemaphore(dev, &semaphore, nullptr, &image.renderFinished),
-              "vkCreateSemaphore");
-        device_.name(VK_OBJECT_TYPE_SEMAPHORE, image.renderFinished, "render finished" + suffix);
+        image.view = make(device_, vkCreateImageView, view, "window view" + suffix);
+        image.renderFinished =
+            make(device_, vkCreateSemaphore,
+                 vk::init<VkSemaphoreCreateInfo>(VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO),
+                 "render finished" + suffix);
     }
-    return true;
 }
 
 Swapchain::Status Swapchain::acquire(VkSemaphore acquired, uint32_t& imageIndex) {
-    const VkResult result = vkAcquireNextImageKHR(device_.handle(), swapchain_, UINT64_MAX,
+    const VkResult result = vkAcquireNextImageKHR(device_.handle(), swapchain_.get(), UINT64_MAX,
                                                   acquired, VK_NULL_HANDLE, &imageIndex);
     if (result == VK_ERROR_OUT_OF_DATE_KHR) return Status::OutOfDate;
     if (result == VK_SUBOPTIMAL_KHR) return Status::Suboptimal; // acquired: use it, then recreate
@@ -177,9 +154,11 @@ Swapchain::Status Swapchain::acquire(VkSemaphore acquired, uint32_t& imageIndex)
 Swapchain::Status Swapchain::present(uint32_t imageIndex) {
     auto info = vk::init<VkPresentInfoKHR>(VK_STRUCTURE_TYPE_PRESENT_INFO_KHR);
     info.waitSemaphoreCount = 1;
-    info.pWaitSemaphores = &images_[imageIndex].renderFinished;
+    const VkSemaphore finished = images_[imageIndex].renderFinished.get();
+    const VkSwapchainKHR swapchain = swapchain_.get();
+    info.pWaitSemaphores = &finished;
     info.swapchainCount = 1;
-    info.pSwapchains = &swapchain_;
+    info.pSwapchains = &swapchain;
     info.pImageIndices = &imageIndex;
     const VkResult result = vkQueuePresentKHR(device_.queue(), &info);
     if (result == VK_ERROR_OUT_OF_DATE_KHR) return Status::OutOfDate;

@@ -9,6 +9,7 @@
 #include <vulkan/vulkan.h>
 
 #include "vk/context.h"
+#include "vk/handle.h"
 
 namespace vk {
 
@@ -32,9 +33,9 @@ class Surface {
 void checkPresentSupport(const DeviceInfo& info, VkSurfaceKHR surface);
 
 struct SwapchainImage {
-    VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-    VkSemaphore renderFinished = VK_NULL_HANDLE; // signalled by the frame, waited by present
+    VkImage image = VK_NULL_HANDLE; // the swapchain's
+    Handle<VkImageView> view;
+    Handle<VkSemaphore> renderFinished; // signalled by the frame, waited by present
 };
 
 class Swapchain {
@@ -46,12 +47,12 @@ class Swapchain {
     Swapchain(const Swapchain&) = delete;
     Swapchain& operator=(const Swapchain&) = delete;
 
-    // Waits for the device to idle and (re)creates the swapchain for a framebuffer of `size`
-    // (the surface's own extent wins where it has one). vsync: FIFO; otherwise IMMEDIATE or
+    // Drains the queue (see swapchain.cpp) and (re)creates the swapchain for a framebuffer of
+    // `size` (the surface's own extent wins where it has one). vsync: FIFO; otherwise IMMEDIATE or
     // MAILBOX, whichever the surface offers, FIFO as the fallback. Returns false, changing
     // nothing, while the surface has no area (a minimised window).
     bool recreate(VkExtent2D size, bool vsync);
-    bool valid() const { return swapchain_ != VK_NULL_HANDLE; }
+    bool valid() const { return bool(swapchain_); }
 
     enum class Status { Ok, Suboptimal, OutOfDate };
     // Acquires the next image, signalling `acquired`. On OutOfDate nothing is signalled and
@@ -68,12 +69,12 @@ class Swapchain {
     const std::vector<SwapchainImage>& images() const { return images_; }
 
   private:
-    void releaseImages();
+    void createImages();
 
     Device& device_;
     VkSurfaceKHR surface_;
     VkSurfaceFormatKHR format_{};
-    VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+    Handle<VkSwapchainKHR> swapchain_;
     VkExtent2D extent_{};
     VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
     bool copyable_ = false;

@@ -1,5 +1,5 @@
 // orbit_camera.cpp - orbit, pan, zoom and fit, and the near/far planes that follow the eye.
-#include "app/orbit_camera.h"
+#include "app/viewer/orbit_camera.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// input_script.h - scripted input for the viewer (`--script FILE`), so tests can drive the
+// script.h - scripted input for the viewer (`--script FILE`), so tests can drive the
 // real window: one command per line, `<seconds> <command> [args]`, run when that many
 // seconds have passed since the first frame. The viewer feeds each command to the same
 // handlers as real keys, mouse and panel widgets. Parsing is plain C++ and unit-tested.
@@ -9,7 +9,7 @@
 //   1.5 drag 100 100 300 120  left-button drag (orbit) from the first point to the second
 //   2   scroll 2            wheel steps, positive zooms in
 //   2.5 resize 800 500      window size
-//   3   renderer tri-fs     switch technique, as the panel's combo box does
+//   3   renderer tri-fs     switch technique (no-id too), as the panel's combo box does
 //   3   mode push           switch per-draw mode
 //   3.5 msaa 4              samples per pixel
 //   3.6 copies 3            model copies, as the panel's field does

@@ -1,4 +1,4 @@
-// viewer_blit.h - the commands between the scene pass and present: the scene's colour image
+// blit.h - the commands between the scene pass and present: the scene's colour image
 // onto the swapchain image, and the copy of the finished window image for screenshots.
 #pragma once
 
@@ -20,9 +20,6 @@ void recordSceneToWindow(VkCommandBuffer cmd, const vk::Image& scene, VkImage wi
 class WindowCapture {
   public:
     WindowCapture(vk::Device& device, VkExtent2D extent);
-    ~WindowCapture();
-    WindowCapture(const WindowCapture&) = delete;
-    WindowCapture& operator=(const WindowCapture&) = delete;
 
     VkExtent2D extent() const { return extent_; }
     // After the panel pass: the image goes from PRESENT_SRC_KHR to the buffer and back.
@@ -31,7 +28,6 @@ class WindowCapture {
     std::vector<uint8_t> rgba(VkFormat format) const;
 
   private:
-    vk::Device& device_;
     VkExtent2D extent_;
     vk::Buffer buffer_;
 };

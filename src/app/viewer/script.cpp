@@ -1,5 +1,5 @@
-// input_script.cpp - the script parser and the player that hands out due commands.
-#include "app/input_script.h"
+// script.cpp - the viewer script parser and the player that hands out due commands.
+#include "app/viewer/script.h"
 
 #include <algorithm>
 #include <cctype>
@@ -119,7 +119,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         break;
     }
     case ScriptOp::Renderer:
-        if (!render::findTechnique(command.text) || command.text == render::noIdTechnique().name)
+        if (!render::findTechnique(command.text))
             fail("unknown renderer '" + command.text + "' (known: " + render::techniqueNames() +
                  ")");
         break;

@@ -1,5 +1,5 @@
-// viewer_ui.cpp - the panel: renderer settings, scene, statistics, timing, picking, help.
-#include "app/viewer_ui.h"
+// panel.cpp - the panel: renderer settings, scene, statistics, timing, picking, help.
+#include "app/viewer/panel.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -20,7 +20,7 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "Esc                clear selection; if none, quit\n"
                                  "F                  fit the view to the scene\n"
                                  "Home               reset the view\n"
-                                 "R                  reload shaders from shaders/\n"
+                                 "R                  reload shaders, clear pipeline caches\n"
                                  "V                  vsync on/off\n"
                                  "F1                 hide/show this panel\n"
                                  "drop .gltf/.glb    open the model";
@@ -36,18 +36,15 @@ std::string bytes(uint64_t value) {
     return text;
 }
 
-// A combo over a registry (techniques or modes); returns the chosen index.
-template <typename Entries>
-int registryCombo(const char* label, int current, const Entries& entries) {
-    int chosen = current;
-    if (ImGui::BeginCombo(label, entries[size_t(current)].name)) {
-        for (size_t i = 0; i < entries.size(); ++i) {
-            if (ImGui::Selectable(entries[i].name, int(i) == current)) chosen = int(i);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entries[i].description);
-        }
-        ImGui::EndCombo();
+// A combo over a registry (techniques or modes), pointing `current` at the chosen entry.
+template <typename Entry>
+void registryCombo(const char* label, const Entry*& current, const std::vector<Entry>& entries) {
+    if (!ImGui::BeginCombo(label, current->name)) return;
+    for (const Entry& entry : entries) {
+        if (ImGui::Selectable(entry.name, &entry == current)) current = &entry;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.description);
     }
-    return chosen;
+    ImGui::EndCombo();
 }
 
 // A slider applied on release, not on every step of a drag: each value is its own pipeline
@@ -71,37 +68,49 @@ void sliderOnRelease(const char* label, T& value, T min, T max) {
     if (ImGui::IsItemDeactivatedAfterEdit()) value = shown;
 }
 
-void narySearch(render::NarySearch& n) {
-    sliderOnRelease("N-ary fan-out", n.n, 3u, 16u);
-    ImGui::Checkbox("N-ary initial guess", &n.guess);
-    sliderOnRelease("N-ary linear below", n.linearBelow, 0u, 64u);
-    sliderOnRelease("N-ary max steps", n.maxSteps, 1u, 64u);
+void sliderOnRelease(const char* label, uint32_t& value, render::Range range) {
+    sliderOnRelease(label, value, range.min, range.max);
 }
 
-void rendering(ViewerSettings& s, const PanelInfo& info) {
-    s.technique = registryCombo("renderer", s.technique, render::techniques());
-    s.mode = registryCombo("per-draw mode", s.mode, render::drawModes());
-    sliderOnRelease("search batch", s.searchBatch, 1u, 32u);
-    if (render::techniques()[size_t(s.technique)].narySearch) narySearch(s.nsearch);
-    sliderOnRelease("visible objects", s.visible, 0.0f, 1.0f);
-    ImGui::SliderFloat("part weight", &s.partWeight, 0.0f, 1.0f, "%.2f");
-    ImGui::Checkbox("colorize draws", &s.colorizeDraws);
-    ImGui::Checkbox("ignore materials", &s.ignoreMaterials);
+void narySearch(render::NarySearch& n) {
+    sliderOnRelease("N-ary fan-out", n.n, render::nsearchFanOutRange);
+    ImGui::Checkbox("N-ary initial guess", &n.guess);
+    sliderOnRelease("N-ary linear below", n.linearBelow, render::nsearchLinearRange);
+    sliderOnRelease("N-ary max steps", n.maxSteps, render::nsearchStepsRange);
+}
+
+void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
+    render::RenderSettings& s = settings.render;
+    render::PipelineKey& key = s.pipeline;
+    registryCombo("renderer", key.technique, render::techniques());
+    registryCombo("per-draw mode", key.mode, render::drawModes());
+    if (key.technique->readsSearchBatch())
+        sliderOnRelease("search batch", key.searchBatch, render::searchBatchRange);
+    if (key.technique->narySearch) narySearch(key.nsearch);
+    sliderOnRelease("visible objects", s.draws.visible, 0.0f, 1.0f);
+    ImGui::SliderFloat("part weight", &s.shading.partWeight, 0.0f, 1.0f, "%.2f");
+    ImGui::Checkbox("colorize draws", &s.shading.colorizeDraws);
+    ImGui::Checkbox("ignore materials", &s.shading.ignoreMaterials);
     char label[8];
-    std::snprintf(label, sizeof label, "%ux", s.msaa);
+    std::snprintf(label, sizeof label, "%ux", key.msaa);
     if (ImGui::BeginCombo("MSAA", label)) {
         for (uint32_t n = 1; n <= 8; n *= 2) {
             if (!(info.sampleCounts & n)) continue; // only what the device renders
             std::snprintf(label, sizeof label, "%ux", n);
-            if (ImGui::Selectable(label, n == s.msaa)) s.msaa = n;
+            if (ImGui::Selectable(label, n == key.msaa)) key.msaa = n;
         }
         ImGui::EndCombo();
     }
-    ImGui::Checkbox("animate (exploded view)", &s.animate);
-    ImGui::Checkbox("vsync (V)", &s.vsync);
+    ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
+    ImGui::Checkbox("vsync (V)", &view.vsync);
+    // What the last switch cost: a cached pipeline makes it a lookup.
+    const render::SwitchReport& last = info.lastSwitch;
+    ImGui::Text("last switch %.2f ms, pipeline %s%s", last.ms,
+                last.pipelineCached ? "cached" : "built", last.drawsKept ? ", draws kept" : "");
+    ImGui::Text("pipelines cached %zu (R clears)", info.cachedPipelines);
 }
 
-void sceneSection(ViewerSettings& s, const PanelInfo& info) {
+void sceneSection(SceneSettings& s, const PanelInfo& info) {
     ImGui::TextWrapped("%s", info.source.c_str());
     int copies = int(s.copies);
     if (ImGui::InputInt("model copies", &copies, 1, 4, ImGuiInputTextFlags_EnterReturnsTrue))
@@ -116,13 +125,13 @@ void sceneSection(ViewerSettings& s, const PanelInfo& info) {
             s.copyAxes = on ? (s.copyAxes | (1u << bit)) : (s.copyAxes & ~(1u << bit));
     }
     if (info.gltf) {
-        int parts = s.componentParts ? 1 : 0;
+        int parts = int(s.parts);
         ImGui::Text("parts");
         ImGui::SameLine();
-        ImGui::RadioButton("primitives", &parts, 0);
+        ImGui::RadioButton("primitives", &parts, int(scene::PartMode::Primitives));
         ImGui::SameLine();
-        ImGui::RadioButton("components", &parts, 1);
-        s.componentParts = parts == 1;
+        ImGui::RadioButton("components", &parts, int(scene::PartMode::Components));
+        s.parts = scene::PartMode(parts);
     }
     if (!info.scene) return;
     const scene::Scene& scene = *info.scene;
@@ -161,8 +170,7 @@ void partLine(const char* what, const PartLine& line) {
 
 } // namespace
 
-ViewerSettings drawPanel(const ViewerSettings& current, const PanelInfo& info) {
-    ViewerSettings s = current;
+void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     // As tall as its contents, but never taller than the window (it scrolls then).
     const float maxHeight = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
@@ -170,7 +178,7 @@ ViewerSettings drawPanel(const ViewerSettings& current, const PanelInfo& info) {
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (!ImGui::Begin("idview (F1 hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
-        return s;
+        return;
     }
     ImGui::PushItemWidth(-120.0f); // room for the labels right of the widgets
     ImGui::TextDisabled("%s", info.device.c_str());
@@ -179,8 +187,10 @@ ViewerSettings drawPanel(const ViewerSettings& current, const PanelInfo& info) {
         ImGui::TextWrapped("%s", info.error.c_str());
         ImGui::PopStyleColor();
     }
-    if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen)) rendering(s, info);
-    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) sceneSection(s, info);
+    if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen))
+        rendering(settings, view, info);
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
+        sceneSection(settings.scene, info);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
     if (ImGui::CollapsingHeader("Picking", ImGuiTreeNodeFlags_DefaultOpen)) {
         partLine("hovered", info.hovered);
@@ -189,7 +199,6 @@ ViewerSettings drawPanel(const ViewerSettings& current, const PanelInfo& info) {
     if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
     ImGui::PopItemWidth();
     ImGui::End();
-    return s;
 }
 
 } // namespace app

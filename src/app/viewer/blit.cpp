@@ -1,5 +1,5 @@
-// viewer_blit.cpp - layout transitions, the scene-to-window blit and the window readback.
-#include "app/viewer_blit.h"
+// blit.cpp - layout transitions, the scene-to-window blit and the window readback.
+#include "app/viewer/blit.h"
 
 #include <algorithm>
 #include <cstring>
@@ -37,10 +37,10 @@ void recordSceneToWindow(VkCommandBuffer cmd, const vk::Image& scene, VkImage wi
     // window changed size since the scene targets were made.
     VkImageBlit region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.srcOffsets[1] = {int32_t(scene.extent.width), int32_t(scene.extent.height), 1};
+    region.srcOffsets[1] = {int32_t(scene.extent().width), int32_t(scene.extent().height), 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstOffsets[1] = {int32_t(windowExtent.width), int32_t(windowExtent.height), 1};
-    vkCmdBlitImage(cmd, scene.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, window,
+    vkCmdBlitImage(cmd, scene.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, window,
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
     imageBarrier(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -49,16 +49,9 @@ void recordSceneToWindow(VkCommandBuffer cmd, const vk::Image& scene, VkImage wi
 }
 
 WindowCapture::WindowCapture(vk::Device& device, VkExtent2D extent)
-    : device_(device), extent_(extent) {
-    buffer_ = vk::createBuffer(
-        device, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-        "window screenshot");
-}
-
-WindowCapture::~WindowCapture() {
-    vk::destroyBuffer(device_, buffer_);
-}
+    : extent_(extent),
+      buffer_(vk::hostBuffer(device, VkDeviceSize(extent.width) * extent.height * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, "window screenshot")) {}
 
 void WindowCapture::record(VkCommandBuffer cmd, VkImage window) const {
     imageBarrier(cmd, window, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
@@ -68,7 +61,7 @@ void WindowCapture::record(VkCommandBuffer cmd, VkImage window) const {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent_.width, extent_.height, 1};
-    vkCmdCopyImageToBuffer(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer_.buffer, 1,
+    vkCmdCopyImageToBuffer(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer_.handle(), 1,
                            &region);
     // Back for present; the semaphore the submit signals covers the rest.
     imageBarrier(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
@@ -82,7 +75,7 @@ void WindowCapture::record(VkCommandBuffer cmd, VkImage window) const {
 
 std::vector<uint8_t> WindowCapture::rgba(VkFormat format) const {
     std::vector<uint8_t> pixels(size_t(extent_.width) * extent_.height * 4);
-    std::memcpy(pixels.data(), buffer_.mapped, pixels.size());
+    std::memcpy(pixels.data(), buffer_.mapped(), pixels.size());
     const bool bgra = format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
     for (size_t i = 0; i < pixels.size(); i += 4) {
         if (bgra) std::swap(pixels[i], pixels[i + 2]);

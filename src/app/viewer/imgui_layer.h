@@ -1,4 +1,4 @@
-// viewer_imgui.h - Dear ImGui (1.86, Debian's libimgui) drawn over the scene on the swapchain
+// imgui_layer.h - Dear ImGui (1.86, Debian's libimgui) drawn over the scene on the swapchain
 // image: its GLFW and Vulkan backends, the descriptor pool its font texture needs, a render
 // pass that keeps what the blit put there (loadOp LOAD) and ends in PRESENT_SRC, and one
 // framebuffer per swapchain image.
@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "vk/context.h"
+#include "vk/handle.h"
 #include "vk/swapchain.h"
 
 struct GLFWwindow;
@@ -24,9 +25,9 @@ class ImGuiLayer {
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-    // Around Swapchain::recreate: the framebuffers hold the old image views.
-    void releaseFramebuffers();
+    // After Swapchain::recreate: the framebuffers held the old image views.
     void createFramebuffers(const vk::Swapchain& swapchain);
+    void releaseFramebuffers() { framebuffers_.clear(); }
 
     // Starts an ImGui frame. The cursor comes from the viewer's input state (window
     // coordinates, nullopt outside the window) instead of the backend polling the window
@@ -37,14 +38,21 @@ class ImGuiLayer {
     void record(VkCommandBuffer cmd, uint32_t index) const;
 
   private:
-    void release();
+    // Dear ImGui's context and backends, shut down in reverse order of their start.
+    struct Backends {
+        bool context = false, glfw = false, vulkan = false;
+        Backends() = default;
+        Backends(const Backends&) = delete;
+        Backends& operator=(const Backends&) = delete;
+        ~Backends();
+    };
 
     vk::Device& device_;
-    VkRenderPass pass_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    std::vector<VkFramebuffer> framebuffers_;
+    vk::Handle<VkRenderPass> pass_;
+    vk::Handle<VkDescriptorPool> pool_;
+    Backends backends_; // after the pool and pass: shut down before they go
+    std::vector<vk::Handle<VkFramebuffer>> framebuffers_;
     VkExtent2D extent_{};
-    bool context_ = false, glfw_ = false, vulkan_ = false; // what release() must shut down
 };
 
 } // namespace app

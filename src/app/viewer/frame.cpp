@@ -1,0 +1,163 @@
+// frame.cpp - one frame of the viewer, step by step: the panel, the settings it changed,
+// the slot, the pick, the swapchain image, the scene pass, the window image, present, and
+// the screenshot and title that follow.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <numeric>
+
+#include <imgui.h>
+
+#include "app/headless.h" // cameraFrame
+#include "app/image_io.h"
+#include "app/viewer/viewer.h"
+#include "scene/explode.h"
+
+namespace app {
+namespace {
+
+bool isGltf(std::string path) {
+    std::transform(path.begin(), path.end(), path.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return path.ends_with(".gltf") || path.ends_with(".glb");
+}
+
+double mean(const std::vector<double>& values, size_t last) {
+    const size_t n = std::min(values.size(), last);
+    return n ? std::accumulate(values.end() - long(n), values.end(), 0.0) / double(n) : 0.0;
+}
+
+} // namespace
+
+void Viewer::drawFrame(double seconds) {
+    drawPanel();
+    applySettings();
+    render::FrameSlot& slot = slots_.begin(frameNumber_);
+    if (input_.readPick(slots_.latestPick())) selectionChanged();
+    const auto image = presenter_.acquire(frameNumber_);
+    if (!image) return; // out of date: the next frame makes a new swapchain first
+    recordScene(slot, frameParams(seconds));
+    std::string screenshot = std::exchange(screenshotPath_, {});
+    if (!screenshot.empty() && !presenter_.canCapture()) {
+        scene_.fail("screenshot: this window's images cannot be copied from");
+        screenshot.clear();
+    }
+    presenter_.record(slot.cmd, *image, scene_.targets()->color(), !screenshot.empty());
+    presenter_.present(slots_, slot, *image);
+    if (!screenshot.empty()) saveScreenshot(screenshot);
+    ++frameNumber_;
+    updateTitle(seconds, false);
+}
+
+// The panel first: what it changes applies before this frame records anything.
+void Viewer::drawPanel() {
+    presenter_.beginPanel(input_.cursorInWindow());
+    if (view_.panelVisible) app::drawPanel(settings_, view_, panelInfo());
+    ImGui::Render();
+}
+
+void Viewer::applySettings() {
+    follow(scene_.apply(settings_.scene, settings_.render));
+    scene_.resize(presenter_.extent());
+}
+
+void Viewer::openDrops() {
+    for (const std::string& path : input_.takeDrops()) {
+        if (isGltf(path))
+            follow(scene_.open(path, settings_.scene));
+        else
+            scene_.fail("'" + path + "' is not a glTF model (.gltf or .glb)");
+    }
+}
+
+// A new scene: part IDs name other parts now. New copies keep the view, a new model opens
+// at its own.
+void Viewer::follow(SceneState::Change change) {
+    if (change == SceneState::Change::None) return;
+    input_.forgetParts();
+    const scene::Scene& scene = scene_.scene();
+    if (change == SceneState::Change::Copies) {
+        camera_.setBounds(scene.bounds()); // more copies: same view, planes follow
+        return;
+    }
+    scene::Camera initial = initialCamera(scene_.loaded(), aspect());
+    if (scene_.loaded().settings.copies > 1) // copy 0's opening view, drawn back to take in all
+        initial = scene::fitCamera(scene.bounds(), initial.eye - initial.target, initial.up,
+                                   initial.fovY, aspect());
+    camera_ = OrbitCamera(initial, scene.bounds());
+}
+
+render::FrameParams Viewer::frameParams(double seconds) {
+    const VkExtent2D extent = scene_.targets()->extent();
+    const bool animate = settings_.animation.animate;
+    // The exploded view pushes objects out to twice their distance from the centre.
+    render::FrameParams params = cameraFrame(camera_.camera(animate ? 2.0f : 1.0f), extent);
+    params.time = float(seconds);
+    params.pickPixel = input_.pickPixel(extent, frameNumber_);
+    params.selectedPart = input_.selection().selected().value_or(gpu::BACKGROUND_ID);
+    params.explode = animate ? scene::explodeLoop(float(seconds)) : 0.0f;
+    return params;
+}
+
+void Viewer::recordScene(render::FrameSlot& slot, const render::FrameParams& params) {
+    const auto start = Clock::now();
+    scene_.renderer().record(slot, scene_.targets(), params);
+    cpuRecordMs_.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    if (cpuRecordMs_.size() > 30) cpuRecordMs_.pop_front();
+}
+
+// The copy is done once the frame's fence has signalled: a screenshot waits for it.
+void Viewer::saveScreenshot(const std::string& path) {
+    slots_.finish();
+    const VkExtent2D size = presenter_.capturedExtent();
+    writePng(path, size.width, size.height, presenter_.capturedRgba());
+    events_.say("screenshot: " + path + " (" + std::to_string(size.width) + "x" +
+                std::to_string(size.height) + ")");
+}
+
+PanelInfo Viewer::panelInfo() const {
+    PanelInfo info;
+    info.device = device_.info().name;
+    info.source = scene_.loaded().source;
+    info.gltf = isGltf(info.source);
+    info.error = scene_.error();
+    info.scene = &scene_.scene();
+    info.stats = scene_.renderer().stats();
+    info.lastSwitch = scene_.renderer().lastSwitch();
+    info.cachedPipelines = scene_.renderer().cachedPipelines();
+    info.idBytes = scene_.idBytes();
+    info.sampleCounts = scene_.sampleCounts();
+    info.fps = fps_;
+    const auto& gpu = slots_.gpuMilliseconds();
+    info.gpuMs = mean(gpu, 30);
+    info.cpuRecordMs = mean(std::vector<double>(cpuRecordMs_.begin(), cpuRecordMs_.end()), 30);
+    for (size_t i = gpu.size() - std::min<size_t>(gpu.size(), 200); i < gpu.size(); ++i)
+        info.gpuHistory.push_back(float(gpu[i]));
+    auto describe = [&](std::optional<uint32_t> part, float depth) {
+        return PartLine{part ? scene::describePart(scene_.scene(), *part) : std::nullopt, depth};
+    };
+    info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
+    info.selected = describe(input_.selection().selected(), input_.selectedDepth());
+    return info;
+}
+
+// A few times a second for fps and GPU time; at once when what it names changes.
+void Viewer::updateTitle(double seconds, bool now) {
+    const render::PipelineKey& key = scene_.renderer().settings().pipeline;
+    const std::string what = std::string(key.technique->name) + " + " + key.mode->name +
+                             " - vsync " + presenter_.vsyncState();
+    now = now || title_.find("idview - " + what + " - ") != 0;
+    if (!now && seconds - titleTime_ < 0.25) return;
+    if (seconds > titleTime_) fps_ = double(frameNumber_ - titleFrame_) / (seconds - titleTime_);
+    titleTime_ = seconds;
+    titleFrame_ = frameNumber_;
+    char text[256];
+    std::snprintf(text, sizeof text, "idview - %s - %.0f fps - GPU %.2f ms", what.c_str(), fps_,
+                  mean(slots_.gpuMilliseconds(), 30));
+    if (title_ == text) return;
+    title_ = text;
+    window_.setTitle(title_);
+    events_.say("title: " + title_);
+}
+
+} // namespace app

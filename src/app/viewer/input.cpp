@@ -1,0 +1,246 @@
+// input.cpp - keys, mouse, dropped files, picking and scripted input.
+#include "app/viewer/input.h"
+
+#include <algorithm>
+#include <utility>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <imgui.h>
+
+#include "app/viewer/viewer.h"
+
+namespace app {
+namespace {
+
+// A left click is a press and release this close together; farther is a drag.
+constexpr double clickSlop = 4.0;
+
+} // namespace
+
+Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
+    : viewer_(viewer), window_(window), script_(std::move(script)) {}
+
+void Input::onKey(int key, int scancode, int action, int mods) {
+    ImGui_ImplGlfw_KeyCallback(window_, key, scancode, action, mods);
+    if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
+    ViewSettings& view = viewer_.view();
+    switch (key) {
+    case GLFW_KEY_V:
+        view.vsync = !view.vsync; // the next frame makes a swapchain with it
+        break;
+    case GLFW_KEY_F:
+        viewer_.camera().fit(viewer_.aspect());
+        break;
+    case GLFW_KEY_R:
+        viewer_.reloadShaders();
+        break;
+    case GLFW_KEY_HOME:
+        viewer_.camera().resetView();
+        break;
+    case GLFW_KEY_F1:
+        view.panelVisible = !view.panelVisible;
+        break;
+    case GLFW_KEY_ESCAPE:
+        if (selection_.escape())
+            viewer_.selectionChanged();
+        else
+            viewer_.quit(); // nothing selected: Esc closes
+        break;
+    default:
+        break;
+    }
+}
+
+void Input::onCursor(double x, double y) {
+    const glm::dvec2 position(x, y);
+    const glm::dvec2 delta = position - cursor_;
+    cursor_ = position;
+    if (!drag_) return;
+    drag_->moved = std::max(drag_->moved, glm::length(position - drag_->start));
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    if (drag_->pan)
+        viewer_.camera().pan(glm::vec2(delta), float(height));
+    else
+        viewer_.camera().orbit(glm::vec2(delta));
+}
+
+void Input::onButton(int button, int action, int mods) {
+    ImGui_ImplGlfw_MouseButtonCallback(window_, button, action, mods);
+    if (action == GLFW_PRESS) {
+        if (drag_ || ImGui::GetIO().WantCaptureMouse) return; // the panel's, or a second button
+        const bool pan = button != GLFW_MOUSE_BUTTON_LEFT || (mods & GLFW_MOD_SHIFT);
+        drag_ = Drag{button, pan, cursor_, 0.0};
+    } else if (action == GLFW_RELEASE && drag_ && drag_->button == button) {
+        const bool click = !drag_->pan && drag_->moved < clickSlop;
+        drag_.reset();
+        // The pick of the next frame (at this cursor position) decides what the click hits.
+        if (click) pendingClick_ = viewer_.nextFrame();
+    }
+}
+
+void Input::onScroll(double dx, double dy) {
+    ImGui_ImplGlfw_ScrollCallback(window_, dx, dy);
+    if (!ImGui::GetIO().WantCaptureMouse) viewer_.camera().zoom(float(dy));
+}
+
+void Input::onDrop(const std::string& path) {
+    drops_.push_back(path); // opened between frames, not inside GLFW's event processing
+}
+
+void Input::fail(std::exception_ptr error) {
+    if (!failure_) failure_ = error;
+    viewer_.quit();
+}
+
+std::vector<std::string> Input::takeDrops() {
+    return std::exchange(drops_, {});
+}
+
+std::optional<glm::vec2> Input::cursorInWindow() const {
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    if (cursor_.x < 0 || cursor_.y < 0 || cursor_.x >= width || cursor_.y >= height)
+        return std::nullopt;
+    return glm::vec2(cursor_);
+}
+
+std::optional<glm::uvec2> Input::pickPixel(VkExtent2D extent, uint64_t frame) {
+    std::optional<glm::uvec2> pixel;
+    const auto cursor = cursorInWindow();
+    if (cursor && !ImGui::GetIO().WantCaptureMouse) { // not over the panel
+        int width = 0, height = 0;
+        glfwGetWindowSize(window_, &width, &height);
+        // Window coordinates to scene image pixels (they differ on high-DPI screens).
+        const glm::uvec2 p(cursor->x * float(extent.width) / float(width),
+                           cursor->y * float(extent.height) / float(height));
+        if (p.x < extent.width && p.y < extent.height) pixel = p;
+    }
+    if (!pixel)
+        pickingSince_.reset();
+    else if (!pickingSince_)
+        pickingSince_ = frame;
+    return pixel;
+}
+
+bool Input::readPick(const std::optional<render::PickReading>& pick) {
+    // Picks arrive a frame or two late; only those since the cursor came over the scene
+    // count, so an old pick never shows as the hover after leaving the panel.
+    if (!pickingSince_) {
+        selection_.hover(std::nullopt);
+        pendingClick_.reset();
+        return false;
+    }
+    if (pick && pick->frame >= *pickingSince_) {
+        selection_.hover(pick->part);
+        hoveredDepth_ = pick->depth;
+    }
+    // A click selects what was under the cursor in the frame after the click.
+    if (pendingClick_ && pick && pick->frame >= *pendingClick_) {
+        selection_.click();
+        selectedDepth_ = hoveredDepth_;
+        pendingClick_.reset();
+        return true;
+    }
+    return false;
+}
+
+void Input::forgetParts() {
+    selection_.clear();
+    pendingClick_.reset();
+    pickingSince_.reset();
+}
+
+void Input::runScript(double seconds) {
+    for (const ScriptCommand& command : script_.due(seconds)) queue(command);
+    while (!steps_.empty()) {
+        const Step next = std::move(steps_.front());
+        steps_.pop_front();
+        next.run();
+        if (next.endsFrame) break;
+    }
+}
+
+std::optional<double> Input::wakeIn(double seconds) const {
+    if (!steps_.empty()) return 0.05;
+    if (auto next = script_.nextTime()) return std::clamp(*next - seconds, 0.01, 1.0);
+    return std::nullopt;
+}
+
+void Input::queue(const ScriptCommand& c) {
+    const auto& v = c.values;
+    // Settings change in place, as the panel's widgets change them; the frame applies them.
+    auto settings = [this](auto change) { return [this, change] { change(viewer_.settings()); }; };
+    auto press = [this](int action) {
+        return [this, action] { onButton(GLFW_MOUSE_BUTTON_LEFT, action, 0); };
+    };
+    switch (c.op) {
+    case ScriptOp::Key:
+        step(
+            [this, key = c.key] {
+                const int code = glfwGetKeyScancode(key);
+                onKey(key, code, GLFW_PRESS, 0);
+                onKey(key, code, GLFW_RELEASE, 0);
+            },
+            true); // a frame between key presses, as a hand gives (V twice must show off)
+        break;
+    case ScriptOp::Move:
+        step([this, v] { onCursor(v[0], v[1]); }, true);
+        break;
+    case ScriptOp::Click:
+        // Move first and let a frame pass, so the panel knows whether it is under the cursor.
+        step([this, v] { onCursor(v[0], v[1]); }, true);
+        step(press(GLFW_PRESS), false);
+        step(press(GLFW_RELEASE), true);
+        break;
+    case ScriptOp::Drag:
+        step([this, v] { onCursor(v[0], v[1]); }, true);
+        step(press(GLFW_PRESS), true);
+        for (int i = 1; i <= 8; ++i) { // a hand's drag arrives as several moves
+            const double t = i / 8.0;
+            step([this, v, t] { onCursor(v[0] + (v[2] - v[0]) * t, v[1] + (v[3] - v[1]) * t); },
+                 true);
+        }
+        step(press(GLFW_RELEASE), true);
+        break;
+    case ScriptOp::Scroll:
+        step([this, v] { onScroll(0.0, v[0]); }, false);
+        break;
+    case ScriptOp::Resize:
+        step([this, v] { glfwSetWindowSize(window_, int(v[0]), int(v[1])); }, true);
+        break;
+    case ScriptOp::Renderer: // names were checked when the script was parsed
+        step(settings([t = render::findTechnique(c.text)](Options& s) {
+                 s.render.pipeline.technique = t;
+             }),
+             true);
+        break;
+    case ScriptOp::Mode:
+        step(settings(
+                 [m = render::findDrawMode(c.text)](Options& s) { s.render.pipeline.mode = m; }),
+             true);
+        break;
+    case ScriptOp::Copies:
+        step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);
+        break;
+    case ScriptOp::Msaa:
+        step(settings([n = uint32_t(v[0])](Options& s) { s.render.pipeline.msaa = n; }), true);
+        break;
+    case ScriptOp::Screenshot:
+        step([this, path = c.text] { viewer_.screenshot(path); }, true);
+        break;
+    case ScriptOp::Drop:
+        step([this, path = c.text] { onDrop(path); }, true);
+        break;
+    case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
+        for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
+        break;
+    case ScriptOp::Quit:
+        step([this] { viewer_.quit(); }, true);
+        break;
+    }
+}
+
+} // namespace app

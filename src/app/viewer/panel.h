@@ -1,0 +1,52 @@
+// panel.h - the viewer's ImGui panel. It edits the viewer's settings structs in place (the
+// same ones the command line filled) and reads a snapshot of the viewer's state; the viewer
+// then applies whatever differs from what is drawn. The panel holds no state of its own.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "app/cli.h"
+#include "render/draw_list.h"
+#include "render/renderer.h"
+#include "scene/part_data.h"
+#include "scene/scene.h"
+
+namespace app {
+
+// What only the window has.
+struct ViewSettings {
+    bool vsync = true;
+    bool panelVisible = true;
+};
+
+// A part under the cursor or selected, as the pick reported it.
+struct PartLine {
+    std::optional<scene::PartInfo> part;
+    float depth = 1.0f;
+};
+
+struct PanelInfo {
+    std::string device;
+    std::string source; // model file or scene spec
+    bool gltf = false;  // the parts mode applies
+    std::string error;  // the last failed action's message, shown until the next success
+    const scene::Scene* scene = nullptr;
+    render::RenderStats stats;
+    render::SwitchReport lastSwitch;
+    size_t cachedPipelines = 0;
+    scene::IdDataBytes idBytes;
+    VkSampleCountFlags sampleCounts = VK_SAMPLE_COUNT_1_BIT; // offered by the device
+    double fps = 0.0, gpuMs = 0.0, cpuRecordMs = 0.0;
+    std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
+    PartLine hovered, selected;
+};
+
+// Draws the panel; the user's changes land in `settings` (scene, render, animation) and `view`.
+void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info);
+
+} // namespace app

@@ -1,0 +1,68 @@
+// presenter.h - what shows a frame in the window: the swapchain (remade on resize, when the
+// driver says it is out of date or suboptimal, and when vsync changes), one acquire semaphore
+// per frame slot, the scene image blitted onto the acquired image, the ImGui panel over it,
+// present, and the copy of the presented image for screenshots.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/viewer/blit.h"
+#include "app/viewer/imgui_layer.h"
+#include "app/viewer/window.h"
+#include "render/frame_slots.h"
+#include "vk/swapchain.h"
+
+namespace app {
+
+class Presenter {
+  public:
+    // Throws vk::Error when the window has no area to render to.
+    Presenter(Window& window, const vk::Instance& instance, vk::Device& device,
+              VkSurfaceKHR surface);
+
+    // Remakes the swapchain if the window's size or `vsync` changed or the last acquire or
+    // present asked for it. False while the window has no area (minimised).
+    bool ready(bool vsync);
+    // Starts the panel's ImGui frame; the cursor comes from the viewer's input.
+    void beginPanel(std::optional<glm::vec2> cursor) { panel_->newFrame(cursor); }
+
+    struct Image {
+        uint32_t index = 0;
+        VkSemaphore acquired = VK_NULL_HANDLE; // the slot's, signalled by the acquire
+    };
+    // The next swapchain image for frame `frameNumber` (its slot's semaphore is free: the
+    // slot's fence has signalled). nullopt when the swapchain is out of date; the next
+    // ready() remakes it.
+    std::optional<Image> acquire(uint64_t frameNumber);
+    // After the scene pass: the scene's colour onto the image, the panel over it, and with
+    // `capture` a copy of the result for capturedRgba().
+    void record(VkCommandBuffer cmd, const Image& image, const vk::Image& scene, bool capture);
+    // Submits the slot (waiting for the acquire at the blit) and presents the image.
+    void present(render::FrameSlots& slots, render::FrameSlot& slot, const Image& image);
+
+    // The last capture, once its frame's fence has signalled: RGBA8, top row first.
+    std::vector<uint8_t> capturedRgba() const;
+    VkExtent2D capturedExtent() const { return capture_ ? capture_->extent() : VkExtent2D{}; }
+    bool canCapture() const { return swapchain_.copyable(); }
+    VkExtent2D extent() const { return swapchain_.extent(); }
+    // "on", "off", or "off (FIFO only)" where the surface offers nothing but FIFO.
+    std::string vsyncState() const;
+
+  private:
+    Window& window_;
+    vk::Device& device_;
+    vk::Swapchain swapchain_;
+    std::array<vk::Handle<VkSemaphore>, render::FrameSlots::count> acquired_;
+    std::unique_ptr<ImGuiLayer> panel_;
+    std::unique_ptr<WindowCapture> capture_;
+    bool vsync_ = true;
+    bool stale_ = false; // the driver asked for a new swapchain
+};
+
+} // namespace app

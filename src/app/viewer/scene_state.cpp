@@ -1,0 +1,148 @@
+// scene_state.cpp - applying settings: renderer configuration, MSAA targets, model copies and
+// opening scenes. A failure keeps what worked before.
+#include "app/viewer/scene_state.h"
+
+#include "scene/copies.h"
+#include "vk/check.h"
+
+namespace app {
+
+SceneState::SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, const Events& events,
+                       const Options& settings, VkExtent2D extent)
+    : device_(device), events_(events), renderer_(device, compiler),
+      sampleCounts_(render::supportedSampleCounts(device)) {
+    const uint32_t msaa = settings.render.pipeline.msaa;
+    targets_ = std::make_shared<render::SceneTargets>(device, renderer_.pass(msaa), extent);
+    // At start, as headless: a scene that cannot be opened ends the run with its message.
+    load(settings.scene, settings.render);
+}
+
+void SceneState::fail(const std::string& message) {
+    error_ = message; // shown in the panel
+    Events::problem(message);
+}
+
+SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettings& render) {
+    Change change = Change::None;
+    const SceneSettings& drawn = base_.settings;
+    if (wanted.model != drawn.model || wanted.builtin != drawn.builtin ||
+        wanted.parts != drawn.parts) {
+        if (openScene(wanted))
+            change = Change::Model;
+        else
+            wanted = drawn; // the scene drawn stays, and so do its settings
+    }
+    if (wanted.copies != drawn.copies || wanted.copyAxes != drawn.copyAxes) {
+        if (setCopies(wanted.copies, wanted.copyAxes))
+            change = std::max(change, Change::Copies);
+        else
+            wanted = drawn;
+    }
+    if (render != renderer_.settings()) configure(render);
+    return change;
+}
+
+SceneState::Change SceneState::open(const std::string& path, SceneSettings& settings) {
+    SceneSettings wanted = settings;
+    wanted.model = path;
+    wanted.builtin.clear();
+    if (!openScene(wanted)) return Change::None;
+    settings = wanted;
+    return Change::Model;
+}
+
+bool SceneState::openScene(const SceneSettings& settings) {
+    try {
+        load(settings, renderer_.settings());
+    } catch (const std::exception& e) {
+        fail(e.what()); // one line naming the file; the previous scene stays
+        return false;
+    }
+    events_.say("opened: " + base_.source + " (" + std::to_string(scene().objects.size()) +
+                " objects, " + std::to_string(scene().uniquePartCount()) + " parts, " +
+                std::to_string(scene().drawnTriangleCount()) + " triangles)");
+    return true;
+}
+
+// The model alone is loaded; the copies are made here, so changing them needs no reload.
+void SceneState::load(const SceneSettings& settings, const render::RenderSettings& render) {
+    SceneSettings single = settings;
+    single.copies = 1;
+    LoadedScene loaded = loadScene(single);
+    std::optional<scene::Scene> copies;
+    if (settings.copies > 1) {
+        checkCopiesFit(loaded.scene, settings.copies);
+        copies = scene::replicate(loaded.scene, settings.copies, settings.copyAxes);
+    }
+    renderer_.setScene(copies ? *copies : loaded.scene, render);
+    for (const auto& warning : loaded.warnings)
+        Events::problem("warning: " + loaded.source + ": " + warning);
+    loaded.settings = settings;
+    base_ = std::move(loaded);
+    copies_ = std::move(copies);
+    sceneChanged();
+}
+
+// A count that cannot fit (IDs, host or GPU memory) is refused in the panel; the scene drawn
+// before stays (the renderer uploads the new scene before letting go of the old).
+bool SceneState::setCopies(uint32_t copies, uint32_t axes) {
+    std::optional<scene::Scene> next;
+    try {
+        if (copies > 1) {
+            checkCopiesFit(base_.scene, copies);
+            next = scene::replicate(base_.scene, copies, axes);
+        }
+        renderer_.setScene(next ? *next : base_.scene, renderer_.settings());
+    } catch (const std::exception& e) {
+        fail(e.what());
+        return false;
+    }
+    copies_ = std::move(next);
+    base_.settings.copies = copies;
+    base_.settings.copyAxes = axes;
+    sceneChanged();
+    return true;
+}
+
+void SceneState::configure(render::RenderSettings& render) {
+    const uint32_t msaa = render.pipeline.msaa;
+    try {
+        // New targets first: the renderer switches only once everything it needs is there.
+        std::shared_ptr<const render::SceneTargets> targets = targets_;
+        if (uint32_t(targets->pass().samples()) != msaa)
+            targets = std::make_shared<render::SceneTargets>(device_, renderer_.pass(msaa),
+                                                             targets_->extent());
+        renderer_.configure(scene(), render);
+        targets_ = std::move(targets);
+    } catch (const std::exception& e) {
+        fail(e.what());
+        render = renderer_.settings(); // what is drawn, so the panel shows it
+        return;
+    }
+    idBytes_ = scene::idDataBytes(scene(), render.pipeline.searchBatch);
+    error_.clear();
+}
+
+void SceneState::resize(VkExtent2D extent) {
+    if (targets_->extent().width == extent.width && targets_->extent().height == extent.height)
+        return;
+    targets_ = std::make_shared<render::SceneTargets>(device_, targets_->pass(), extent);
+}
+
+void SceneState::reloadShaders() {
+    try {
+        renderer_.reloadShaders();
+    } catch (const vk::ShaderError& e) {
+        fail(e.what()); // the last good pipeline keeps drawing
+        return;
+    }
+    error_.clear();
+    events_.say("shaders reloaded");
+}
+
+void SceneState::sceneChanged() {
+    idBytes_ = scene::idDataBytes(scene(), renderer_.settings().pipeline.searchBatch);
+    error_.clear();
+}
+
+} // namespace app

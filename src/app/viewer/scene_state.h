@@ -1,0 +1,68 @@
+// scene_state.h - what the viewer draws: the scene as loaded, its copies, the renderer and
+// the targets it renders into. apply() brings them in line with the settings the panel,
+// keys and scripts edit; a change that fails keeps what worked before, puts the settings
+// back to it and leaves its message in error(). Nothing here waits for the GPU: what frames
+// in flight still use lives on in their slots.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/cli.h"
+#include "app/scene_source.h"
+#include "app/viewer/events.h"
+#include "render/renderer.h"
+#include "render/targets.h"
+#include "scene/part_data.h"
+
+namespace app {
+
+class SceneState {
+  public:
+    // Opens the scene `settings.scene` names and configures the renderer for
+    // `settings.render`. Throws at start-up, as headless would (exit 1).
+    SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, const Events& events,
+               const Options& settings, VkExtent2D extent);
+
+    enum class Change { None, Copies, Model }; // what the camera and selection must follow
+    // Applies what differs between `wanted` and what is drawn. What fails is put back in
+    // `wanted`, so the panel shows what is drawn.
+    Change apply(SceneSettings& wanted, render::RenderSettings& render);
+    // Opens another model (a dropped file) with the current parts mode and copies.
+    Change open(const std::string& path, SceneSettings& settings);
+    // Targets at the window's new size.
+    void resize(VkExtent2D extent);
+    // R: shaders from disk, caches cleared; a compile error keeps the last good pipeline.
+    void reloadShaders();
+
+    const scene::Scene& scene() const { return copies_ ? *copies_ : base_.scene; }
+    const LoadedScene& loaded() const { return base_; }
+    const render::Renderer& renderer() const { return renderer_; }
+    render::Renderer& renderer() { return renderer_; }
+    const std::shared_ptr<const render::SceneTargets>& targets() const { return targets_; }
+    const scene::IdDataBytes& idBytes() const { return idBytes_; }
+    VkSampleCountFlags sampleCounts() const { return sampleCounts_; } // the device renders
+    // The last failed action's message, until the next success.
+    const std::string& error() const { return error_; }
+    void fail(const std::string& message);
+
+  private:
+    bool openScene(const SceneSettings& settings); // false: refused, the error is kept
+    void load(const SceneSettings& settings, const render::RenderSettings& render); // throws
+    bool setCopies(uint32_t copies, uint32_t axes);
+    void configure(render::RenderSettings& render);
+    void sceneChanged();
+
+    vk::Device& device_;
+    const Events& events_;
+    render::Renderer renderer_;
+    std::shared_ptr<const render::SceneTargets> targets_;
+    LoadedScene base_;                   // as loaded, one copy (its settings: what is drawn)
+    std::optional<scene::Scene> copies_; // with model copies, when more than one
+    scene::IdDataBytes idBytes_;
+    VkSampleCountFlags sampleCounts_;
+    std::string error_;
+};
+
+} // namespace app

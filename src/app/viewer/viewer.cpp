@@ -1,0 +1,94 @@
+// viewer.cpp - the viewer's parts put together, the loop around the frames, and what input
+// asks of the viewer as a whole.
+#include "app/viewer/viewer.h"
+
+#include "app/headless.h" // exitCode
+#include "scene/part_data.h"
+#include "vk/check.h"
+
+namespace app {
+namespace {
+
+vk::DeviceInfo presentableDevice(const vk::Instance& instance, const std::string& request,
+                                 VkSurfaceKHR surface) {
+    const vk::DeviceInfo info = vk::chooseDevice(instance.devices(), request);
+    vk::checkPresentSupport(info, surface);
+    return info;
+}
+
+} // namespace
+
+Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script)
+    : settings_(options), window_(window), events_(options.printEvents),
+      surface_(instance, window.createSurface(instance)),
+      device_(instance, presentableDevice(instance, options.device, surface_.handle()),
+              {VK_KHR_SWAPCHAIN_EXTENSION_NAME}),
+      compiler_(vk::ShaderCompiler::locate(options.shaderDir)),
+      presenter_(window, instance, device_, surface_.handle()),
+      scene_(device_, compiler_, events_, options, presenter_.extent()), slots_(device_),
+      input_(*this, window.handle(), std::move(script)) {
+    follow(SceneState::Change::Model);
+    window.listen(input_);
+}
+
+Viewer::~Viewer() {
+    window_.stopListening(); // the window outlives the viewer: no callback may reach it
+}
+
+double Viewer::elapsed() const {
+    return start_ ? std::chrono::duration<double>(Clock::now() - *start_).count() : 0.0;
+}
+
+float Viewer::aspect() const {
+    const VkExtent2D e = presenter_.extent();
+    return e.height ? float(e.width) / float(e.height)
+                    : float(settings_.width) / float(settings_.height);
+}
+
+void Viewer::reloadShaders() {
+    scene_.reloadShaders();
+}
+
+void Viewer::selectionChanged() const {
+    const auto part = input_.selection().selected();
+    const auto info = part ? scene::describePart(scene_.scene(), *part) : std::nullopt;
+    if (!info) {
+        events_.say("selected: none");
+        return;
+    }
+    events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
+                std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
+                ")");
+}
+
+void Viewer::run() {
+    while (!window_.closing() && !input_.failure()) {
+        window_.pollEvents();
+        openDrops();
+        if (!presenter_.ready(view_.vsync)) { // minimised: render nothing, sleep until woken
+            window_.waitEvents(input_.wakeIn(elapsed()));
+            continue;
+        }
+        if (!start_) start_ = Clock::now();
+        input_.runScript(elapsed());
+        if (window_.closing() || input_.failure()) break;
+        drawFrame(elapsed());
+    }
+    slots_.finish();
+    if (input_.failure()) std::rethrow_exception(input_.failure());
+}
+
+int runViewer(const Options& options) {
+    // A bad script fails before any window opens.
+    ScriptPlayer script(options.script.empty() ? std::vector<ScriptCommand>{}
+                                               : loadScript(options.script));
+    Window window(options.width, options.height);
+    vk::Instance instance({options.validation, window.vulkanExtensions(), options.syncValidation});
+    {
+        Viewer viewer(options, window, instance, std::move(script));
+        viewer.run();
+    }
+    return exitCode(instance.validationMessages());
+}
+
+} // namespace app

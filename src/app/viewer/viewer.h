@@ -1,0 +1,90 @@
+// viewer.h - the interactive window: idview without --headless. The Viewer puts together
+// the window and presentation (window.h, presenter.h), the scene and its settings
+// (scene_state.h), the user's input (input.h) and the panel (panel.h), and runs the frames:
+// each one a short recipe of named steps (frame.cpp).
+#pragma once
+
+#include <chrono>
+#include <deque>
+#include <optional>
+#include <string>
+
+#include "app/cli.h"
+#include "app/viewer/events.h"
+#include "app/viewer/input.h"
+#include "app/viewer/orbit_camera.h"
+#include "app/viewer/panel.h"
+#include "app/viewer/presenter.h"
+#include "app/viewer/scene_state.h"
+#include "app/viewer/window.h"
+#include "render/frame_slots.h"
+#include "vk/shader_compiler.h"
+#include "vk/swapchain.h"
+
+namespace app {
+
+// Opens the window on the options' scene and runs until it is closed (window close button,
+// Esc with nothing selected, or a script's quit). Returns the exit code: 0, or 3 when the
+// validation layer reported anything. Throws vk::Error and friends with a message for people
+// (no display, no device that can present, a model that cannot be loaded at start).
+int runViewer(const Options& options);
+
+class Viewer {
+  public:
+    Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    void run();
+
+    // What input acts on.
+    Options& settings() { return settings_; } // applied at the start of the next frame
+    ViewSettings& view() { return view_; }
+    OrbitCamera& camera() { return camera_; }
+    float aspect() const;
+    uint64_t nextFrame() const { return frameNumber_; }
+    void reloadShaders(); // R
+    void screenshot(const std::string& path) { screenshotPath_ = path; }
+    void selectionChanged() const; // tells the event lines
+    void quit() { window_.close(); }
+
+  private:
+    using Clock = std::chrono::steady_clock;
+
+    // frame.cpp: the steps of one frame.
+    void drawFrame(double seconds);
+    void drawPanel();
+    void applySettings();
+    void openDrops();
+    void follow(SceneState::Change change);
+    render::FrameParams frameParams(double seconds);
+    void recordScene(render::FrameSlot& slot, const render::FrameParams& params);
+    void saveScreenshot(const std::string& path);
+    void updateTitle(double seconds, bool now);
+    PanelInfo panelInfo() const;
+    double elapsed() const; // seconds since the first frame
+
+    Options settings_; // the scene, render and animation settings, edited in place
+    ViewSettings view_;
+    Window& window_;
+    Events events_;
+    vk::Surface surface_;
+    vk::Device device_;
+    vk::ShaderCompiler compiler_;
+    Presenter presenter_;
+    SceneState scene_;
+    render::FrameSlots slots_; // after what the frames use: destroyed (and waited for) first
+    Input input_;
+    OrbitCamera camera_;
+
+    // Frame timing and the title.
+    uint64_t frameNumber_ = 0;
+    std::optional<Clock::time_point> start_;
+    std::deque<double> cpuRecordMs_;
+    double titleTime_ = 0.0, fps_ = 0.0;
+    uint64_t titleFrame_ = 0;
+    std::string title_, screenshotPath_;
+};
+
+} // namespace app

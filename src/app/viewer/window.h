@@ -1,0 +1,54 @@
+// window.h - the GLFW window: the library's lifetime, the window, its Vulkan surface and the
+// callbacks that hand every event to the viewer's Input. Errors say what is missing (no
+// display, no Vulkan loader) in one line.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/context.h"
+
+struct GLFWwindow;
+
+namespace app {
+
+class Input;
+
+class Window {
+  public:
+    Window(uint32_t width, uint32_t height);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    // The instance extensions a surface for this window needs.
+    std::vector<const char*> vulkanExtensions() const;
+    VkSurfaceKHR createSurface(const vk::Instance& instance) const;
+
+    // From now on GLFW's callbacks go to `input`, until stopListening().
+    void listen(Input& input);
+    void stopListening();
+
+    VkExtent2D framebufferSize() const;
+    bool closing() const;
+    void close();
+    void setTitle(const std::string& title);
+    void pollEvents();
+    // Sleeps until an event comes, or `timeout` seconds at most.
+    void waitEvents(std::optional<double> timeout);
+
+  private:
+    struct Library { // glfwInit and glfwTerminate
+        Library();
+        ~Library();
+    };
+    Library library_;
+    GLFWwindow* window_ = nullptr;
+};
+
+} // namespace app

@@ -1,0 +1,16 @@
+// settings.cpp - the effective pipeline key: what a technique ignores does not split the cache.
+#include "render/settings.h"
+
+namespace render {
+
+PipelineKey PipelineKey::effective(bool devicePassthrough) const {
+    PipelineKey key = *this;
+    const PipelineKey defaults;
+    if (!technique->readsSearchBatch()) key.searchBatch = defaults.searchBatch;
+    if (!technique->narySearch) key.nsearch = defaults.nsearch;
+    key.gsPassthrough =
+        technique->stage == LookupStage::Geometry && gsPassthrough && devicePassthrough;
+    return key;
+}
+
+} // namespace render

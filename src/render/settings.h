@@ -1,0 +1,67 @@
+// settings.h - what the user chooses about rendering, one plain struct per concern, each field
+// and default defined here once. The command line writes into them, headless rendering, the
+// benchmark and the viewer hold them, the panel edits them in place and the renderer reads
+// them as they are.
+#pragma once
+
+#include <cstdint>
+
+#include "render/technique.h"
+
+namespace render {
+
+// An inclusive range of a whole-number setting: the flag, the panel's slider and the shader
+// variants the tests compile all take it from here.
+struct Range {
+    uint32_t min, max;
+    constexpr bool contains(uint32_t value) const { return value >= min && value <= max; }
+};
+
+// The search techniques unroll their loop over this many parts, so it bounds the batch.
+constexpr Range searchBatchRange{1, 32};
+constexpr Range nsearchFanOutRange{3, 16};
+constexpr Range nsearchLinearRange{0, 64};
+constexpr Range nsearchStepsRange{1, 64};
+
+// What selects a pipeline. Fields the technique does not read are ignored: the pipeline
+// cache keys on PipelineKey::effective(), so switching them costs nothing.
+struct PipelineKey {
+    const Technique* technique = &defaultTechnique();
+    const DrawMode* mode = &defaultDrawMode();
+    uint32_t searchBatch = 16; // search-*: parts per draw (the unrolled loop length)
+    NarySearch nsearch{};      // nsearch-*: compiled in, so each set is its own pipeline
+    // gs techniques: VK_NV_geometry_shader_passthrough where the device offers it.
+    bool gsPassthrough = true;
+    uint32_t msaa = 1; // samples per pixel of the scene pass: 1, 2, 4 or 8
+
+    // The same key with what the technique ignores set to defaults, and passthrough only
+    // where the technique has a geometry stage and the device offers it.
+    PipelineKey effective(bool devicePassthrough) const;
+    bool operator==(const PipelineKey&) const = default;
+};
+
+// Which draws are issued.
+struct DrawSettings {
+    bool sortDraws = true; // by geometry, then material, so consecutive draws share state
+    // Draw the first ceil(visible * objects) objects in scene order (visibleObjectCount):
+    // load can be dialled without changing the scene or its unique part IDs.
+    float visible = 1.0f;
+    bool operator==(const DrawSettings&) const = default;
+};
+
+// How fragments are shaded; changes nothing but per-frame constants.
+struct Shading {
+    float partWeight = 0.5f; // blend of the part colour over the material colour, 0..1
+    bool colorizeDraws = false;
+    bool ignoreMaterials = false; // one neutral grey for every object: only part colours show
+    bool operator==(const Shading&) const = default;
+};
+
+struct RenderSettings {
+    PipelineKey pipeline;
+    DrawSettings draws;
+    Shading shading;
+    bool operator==(const RenderSettings&) const = default;
+};
+
+} // namespace render
