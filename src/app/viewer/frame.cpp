@@ -22,7 +22,9 @@ bool isGltf(std::string path) {
     return path.ends_with(".gltf") || path.ends_with(".glb");
 }
 
-double mean(const std::vector<double>& values, size_t last) {
+// The mean of the last `last` values (a vector of GPU times or the deque of CPU times).
+template <typename Values>
+double mean(const Values& values, size_t last) {
     const size_t n = std::min(values.size(), last);
     return n ? std::accumulate(values.end() - long(n), values.end(), 0.0) / double(n) : 0.0;
 }
@@ -130,7 +132,7 @@ PanelInfo Viewer::panelInfo() const {
     info.fps = fps_;
     const auto& gpu = slots_.gpuMilliseconds();
     info.gpuMs = mean(gpu, 30);
-    info.cpuRecordMs = mean(std::vector<double>(cpuRecordMs_.begin(), cpuRecordMs_.end()), 30);
+    info.cpuRecordMs = mean(cpuRecordMs_, 30);
     for (size_t i = gpu.size() - std::min<size_t>(gpu.size(), 200); i < gpu.size(); ++i)
         info.gpuHistory.push_back(float(gpu[i]));
     auto describe = [&](std::optional<uint32_t> part, float depth) {
