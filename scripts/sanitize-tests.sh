@@ -6,11 +6,14 @@
 # GLFW, X11 and Dear ImGui in the process). Any ASan, UBSan or LeakSanitizer report fails.
 # The fuzz label has its own ASan/UBSan build (fuzz/run_fuzz.sh) and does not run here.
 # scripts/setup.sh test runs this after the normal ctest; it needs the packages setup.sh
-# installs.
+# installs, and lavapipe from Mesa 25 (scripts/fetch-lavapipe.sh, run here too: quick when
+# it is there). The tests get the same lavapipe environment as in build/ from ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build-asan
 san=$root/tests/sanitizers
+
+"$root/scripts/fetch-lavapipe.sh"
 
 [[ -f $build/CMakeCache.txt ]] ||
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DIDVIEW_SANITIZE=ON
@@ -20,9 +23,13 @@ cmake --build "$build" -j"$(nproc)"
 # keep_loaded.c), so their frames have module names and lsan.supp can match them. Plain C,
 # not instrumented; it does nothing in processes without ASan.
 cc -O2 -shared -fPIC -o "$build/libidview_keep_loaded.so" "$san/keep_loaded.c"
-icd=$(echo /usr/share/vulkan/icd.d/lvp_icd.*.json)
+icd=$(sed -n 's/^IDVIEW_LAVAPIPE_ICD:[A-Z]*=//p' "$build/CMakeCache.txt")
 lvp=$(sed -nE 's/.*"library_path": *"([^"]+)".*/\1/p' "$icd")
-export IDVIEW_SAN_KEEP_LOADED="$lvp:libVkLayer_khronos_validation.so"
+[[ -f $lvp ]] || { echo "sanitize-tests: no lavapipe library in '$icd'" >&2; exit 1; }
+# Debian's own lavapipe (Mesa 22) too: cli_test.sh runs idview on it, without mesh shaders.
+icd22=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json | head -1)
+lvp22=$(sed -nE 's/.*"library_path": *"([^"]+)".*/\1/p' "$icd22")
+export IDVIEW_SAN_KEEP_LOADED="$lvp:$lvp22:libVkLayer_khronos_validation.so"
 export LD_PRELOAD="$build/libidview_keep_loaded.so${LD_PRELOAD:+ $LD_PRELOAD}"
 
 # exitcode=86 everywhere: a report must never pass for an exit code a test expects (idview

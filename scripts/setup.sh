@@ -4,6 +4,8 @@
 # quick), configures and builds Release in build/, then
 #   run:  starts idview on the default scene (ARGS are passed to it);
 #   test: runs the whole ctest suite on lavapipe, Mesa's CPU Vulkan driver.
+# The tests use lavapipe from Mesa 25, which scripts/fetch-lavapipe.sh unpacks into
+# build/lavapipe-25 (once; nothing is installed and apt's sources stay as they are).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,12 +19,13 @@ run | test) shift ;;
 esac
 
 # Build-time libraries, then what running and testing need. mesa-vulkan-drivers brings
-# lavapipe, so idview has a Vulkan device even on a machine without a GPU driver.
+# lavapipe, so idview has a Vulkan device even on a machine without a GPU driver, and the
+# libraries (libLLVM-15...) that the tests' Mesa 25 lavapipe links too.
 packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-tools libtinygltf-dev
-    libimgui-dev libvulkan-dev libstb-dev mesa-vulkan-drivers)
+    libimgui-dev libvulkan-dev libstb-dev libmeshoptimizer-dev mesa-vulkan-drivers)
 if [[ $what == test ]]; then
     packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang
-        libclang-rt-14-dev)
+        libclang-rt-14-dev python3-matplotlib)
 fi
 
 missing=()
@@ -38,6 +41,7 @@ if ((${#missing[@]})); then
         "${missing[@]}"
 fi
 
+scripts/fetch-lavapipe.sh
 [[ -f build/CMakeCache.txt ]] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 

@@ -1,9 +1,14 @@
 #version 460
-// scene.frag - finds the unique part ID of the fragment (the technique's job, here or in the
-// geometry shader), writes it to the ID attachment and shades the fragment with it.
+// scene.frag - finds the unique part ID of the fragment (the technique's job, here or in an
+// earlier stage), writes it to the ID attachment and shades the fragment with it.
+#if IDV_LOOKUP_IN_MESH
+#extension GL_EXT_mesh_shader : require
+#endif
 #include "prelude.glsl"
 #include "shading.glsl"
-#if !IDV_NO_ID
+// The part comes from an earlier stage, or is looked up here from gl_PrimitiveID.
+#define IDV_PART_FROM_EARLIER_STAGE (IDV_LOOKUP_IN_GS || IDV_LOOKUP_IN_VS || IDV_LOOKUP_IN_MESH)
+#if !IDV_NO_ID && !IDV_PART_FROM_EARLIER_STAGE
 // Resolved by the shader compiler to the technique's lookup file (src/render/technique.cpp).
 #include "technique.glsl"
 #endif
@@ -16,8 +21,10 @@ layout(early_fragment_tests) in;
 layout(location = VARYING_WORLD_POS) in vec3 inWorldPos;
 layout(location = VARYING_WORLD_NORMAL) in vec3 inWorldNormal;
 layout(location = VARYING_DRAW_INDEX) flat in uint inDrawIndex;
-#if IDV_LOOKUP_IN_GS
-layout(location = VARYING_GS_PART_INDEX) flat in uint inGsPartIndex;
+#if IDV_LOOKUP_IN_MESH && !IDV_MESH_PART_PER_VERTEX
+layout(location = VARYING_PART_INDEX) perprimitiveEXT flat in uint inPartIndex;
+#elif IDV_PART_FROM_EARLIER_STAGE
+layout(location = VARYING_PART_INDEX) flat in uint inPartIndex;
 #endif
 
 layout(location = OUT_COLOR) out vec4 outColor;
@@ -49,8 +56,8 @@ void main() {
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.
     outColor = vec4(headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz), 1.0);
 #else
-#if IDV_LOOKUP_IN_GS
-    uint localPart = inGsPartIndex;
+#if IDV_PART_FROM_EARLIER_STAGE
+    uint localPart = inPartIndex;
 #else
     uint localPart = lookupLocalPart(frame, draw, uint(gl_PrimitiveID));
 #endif

@@ -20,7 +20,7 @@ layout(location = VARYING_WORLD_POS, passthrough) in Varyings {
     vec3 worldNormal;
     flat uint drawIndex;
 } inVertices[];
-layout(location = VARYING_GS_PART_INDEX) flat out uint outPartIndex;
+layout(location = VARYING_PART_INDEX) flat out uint outPartIndex;
 
 void main() {
     FrameData frame = loadFrame();
@@ -35,7 +35,7 @@ layout(location = VARYING_DRAW_INDEX) flat in uint inDrawIndex[];
 layout(location = VARYING_WORLD_POS) out vec3 outWorldPos;
 layout(location = VARYING_WORLD_NORMAL) out vec3 outWorldNormal;
 layout(location = VARYING_DRAW_INDEX) flat out uint outDrawIndex;
-layout(location = VARYING_GS_PART_INDEX) flat out uint outPartIndex;
+layout(location = VARYING_PART_INDEX) flat out uint outPartIndex;
 
 void main() {
     FrameData frame = loadFrame();

@@ -1,7 +1,11 @@
 #version 460
-// scene.vert - transforms a vertex of the current draw's object; shared by every technique.
-// It hands on only what shading needs plus the flat draw index.
+// scene.vert - transforms a vertex of the current draw's object; shared by every technique
+// without a mesh shader. It hands on what shading needs, the flat draw index and, for
+// vertex-fs, the vertex's part (flat: the fragment gets the provoking, first, vertex's).
 #include "prelude.glsl"
+#if IDV_LOOKUP_IN_VS
+#include "technique.glsl"
+#endif
 
 layout(location = LOC_POSITION) in vec3 inPosition;
 layout(location = LOC_NORMAL) in vec3 inNormal;
@@ -12,6 +16,9 @@ layout(location = LOC_DRAW_INDEX) in uint inDrawIndex; // instanced: buffer[firs
 layout(location = VARYING_WORLD_POS) out vec3 outWorldPos;
 layout(location = VARYING_WORLD_NORMAL) out vec3 outWorldNormal;
 layout(location = VARYING_DRAW_INDEX) flat out uint outDrawIndex;
+#if IDV_LOOKUP_IN_VS
+layout(location = VARYING_PART_INDEX) flat out uint outPartIndex;
+#endif
 
 uint currentDrawIndex() {
 #if IDV_MODE_MDI_ATTRIBUTE
@@ -26,10 +33,15 @@ uint currentDrawIndex() {
 void main() {
     FrameData frame = loadFrame();
     uint drawIndex = currentDrawIndex();
-    ObjectData object = loadObject(frame.objectsAddress, loadDraw(frame, drawIndex).objectIndex);
+    DrawData draw = loadDraw(frame, drawIndex);
+    ObjectData object = loadObject(frame.objectsAddress, draw.objectIndex);
     vec4 world = object.world * vec4(inPosition, 1.0);
     outWorldPos = world.xyz;
     outWorldNormal = mat3(object.normalMatrix) * inNormal;
     outDrawIndex = drawIndex;
+#if IDV_LOOKUP_IN_VS
+    // gl_VertexIndex includes the draw's vertexOffset: firstElement makes it geometry-local.
+    outPartIndex = lookupLocalPart(frame, draw, uint(gl_VertexIndex) - draw.firstElement);
+#endif
     gl_Position = frame.viewProj * world;
 }

@@ -33,7 +33,9 @@ IDV_CONST BINDING_DRAW_INDICES = 1;
 IDV_CONST VARYING_WORLD_POS = 0;
 IDV_CONST VARYING_WORLD_NORMAL = 1;
 IDV_CONST VARYING_DRAW_INDEX = 2;
-IDV_CONST VARYING_GS_PART_INDEX = 3; // gs techniques: the part the geometry shader found
+// The local part found before the fragment shader: by a geometry shader (per triangle), the
+// vertex shader (flat, from the provoking vertex) or a mesh shader (per primitive).
+IDV_CONST VARYING_PART_INDEX = 3;
 
 // Fragment outputs, matching the colour attachments of the scene render pass.
 IDV_CONST OUT_COLOR = 0;
@@ -56,8 +58,8 @@ const float NEUTRAL_MATERIAL = 0.5;
 // FrameData::pickPixel.x when no pixel is picked this frame.
 IDV_CONST NO_PICK = 0xFFFFFFFFu;
 
-// One vertex of the shared vertex buffer. Each CAD face has its own vertices, so normals
-// are per face and edges stay hard.
+// One vertex of the shared vertex buffer. Procedural CAD faces have vertices of their own, so
+// normals are per face and edges stay hard; glTF parts share vertices where the file does.
 struct Vertex {
     vec3 position;
     vec3 normal;
@@ -70,15 +72,19 @@ struct FrameData {
     uvec2 viewport;
     float partColorWeight; // 0: material colour only, 1: part colour only
     uint flags;
-    uint64_t objectsAddress;   // ObjectData[]
-    uint64_t materialsAddress; // Material[]
-    uint64_t idsAddress;       // the technique's ID buffer (see DrawData::idsOffset), or 0
-    uint64_t drawsAddress;     // DrawData[] of the mdi modes, or 0
-    uint64_t pickAddress;      // PickData, shared by all frames (see PickData)
-    uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
-    uint selectedPart;         // unique part ID drawn with the steady highlight, or BACKGROUND_ID
-    float time;                // seconds, drives the blink of the hovered part
-    vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
+    uint64_t objectsAddress;     // ObjectData[]
+    uint64_t materialsAddress;   // Material[]
+    uint64_t idsAddress;         // the technique's ID buffer (see DrawData::idsOffset), or 0
+    uint64_t drawsAddress;       // DrawData[] of the mdi modes, or 0
+    uint64_t pickAddress;        // PickData, shared by all frames (see PickData)
+    uint64_t verticesAddress;    // Vertex[] the meshlets index, as floats (mesh techniques)
+    uint64_t meshletsAddress;    // Meshlet[] (mesh techniques), or 0
+    uint64_t meshletDataAddress; // uint[]: meshlet vertices, then packed triangles, or 0
+    uint64_t drawIndicesAddress; // uint[]: the draw index attribute (mdi-attribute), or 0
+    uvec2 pickPixel;             // framebuffer pixel whose nearest part is picked; x NO_PICK: none
+    uint selectedPart;           // unique part ID drawn with the steady highlight, or BACKGROUND_ID
+    float time;                  // seconds, drives the blink of the hovered part
+    vec2 sampleZero;             // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
 };
 
 // The pick: during the scene pass, fragments at FrameData::pickPixel atomicMin `current` with
@@ -98,15 +104,35 @@ const uint64_t PICK_NONE = 0xFFFFFFFFFFFFFFFFul;
 // What one draw of a draw list needs. `push` mode pushes it; the mdi modes read it from the
 // per-draw buffer at the draw's index.
 struct DrawData {
+    // The first four are what a vertex or mesh shader reads per vertex (object, and where
+    // the part indices are), so they come from one 16-byte load.
     uint objectIndex;
+    // Where the draw's data starts in the technique's ID buffer: tri-*, vertex-fs, mesh-fs:
+    // byte offset of the geometry's packed part indices; search-*: index of the batch's first
+    // triangle count; bsearch-*: index of the geometry's first running triangle offset;
+    // mesh-vertex-fs: that byte offset minus the geometry's first meshlet vertex times the
+    // width (modulo 2^32), so the shader indexes by the meshlet vertex's absolute position.
+    uint idsOffset;
+    uint idsWidth; // tri-*, vertex-fs, mesh-*: bytes per part index (1, 2 or 4)
+    // vertex-fs: the geometry's first vertex in the part-vertex array (gl_VertexIndex minus
+    // this is the geometry-local vertex); mesh-*: the geometry's first meshlet.
+    uint firstElement;
     uint firstPart; // local index of the draw's first part in the object's geometry
     uint partCount; // parts the draw covers
-    // Where the draw's data starts in the technique's ID buffer: tri-*: byte offset of the
-    // geometry's per-triangle part indices; search-*: index of the batch's first triangle
-    // count; bsearch-*: index of the geometry's first running triangle offset.
-    uint idsOffset;
-    uint idsWidth;  // tri-*: bytes per part index (1, 2 or 4)
     uint drawIndex; // position in the draw list, for colorize drawcalls
+    uint unused;    // keeps the size a multiple of 8 for the push block
+};
+
+// One meshlet of a geometry (scene/meshlets.h): up to MESHLET_MAX_VERTICES vertices and
+// MESHLET_MAX_TRIANGLES triangles, drawn by one mesh shader workgroup.
+IDV_CONST MESHLET_MAX_VERTICES = 64;
+IDV_CONST MESHLET_MAX_TRIANGLES = 124;
+IDV_CONST MESH_GROUP_SIZE = 32; // invocations per meshlet: one warp on NVIDIA
+struct Meshlet {
+    uint firstVertex;        // into the meshlet data: the indices of its vertices
+    uint firstTriangle;      // into the meshlet data: corners packed 8 bits each, low byte first
+    uint counts;             // vertex count | triangle count << 16
+    uint firstLocalTriangle; // its first triangle's position in its geometry (mesh-fs's IDs)
 };
 
 // One placed instance of a geometry.
@@ -144,12 +170,13 @@ struct AnimationPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 160 && offsetof(FrameData, pickPixel) == 136);
+static_assert(sizeof(FrameData) == 192 && offsetof(FrameData, pickPixel) == 168);
 static_assert(sizeof(PickData) == 16);
-static_assert(sizeof(DrawData) == 24);
+static_assert(sizeof(DrawData) == 32);
+static_assert(sizeof(Meshlet) == 16);
 static_assert(sizeof(ObjectData) == 144);
 static_assert(sizeof(Material) == 16);
-static_assert(sizeof(DrawPush) == 32 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
+static_assert(sizeof(DrawPush) == 40 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
 static_assert(sizeof(AnimationPush) == 32 && offsetof(AnimationPush, explode) == 28);
 } // namespace gpu
 #endif

@@ -4,6 +4,8 @@
 set -uo pipefail
 idview=$1
 icd=$2
+# ctest passes the ICD of build/lavapipe-25 (Mesa 25) and sets LD_LIBRARY_PATH to its lib
+# folder, for the newer libdrm (tests/CMakeLists.txt).
 export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -102,9 +104,40 @@ else
     echo "FAIL no-display: exit $rc, output:"; echo "$out"; failures=$((failures + 1))
 fi
 
+# Mesh-shader techniques say what they need; on Debian's own lavapipe (Mesa 22, no
+# VK_EXT_mesh_shader) they are refused in one line, skipped by the benchmark with the reason,
+# and nothing else changes.
+expect list-needs-mesh 0 'mesh-fs .*\[needs VK_EXT_mesh_shader\]' -- "$idview" --list-renderers
+mesa22=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -1)
+if [[ -z $mesa22 ]]; then
+    echo "FAIL no-mesh-device: Debian's lavapipe ICD is missing (mesa-vulkan-drivers)"
+    failures=$((failures + 1))
+else
+    # As on a Debian 12 machine: Mesa 22 with its own libraries (not the tests' newer libdrm).
+    on22() { env -u LD_LIBRARY_PATH VK_DRIVER_FILES=$mesa22 VK_ICD_FILENAMES=$mesa22 "$@"; }
+    expect no-mesh-refused 1 '^idview: error: mesh-fs is unavailable here: needs VK_EXT_mesh_shader.*llvmpipe.* does not offer' -- \
+        on22 "$idview" --headless --validation --renderer mesh-fs --frames 1 --size 64x48
+    expect no-mesh-others-run 0 'vertex-fs \+ push' -- \
+        on22 "$idview" --headless --validation --renderer vertex-fs --frames 1 --size 64x48
+    expect no-mesh-benchmark 0 'mesh-fs: skipped, needs VK_EXT_mesh_shader' -- \
+        on22 "$idview" --benchmark --validation --renderer vertex-fs,mesh-fs --mode push \
+        --size 64x48 --frames 2 --copies 1 --scene tiles --benchmark-out "$work/no-mesh.json"
+    if grep -q '"skipped":\[{"renderer":"mesh-fs","reason":"needs VK_EXT_mesh_shader' "$work/no-mesh.json" &&
+        ! grep -q '"renderer":"mesh-fs"\|"renderer":"no-id-mesh"' <(grep -v skipped "$work/no-mesh.json") &&
+        grep -q '"renderer":"vertex-fs","mode":"push"' "$work/no-mesh.json"; then
+        echo "ok   no-mesh-benchmark-json"
+    else
+        echo "FAIL no-mesh-benchmark-json:"; cat "$work/no-mesh.json"; failures=$((failures + 1))
+    fi
+fi
+
 # --stats: one JSON object with the scene's counts; --export writes a .glb that loads back.
 expect stats-json 0 '^\{"source":"assembly".*"objects":32,.*"parts":312,.*"triangles":2360,.*"load_ms":' -- \
     "$idview" --scene assembly --stats
+expect stats-vertex-fs 0 '"renderer":"vertex-fs".*"geometry_bytes":[1-9][0-9]*,"added_vertices":0,"added_vertex_bytes":0,"meshlets":0' -- \
+    "$idview" --scene assembly --renderer vertex-fs --stats
+expect stats-mesh-fs 0 '"renderer":"mesh-fs".*"geometry_bytes":[1-9][0-9]*,.*"meshlets":[1-9]' -- \
+    "$idview" --scene assembly --renderer mesh-fs --stats
 expect stats-copies 0 '"objects":96,.*"parts":936,' -- "$idview" --scene assembly --copies 3 --stats
 expect export 0 '"parts":312' -- "$idview" --scene assembly --export "$work/a.glb" --stats
 expect export-loads 0 '"source":".*a.glb".*"objects":32,.*"parts":312,.*"triangles":2360' -- \

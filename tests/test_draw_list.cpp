@@ -6,7 +6,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "app/scene_source.h"
 #include "render/draw_list.h"
 #include "scene/copies.h"
 #include "scene/procedural.h"
@@ -31,6 +30,36 @@ DrawSettings drawn(bool sorted = true, float visible = 1.0f) {
     return {sorted, visible};
 }
 
+// The derived geometry of smallTwice(), built once.
+const scene::PartVertices& partVertices() {
+    static const scene::PartVertices p = scene::buildPartVertices(smallTwice());
+    return p;
+}
+// Every mesh technique draws the meshlets of the part vertices.
+const scene::Meshlets& meshlets() {
+    static const scene::Meshlets m = scene::buildMeshlets(smallTwice(), &partVertices());
+    return m;
+}
+DerivedPrimitives derivedFor(const Technique& t) {
+    DerivedPrimitives d;
+    if (t.usesPartVertices()) d.partVertices = &partVertices();
+    if (t.usesMeshShader()) d.meshlets = &meshlets();
+    return d;
+}
+
+// The draw list of smallTwice() for `key`, with the derived geometry its technique needs.
+DrawList listFor(const PipelineKey& key, const DrawSettings& settings = drawn()) {
+    return buildDrawList(smallTwice(), key, settings, derivedFor(*key.technique));
+}
+
+// The value at `element` of a packed part-index array (1, 2 or 4 bytes, little-endian).
+uint32_t packedAt(const DrawList& list, const gpu::DrawData& d, uint32_t element) {
+    const uint32_t byte = d.idsOffset + element * d.idsWidth;
+    uint32_t value = 0;
+    for (uint32_t b = 0; b < d.idsWidth; ++b) value |= uint32_t(list.idBytes[byte + b]) << (8 * b);
+    return value;
+}
+
 // The first technique of the registry that `matches`.
 template <typename Pred>
 const Technique& firstWith(Pred matches) {
@@ -48,7 +77,7 @@ TEST(DrawList, CountsFollowTheFormulae) {
         for (const auto& o : s.objects)
             batches += (s.geometries[o.geometry].partCount + batch - 1) / batch;
         for (const auto& t : techniques()) {
-            const size_t draws = buildDrawList(s, keyFor(t, batch), drawn()).ranges.size();
+            const size_t draws = listFor(keyFor(t, batch)).ranges.size();
             switch (t.split) {
             case DrawSplit::PerPart:
                 EXPECT_EQ(draws, s.uniquePartCount()) << t.name;
@@ -67,7 +96,7 @@ TEST(DrawList, CountsFollowTheFormulae) {
 TEST(DrawList, DrawDataPointsAtEachDrawsIds) {
     const scene::Scene& s = smallTwice();
     for (const auto& t : techniques()) {
-        DrawList list = buildDrawList(s, keyFor(t), drawn());
+        DrawList list = listFor(keyFor(t));
         ASSERT_EQ(list.data.size(), list.ranges.size());
         const uint32_t* words = reinterpret_cast<const uint32_t*>(list.idBytes.data());
         for (uint32_t i = 0; i < list.data.size(); ++i) {
@@ -89,11 +118,45 @@ TEST(DrawList, DrawDataPointsAtEachDrawsIds) {
                 ASSERT_EQ(words[d.idsOffset + d.partCount], g.triangleCount);
             } else if (t.ids == IdBuffer::TrianglePartIds) {
                 // The last triangle's stored part is the geometry's last part.
-                const uint32_t byte = d.idsOffset + (g.triangleCount - 1) * d.idsWidth;
-                uint32_t value = 0;
-                for (uint32_t b = 0; b < d.idsWidth; ++b)
-                    value |= uint32_t(list.idBytes[byte + b]) << (8 * b);
-                ASSERT_EQ(value, g.partCount - 1);
+                ASSERT_EQ(packedAt(list, d, g.triangleCount - 1), g.partCount - 1);
+            } else if (t.ids == IdBuffer::VertexPartIds) {
+                // Every triangle's first (rotated) vertex holds the triangle's part.
+                const scene::PartVertices& pv = partVertices();
+                const uint32_t geometry = s.objects[r.object].geometry;
+                ASSERT_EQ(r.vertexOffset, int32_t(pv.firstVertex[geometry]));
+                ASSERT_EQ(d.firstElement, pv.firstVertex[geometry]);
+                const auto parts = scene::trianglePartsOf(s, geometry);
+                for (uint32_t tri = 0; tri < g.triangleCount; ++tri) {
+                    const uint32_t lead = pv.indices[g.firstIndex + 3 * tri];
+                    ASSERT_EQ(packedAt(list, d, lead), parts[tri]) << t.name << " triangle " << tri;
+                }
+            } else if (t.ids == IdBuffer::MeshletTrianglePartIds) {
+                // Each meshlet triangle's stored part is its source triangle's part.
+                const scene::Meshlets& m = meshlets();
+                const uint32_t geometry = s.objects[r.object].geometry;
+                ASSERT_EQ(d.firstElement, m.firstMeshlet[geometry]);
+                ASSERT_EQ(list.meshletCounts[i], m.meshletCount[geometry]);
+                const auto parts = scene::trianglePartsOf(s, geometry);
+                const uint32_t base = m.geometryFirstTriangle[geometry];
+                for (uint32_t k = 0; k < g.triangleCount; ++k)
+                    ASSERT_EQ(packedAt(list, d, k), parts[m.sourceTriangle[base + k]]) << k;
+            } else if (t.ids == IdBuffer::MeshletVertexPartIds) {
+                // Each meshlet triangle's first corner stores the part of its source triangle.
+                const scene::Meshlets& m = meshlets();
+                const uint32_t geometry = s.objects[r.object].geometry;
+                ASSERT_EQ(d.firstElement, m.firstMeshlet[geometry]);
+                const auto parts = scene::trianglePartsOf(s, geometry);
+                const uint32_t base = m.geometryFirstVertex[geometry];
+                for (uint32_t k = 0; k < m.meshletCount[geometry]; ++k) {
+                    const scene::Meshlet& meshlet = m.meshlets[m.firstMeshlet[geometry] + k];
+                    ASSERT_EQ(meshlet.firstVertex, base + meshlet.firstLocalVertex);
+                    for (uint32_t i = 0; i < meshlet.triangleCount; ++i) {
+                        const uint32_t at = meshlet.firstTriangle + i;
+                        // Indexed by the absolute meshlet vertex (DrawData::idsOffset).
+                        const uint32_t lead = meshlet.firstVertex + m.corners[3 * at];
+                        ASSERT_EQ(packedAt(list, d, lead), parts[m.sourceTriangle[at]]) << at;
+                    }
+                }
             } else {
                 ASSERT_TRUE(list.idBytes.empty());
             }
@@ -127,7 +190,7 @@ TEST(DrawList, SortedByGeometryThenMaterialUnlessAskedNot) {
 TEST(DrawList, StatsCountWhatEachModeUploads) {
     const scene::Scene& s = smallTwice();
     const Technique& search = firstWith([](const Technique& t) { return t.readsSearchBatch(); });
-    DrawList list = buildDrawList(s, keyFor(search), drawn());
+    DrawList list = listFor(keyFor(search));
     auto modeWith = [](bool indirect, bool attribute) {
         for (const auto& m : drawModes())
             if (m.indirect == indirect && m.drawIndexAttribute == attribute) return &m;
@@ -140,26 +203,31 @@ TEST(DrawList, StatsCountWhatEachModeUploads) {
     EXPECT_EQ(push.pipelines, 1u);
     EXPECT_EQ(push.idBufferBytes, 4 * (s.parts.size() + 15));
     EXPECT_EQ(push.perDrawBytes, 0u);
-    EXPECT_EQ(base.perDrawBytes, 24 * list.ranges.size());
+    EXPECT_EQ(base.perDrawBytes, sizeof(gpu::DrawData) * list.ranges.size());
     EXPECT_EQ(base.indirectBytes, 20 * list.ranges.size());
     EXPECT_EQ(attr.indirectBytes, 24 * list.ranges.size());
 }
 
-// The benchmark's floor: one draw per object and no ID data.
-TEST(DrawList, NoIdDrawsOncePerObjectWithoutIdData) {
-    app::SceneSettings source;
-    source.builtin = "assembly";
-    const scene::Scene scene = app::loadScene(source).scene;
+// The benchmark's floors: one per kind of pipeline, one draw per object and no ID data; each
+// technique is measured against the floor of its own kind.
+TEST(DrawList, FloorsDrawOncePerObjectWithoutIdData) {
     const render::Technique& noId = render::floorTechnique();
     EXPECT_EQ(render::findTechnique(noId.name), &noId);
-    // The one floor, in the registry with the rest, and not among the part-ID techniques.
-    EXPECT_EQ(std::count_if(techniques().begin(), techniques().end(),
-                            [](const Technique& t) { return t.isFloor(); }),
-              1);
-    EXPECT_EQ(render::partIdTechniques().size() + 1, techniques().size());
-    const auto list = render::buildDrawList(scene, keyFor(noId), drawn());
-    EXPECT_EQ(list.ranges.size(), scene.objects.size());
-    EXPECT_TRUE(list.idBytes.empty());
+    EXPECT_FALSE(noId.usesMeshShader());
+    size_t floors = 0;
+    for (const Technique& t : techniques()) {
+        const Technique& floor = floorOf(t);
+        EXPECT_TRUE(floor.isFloor()) << t.name;
+        EXPECT_EQ(floor.primitives == Primitives::Meshlets, t.usesMeshShader()) << t.name;
+        if (!t.isFloor()) continue;
+        ++floors;
+        EXPECT_EQ(&floor, &t);
+        const auto list = listFor(keyFor(t));
+        EXPECT_EQ(list.ranges.size(), smallTwice().objects.size()) << t.name;
+        EXPECT_TRUE(list.idBytes.empty()) << t.name;
+    }
+    EXPECT_EQ(floors, 2u); // vertex and mesh pipelines
+    EXPECT_EQ(render::partIdTechniques().size() + floors, techniques().size());
 }
 
 // --visible: only the first ceil(F * objects) objects are drawn, whatever the technique; draws
@@ -182,7 +250,7 @@ TEST(DrawList, VisibleFractionDrawsTheFirstObjects) {
         }
         for (const auto& t : techniques())
             for (const auto& m : drawModes()) {
-                const DrawList list = buildDrawList(s, keyFor(t), drawn(true, fraction));
+                const DrawList list = listFor(keyFor(t), drawn(true, fraction));
                 const RenderStats stats = statsFor(list, m);
                 const size_t draws = t.split == DrawSplit::PerPart     ? parts
                                      : t.split == DrawSplit::PerObject ? objects

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # viewer_test.sh IDVIEW LAVAPIPE_ICD - the real window, as a user drives it: idview under Xvfb
 # on lavapipe with validation (synchronization validation too), fed a --script that switches
-# through every renderer (the no-id floor included) and mode, changes MSAA, presses V twice,
+# through every renderer (the floors included) and mode, changes MSAA, presses V twice,
 # orbits, zooms, resizes, clicks the model, takes a screenshot and drops files on the window.
 # Checks the exit code (3 means validation messages), the title following the renderer and
 # vsync, the click selecting a part, the drops, and that the screenshot shows a picture; and
@@ -9,6 +9,8 @@
 set -uo pipefail
 idview=$1
 icd=$2
+# ctest passes the ICD of build/lavapipe-25 (Mesa 25) and sets LD_LIBRARY_PATH to its lib
+# folder, for the newer libdrm (tests/CMakeLists.txt).
 export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
 if ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; then
     echo "SKIP: xvfb-run and xauth are needed (Debian packages xvfb, xauth)"
@@ -26,9 +28,10 @@ fail() {
 # The renderers and modes idview lists, so a new technique is covered without editing this.
 renderers=$("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
 modes=$("$idview" --list-renderers | awk '/^per-draw modes:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
-floor=$("$idview" --list-renderers | awk '/^reference/{on=1; next} /^[^ ]/{on=0} on{print $1}')
+floors=$("$idview" --list-renderers | awk '/^reference/{on=1; next} /^[^ ]/{on=0} on{print $1}')
+floor=${floors%%[[:space:]]*} # the first floor, no-id
 [[ -n $renderers && -n $modes && -n $floor ]] || fail "could not read --list-renderers"
-renderers="$renderers $floor" # the viewer draws the floor too
+renderers="$renderers $floors" # the viewer draws the floors too
 
 # Commands queue behind slow ones (a pipeline compile), so the times are only an order.
 # The window is 720x450; the procedural small preset sits in the middle, right of the panel.

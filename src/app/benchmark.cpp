@@ -19,9 +19,25 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The settings of every row: the options' own, with the floor first in every chosen mode
-// (what each row is divided by), then the chosen techniques.
-std::vector<render::RenderSettings> rows(const Options& options) {
+// The settings of every row: the options' own, with the floors first in every chosen mode
+// (what each row is divided by: no-id always, and the mesh floor when a mesh technique
+// runs), then the chosen techniques. What the device cannot run goes to `skipped`.
+std::vector<render::RenderSettings>
+rows(const Options& options, const vk::DeviceInfo& device,
+     std::vector<std::pair<std::string, std::string>>& skipped) {
+    std::vector<const render::Technique*> techniques;
+    for (const render::Technique* technique : options.benchmarkTechniques) {
+        const std::string why = render::unavailableReason(*technique, device);
+        if (why.empty())
+            techniques.push_back(technique);
+        else
+            skipped.emplace_back(technique->name, why);
+    }
+    std::vector<const render::Technique*> floors{&render::floorTechnique()};
+    for (const render::Technique* technique : techniques) {
+        const render::Technique* floor = &render::floorOf(*technique);
+        if (std::find(floors.begin(), floors.end(), floor) == floors.end()) floors.push_back(floor);
+    }
     std::vector<render::RenderSettings> list;
     auto add = [&](const render::Technique& technique, const render::DrawMode& mode) {
         render::RenderSettings settings = options.render;
@@ -30,8 +46,8 @@ std::vector<render::RenderSettings> rows(const Options& options) {
         list.push_back(settings);
     };
     for (const render::DrawMode* mode : options.benchmarkModes)
-        add(render::floorTechnique(), *mode);
-    for (const render::Technique* technique : options.benchmarkTechniques) {
+        for (const render::Technique* floor : floors) add(*floor, *mode);
+    for (const render::Technique* technique : techniques) {
         if (technique->isFloor()) continue;
         for (const render::DrawMode* mode : options.benchmarkModes) add(*technique, *mode);
     }
@@ -74,7 +90,6 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     report.copies = loaded.settings.copies;
     report.frames = options.frames;
     report.settings = options.render;
-    const auto list = rows(options);
     // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
     const uint32_t warmup = std::clamp(options.frames / 5, 5u, 50u);
 
@@ -85,12 +100,15 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         report.deviceName = info.name;
         report.driver = info.driverName + " " + vk::driverVersionString(info);
         report.api = vk::versionString(info.apiVersion);
+        const auto list = rows(options, info, report.skipped);
+        for (const auto& [name, why] : report.skipped)
+            std::fprintf(stderr, "benchmark: %s skipped: %s\n", name.c_str(), why.c_str());
         Readback readback(rig.device, rig.extent);
 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
         // As headless and the viewer open the scene.
         render::FrameParams params = cameraFrame(initialCamera(loaded, aspect), rig.extent);
-        std::map<std::string, double> floorByMode;
+        std::map<std::pair<std::string, std::string>, double> floorMs; // (floor, mode)
         uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
             const render::PipelineKey& key = list[i].pipeline;
@@ -125,7 +143,12 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             row.cpuMsMedian = percentile(cpuMs, 0.5);
             row.draws = rig.renderer.stats().draws;
             row.triangles = rig.renderer.stats().triangles;
-            row.idBytes = rig.renderer.stats().idBufferBytes;
+            const render::RenderStats& stats = rig.renderer.stats();
+            row.idBytes = stats.idBufferBytes;
+            row.geometryBytes = stats.geometryBytes;
+            row.addedVertices = stats.addedVertices;
+            row.addedVertexBytes = stats.addedVertexBytes;
+            row.meshlets = stats.meshlets;
             row.frames = options.frames;
             row.switchMs = rig.renderer.lastSwitch().ms;
             row.pipelineCached = rig.renderer.lastSwitch().pipelineCached;
@@ -133,9 +156,10 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const std::vector<uint8_t> color = readback.colorBytes();
             row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
             row.colorImageHash = imageHash(color.data(), color.size());
-            if (key.technique->isFloor()) floorByMode[row.mode] = row.gpuMsMedian;
-            const double floor = floorByMode[row.mode];
-            row.ratioToNoId = floor > 0 ? row.gpuMsMedian / floor : 0.0;
+            row.floor = render::floorOf(*key.technique).name;
+            if (key.technique->isFloor()) floorMs[{row.floor, row.mode}] = row.gpuMsMedian;
+            const double floor = floorMs[{row.floor, row.mode}];
+            row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
             report.rows.push_back(row);
             std::fprintf(stderr, "benchmark: [%zu/%zu] %s + %s: GPU %.3f ms, CPU %.3f ms\n", i + 1,
                          list.size(), row.renderer.c_str(), row.mode.c_str(), row.gpuMsMedian,
@@ -168,25 +192,36 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
             << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4) << ",\"draws\":" << row.draws
             << ",\"triangles\":" << row.triangles << ",\"id_bytes\":" << row.idBytes
-            << ",\"ratio_to_no_id\":" << fixed(row.ratioToNoId, 3) << ",\"id_image_hash\":\""
+            << ",\"geometry_bytes\":" << row.geometryBytes
+            << ",\"added_vertices\":" << row.addedVertices
+            << ",\"added_vertex_bytes\":" << row.addedVertexBytes
+            << ",\"meshlets\":" << row.meshlets << ",\"floor\":" << jsonString(row.floor)
+            << ",\"ratio_to_floor\":" << fixed(row.ratioToFloor, 3) << ",\"id_image_hash\":\""
             << hex(row.idImageHash) << "\""
             << ",\"color_image_hash\":\"" << hex(row.colorImageHash) << "\""
             << ",\"switch_ms\":" << fixed(row.switchMs, 3)
             << ",\"pipeline_cached\":" << (row.pipelineCached ? "true" : "false") << "}";
     }
-    out << "\n ]}\n";
+    out << "\n ],\n \"skipped\":[";
+    for (size_t i = 0; i < r.skipped.size(); ++i)
+        out << (i ? "," : "") << "{\"renderer\":" << jsonString(r.skipped[i].first)
+            << ",\"reason\":" << jsonString(r.skipped[i].second) << "}";
+    out << "]}\n";
     return out.str();
 }
 
 std::string benchmarkCsv(const BenchmarkReport& r) {
     std::ostringstream out;
     out << "renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,"
-           "ratio_to_no_id,id_image_hash,color_image_hash\n";
+           "geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,"
+           "color_image_hash\n";
     for (const BenchmarkRow& row : r.rows)
         out << row.renderer << ',' << row.mode << ',' << fixed(row.gpuMsMedian, 4) << ','
             << fixed(row.gpuMsP90, 4) << ',' << fixed(row.cpuMsMedian, 4) << ',' << row.draws << ','
-            << row.triangles << ',' << row.idBytes << ',' << fixed(row.ratioToNoId, 3) << ','
-            << hex(row.idImageHash) << ',' << hex(row.colorImageHash) << '\n';
+            << row.triangles << ',' << row.idBytes << ',' << row.geometryBytes << ','
+            << row.addedVertices << ',' << row.meshlets << ',' << row.floor << ','
+            << fixed(row.ratioToFloor, 3) << ',' << hex(row.idImageHash) << ','
+            << hex(row.colorImageHash) << '\n';
     return out.str();
 }
 
@@ -196,16 +231,17 @@ std::string benchmarkTable(const BenchmarkReport& r) {
         << r.settings.pipeline.msaa << "x MSAA, " << r.scene << " x" << r.copies
         << ", search batch " << r.settings.pipeline.searchBatch << ", " << r.frames << " frames\n";
     char line[200];
-    std::snprintf(line, sizeof line, "%-11s %-17s %9s %9s %9s %8s %11s %7s\n", "renderer", "mode",
-                  "GPU ms", "GPU p90", "CPU ms", "draws", "ID bytes", "x no-id");
+    std::snprintf(line, sizeof line, "%-14s %-17s %9s %9s %9s %8s %11s %7s %s\n", "renderer",
+                  "mode", "GPU ms", "GPU p90", "CPU ms", "draws", "ID bytes", "x floor", "floor");
     out << line;
     for (const BenchmarkRow& row : r.rows) {
-        std::snprintf(line, sizeof line, "%-11s %-17s %9.3f %9.3f %9.3f %8zu %11llu %7.3f\n",
+        std::snprintf(line, sizeof line, "%-14s %-17s %9.3f %9.3f %9.3f %8zu %11llu %7.3f %s\n",
                       row.renderer.c_str(), row.mode.c_str(), row.gpuMsMedian, row.gpuMsP90,
                       row.cpuMsMedian, row.draws, static_cast<unsigned long long>(row.idBytes),
-                      row.ratioToNoId);
+                      row.ratioToFloor, row.floor.c_str());
         out << line;
     }
+    for (const auto& [name, why] : r.skipped) out << name << ": skipped, " << why << "\n";
     return out.str();
 }
 
@@ -220,7 +256,7 @@ int benchmarkCommand(const Options& options) {
     // Every technique must have drawn the same parts; say so when one did not.
     const BenchmarkRow* first = nullptr;
     for (const BenchmarkRow& row : report.rows) {
-        if (row.renderer == render::floorTechnique().name) continue;
+        if (row.renderer == row.floor) continue;
         if (!first) first = &row;
         if (row.idImageHash != first->idImageHash)
             std::fprintf(stderr, "benchmark: warning: %s + %s drew another ID image than %s + %s\n",

@@ -16,9 +16,13 @@ struct BenchmarkRow {
     double cpuMsMedian = 0;               // recording and submitting one frame
     size_t draws = 0;
     uint64_t triangles = 0;
-    uint64_t idBytes = 0;   // the technique's ID data
-    double ratioToNoId = 0; // gpuMsMedian / no-id's gpuMsMedian in the same mode
-    uint32_t frames = 0;    // timed frames (after warm-up)
+    uint64_t idBytes = 0; // the technique's ID data
+    // Derived geometry drawn instead of the scene's indices (vertex-*, mesh-*): its bytes,
+    // and the vertices vertex-* duplicated and the meshlets mesh-* draws.
+    uint64_t geometryBytes = 0, addedVertices = 0, addedVertexBytes = 0, meshlets = 0;
+    std::string floor;       // the floor row of this row's kind (render::floorOf)
+    double ratioToFloor = 0; // gpuMsMedian / the floor's gpuMsMedian in the same mode
+    uint32_t frames = 0;     // timed frames (after warm-up)
     // FNV-1a of the last frame's ID and colour images: every part-ID row of one run must
     // show the same ID image, and the colour shows that the shading settings took effect.
     uint64_t idImageHash = 0, colorImageHash = 0;
@@ -32,7 +36,9 @@ struct BenchmarkReport {
     std::string size, scene;
     uint32_t copies = 1, frames = 0;
     render::RenderSettings settings; // every row's, but for technique and mode
-    std::vector<BenchmarkRow> rows;  // no-id rows first, then renderer-major order
+    std::vector<BenchmarkRow> rows;  // floor rows first, then renderer-major order
+    // Techniques left out because the device cannot run them, each with the reason.
+    std::vector<std::pair<std::string, std::string>> skipped;
     uint32_t validationMessages = 0;
 };
 

@@ -223,7 +223,8 @@ const std::vector<Flag>& flags() {
             registryFlag("--mode", "per-draw parameter mode", key.mode->name, modeList,
                          &Options::benchmarkModes, &render::PipelineKey::mode),
             {"--benchmark", nullptr,
-             "headless: time every renderer x mode and the no-id floor; defaults 2560x1440, "
+             "headless: time every renderer x mode and the floors (no-id, no-id-mesh with mesh "
+             "techniques); defaults 2560x1440, "
              "--msaa 4, --copies 3, --frames 200 (each flag overrides)",
              [](Options& o, auto&) { o.benchmark = o.headless = true; }},
             text("--benchmark-out", "FILE",

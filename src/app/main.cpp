@@ -14,15 +14,20 @@
 namespace {
 
 // One section per kind, each line "  NAME  description": scripts read the names from here.
+// Techniques that need a device feature say so; the panel and the benchmark say whether the
+// device in use has it.
 int listRenderers() {
+    auto line = [](const render::Technique& t) {
+        std::printf("  %-15s %s%s\n", t.name, t.description,
+                    t.usesMeshShader() ? " [needs VK_EXT_mesh_shader]" : "");
+    };
     std::printf("renderers:\n");
-    for (const render::Technique* t : render::partIdTechniques())
-        std::printf("  %-12s %s\n", t->name, t->description);
+    for (const render::Technique* t : render::partIdTechniques()) line(*t);
     std::printf("per-draw modes:\n");
-    for (const auto& m : render::drawModes()) std::printf("  %-12s %s\n", m.name, m.description);
-    const render::Technique& floor = render::floorTechnique();
-    std::printf("reference (the benchmark's floor, no part IDs):\n  %-12s %s\n", floor.name,
-                floor.description);
+    for (const auto& m : render::drawModes()) std::printf("  %-15s %s\n", m.name, m.description);
+    std::printf("reference (the benchmark's floors, no part IDs):\n");
+    for (const render::Technique& t : render::techniques())
+        if (t.isFloor()) line(t);
     return 0;
 }
 

@@ -147,14 +147,18 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
          << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets;
-    // What the chosen renderer and mode would draw and upload.
-    const render::RenderStats r =
-        render::statsFor(render::buildDrawList(s, key, settings.draws), *key.mode);
+    // What the chosen renderer and mode would draw and upload, derived geometry included.
+    const render::DerivedGeometry geometry = render::buildDerivedGeometry(s, *key.technique);
+    const render::DerivedPrimitives derived = geometry.view();
+    const render::RenderStats r = render::statsFor(
+        render::buildDrawList(s, key, settings.draws, derived), *key.mode, derived);
     json << ",\"renderer\":" << jsonString(key.technique->name)
          << ",\"mode\":" << jsonString(key.mode->name) << ",\"draws\":" << r.draws
          << ",\"drawn_triangles\":" << r.triangles << ",\"pipelines\":" << r.pipelines
          << ",\"id_buffer_bytes\":" << r.idBufferBytes << ",\"per_draw_bytes\":" << r.perDrawBytes
-         << ",\"indirect_bytes\":" << r.indirectBytes;
+         << ",\"indirect_bytes\":" << r.indirectBytes << ",\"geometry_bytes\":" << r.geometryBytes
+         << ",\"added_vertices\":" << r.addedVertices
+         << ",\"added_vertex_bytes\":" << r.addedVertexBytes << ",\"meshlets\":" << r.meshlets;
     json << ",\"warnings\":[";
     for (size_t i = 0; i < loaded.warnings.size(); ++i)
         json << (i ? "," : "") << jsonString(loaded.warnings[i]);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "render/pipeline.h"
 #include "shared.h"
 #include "vk/check.h"
 #include "vk/debug.h"
@@ -65,9 +66,7 @@ void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const
     auto before = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     before.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     before.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    constexpr VkPipelineStageFlags sceneShaders = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
-                                                  VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
-                                                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+    const VkPipelineStageFlags sceneShaders = sceneShaderStages(device_);
     vkCmdPipelineBarrier(cmd, sceneShaders | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0,
                          nullptr);
@@ -79,8 +78,8 @@ void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const
     vkCmdDispatch(
         cmd, (scene.objectCount() + gpu::ANIMATE_GROUP_SIZE - 1) / gpu::ANIMATE_GROUP_SIZE, 1, 1);
 
-    // The scene pass reads ObjectData in the vertex shader (world) and in the geometry and
-    // fragment shaders (the rest of the struct, in the same memory).
+    // The scene pass reads ObjectData in the vertex or mesh shader (world) and in the geometry
+    // and fragment shaders (the rest of the struct, in the same memory).
     auto after = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;

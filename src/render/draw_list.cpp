@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <tuple>
 
 #include "vk/check.h"
@@ -37,23 +38,66 @@ size_t visibleObjectCount(float fraction, size_t objects) {
     return size_t(std::clamp(wanted, 0.0, double(objects)));
 }
 
-RenderStats statsFor(const DrawList& list, const DrawMode& mode) {
+uint64_t derivedBytes(const scene::PartVertices* partVertices, const scene::Meshlets* meshlets) {
+    uint64_t bytes = 0;
+    if (partVertices) {
+        bytes += partVertices->vertices.size() * sizeof(gpu::Vertex);
+        // vertex-fs draws its rotated indices; meshlets bring their own.
+        if (!meshlets) bytes += partVertices->indices.size() * sizeof(uint32_t);
+    }
+    if (meshlets)
+        bytes += meshlets->meshlets.size() * sizeof(gpu::Meshlet) +
+                 (meshlets->vertices.size() + meshlets->sourceTriangle.size()) * sizeof(uint32_t);
+    return bytes;
+}
+
+DerivedPrimitives DerivedGeometry::view() const {
+    DerivedPrimitives d;
+    d.partVertices = partVertices ? &*partVertices : nullptr;
+    d.meshlets = meshlets ? &*meshlets : nullptr;
+    d.bytes = derivedBytes(d.partVertices, d.meshlets);
+    return d;
+}
+
+DerivedGeometry buildDerivedGeometry(const scene::Scene& scene, const Technique& technique) {
+    DerivedGeometry g;
+    if (technique.usesPartVertices()) g.partVertices = scene::buildPartVertices(scene);
+    if (technique.usesMeshShader())
+        g.meshlets = scene::buildMeshlets(scene, g.partVertices ? &*g.partVertices : nullptr);
+    return g;
+}
+
+RenderStats statsFor(const DrawList& list, const DrawMode& mode, const DerivedPrimitives& derived) {
     RenderStats stats;
     stats.draws = list.ranges.size();
+    if (derived.partVertices) {
+        stats.addedVertices = derived.partVertices->addedVertices;
+        stats.addedVertexBytes = stats.addedVertices * sizeof(gpu::Vertex);
+    }
+    if (derived.meshlets) stats.meshlets = derived.meshlets->meshlets.size();
+    stats.geometryBytes = derived.bytes;
     for (const DrawItem& d : list.ranges) stats.triangles += d.indexCount / 3;
     stats.pipelines = 1;
     stats.idBufferBytes = list.idBytes.size();
     if (mode.indirect) {
+        // VkDrawIndexedIndirectCommand, or VkDrawMeshTasksIndirectCommandEXT for meshlets.
+        const uint64_t command = sizeof(uint32_t) * (list.meshletCounts.empty() ? 5 : 3);
         stats.perDrawBytes = stats.draws * sizeof(gpu::DrawData);
-        stats.indirectBytes = stats.draws * (sizeof(uint32_t) * 5 + // VkDrawIndexedIndirectCommand
-                                             (mode.drawIndexAttribute ? sizeof(uint32_t) : 0));
+        stats.indirectBytes =
+            stats.draws * (command + (mode.drawIndexAttribute ? sizeof(uint32_t) : 0));
     }
     return stats;
 }
 
-DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key,
-                       const DrawSettings& draws) {
+DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
+                       const DerivedPrimitives& derived) {
     const Technique& technique = *key.technique;
+    const scene::PartVertices* partVertices = derived.partVertices;
+    const scene::Meshlets* meshlets = derived.meshlets;
+    if ((technique.usesPartVertices() && !partVertices) ||
+        (technique.usesMeshShader() && !meshlets))
+        throw std::invalid_argument(std::string(technique.name) +
+                                    ": its derived geometry was not given");
     DrawList list;
     list.ranges = splitDraws(scene, technique.split, key.searchBatch);
     // Before sorting, so "first" means scene order; draws come in object order.
@@ -95,6 +139,31 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key,
         list.idBytes = bytesOf(offsets.offsets);
         break;
     }
+    case IdBuffer::VertexPartIds:
+    case IdBuffer::MeshletTrianglePartIds:
+    case IdBuffer::MeshletVertexPartIds: {
+        scene::PackedPartIndices ids;
+        for (uint32_t g = 0; g < scene.geometries.size(); ++g) {
+            const scene::Geometry& geometry = scene.geometries[g];
+            if (technique.ids == IdBuffer::VertexPartIds) {
+                ids.append(partVertices->localPart.data() + partVertices->firstVertex[g],
+                           partVertices->vertexCount[g], geometry.partCount);
+            } else if (technique.ids == IdBuffer::MeshletTrianglePartIds) {
+                ids.append(meshlets->localPart.data() + meshlets->geometryFirstTriangle[g],
+                           geometry.triangleCount, geometry.partCount);
+            } else {
+                const uint32_t first = meshlets->geometryFirstVertex[g];
+                const uint32_t end = g + 1 < scene.geometries.size()
+                                         ? meshlets->geometryFirstVertex[g + 1]
+                                         : uint32_t(meshlets->vertexPart.size());
+                ids.append(meshlets->vertexPart.data() + first, end - first, geometry.partCount);
+            }
+            geometryStart[g] = ids.geometries[g].byteOffset;
+            geometryWidth[g] = ids.geometries[g].elementBytes;
+        }
+        list.idBytes = std::move(ids.bytes);
+        break;
+    }
     }
 
     vk::faultPoint("draw list"); // the CPU side of a switch can fail too (out of memory)
@@ -110,7 +179,17 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key,
         data.idsOffset =
             geometryStart[g] + (technique.ids == IdBuffer::PartTriangleCounts ? d.firstPart : 0u);
         data.idsWidth = geometryWidth[g];
+        if (technique.ids == IdBuffer::MeshletVertexPartIds) // see DrawData::idsOffset
+            data.idsOffset -= meshlets->geometryFirstVertex[g] * data.idsWidth;
         data.drawIndex = i;
+        if (partVertices && !meshlets) {
+            data.firstElement = partVertices->firstVertex[g];
+            list.ranges[i].vertexOffset = static_cast<int32_t>(partVertices->firstVertex[g]);
+        }
+        if (meshlets) {
+            data.firstElement = meshlets->firstMeshlet[g];
+            list.meshletCounts.push_back(meshlets->meshletCount[g]);
+        }
         list.data.push_back(data);
     }
     return list;

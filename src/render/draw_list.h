@@ -3,10 +3,13 @@
 // changes; the renderer only uploads it.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "render/settings.h"
+#include "scene/meshlets.h"
 #include "scene/part_data.h"
+#include "scene/part_vertices.h"
 #include "shared.h"
 
 namespace render {
@@ -22,6 +25,16 @@ struct DrawList {
     std::vector<DrawItem> ranges;
     std::vector<gpu::DrawData> data; // data[i].drawIndex == i
     std::vector<uint8_t> idBytes;    // the technique's ID buffer; empty for IdBuffer::None
+    // Primitives::Meshlets: mesh workgroups of each draw (its geometry's meshlet count).
+    std::vector<uint32_t> meshletCounts;
+};
+
+// The geometry some techniques draw instead of the scene's indices: its per-geometry
+// layout and part indices are all the draw list reads (the GPU copies are the renderer's).
+struct DerivedPrimitives {
+    const scene::PartVertices* partVertices = nullptr; // Primitives::PartVertices
+    const scene::Meshlets* meshlets = nullptr;         // Primitives::Meshlets
+    uint64_t bytes = 0; // of the derived geometry on the GPU, for the stats
 };
 
 // What a configuration costs, for --stats and the panel (no GPU needed).
@@ -33,11 +46,32 @@ struct RenderStats {
     uint64_t perDrawBytes = 0;  // DrawData buffer (mdi modes)
     uint64_t indirectBytes = 0; // indirect commands and draw-index attribute (mdi modes)
     bool gsPassthrough = false; // the gs technique runs the passthrough form
+    // Primitives::PartVertices: vertices duplicated so every triangle can lead with its
+    // part, and their bytes; the rotated copy of the geometry as a whole is geometryBytes.
+    uint64_t addedVertices = 0;
+    uint64_t addedVertexBytes = 0;
+    uint64_t meshlets = 0;      // Primitives::Meshlets
+    uint64_t geometryBytes = 0; // derived geometry drawn instead of the scene's indices
 };
-RenderStats statsFor(const DrawList& list, const DrawMode& mode);
+// Bytes of derived geometry on the GPU: part vertices drawn by vertex-fs (vertices and
+// rotated indices), meshlets (gpu::Meshlet each, a uint per meshlet vertex and triangle)
+// and, for meshlets over part vertices, those vertices.
+uint64_t derivedBytes(const scene::PartVertices* partVertices, const scene::Meshlets* meshlets);
 
-// The draws of `key`'s technique (and search batch) under `draws`.
-DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key,
-                       const DrawSettings& draws);
+// The derived geometry `technique` draws, built on the CPU (for --stats without a device).
+struct DerivedGeometry {
+    std::optional<scene::PartVertices> partVertices;
+    std::optional<scene::Meshlets> meshlets;
+    DerivedPrimitives view() const;
+};
+DerivedGeometry buildDerivedGeometry(const scene::Scene& scene, const Technique& technique);
+
+RenderStats statsFor(const DrawList& list, const DrawMode& mode,
+                     const DerivedPrimitives& derived = {});
+
+// The draws of `key`'s technique (and search batch) under `draws`. `derived` must hold what
+// the technique's Primitives need (std::invalid_argument otherwise).
+DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
+                       const DerivedPrimitives& derived = {});
 
 } // namespace render

@@ -8,8 +8,21 @@
 
 namespace render {
 
+VkShaderStageFlags pushStages(const vk::Device& device) {
+    return VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
+           VK_SHADER_STAGE_FRAGMENT_BIT |
+           (device.info().meshShader ? VkShaderStageFlags(VK_SHADER_STAGE_MESH_BIT_EXT) : 0u);
+}
+
+VkPipelineStageFlags sceneShaderStages(const vk::Device& device) {
+    return VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
+           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+           (device.info().meshShader ? VkPipelineStageFlags(VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT)
+                                     : 0u);
+}
+
 vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device) {
-    VkPushConstantRange range{pushStages, 0, sizeof(gpu::DrawPush)};
+    VkPushConstantRange range{pushStages(device), 0, sizeof(gpu::DrawPush)};
     auto info = vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
     info.pushConstantRangeCount = 1;
     info.pPushConstantRanges = &range;
@@ -101,8 +114,9 @@ vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipeli
         vk::init<VkGraphicsPipelineCreateInfo>(VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO);
     info.stageCount = static_cast<uint32_t>(stageInfos.size());
     info.pStages = stageInfos.data();
-    info.pVertexInputState = &vertexInput;
-    info.pInputAssemblyState = &assembly;
+    // A mesh shader makes its own primitives: no vertex input, no input assembly.
+    info.pVertexInputState = scene.mesh ? nullptr : &vertexInput;
+    info.pInputAssemblyState = scene.mesh ? nullptr : &assembly;
     info.pViewportState = &viewport;
     info.pRasterizationState = &raster;
     info.pMultisampleState = &multisample;

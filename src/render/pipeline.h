@@ -15,9 +15,11 @@ struct ShaderStage {
     vk::Handle<VkShaderModule> module;
 };
 
-// Push constants are visible to every stage a technique may use, so one range serves all.
-constexpr VkShaderStageFlags pushStages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+// Push constants are visible to every stage a technique may use, so one range serves all;
+// the mesh stage only where the device has it (naming it elsewhere is invalid).
+VkShaderStageFlags pushStages(const vk::Device& device);
+// The pipeline stages whose shaders read scene data, for barriers.
+VkPipelineStageFlags sceneShaderStages(const vk::Device& device);
 
 vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device);
 
@@ -27,7 +29,8 @@ struct ScenePipelineInfo {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineCache cache = VK_NULL_HANDLE; // the driver's cache of compiled pipelines
     bool drawIndexAttribute = false; // the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute)
-    bool writeIds = true;            // false masks the ID attachment (no-id)
+    bool mesh = false;               // a mesh shader: no vertex input at all
+    bool writeIds = true;            // false masks the ID attachment (the floors)
 };
 
 vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& info,

@@ -56,7 +56,9 @@ std::shared_ptr<const Pipeline> PipelineCache::build(const PipelineKey& key,
     info.pass = pass.handle();
     info.samples = pass.samples();
     info.cache = driverCache_.get();
-    info.drawIndexAttribute = key.mode->drawIndexAttribute;
+    // Mesh pipelines have no vertex input: the mode's draw index arrives another way.
+    info.mesh = key.technique->usesMeshShader();
+    info.drawIndexAttribute = key.mode->drawIndexAttribute && !info.mesh;
     info.writeIds = !key.technique->isFloor();
     const std::string name = std::string(key.technique->name) + " + " + key.mode->name + " (" +
                              std::to_string(key.msaa) + "x)";

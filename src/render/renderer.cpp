@@ -23,8 +23,8 @@ double msSince(Clock::time_point start) {
 } // namespace
 
 Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler)
-    : device_(device), compiler_(compiler), pipelines_(device, compiler),
-      animator_(std::make_shared<Animator>(device, compiler)) {
+    : device_(device), compiler_(compiler), pushStages_(pushStages(device)),
+      pipelines_(device, compiler), animator_(std::make_shared<Animator>(device, compiler)) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -60,20 +60,35 @@ void Renderer::configure(const scene::Scene& scene, const RenderSettings& settin
 void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene) {
     const auto start = Clock::now();
     const PipelineKey key = settings.pipeline.effective(device_.info().geometryShaderPassthrough);
+    const Technique& technique = *key.technique;
+    if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())
+        throw vk::Error(std::string(technique.name) + " is unavailable here: " + why);
     bool cached = false;
     auto pipeline = pipelines_.get(key, pass(key.msaa), cached);
     const bool keepDraws = !newScene && drawsStillRight(key, settings.draws);
     vk::UploadBatch upload(device_);
     auto sceneGpu = newScene ? std::make_shared<SceneGpu>(scene, upload) : sceneGpu_;
-    auto draws = keepDraws ? draws_ : buildDraws(scene, key, settings.draws, upload);
+    auto partVertices = newScene ? nullptr : partVertices_;
+    auto meshlets = newScene ? nullptr : meshlets_;
+    if (technique.primitives == Primitives::PartVertices && !partVertices)
+        partVertices = std::make_shared<PartVertexBuffers>(scene, upload);
+    if (technique.primitives == Primitives::Meshlets && !meshlets)
+        meshlets = std::make_shared<MeshletBuffers>(scene, upload);
+    auto draws =
+        keepDraws ? draws_ : buildDraws(scene, key, settings.draws, partVertices, meshlets, upload);
     upload.keep(sceneGpu);
+    upload.keep(partVertices);
+    upload.keep(meshlets);
     upload.keep(draws);
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
     sceneGpu_ = std::move(sceneGpu);
+    partVertices_ = std::move(partVertices);
+    meshlets_ = std::move(meshlets);
     draws_ = std::move(draws);
     settings_ = settings;
-    stats_ = statsFor(draws_->list, *key.mode);
+    stats_ = statsFor(draws_->list, *key.mode,
+                      derivedPrimitives(draws_->partVertices.get(), draws_->meshlets.get()));
     stats_.gsPassthrough = key.gsPassthrough;
     lastSwitch_ = {msSince(start), cached, keepDraws};
 }
@@ -94,37 +109,54 @@ bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws
     if (!draws_) return false;
     const PipelineKey& built = draws_->key;
     return built.technique->split == key.technique->split &&
-           built.technique->ids == key.technique->ids && built.searchBatch == key.searchBatch &&
-           built.mode == key.mode && draws_->inputs == draws;
+           built.technique->ids == key.technique->ids &&
+           built.technique->primitives == key.technique->primitives &&
+           built.searchBatch == key.searchBatch && built.mode == key.mode &&
+           draws_->inputs == draws;
 }
 
-std::shared_ptr<const Renderer::DrawBuffers> Renderer::buildDraws(const scene::Scene& scene,
-                                                                  const PipelineKey& key,
-                                                                  const DrawSettings& draws,
-                                                                  vk::UploadBatch& upload) const {
+std::shared_ptr<const Renderer::DrawBuffers>
+Renderer::buildDraws(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
+                     std::shared_ptr<const PartVertexBuffers> partVertices,
+                     std::shared_ptr<const MeshletBuffers> meshlets,
+                     vk::UploadBatch& upload) const {
     auto b = std::make_shared<DrawBuffers>();
-    b->list = buildDrawList(scene, key, draws);
+    // Only what this technique draws is held (and counted in its stats).
+    if (key.technique->primitives == Primitives::PartVertices) b->partVertices = partVertices;
+    if (key.technique->usesMeshShader()) b->meshlets = meshlets;
+    b->list = buildDrawList(scene, key, draws,
+                            derivedPrimitives(b->partVertices.get(), b->meshlets.get()));
     b->key = key;
     b->inputs = draws;
     const DrawList& list = b->list;
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+    const VkBufferUsageFlags vertexRead = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
     if (!list.idBytes.empty()) b->ids = upload.add(list.idBytes, shaderRead, "technique ID data");
     if (!key.mode->indirect || list.data.empty()) return b;
     b->draws = upload.add(list.data, shaderRead, "per-draw data");
-    std::vector<VkDrawIndexedIndirectCommand> commands;
-    commands.reserve(list.ranges.size());
-    for (uint32_t i = 0; i < list.ranges.size(); ++i) {
-        const DrawItem& d = list.ranges[i];
-        // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
-        commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
+    if (b->meshlets) {
+        std::vector<VkDrawMeshTasksIndirectCommandEXT> commands;
+        commands.reserve(list.ranges.size());
+        // One workgroup per meshlet; the draw index is the command's (gl_DrawID).
+        for (uint32_t count : list.meshletCounts) commands.push_back({count, 1, 1});
+        b->indirect = upload.add(commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
+    } else {
+        std::vector<VkDrawIndexedIndirectCommand> commands;
+        commands.reserve(list.ranges.size());
+        for (uint32_t i = 0; i < list.ranges.size(); ++i) {
+            const DrawItem& d = list.ranges[i];
+            // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
+            commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
+        }
+        b->indirect = upload.add(commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
     }
-    b->indirect = upload.add(commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
     if (key.mode->drawIndexAttribute) {
         std::vector<uint32_t> rows(list.ranges.size());
         for (uint32_t i = 0; i < rows.size(); ++i) rows[i] = i;
+        // Mesh shaders have no vertex input: they read the rows by address instead.
         b->drawIndices =
-            upload.add(rows, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "draw index attribute");
+            upload.add(rows, b->meshlets ? shaderRead : vertexRead, "draw index attribute");
     }
     return b;
 }
@@ -158,6 +190,14 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     frame.idsAddress = draws_->ids.address();
     frame.drawsAddress = draws_->draws.address();
     frame.pickAddress = pick_->address();
+    frame.verticesAddress = sceneGpu_->vertices().address();
+    if (draws_->meshlets && draws_->meshlets->vertices.handle())
+        frame.verticesAddress = draws_->meshlets->vertices.address(); // over part vertices
+    if (draws_->meshlets) {
+        frame.meshletsAddress = draws_->meshlets->meshlets.address();
+        frame.meshletDataAddress = draws_->meshlets->data.address();
+        frame.drawIndicesAddress = draws_->drawIndices.address();
+    }
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.selectedPart = params.selectedPart;
     frame.time = params.time;
@@ -169,11 +209,8 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     auto toShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     toShaders.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toShaders.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
-                             VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
-                             VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                         0, 1, &toShaders, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, sceneShaderStages(device_), 0, 1,
+                         &toShaders, 0, nullptr, 0, nullptr);
 
     animator_->record(cmd, *sceneGpu_, params.explode);
     // The start is written once every earlier command has finished (bottom of the pipe), so
@@ -196,18 +233,15 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle.get());
-    VkDeviceSize zero = 0;
-    const VkBuffer vertices = sceneGpu_->vertices().handle();
-    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &vertices, &zero);
-    if (const VkBuffer rows = draws_->drawIndices.handle())
-        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &rows, &zero);
-    vkCmdBindIndexBuffer(cmd, sceneGpu_->indices().handle(), 0, VK_INDEX_TYPE_UINT32);
+    bindGeometry(cmd);
 
     // The whole block once per frame (frame address, zeroed draw); push mode changes the draw.
     gpu::DrawPush push{};
     push.frameAddress = slot.frameData.address();
-    vkCmdPushConstants(cmd, pipelines_.layout(), pushStages, 0, sizeof push, &push);
-    if (pipeline_->key.mode->indirect)
+    vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_, 0, sizeof push, &push);
+    if (draws_->meshlets && pipeline_->key.mode->indirect)
+        recordMeshDraws(cmd);
+    else if (pipeline_->key.mode->indirect)
         recordIndirectDraws(cmd);
     else
         recordPushDraws(cmd);
@@ -215,6 +249,22 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     vkCmdEndRenderPass(cmd);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 1);
     recordPickCopies(cmd, slot);
+}
+
+// The vertex and index buffers the draws read: the scene's, the part vertices, or none for
+// a mesh shader (it reads the scene's vertices by address).
+void Renderer::bindGeometry(VkCommandBuffer cmd) const {
+    if (draws_->meshlets) return;
+    const VkDeviceSize zero = 0;
+    const PartVertexBuffers* partVertices = draws_->partVertices.get();
+    const VkBuffer vertices =
+        partVertices ? partVertices->vertices.handle() : sceneGpu_->vertices().handle();
+    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &vertices, &zero);
+    if (const VkBuffer rows = draws_->drawIndices.handle())
+        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &rows, &zero);
+    vkCmdBindIndexBuffer(
+        cmd, partVertices ? partVertices->indices.handle() : sceneGpu_->indices().handle(), 0,
+        VK_INDEX_TYPE_UINT32);
 }
 
 // Before the pass: the previous frame's shaders and copies are done with the pick buffer
@@ -266,12 +316,31 @@ void Renderer::recordPushDraws(VkCommandBuffer cmd) const {
                 end = f + 1;
             }
         if (first < end)
-            vkCmdPushConstants(cmd, pipelines_.layout(), pushStages,
+            vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_,
                                gpu::DRAW_PUSH_DRAW_OFFSET + first * sizeof(uint32_t),
                                (end - first) * sizeof(uint32_t), &now[first]);
         last = now;
         const DrawItem& d = list.ranges[i];
-        vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+        if (draws_->meshlets)
+            device_.meshCommands().draw(cmd, list.meshletCounts[i], 1, 1);
+        else
+            vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+    }
+}
+
+// mdi modes with a mesh shader: gl_DrawID restarts at 0 in every call, so each call pushes
+// the index of its first draw (DrawData::drawIndex of the push block) for the shader to add.
+void Renderer::recordMeshDraws(VkCommandBuffer cmd) const {
+    const uint32_t total = static_cast<uint32_t>(draws_->list.ranges.size());
+    const uint32_t limit = std::max(1u, device_.info().maxDrawIndirectCount);
+    constexpr uint32_t stride = sizeof(VkDrawMeshTasksIndirectCommandEXT);
+    for (uint32_t first = 0; first < total; first += limit) {
+        vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_,
+                           gpu::DRAW_PUSH_DRAW_OFFSET + offsetof(gpu::DrawData, drawIndex),
+                           sizeof(uint32_t), &first);
+        device_.meshCommands().drawIndirect(cmd, draws_->indirect.handle(),
+                                            VkDeviceSize(first) * stride,
+                                            std::min(limit, total - first), stride);
     }
 }
 

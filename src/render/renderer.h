@@ -14,6 +14,7 @@
 #include "render/draw_list.h"
 #include "render/frame_slots.h"
 #include "render/pipeline_cache.h"
+#include "render/primitive_buffers.h"
 #include "render/scene_gpu.h"
 #include "render/settings.h"
 #include "render/targets.h"
@@ -79,21 +80,28 @@ class Renderer {
     struct DrawBuffers {
         DrawList list;
         vk::Buffer ids, draws, indirect, drawIndices;
+        // The derived geometry the draws read, if the technique draws one.
+        std::shared_ptr<const PartVertexBuffers> partVertices;
+        std::shared_ptr<const MeshletBuffers> meshlets;
         PipelineKey key;     // effective key it was built for (technique, mode, batch)
         DrawSettings inputs; // and the draw settings
     };
     void apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
-    std::shared_ptr<const DrawBuffers> buildDraws(const scene::Scene& scene, const PipelineKey& key,
-                                                  const DrawSettings& draws,
-                                                  vk::UploadBatch& upload) const;
+    std::shared_ptr<const DrawBuffers>
+    buildDraws(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
+               std::shared_ptr<const PartVertexBuffers> partVertices,
+               std::shared_ptr<const MeshletBuffers> meshlets, vk::UploadBatch& upload) const;
+    void bindGeometry(VkCommandBuffer cmd) const;
     bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const;
     void recordPushDraws(VkCommandBuffer cmd) const;
     void recordIndirectDraws(VkCommandBuffer cmd) const;
+    void recordMeshDraws(VkCommandBuffer cmd) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
 
     vk::Device& device_;
     const vk::ShaderCompiler& compiler_;
+    VkShaderStageFlags pushStages_;
     std::map<uint32_t, std::unique_ptr<ScenePass>> passes_; // by sample count
     PipelineCache pipelines_;
     std::shared_ptr<const Animator> animator_;
@@ -104,6 +112,9 @@ class Renderer {
     RenderSettings settings_;
     std::shared_ptr<const Pipeline> pipeline_;
     std::shared_ptr<SceneGpu> sceneGpu_;
+    // The scene's derived geometry, made the first time a technique draws it.
+    std::shared_ptr<const PartVertexBuffers> partVertices_;
+    std::shared_ptr<const MeshletBuffers> meshlets_;
     std::shared_ptr<const DrawBuffers> draws_;
     RenderStats stats_;
     SwitchReport lastSwitch_;

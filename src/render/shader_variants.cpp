@@ -9,10 +9,16 @@ namespace render {
 std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     const Technique& technique = *key.technique;
     const bool inGeometry = technique.stage == LookupStage::Geometry;
+    const bool mesh = technique.usesMeshShader();
     // Every switch the shaders test is defined, 0 or 1: GLSL has no implicit 0 in #if.
     std::vector<std::pair<std::string, std::string>> defines;
     for (const auto& m : drawModes()) defines.push_back({m.define, &m == key.mode ? "1" : "0"});
     defines.push_back({"IDV_LOOKUP_IN_GS", inGeometry ? "1" : "0"});
+    defines.push_back({"IDV_LOOKUP_IN_VS", technique.stage == LookupStage::Vertex ? "1" : "0"});
+    defines.push_back({"IDV_LOOKUP_IN_MESH", technique.stage == LookupStage::Mesh ? "1" : "0"});
+    // mesh-vertex-fs: the mesh shader's part output is per vertex (flat), not per primitive.
+    defines.push_back(
+        {"IDV_MESH_PART_PER_VERTEX", technique.ids == IdBuffer::MeshletVertexPartIds ? "1" : "0"});
     defines.push_back({"IDV_NO_ID", technique.isFloor() ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
     // An effective key holds defaults where the technique reads nothing, so the source of
@@ -27,7 +33,10 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     std::map<std::string, std::string> aliases;
     if (technique.lookupFile) aliases["technique.glsl"] = technique.lookupFile;
     std::vector<vk::ShaderRequest> requests;
-    requests.push_back({"scene.vert", VK_SHADER_STAGE_VERTEX_BIT, defines, aliases});
+    if (mesh)
+        requests.push_back({"scene.mesh", VK_SHADER_STAGE_MESH_BIT_EXT, defines, aliases});
+    else
+        requests.push_back({"scene.vert", VK_SHADER_STAGE_VERTEX_BIT, defines, aliases});
     if (inGeometry)
         requests.push_back({"scene.geom", VK_SHADER_STAGE_GEOMETRY_BIT, defines, aliases});
     requests.push_back({"scene.frag", VK_SHADER_STAGE_FRAGMENT_BIT, defines, aliases});

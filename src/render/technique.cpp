@@ -1,7 +1,7 @@
 // technique.cpp - the registry of techniques and per-draw modes.
 #include "render/technique.h"
 
-#include <algorithm>
+#include "vk/device_select.h"
 
 namespace render {
 namespace {
@@ -28,9 +28,9 @@ const std::vector<Technique>& techniques() {
         {"per-draw", "one draw per part; the draw carries the part index",
          "techniques/per_draw.glsl", Fragment, IdBuffer::None, DrawSplit::PerPart},
         {"tri-fs", "one draw per object; part index per triangle, read in the fragment shader",
-         "techniques/triangle_ids.glsl", Fragment, IdBuffer::TrianglePartIds, DrawSplit::PerObject},
+         "techniques/packed_ids.glsl", Fragment, IdBuffer::TrianglePartIds, DrawSplit::PerObject},
         {"tri-gs", "one draw per object; part index per triangle, read in a geometry shader",
-         "techniques/triangle_ids.glsl", Geometry, IdBuffer::TrianglePartIds, DrawSplit::PerObject},
+         "techniques/packed_ids.glsl", Geometry, IdBuffer::TrianglePartIds, DrawSplit::PerObject},
         {"search-fs",
          "draws of up to search-batch parts; fragment shader searches their triangle counts",
          "techniques/batch_search.glsl", Fragment, IdBuffer::PartTriangleCounts,
@@ -46,15 +46,34 @@ const std::vector<Technique>& techniques() {
         {"nsearch-fs",
          "one draw per object; fragment shader N-ary-searches running triangle offsets",
          "techniques/nary_search.glsl", Fragment, IdBuffer::PartTriangleOffsets,
-         DrawSplit::PerObject, true},
+         DrawSplit::PerObject, Primitives::SceneIndices, true},
         {"nsearch-gs",
          "one draw per object; geometry shader N-ary-searches running triangle offsets",
          "techniques/nary_search.glsl", Geometry, IdBuffer::PartTriangleOffsets,
-         DrawSplit::PerObject, true},
+         DrawSplit::PerObject, Primitives::SceneIndices, true},
+        {"vertex-fs",
+         "one draw per object; triangles rotated so their first vertex carries the part, "
+         "read by gl_VertexIndex from 8/16/32-bit arrays and handed on flat",
+         "techniques/packed_ids.glsl", Vertex, IdBuffer::VertexPartIds, DrawSplit::PerObject,
+         Primitives::PartVertices},
+        {"mesh-fs",
+         "one mesh-tasks draw per object over meshoptimizer meshlets; the mesh shader writes "
+         "each triangle's part as a per-primitive output",
+         "techniques/packed_ids.glsl", Mesh, IdBuffer::MeshletTrianglePartIds, DrawSplit::PerObject,
+         Primitives::Meshlets},
+        {"mesh-vertex-fs",
+         "mesh-fs over vertex-fs's part vertices: the mesh shader writes the part per vertex, "
+         "the fragment shader reads it flat from each triangle's first (provoking) vertex",
+         "techniques/packed_ids.glsl", Mesh, IdBuffer::MeshletVertexPartIds, DrawSplit::PerObject,
+         Primitives::Meshlets},
         {"no-id",
          "reference floor: one draw per object, no part ID in any stage (material colour "
          "only, ID attachment masked)",
          nullptr, None, IdBuffer::None, DrawSplit::PerObject},
+        {"no-id-mesh",
+         "reference floor of the mesh pipeline: mesh-fs's meshlets and draws without any "
+         "part ID",
+         nullptr, None, IdBuffer::None, DrawSplit::PerObject, Primitives::Meshlets},
     };
     return list;
 }
@@ -62,14 +81,19 @@ const std::vector<Technique>& techniques() {
 std::vector<const Technique*> partIdTechniques() {
     std::vector<const Technique*> list;
     for (const Technique& t : techniques())
-        if (&t != &floorTechnique()) list.push_back(&t);
+        if (!t.isFloor()) list.push_back(&t);
     return list;
 }
 
 const Technique& floorTechnique() {
-    static const Technique& floor = *std::find_if(techniques().begin(), techniques().end(),
-                                                  [](const Technique& t) { return t.isFloor(); });
-    return floor;
+    return floorOf(defaultTechnique());
+}
+
+const Technique& floorOf(const Technique& technique) {
+    const bool mesh = technique.usesMeshShader();
+    for (const Technique& t : techniques())
+        if (t.isFloor() && t.usesMeshShader() == mesh) return t;
+    return techniques().back(); // not reached: the registry has a floor of each kind
 }
 
 const Technique& defaultTechnique() {
@@ -93,6 +117,12 @@ const std::vector<DrawMode>& drawModes() {
 
 const DrawMode& defaultDrawMode() {
     return drawModes().front();
+}
+
+std::string unavailableReason(const Technique& technique, const vk::DeviceInfo& device) {
+    if (technique.usesMeshShader() && !device.meshShader)
+        return "needs VK_EXT_mesh_shader (mesh shaders), which " + device.name + " does not offer";
+    return "";
 }
 
 const Technique* findTechnique(const std::string& name) {

@@ -9,21 +9,39 @@
 #include <string>
 #include <vector>
 
+namespace vk {
+struct DeviceInfo;
+}
+
 namespace render {
 
-// The ID data a technique's shaders read (scene/part_data.h builds each).
+// The ID data a technique's shaders read (scene/part_data.h, part_vertices.h and meshlets.h
+// build each).
 enum class IdBuffer {
-    None,                // the draw names its part
-    TrianglePartIds,     // part index per triangle
-    PartTriangleCounts,  // triangle count per part, padded for the search loop
-    PartTriangleOffsets, // running triangle offset per part
+    None,                   // the draw names its part
+    TrianglePartIds,        // part index per triangle
+    PartTriangleCounts,     // triangle count per part, padded for the search loop
+    PartTriangleOffsets,    // running triangle offset per part
+    VertexPartIds,          // part index per vertex of the part vertices, 1/2/4 bytes
+    MeshletTrianglePartIds, // part index per meshlet triangle, 1/2/4 bytes
+    MeshletVertexPartIds,   // part index per meshlet vertex (over part vertices), 1/2/4 bytes
+};
+
+// What the draws read their triangles from.
+enum class Primitives {
+    SceneIndices, // the scene's vertex and index buffers, vertex shader
+    PartVertices, // the rotated copy whose first vertex names the part (part_vertices.h)
+    // Meshlets cut from the part vertices, mesh shader (VK_EXT_mesh_shader): the same
+    // meshlets for every mesh technique and their floor, so only the ID work differs.
+    Meshlets,
 };
 
 enum class DrawSplit { PerPart, PerObject, PerBatch };
 
-// Where the part lookup runs: the fragment shader, or a geometry shader once per triangle.
-// None: no part ID at all, the benchmark's reference floor (no-id).
-enum class LookupStage { Fragment, Geometry, None };
+// Where the part lookup runs: the fragment shader (from gl_PrimitiveID), a geometry shader
+// once per triangle, the vertex shader once per vertex (handed on flat), or the mesh shader
+// once per triangle (a per-primitive output). None: no part ID at all, a benchmark floor.
+enum class LookupStage { Fragment, Geometry, Vertex, Mesh, None };
 
 // Parameters of the N-ary search (nsearch-*), compiled into the shader as IDV_NSEARCH_*
 // defines, so each set is its own pipeline (the loop unrolls over n - 1 independent loads).
@@ -43,11 +61,16 @@ struct Technique {
     LookupStage stage;
     IdBuffer ids;
     DrawSplit split;
+    Primitives primitives = Primitives::SceneIndices;
     bool narySearch = false; // reads PipelineKey::nsearch (the IDV_NSEARCH_* defines)
 
-    // The benchmark's floor: no part ID anywhere, nothing in the ID attachment.
+    // A benchmark floor: no part ID anywhere, nothing in the ID attachment. Each kind of
+    // pipeline (vertex or mesh shader) has one, so a technique is measured against the
+    // same pipeline without the ID work.
     bool isFloor() const { return stage == LookupStage::None; }
     bool readsSearchBatch() const { return ids == IdBuffer::PartTriangleCounts; }
+    bool usesMeshShader() const { return primitives == Primitives::Meshlets; }
+    bool usesPartVertices() const { return primitives != Primitives::SceneIndices; }
 };
 
 // How per-draw parameters reach the shaders.
@@ -59,14 +82,20 @@ struct DrawMode {
     bool drawIndexAttribute; // the draw index comes from an instanced vertex attribute
 };
 
-// Every technique, the no-id floor last; partIdTechniques() leaves the floor out (it has
-// no ID image to compare).
+// Every technique, the floors last; partIdTechniques() leaves the floors out (they have no
+// ID image to compare).
 const std::vector<Technique>& techniques();
 std::vector<const Technique*> partIdTechniques();
-const Technique& floorTechnique();
+const Technique& floorTechnique(); // no-id: the vertex-shader pipeline's floor
+// The floor `technique` is measured against: its own kind of pipeline without the ID work.
+const Technique& floorOf(const Technique& technique);
 const Technique& defaultTechnique(); // the first row
 const std::vector<DrawMode>& drawModes();
 const DrawMode& defaultDrawMode(); // the first row
+
+// Why `technique` cannot run on the device ("needs VK_EXT_mesh_shader, which <device> does
+// not offer"), or "" when it can.
+std::string unavailableReason(const Technique& technique, const vk::DeviceInfo& device);
 
 // nullptr when there is no such name.
 const Technique* findTechnique(const std::string& name);

@@ -1,8 +1,10 @@
 // gltf_mesh.cpp - turns the primitives of one glTF mesh into parts of a geometry: triangle
 // lists from strips and fans, normals where the file has none, and one part per primitive or
-// per connected component, each with vertices of its own.
+// per connected component. Parts share a vertex only where the file does: primitives of one
+// mesh that use the same POSITION and NORMAL accessors share the vertices they both index.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include "scene/gltf_detail.h"
@@ -149,29 +151,29 @@ std::vector<uint32_t> componentOfTriangle(const Triangles& t) {
     return component;
 }
 
-// Emits the triangles in `order`, starting a new part wherever `group` changes. Each part
-// copies the vertices it uses, so no two parts share a vertex.
+// Emits the triangles in `order`, starting a new part wherever `group` changes. `emitted`
+// maps the primitive's vertices to the builder's (UINT32_MAX: not emitted yet); it outlives
+// the primitive where later primitives index the same accessors. Components share no vertex
+// by construction, so only such primitives ever share one.
 void emitParts(const Triangles& t, const std::vector<uint32_t>& order,
-               const std::vector<uint32_t>& group, MeshBuilder& builder) {
-    std::vector<uint32_t> local(t.positions.size());
-    std::vector<uint32_t> stamp(t.positions.size(), UINT32_MAX);
+               const std::vector<uint32_t>& group, std::vector<uint32_t>& emitted,
+               MeshBuilder& builder) {
     for (size_t k = 0; k < order.size(); ++k) {
         uint32_t tri = order[k], g = group[tri];
         if (k == 0 || g != group[order[k - 1]]) builder.beginPart();
         uint32_t v[3];
         for (int c = 0; c < 3; ++c) {
             uint32_t src = t.corners[3 * tri + uint32_t(c)];
-            if (stamp[src] != g) {
-                stamp[src] = g;
-                local[src] = builder.addVertex(t.positions[src], t.normals[src]);
-            }
-            v[c] = local[src];
+            if (emitted[src] == UINT32_MAX)
+                emitted[src] = builder.addVertex(t.positions[src], t.normals[src]);
+            v[c] = emitted[src];
         }
         builder.addTriangle(v[0], v[1], v[2]);
     }
 }
 
-void addParts(const Triangles& t, PartMode mode, MeshBuilder& builder) {
+void addParts(const Triangles& t, PartMode mode, std::vector<uint32_t>& emitted,
+              MeshBuilder& builder) {
     size_t triangles = t.corners.size() / 3;
     std::vector<uint32_t> group(triangles, 0);
     if (mode == PartMode::Components) group = componentOfTriangle(t);
@@ -179,7 +181,7 @@ void addParts(const Triangles& t, PartMode mode, MeshBuilder& builder) {
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(),
                      [&](uint32_t a, uint32_t b) { return group[a] < group[b]; });
-    emitParts(t, order, group, builder);
+    emitParts(t, order, group, emitted, builder);
 }
 
 } // namespace
@@ -188,6 +190,9 @@ MeshInfo addMesh(const tinygltf::Model& model, int mesh, PartMode mode, MeshBuil
                  std::vector<std::string>& warnings) {
     MeshInfo info;
     const tinygltf::Mesh& m = model.meshes[size_t(mesh)];
+    // Emitted vertices per (POSITION, NORMAL) accessor pair. Computed normals depend on the
+    // primitive's own triangles, so without a NORMAL accessor nothing is shared.
+    std::map<std::pair<int, int>, std::vector<uint32_t>> emittedByAccessors;
     for (size_t i = 0; i < m.primitives.size(); ++i) {
         const tinygltf::Primitive& p = m.primitives[i];
         const std::string name = primitiveName(mesh, i);
@@ -197,7 +202,12 @@ MeshInfo addMesh(const tinygltf::Model& model, int mesh, PartMode mode, MeshBuil
             throw Bad(name + " refers to missing material " + std::to_string(p.material));
         if (!info.hasTriangles) info.material = p.material;
         info.hasTriangles = true;
-        addParts(t, mode, builder);
+        const int normals = attribute(p, "NORMAL");
+        std::vector<uint32_t> own;
+        std::vector<uint32_t>& emitted =
+            normals < 0 ? own : emittedByAccessors[{attribute(p, "POSITION"), normals}];
+        emitted.resize(t.positions.size(), UINT32_MAX);
+        addParts(t, mode, emitted, builder);
     }
     return info;
 }

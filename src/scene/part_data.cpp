@@ -52,30 +52,42 @@ uint32_t partIndexBytes(uint32_t partCount) {
     return 4;
 }
 
-TrianglePartIds buildTrianglePartIds(const Scene& scene) {
-    TrianglePartIds ids;
-    for (const Geometry& g : scene.geometries) {
-        const uint32_t width = partIndexBytes(g.partCount);
-        const uint32_t offset = static_cast<uint32_t>((ids.bytes.size() + 3) & ~size_t(3));
-        ids.geometries.push_back({offset, width});
-        ids.bytes.resize(offset + size_t(g.triangleCount) * width, 0);
-        uint8_t* out = ids.bytes.data() + offset;
-        for (uint32_t p = 0; p < g.partCount; ++p) {
-            const Part& part = scene.parts[g.firstPart + p];
-            for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t)
-                for (uint32_t b = 0; b < width; ++b) out[t * width + b] = uint8_t(p >> (8 * b));
-        }
-    }
-    ids.bytes.resize((ids.bytes.size() + 3) & ~size_t(3), 0); // whole uint32 words for shaders
-    return ids;
+void PackedPartIndices::append(const uint32_t* parts, size_t count, uint32_t partCount) {
+    const uint32_t width = partIndexBytes(partCount);
+    const size_t offset = (bytes.size() + 3) & ~size_t(3);
+    geometries.push_back({static_cast<uint32_t>(offset), width});
+    bytes.resize(offset + count * width, 0);
+    uint8_t* out = bytes.data() + offset;
+    for (size_t i = 0; i < count; ++i)
+        for (uint32_t b = 0; b < width; ++b) out[i * width + b] = uint8_t(parts[i] >> (8 * b));
+    bytes.resize((bytes.size() + 3) & ~size_t(3), 0); // whole uint32 words for shaders
 }
 
-uint32_t TrianglePartIds::partOf(uint32_t geometry, uint32_t triangle) const {
+uint32_t PackedPartIndices::partOf(uint32_t geometry, uint32_t element) const {
     const Range& r = geometries[geometry];
     uint32_t value = 0;
     for (uint32_t b = 0; b < r.elementBytes; ++b)
-        value |= uint32_t(bytes[r.byteOffset + triangle * r.elementBytes + b]) << (8 * b);
+        value |= uint32_t(bytes[r.byteOffset + element * r.elementBytes + b]) << (8 * b);
     return value;
+}
+
+std::vector<uint32_t> trianglePartsOf(const Scene& scene, uint32_t g) {
+    const Geometry& geometry = scene.geometries[g];
+    std::vector<uint32_t> parts(geometry.triangleCount, 0);
+    for (uint32_t p = 0; p < geometry.partCount; ++p) {
+        const Part& part = scene.parts[geometry.firstPart + p];
+        std::fill_n(parts.begin() + part.firstTriangle, part.triangleCount, p);
+    }
+    return parts;
+}
+
+TrianglePartIds buildTrianglePartIds(const Scene& scene) {
+    TrianglePartIds ids;
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g) {
+        const std::vector<uint32_t> parts = trianglePartsOf(scene, g);
+        ids.append(parts.data(), parts.size(), scene.geometries[g].partCount);
+    }
+    return ids;
 }
 
 PartTriangleCounts buildPartTriangleCounts(const Scene& scene, uint32_t searchCount) {

@@ -28,10 +28,11 @@ std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount);
 // Bytes per local part index for a geometry with this many parts: 1, 2 or 4.
 uint32_t partIndexBytes(uint32_t partCount);
 
-// Local part index of every triangle, geometry after geometry. Each geometry's array uses
-// its own element width and starts at a 4-byte aligned offset, so a shader can read it as
-// uint8/16/32 from `base + offset`.
-struct TrianglePartIds {
+// Local part indices of some element of each geometry (its triangles, its vertices, its
+// meshlet triangles), geometry after geometry. Each geometry's array uses its own element
+// width and starts at a 4-byte aligned offset, so a shader can read it as uint8/16/32 from
+// `base + offset` (shaders/techniques/packed_ids.glsl).
+struct PackedPartIndices {
     struct Range {
         uint32_t byteOffset = 0;
         uint32_t elementBytes = 0;
@@ -39,9 +40,17 @@ struct TrianglePartIds {
     std::vector<uint8_t> bytes;
     std::vector<Range> geometries; // indexed like Scene::geometries
 
-    uint32_t partOf(uint32_t geometry, uint32_t triangle) const;
+    // Appends the next geometry's array: `count` values from `parts`, each below partCount.
+    void append(const uint32_t* parts, size_t count, uint32_t partCount);
+    uint32_t partOf(uint32_t geometry, uint32_t element) const;
 };
+
+// Local part index of every triangle (tri-fs, tri-gs).
+using TrianglePartIds = PackedPartIndices;
 TrianglePartIds buildTrianglePartIds(const Scene& scene);
+
+// The local part of each triangle of geometry `g`, in triangle order.
+std::vector<uint32_t> trianglePartsOf(const Scene& scene, uint32_t g);
 
 // Triangle count of every part, geometry after geometry (geometryOffsets[g] is the first
 // entry of geometry g), followed by searchCount - 1 zeros so a fixed-length loop of

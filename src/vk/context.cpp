@@ -147,8 +147,13 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
 
+    // gl_DrawID in the mesh shader (the mdi modes of mesh-*) needs shaderDrawParameters.
+    auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
+    f11.shaderDrawParameters = info.meshShader ? VK_TRUE : VK_FALSE;
     auto f12 = vk::init<VkPhysicalDeviceVulkan12Features>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
+    f12.pNext = &f11;
     f12.bufferDeviceAddress = VK_TRUE;
     f12.shaderBufferInt64Atomics = VK_TRUE;
     auto features =
@@ -164,6 +169,14 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     std::vector<const char*> extensions = extraExtensions;
     if (info.geometryShaderPassthrough)
         extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
+    // Mesh shaders only (no task shaders): the mesh techniques draw one workgroup per meshlet.
+    auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);
+    mesh.meshShader = VK_TRUE;
+    if (info.meshShader) {
+        extensions.push_back(VK_EXT_MESH_SHADER_EXTENSION_NAME);
+        f11.pNext = &mesh;
+    }
     auto create = vk::init<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
     create.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     create.ppEnabledExtensionNames = extensions.data();
@@ -175,12 +188,22 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     device_ = owned_.device;
     vkGetDeviceQueue(device_, info.graphicsQueueFamily, 0, &queue_);
     vkGetPhysicalDeviceMemoryProperties(info.handle, &memory_);
+    if (info.meshShader) loadMeshCommands();
 
     auto pool = vk::init<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     pool.queueFamilyIndex = info.graphicsQueueFamily;
     uploadPool_ = make(*this, vkCreateCommandPool, pool, "upload pool");
     name(VK_OBJECT_TYPE_QUEUE, queue_, "graphics queue");
+}
+
+void Device::loadMeshCommands() {
+    meshCommands_.draw = reinterpret_cast<PFN_vkCmdDrawMeshTasksEXT>(
+        vkGetDeviceProcAddr(device_, "vkCmdDrawMeshTasksEXT"));
+    meshCommands_.drawIndirect = reinterpret_cast<PFN_vkCmdDrawMeshTasksIndirectEXT>(
+        vkGetDeviceProcAddr(device_, "vkCmdDrawMeshTasksIndirectEXT"));
+    if (!meshCommands_.draw || !meshCommands_.drawIndirect)
+        throw Error("the driver offers VK_EXT_mesh_shader but not its draw commands");
 }
 
 Device::~Device() {

@@ -143,8 +143,16 @@ class Device {
         debug_.name(device_, type, handle, text.c_str());
     }
 
+    // VK_EXT_mesh_shader's draw commands; null unless info().meshShader.
+    struct MeshCommands {
+        PFN_vkCmdDrawMeshTasksEXT draw = nullptr;
+        PFN_vkCmdDrawMeshTasksIndirectEXT drawIndirect = nullptr;
+    };
+    const MeshCommands& meshCommands() const { return meshCommands_; }
+
   private:
     void submitAndWait(CommandBuffer cmd);
+    void loadMeshCommands();
 
     struct Upload {
         Handle<VkFence> done;
@@ -166,6 +174,7 @@ class Device {
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     VkPhysicalDeviceMemoryProperties memory_{};
+    MeshCommands meshCommands_;
     std::atomic<int64_t> liveAllocations_{0}, liveBytes_{0};
     Handle<VkCommandPool> uploadPool_;
     std::vector<Upload> uploads_; // submitted, not yet seen finished

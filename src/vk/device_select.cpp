@@ -54,6 +54,20 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
         vkGetPhysicalDeviceFeatures2(device, &f2);
         info.bufferDeviceAddress = f12.bufferDeviceAddress;
         info.shaderBufferInt64Atomics = f12.shaderBufferInt64Atomics;
+
+        if (hasDeviceExtension(device, VK_EXT_MESH_SHADER_EXTENSION_NAME)) {
+            auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
+                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);
+            auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
+                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
+            f11.pNext = &mesh;
+            auto meshFeatures =
+                vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
+            meshFeatures.pNext = &f11;
+            vkGetPhysicalDeviceFeatures2(device, &meshFeatures);
+            // The mdi modes read gl_DrawID in the mesh shader: shaderDrawParameters.
+            info.meshShader = mesh.meshShader && f11.shaderDrawParameters;
+        }
     }
     VkPhysicalDeviceFeatures features;
     vkGetPhysicalDeviceFeatures(device, &features);

@@ -36,6 +36,8 @@ struct DeviceInfo {
 
     // Optional, used when present.
     bool geometryShaderPassthrough = false; // VK_NV_geometry_shader_passthrough
+    // VK_EXT_mesh_shader with its meshShader feature, and shaderDrawParameters (mesh-*)
+    bool meshShader = false;
     uint32_t maxDrawIndirectCount = 1;
 };
 

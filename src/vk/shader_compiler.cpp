@@ -37,6 +37,8 @@ EShLanguage language(VkShaderStageFlagBits stage) {
         return EShLangFragment;
     case VK_SHADER_STAGE_COMPUTE_BIT:
         return EShLangCompute;
+    case VK_SHADER_STAGE_MESH_BIT_EXT:
+        return EShLangMesh;
     default:
         throw Error("shader stage not supported by idview's compiler");
     }

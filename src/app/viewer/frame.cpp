@@ -120,6 +120,8 @@ void Viewer::saveScreenshot(const std::string& path) {
 PanelInfo Viewer::panelInfo() const {
     PanelInfo info;
     info.device = device_.info().name;
+    for (const render::Technique& t : render::techniques())
+        info.unavailable.push_back(render::unavailableReason(t, device_.info()));
     info.source = scene_.loaded().source;
     info.gltf = isGltf(info.source);
     info.error = scene_.error();

@@ -25,6 +25,19 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "F1                 hide/show this panel\n"
                                  "drop .gltf/.glb    open the model";
 
+// When to choose which technique, from the H100 figures in docs/benchmarks.md.
+const char* const techniqueHelp =
+    "On an H100 at 1440p, against drawing with no part IDs:\n"
+    "vertex-fs: 1.00-1.02x with and without MSAA, one draw per object, no mesh shaders. "
+    "Start here.\n"
+    "mesh-vertex-fs: 1.00-1.01x without MSAA (and the faster pipeline there), 1.04x with "
+    "4x MSAA in the mdi modes (1.00x with push).\n"
+    "tri-fs, search-fs, bsearch-fs, nsearch-fs: 1.03x with 4x MSAA, 1.24x without "
+    "(gl_PrimitiveID).\n"
+    "gs techniques and mesh-fs (per-primitive output): 1.3-1.6x, avoid.\n"
+    "per-draw: one draw per part, 1.1-1.3x and CPU-bound with push constants.\n"
+    "Numbers and method: docs/benchmarks.md.";
+
 std::string bytes(uint64_t value) {
     char text[32];
     if (value >= 10ull << 20)
@@ -79,10 +92,26 @@ void narySearch(render::NarySearch& n) {
     sliderOnRelease("N-ary max steps", n.maxSteps, render::nsearchStepsRange);
 }
 
+// The renderer combo: what the device cannot run is listed, greyed, with the reason.
+void techniqueCombo(const render::Technique*& current, const PanelInfo& info) {
+    if (!ImGui::BeginCombo("renderer", current->name)) return;
+    const auto& all = render::techniques();
+    for (size_t i = 0; i < all.size(); ++i) {
+        const bool usable = i >= info.unavailable.size() || info.unavailable[i].empty();
+        ImGui::BeginDisabled(!usable);
+        if (ImGui::Selectable(all[i].name, &all[i] == current)) current = &all[i];
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("%s%s%s", all[i].description, usable ? "" : "\nunavailable: ",
+                              usable ? "" : info.unavailable[i].c_str());
+    }
+    ImGui::EndCombo();
+}
+
 void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
     render::RenderSettings& s = settings.render;
     render::PipelineKey& key = s.pipeline;
-    registryCombo("renderer", key.technique, render::techniques());
+    techniqueCombo(key.technique, info);
     registryCombo("per-draw mode", key.mode, render::drawModes());
     if (key.technique->readsSearchBatch())
         sliderOnRelease("search batch", key.searchBatch, render::searchBatchRange);
@@ -146,6 +175,14 @@ void sceneSection(SceneSettings& s, const PanelInfo& info) {
     ImGui::Text("renderer IDs   %s", bytes(info.stats.idBufferBytes).c_str());
     ImGui::Text("per-draw data  %s + %s indirect", bytes(info.stats.perDrawBytes).c_str(),
                 bytes(info.stats.indirectBytes).c_str());
+    if (info.stats.geometryBytes)
+        ImGui::Text("own geometry   %s", bytes(info.stats.geometryBytes).c_str());
+    if (info.stats.geometryBytes && !info.stats.meshlets)
+        ImGui::Text("added vertices %llu (%s)",
+                    static_cast<unsigned long long>(info.stats.addedVertices),
+                    bytes(info.stats.addedVertexBytes).c_str());
+    if (info.stats.meshlets)
+        ImGui::Text("meshlets       %llu", static_cast<unsigned long long>(info.stats.meshlets));
 }
 
 void timing(const PanelInfo& info) {
@@ -197,6 +234,7 @@ void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
         partLine("selected", info.selected);
     }
     if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
+    if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     ImGui::PopItemWidth();
     ImGui::End();
 }

@@ -32,6 +32,8 @@ struct PartLine {
 
 struct PanelInfo {
     std::string device;
+    // Per entry of render::techniques(): why the device cannot run it, or "".
+    std::vector<std::string> unavailable;
     std::string source; // model file or scene spec
     bool gltf = false;  // the parts mode applies
     std::string error;  // the last failed action's message, shown until the next success
