@@ -77,7 +77,7 @@ struct FrameData {
     uint64_t idsAddress;         // the technique's ID buffer (see DrawData::idsOffset), or 0
     uint64_t drawsAddress;       // DrawData[] of the mdi modes, or 0
     uint64_t pickAddress;        // PickData, shared by all frames (see PickData)
-    uint64_t verticesAddress;    // Vertex[] the meshlets index, as floats (mesh techniques)
+    uint64_t verticesAddress;    // Vertex[]: the meshlets' part vertices, as floats, or 0
     uint64_t meshletsAddress;    // Meshlet[] (mesh techniques), or 0
     uint64_t meshletDataAddress; // uint[]: meshlet vertices, then packed triangles, or 0
     uint64_t drawIndicesAddress; // uint[]: the draw index attribute (mdi-attribute), or 0

@@ -215,8 +215,9 @@ TEST(Lifetimes, NoSwitchWaitsForTheFramesInFlight) {
             hostWaits = 0;
             s.run();
             EXPECT_EQ(hostWaits.load(), 0) << s.what << " waited for the GPU";
-            if (!s.buildsPipeline)
+            if (!s.buildsPipeline) {
                 EXPECT_FALSE(rig.slots.finished(last)) << s.what << " waited for the GPU";
+            }
             rig.slots.finish();
         }
     }

@@ -190,10 +190,8 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     frame.idsAddress = draws_->ids.address();
     frame.drawsAddress = draws_->draws.address();
     frame.pickAddress = pick_->address();
-    frame.verticesAddress = sceneGpu_->vertices().address();
-    if (draws_->meshlets && draws_->meshlets->vertices.handle())
-        frame.verticesAddress = draws_->meshlets->vertices.address(); // over part vertices
     if (draws_->meshlets) {
+        frame.verticesAddress = draws_->meshlets->vertices.address();
         frame.meshletsAddress = draws_->meshlets->meshlets.address();
         frame.meshletDataAddress = draws_->meshlets->data.address();
         frame.drawIndicesAddress = draws_->drawIndices.address();

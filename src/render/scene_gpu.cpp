@@ -33,9 +33,7 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
 
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    // Mesh shaders read the vertices by address.
-    vertices_ = upload.add(scene.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | shaderRead,
-                           "scene vertices");
+    vertices_ = upload.add(scene.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
     indices_ = upload.add(scene.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices");
     objects_ = upload.add(objects, shaderRead, "scene objects");
     materials_ = upload.add(materials, shaderRead, "scene materials");
