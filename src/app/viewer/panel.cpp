@@ -177,7 +177,7 @@ void sceneSection(SceneSettings& s, const PanelInfo& info) {
                 bytes(info.stats.indirectBytes).c_str());
     if (info.stats.geometryBytes)
         ImGui::Text("own geometry   %s", bytes(info.stats.geometryBytes).c_str());
-    if (info.stats.geometryBytes && !info.stats.meshlets)
+    if (info.stats.geometryBytes) // every derived geometry is cut from part vertices
         ImGui::Text("added vertices %llu (%s)",
                     static_cast<unsigned long long>(info.stats.addedVertices),
                     bytes(info.stats.addedVertexBytes).c_str());
