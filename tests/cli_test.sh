@@ -74,7 +74,7 @@ fi
     echo "ok   id-image-top-left" || { echo "FAIL id-image-top-left"; failures=$((failures + 1)); }
 
 # --pick: one JSON line per point on stdout, naming the part the ID image holds there (in
-# the right format) and null on background.
+# the right format, with its object's name and path) and null on background.
 picks=$("$idview" --headless --validation --scene tiles --size 160x100 --frames 1 \
     --pick 80,50 --pick 0,0 --pick 40,30 --id-image "$work/p.ids" 2>/dev/null)
 pick_ok=1
@@ -84,10 +84,14 @@ while read -r line; do
     y=$(sed -E 's/.*"y":([0-9]+).*/\1/' <<<"$line")
     id=$(od -An -tu4 -j $(((y * 160 + x) * 4)) -N4 "$work/p.ids" | tr -d ' ')
     if [[ $id == 4294967295 ]]; then
-        [[ $line == "{\"x\":$x,\"y\":$y,\"part\":null,\"object\":null,\"local_part\":null,\"depth\":null}" ]] ||
+        [[ $line == "{\"x\":$x,\"y\":$y,\"part\":null,\"object\":null,\"local_part\":null,\"name\":null,\"path\":null,\"depth\":null}" ]] ||
             pick_ok=0
     else
-        [[ $line =~ ^\{\"x\":$x,\"y\":$y,\"part\":$id,\"object\":[0-9]+,\"local_part\":[0-9]+,\"depth\":0\.[0-9]+\}$ ]] ||
+        # tiles: 12 parts a tile sheet, objects "tile sheet #1", "tile sheet #2", "back plate".
+        names=("tile sheet #1" "tile sheet #2" "back plate")
+        object=$((id / 12))
+        name=${names[$object]}
+        [[ $line =~ ^\{\"x\":$x,\"y\":$y,\"part\":$id,\"object\":$object,\"local_part\":[0-9]+,\"name\":\"$name\",\"path\":\"tiles/$name\",\"depth\":0\.[0-9]+\}$ ]] ||
             pick_ok=0
     fi
 done <<<"$picks"

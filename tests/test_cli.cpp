@@ -3,7 +3,10 @@
 
 #include "app/benchmark.h"
 #include "app/cli.h"
+#include "app/headless.h"
+#include "app/json.h"
 #include "render/technique.h"
+#include "scene/mesh_builder.h"
 
 using app::Options;
 using app::parseArgs;
@@ -202,4 +205,26 @@ TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
         {"--visible", "1.5"},       {"--visible", "-0.1"},    {"--copy-axes", ""},
         {"--copy-axes", "xw"},      {"--copy-axes", "xx"},    {"--ignore-materials=1"}};
     for (const auto& args : bad) EXPECT_THROW(parseArgs(args), UsageError) << args[0];
+}
+
+TEST(Json, StringsEscapeQuotesBackslashesAndControlCharacters) {
+    EXPECT_EQ(app::jsonString("bolt M10 #1"), "\"bolt M10 #1\"");
+    EXPECT_EQ(app::jsonString("a\"b\\c\n\x01\x7f\xc3\xa9"),
+              "\"a\\\"b\\\\c\\u000a\\u0001\\u007f\xc3\xa9\"");
+}
+
+TEST(PickJson, NameAndPathFollowLocalPartAndAreEscaped) {
+    scene::Scene s;
+    scene::MeshBuilder mb;
+    mb.addBox({0, 0, 0}, {1, 1, 1});
+    scene::addMaterial(s, "m", {1, 1, 1, 1});
+    scene::addObject(s, mb.finish(s, "box"), 0, glm::mat4(1), "lid \"A\"", "box\\1/lid\t\"A\"");
+    render::PickReading hit{0, {3, 4}, 5u, 0.5f};
+    EXPECT_EQ(app::pickJson(s, hit),
+              R"({"x":3,"y":4,"part":5,"object":0,"local_part":5,"name":"lid \"A\"",)"
+              R"("path":"box\\1/lid\u0009\"A\"","depth":0.5})");
+    render::PickReading background{0, {7, 8}, std::nullopt, 1.0f};
+    EXPECT_EQ(app::pickJson(s, background),
+              R"({"x":7,"y":8,"part":null,"object":null,"local_part":null,"name":null,)"
+              R"("path":null,"depth":null})");
 }

@@ -71,3 +71,22 @@ TEST(CopyAxes, GridIsAsCompactAsItCanBe) {
     EXPECT_NEAR(third.y, step.y, 1e-3f);
     EXPECT_NEAR(third.z, 0.0f, 1e-6f);
 }
+
+TEST(CopyAxes, CopiesKeepNamesAndPrefixTheirPaths) {
+    const Scene s = makeAssembly();
+    const Scene many = replicate(s, 5, parseCopyAxes("xy"));
+    const size_t n = s.objects.size();
+    std::set<std::string> paths;
+    for (size_t i = 0; i < many.objects.size(); ++i) {
+        const Object& original = s.objects[i % n];
+        EXPECT_EQ(many.objects[i].name, original.name) << i;
+        const size_t copy = i / n;
+        EXPECT_EQ(many.objects[i].path,
+                  copy ? "copy " + std::to_string(copy) + "/" + original.path : original.path)
+            << i;
+        EXPECT_TRUE(paths.insert(many.objects[i].path).second) << many.objects[i].path;
+    }
+    EXPECT_EQ(many.objects[0].path, "assembly/base plate");
+    EXPECT_EQ(many.objects[n].path, "copy 1/assembly/base plate");
+    EXPECT_EQ(many.objects[4 * n + 6].path, "copy 4/assembly/top plate/bolt M10 #1");
+}

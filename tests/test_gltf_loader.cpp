@@ -601,3 +601,92 @@ TEST_F(GltfHandmade, FuzzRegressionNormalsWithoutBufferView) {
         }
     }
 }
+
+namespace {
+
+// A quad mesh per entry of `meshNames` (all over the same accessors; "" leaves one unnamed),
+// and `nodes` / `roots` as given.
+std::string namedTree(const std::vector<std::string>& meshNames, const std::string& nodes,
+                      const std::string& roots) {
+    Blob blob;
+    size_t p = blob.add(kQuad), i = blob.add(kQuadIndices);
+    std::string meshes;
+    for (const std::string& name : meshNames) {
+        meshes += meshes.empty() ? "{" : ",{";
+        if (!name.empty()) meshes += R"("name":")" + name + "\",";
+        meshes += R"("primitives":[{"attributes":{"POSITION":0},"indices":1}]})";
+    }
+    return gltfJson(blob, R"("bufferViews":[)" + view(p, 48) + "," + view(i, 24) +
+                              R"(],"accessors":[)" + accessor(0, 5126, 4, "VEC3") + "," +
+                              accessor(1, 5125, 6, "SCALAR") + R"(],"meshes":[)" + meshes +
+                              R"(],"nodes":[)" + nodes + R"(],"scenes":[{"nodes":[)" + roots +
+                              R"(]}],"scene":0)");
+}
+
+std::vector<std::string> objectPaths(const scene::Scene& s) {
+    std::vector<std::string> paths;
+    for (const auto& o : s.objects) paths.push_back(o.path);
+    return paths;
+}
+
+} // namespace
+
+TEST_F(GltfHandmade, ObjectNameIsTheNodeNameElseTheMeshNameElseNodeIndex) {
+    LoadResult r = load(namedTree({"shaft mesh", ""},
+                                  R"({"name":"crankshaft","mesh":0},{"mesh":0},{"mesh":1},)"
+                                  R"({"name":"","mesh":1})",
+                                  "0,1,2,3"));
+    ASSERT_EQ(r.scene.objects.size(), 4u);
+    EXPECT_EQ(r.scene.objects[0].name, "crankshaft"); // the node's name wins over the mesh's
+    EXPECT_EQ(r.scene.objects[1].name, "shaft mesh"); // unnamed node: its mesh's name
+    EXPECT_EQ(r.scene.objects[2].name, "node 2");     // neither named: the node's index
+    EXPECT_EQ(r.scene.objects[3].name, "node 3");
+    // Root nodes: the path is the name.
+    EXPECT_EQ(objectPaths(r.scene),
+              (std::vector<std::string>{"crankshaft", "shaft mesh", "node 2", "node 3"}));
+    const auto info = scene::describePart(r.scene, r.scene.objects[1].uniquePartOffset);
+    ASSERT_TRUE(info);
+    EXPECT_EQ(info->name, "shaft mesh");
+    EXPECT_EQ(info->path, "shaft mesh");
+}
+
+TEST_F(GltfHandmade, PathsNameTheNodesFromTheRootDown) {
+    // engine -> crankshaft -> {bolt 2, unnamed node with mesh "nut"}, engine -> unnamed group
+    // -> cover; a second root "frame" after the whole engine tree.
+    LoadResult r = load(namedTree({"", "nut"},
+                                  R"({"name":"engine","children":[1,4]},)"         // 0
+                                  R"({"name":"crankshaft","children":[2,3]},)"     // 1
+                                  R"({"name":"bolt 2","mesh":0},{"mesh":1},)"      // 2, 3
+                                  R"({"children":[5]},{"name":"cover","mesh":0},)" // 4, 5
+                                  R"({"name":"frame","mesh":0,"children":[7]},)"   // 6
+                                  R"({"mesh":0})",                                 // 7
+                                  "0,6"));
+    EXPECT_EQ(objectPaths(r.scene),
+              (std::vector<std::string>{"engine/crankshaft/bolt 2", "engine/crankshaft/nut",
+                                        "engine/node 4/cover", "frame", "frame/node 7"}));
+    EXPECT_EQ(r.scene.objects[1].name, "nut");
+    EXPECT_EQ(r.scene.objects[4].name, "node 7");
+}
+
+TEST_F(GltfHandmade, VeryLongPathsKeepTheirLastElements) {
+    // A chain of 200 nodes "segment-000" ... "segment-199" (12 characters a level with the
+    // '/'), only the last with a mesh: the path keeps the 85 elements that fit in 1024.
+    std::string nodes;
+    for (int n = 0; n < 200; ++n) {
+        char name[16];
+        std::snprintf(name, sizeof name, "segment-%03d", n);
+        nodes += n ? R"(,{"name":")" : R"({"name":")";
+        nodes += name;
+        nodes += n < 199 ? R"(","children":[)" + std::to_string(n + 1) + "]}" : R"(","mesh":0})";
+    }
+    LoadResult r = load(namedTree({""}, nodes, "0"));
+    ASSERT_EQ(r.scene.objects.size(), 1u);
+    std::string expected = "...";
+    for (int n = 115; n < 200; ++n) {
+        char name[16];
+        std::snprintf(name, sizeof name, "/segment-%03d", n);
+        expected += name;
+    }
+    EXPECT_EQ(r.scene.objects[0].path, expected);
+    EXPECT_EQ(r.scene.objects[0].name, "segment-199");
+}

@@ -1,5 +1,5 @@
 // test_gltf_roundtrip.cpp - a scene written as .glb and loaded back keeps its parts,
-// triangles, unique part IDs, transforms and materials.
+// triangles, unique part IDs, transforms, materials and object names.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,14 +12,24 @@
 
 using namespace scene;
 
-TEST(GltfRoundTrip, WrittenSceneLoadsBackUnchanged) {
-    const Scene original = replicate(makeAssembly(), 2);
+namespace {
+
+// `scene` written to a temporary .glb and loaded back.
+LoadResult writeAndLoad(const Scene& scene) {
     const std::string path = (std::filesystem::temp_directory_path() /
                               ("idview-rt-" + std::to_string(getpid()) + ".glb"))
                                  .string();
-    writeGlb(original, path);
+    writeGlb(scene, path);
     LoadResult loaded = loadGltf(path);
     std::filesystem::remove(path);
+    return loaded;
+}
+
+} // namespace
+
+TEST(GltfRoundTrip, WrittenSceneLoadsBackUnchanged) {
+    const Scene original = replicate(makeAssembly(), 2);
+    LoadResult loaded = writeAndLoad(original);
     const Scene& s = loaded.scene;
     EXPECT_TRUE(loaded.warnings.empty());
     ASSERT_EQ(s.objects.size(), original.objects.size());
@@ -51,4 +61,17 @@ TEST(GltfRoundTrip, WrittenSceneLoadsBackUnchanged) {
     }
     // Instancing survives: objects sharing a geometry still share one.
     EXPECT_EQ(s.geometries.size(), original.geometries.size());
+}
+
+TEST(GltfRoundTrip, ObjectNamesSurviveAndPathsComeBackFlat) {
+    const Scene original = replicate(makeAssembly(), 2);
+    LoadResult loaded = writeAndLoad(original);
+    const Scene& s = loaded.scene;
+    ASSERT_EQ(s.objects.size(), original.objects.size());
+    for (size_t o = 0; o < s.objects.size(); ++o) {
+        EXPECT_EQ(s.objects[o].name, original.objects[o].name) << o;
+        EXPECT_EQ(s.objects[o].path, original.objects[o].name) << o; // flat: just the name
+    }
+    EXPECT_EQ(s.objects[6].name, "bolt M10 #1");
+    EXPECT_EQ(describePart(s, s.objects[6].uniquePartOffset)->name, "bolt M10 #1");
 }

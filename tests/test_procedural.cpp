@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstring>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "scene/procedural.h"
@@ -33,6 +34,17 @@ bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
+bool sameObjects(const Scene& a, const Scene& b) {
+    if (a.objects.size() != b.objects.size()) return false;
+    for (size_t i = 0; i < a.objects.size(); ++i) {
+        const scene::Object &x = a.objects[i], &y = b.objects[i];
+        if (x.geometry != y.geometry || x.material != y.material || x.world != y.world ||
+            x.uniquePartOffset != y.uniquePartOffset || x.name != y.name || x.path != y.path)
+            return false;
+    }
+    return true;
+}
+
 void expectIdentical(const Scene& a, const Scene& b) {
     EXPECT_TRUE(sameBytes(a.vertices, b.vertices));
     EXPECT_EQ(a.indices, b.indices);
@@ -53,7 +65,15 @@ void expectIdentical(const Scene& a, const Scene& b) {
         EXPECT_EQ(a.materials[m].name, b.materials[m].name);
         EXPECT_EQ(a.materials[m].color, b.materials[m].color);
     }
-    EXPECT_TRUE(sameBytes(a.objects, b.objects)); // geometry, material, world, ID offset
+    EXPECT_TRUE(sameObjects(a, b));
+}
+
+// Names of the objects whose geometry is called `geometry`, in scene order.
+std::vector<std::string> namesOf(const Scene& s, const std::string& geometry) {
+    std::vector<std::string> names;
+    for (const auto& o : s.objects)
+        if (s.geometries[o.geometry].name == geometry) names.push_back(o.name);
+    return names;
 }
 
 } // namespace
@@ -101,7 +121,7 @@ TEST(Procedural, SameSeedGivesTheSameSceneBitForBit) {
 TEST(Procedural, DifferentSeedsGiveDifferentScenes) {
     for (const char* preset : {"small", "car-like"}) {
         Scene a = make(preset, 5), b = make(preset, 6);
-        bool same = sameBytes(a.vertices, b.vertices) && sameBytes(a.objects, b.objects);
+        bool same = sameBytes(a.vertices, b.vertices) && sameObjects(a, b);
         EXPECT_FALSE(same) << preset;
     }
 }
@@ -208,4 +228,83 @@ TEST(Procedural, PresetsAreListedAndUnknownOnesThrow) {
     EXPECT_EQ(presets[1], "car-like");
     EXPECT_THROW(make("truck", 1), std::invalid_argument);
     EXPECT_THROW(make("", 1), std::invalid_argument);
+}
+
+TEST(Procedural, ObjectsHaveUniqueNamesAndPathsEndingInTheirNames) {
+    for (const auto& preset : scene::proceduralPresets())
+        for (uint64_t seed : {1ull, 7ull}) {
+            SCOPED_TRACE(preset + " seed " + std::to_string(seed));
+            const Scene s = make(preset, seed);
+            std::set<std::string> names, paths;
+            for (const auto& o : s.objects) {
+                EXPECT_TRUE(names.insert(o.name).second) << "name used twice: " << o.name;
+                EXPECT_TRUE(paths.insert(o.path).second) << "path used twice: " << o.path;
+                ASSERT_GT(o.path.size(), o.name.size() + 1) << o.path;
+                EXPECT_EQ(o.path.substr(o.path.size() - o.name.size() - 1), "/" + o.name);
+            }
+        }
+}
+
+TEST(Procedural, FastenersAreNumberedPerKindInSceneOrder) {
+    const Scene s = make("car-like", 1);
+    for (const char* kind : {"bolt M10", "bolt M6", "nut M10", "nut M6", "washer M10"}) {
+        const std::vector<std::string> names = namesOf(s, kind);
+        ASSERT_GT(names.size(), 10u) << kind;
+        for (size_t i = 0; i < names.size(); ++i)
+            ASSERT_EQ(names[i], std::string(kind) + " #" + std::to_string(i + 1));
+    }
+}
+
+TEST(Procedural, CarLikeNamesAndPathsFollowItsAssemblies) {
+    const Scene s = make("car-like", 1);
+    std::map<std::string, std::string> pathOf;
+    for (const auto& o : s.objects) pathOf[o.name] = o.path;
+    // The frame comes first: rails, then a cross member and its two brackets with M6 joints.
+    ASSERT_GE(s.objects.size(), 6u);
+    EXPECT_EQ(s.objects[0].name, "frame rail left");
+    EXPECT_EQ(s.objects[0].path, "car/chassis/frame rail left");
+    EXPECT_GT(s.objects[0].world[3].y, 0.0f); // left is +y with x to the front
+    EXPECT_EQ(s.objects[1].path, "car/chassis/frame rail right");
+    EXPECT_EQ(s.objects[2].path, "car/chassis/cross member #1");
+    EXPECT_EQ(s.objects[3].path, "car/chassis/angle bracket #1");
+    EXPECT_EQ(s.objects[4].path, "car/chassis/angle bracket #1/bolt M6 #1");
+    EXPECT_EQ(s.objects[5].path, "car/chassis/angle bracket #1/nut M6 #1");
+    EXPECT_EQ(pathOf["floor pan"], "car/chassis/floor pan");
+    EXPECT_EQ(pathOf["tyre front left"], "car/wheel front left/tyre front left");
+    EXPECT_EQ(pathOf["wheel rim rear right"], "car/wheel rear right/wheel rim rear right");
+    EXPECT_EQ(pathOf["brake disc and caliper front right"],
+              "car/wheel front right/brake disc and caliper front right");
+    EXPECT_EQ(pathOf["axle front"], "car/axle front");
+    EXPECT_EQ(pathOf["differential housing"], "car/differential housing");
+    EXPECT_EQ(pathOf["engine block"], "car/engine/engine block");
+    EXPECT_EQ(pathOf["gearbox housing"], "car/engine/gearbox housing");
+    EXPECT_EQ(pathOf["pulley #3"], "car/engine/pulley #3");
+    EXPECT_EQ(pathOf["radiator"], "car/radiator");
+    EXPECT_EQ(pathOf["hose #1"], "car/hoses/hose #1");
+    // The front-left tyre sits at +x, +y.
+    for (const auto& o : s.objects)
+        if (o.name == "tyre front left") {
+            EXPECT_GT(o.world[3].x, 0.0f);
+            EXPECT_GT(o.world[3].y, 0.0f);
+        }
+    // Wheel nuts and the fill's rail fasteners share the per-kind numbers.
+    EXPECT_EQ(pathOf["nut M10 #1"], "car/wheel rear right/nut M10 #1");
+    const std::string& lastBolt =
+        pathOf["bolt M10 #" + std::to_string(namesOf(s, "bolt M10").size())];
+    EXPECT_TRUE(lastBolt.starts_with("car/chassis/frame rail ")) << lastBolt;
+}
+
+TEST(Procedural, SmallNamesAndPaths) {
+    const Scene s = make("small", 1);
+    ASSERT_GE(s.objects.size(), 2u);
+    EXPECT_EQ(s.objects[0].name, "base plate");
+    EXPECT_EQ(s.objects[0].path, "gearbox module/base plate");
+    const std::string cluster = s.geometries[s.objects[1].geometry].name;
+    EXPECT_TRUE(cluster.starts_with("gear cluster ")) << cluster;
+    EXPECT_EQ(s.objects[1].path, "gearbox module/" + cluster + " #1");
+    std::map<std::string, std::string> pathOf;
+    for (const auto& o : s.objects) pathOf[o.name] = o.path;
+    EXPECT_EQ(pathOf["bolt M6 #3"], "gearbox module/angle bracket #1/bolt M6 #3");
+    EXPECT_EQ(pathOf["bolt M6 #4"], "gearbox module/angle bracket #2/bolt M6 #4");
+    EXPECT_EQ(pathOf["washer M10 #1"], "gearbox module/base plate/washer M10 #1");
 }

@@ -100,3 +100,35 @@ TEST(Scene, TilesLayoutIsAsDocumented) {
     EXPECT_EQ(sceneNames().size(), 2u);
     EXPECT_THROW(makeScene("nope"), std::invalid_argument);
 }
+
+TEST(Scene, AssemblyObjectsHaveNamesAndDescribePartReturnsThem) {
+    const Scene s = makeAssembly();
+    ASSERT_EQ(s.objects.size(), 32u);
+    EXPECT_EQ(s.objects[0].path, "assembly/base plate");
+    EXPECT_EQ(s.objects[1].path, "assembly/top plate");
+    EXPECT_EQ(s.objects[5].path, "assembly/column #4");
+    EXPECT_EQ(s.objects[29].path, "assembly/top plate/bolt M10 #24");
+    EXPECT_EQ(s.objects[31].path, "assembly/top plate/angle bracket #2");
+    // The last part of the first bolt names the bolt's object.
+    const Object& bolt = s.objects[6];
+    const auto info =
+        describePart(s, bolt.uniquePartOffset + s.geometries[bolt.geometry].partCount - 1);
+    ASSERT_TRUE(info);
+    EXPECT_EQ(info->object, 6u);
+    EXPECT_EQ(info->name, "bolt M10 #1");
+    EXPECT_EQ(info->path, "assembly/top plate/bolt M10 #1");
+    const Scene tiles = makeTiles();
+    ASSERT_EQ(tiles.objects.size(), 3u);
+    EXPECT_EQ(describePart(tiles, 12)->name, "tile sheet #2"); // 12 tiles a sheet
+    EXPECT_EQ(describePart(tiles, 12)->path, "tiles/tile sheet #2");
+    EXPECT_EQ(describePart(tiles, 24)->path, "tiles/back plate");
+}
+
+TEST(Scene, NameCounterNumbersEachKindFromOne) {
+    NameCounter names;
+    EXPECT_EQ(names.next("bolt M10"), "bolt M10 #1");
+    EXPECT_EQ(names.next("nut M10"), "nut M10 #1");
+    EXPECT_EQ(names.next("bolt M10"), "bolt M10 #2");
+    EXPECT_EQ(joinPath("", "car"), "car");
+    EXPECT_EQ(joinPath("car/chassis", "floor pan"), "car/chassis/floor pan");
+}

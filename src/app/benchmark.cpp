@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/headless.h"
+#include "app/json.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "scene/explode.h"

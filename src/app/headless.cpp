@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "app/image_io.h"
+#include "app/json.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "render/frame_slots.h"
@@ -17,7 +18,6 @@
 #include "vk/shader_compiler.h"
 
 namespace app {
-namespace {
 
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick) {
     char head[64];
@@ -25,12 +25,16 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
     const auto info = pick.part ? scene::describePart(scene, *pick.part) : std::nullopt;
     if (!info)
         return std::string(head) + "\"part\":null,\"object\":null,\"local_part\":null,"
-                                   "\"depth\":null}";
-    char body[160];
-    std::snprintf(body, sizeof body, "\"part\":%u,\"object\":%u,\"local_part\":%u,\"depth\":%.9g}",
-                  info->uniquePartId, info->object, info->localPart, double(pick.depth));
-    return std::string(head) + body;
+                                   "\"name\":null,\"path\":null,\"depth\":null}";
+    char ids[96], depth[48];
+    std::snprintf(ids, sizeof ids, "\"part\":%u,\"object\":%u,\"local_part\":%u,",
+                  info->uniquePartId, info->object, info->localPart);
+    std::snprintf(depth, sizeof depth, ",\"depth\":%.9g}", double(pick.depth));
+    return std::string(head) + ids + "\"name\":" + jsonString(info->name) +
+           ",\"path\":" + jsonString(info->path) + depth;
 }
+
+namespace {
 
 double median(std::vector<double> values) {
     if (values.empty()) return 0.0;

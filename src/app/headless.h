@@ -25,6 +25,10 @@ struct HeadlessResult {
     uint32_t validationMessages = 0; // counted until the device is destroyed
 };
 
+// One --pick JSON line: {"x","y","part","object","local_part","name","path","depth"}, with
+// nulls for every field but x and y on background.
+std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
+
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
 // Picks come first: Options::selects (one frame, its part becomes the selection), then one
 // frame per Options::picks entry; the timed frames keep the last pick point hovered.

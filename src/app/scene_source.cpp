@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "app/json.h"
 #include "render/draw_list.h"
 #include "scene/copies.h"
 #include "scene/generator.h"
@@ -113,21 +114,6 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect) {
     const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
     const glm::vec3 direction = yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);
     return scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
-}
-
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) {
-            char code[8];
-            std::snprintf(code, sizeof code, "\\u%04x", c);
-            out += code;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
 }
 
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings) {

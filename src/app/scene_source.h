@@ -46,9 +46,6 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 
-// `text` as a JSON string literal, quotes included.
-std::string jsonString(const std::string& text);
-
 // One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ... and what
 // the renderer `settings` choose would draw and upload.
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings);

@@ -79,8 +79,12 @@ Scene replicate(const Scene& scene, uint32_t copies, uint32_t axes) {
             rest /= side;
         }
         const glm::mat4 move = glm::translate(glm::mat4(1.0f), shift);
+        // Copy 0 is the original; copy k (the (k+1)-th) keeps its objects' names and puts
+        // "copy k/" in front of their paths, so that paths stay unique across copies.
+        const std::string group = copy ? "copy " + std::to_string(copy) : std::string();
         for (const Object& o : scene.objects)
-            addObject(result, o.geometry, o.material, move * o.world);
+            addObject(result, o.geometry, o.material, move * o.world, o.name,
+                      joinPath(group, o.path));
     }
     return result;
 }

@@ -31,19 +31,23 @@ Scene makeAssembly() {
     mb.addBox({0.21f, 0, 0.03f}, {0.3f, 0.8f, 0.06f});
     const uint32_t bracket = mb.finish(scene, "angle bracket");
 
+    // Names: "base plate", "top plate", "column #1".."#4"; the bolts ("bolt M10 #1".."#24")
+    // and brackets ("angle bracket #1", "#2") sit on the top plate, which their paths say.
+    const std::string root = "assembly", top = joinPath(root, "top plate");
+    NameCounter names;
     const glm::mat4 identity(1.0f);
-    addObject(scene, plate, paint, identity);
-    addObject(scene, plate, paint, glm::translate(identity, {0, 0, 1.7f}));
+    addNamedObject(scene, plate, paint, identity, root, "base plate");
+    addNamedObject(scene, plate, paint, glm::translate(identity, {0, 0, 1.7f}), root, "top plate");
     for (float x : {-1.6f, 1.6f})
         for (float y : {-1.1f, 1.1f})
-            addObject(scene, column, steel, glm::translate(identity, {x, y, 0.1f}));
+            names.add(scene, column, steel, glm::translate(identity, {x, y, 0.1f}), root);
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 4; ++j)
-            addObject(scene, bolt, brass,
-                      glm::translate(identity, {-1.25f + 0.5f * i, -0.9f + 0.6f * j, 1.8f}));
-    addObject(scene, bracket, steel, glm::translate(identity, {-1.9f, 0, 1.8f}));
-    addObject(scene, bracket, steel,
-              glm::rotate(glm::translate(identity, {1.9f, 0, 1.8f}), float(M_PI), {0, 0, 1}));
+            names.add(scene, bolt, brass,
+                      glm::translate(identity, {-1.25f + 0.5f * i, -0.9f + 0.6f * j, 1.8f}), top);
+    names.add(scene, bracket, steel, glm::translate(identity, {-1.9f, 0, 1.8f}), top);
+    names.add(scene, bracket, steel,
+              glm::rotate(glm::translate(identity, {1.9f, 0, 1.8f}), float(M_PI), {0, 0, 1}), top);
     validate(scene);
     return scene;
 }
@@ -65,10 +69,13 @@ Scene makeTiles() {
     mb.addFlatFace(back);
     const uint32_t plate = mb.finish(scene, "back plate");
 
+    // Names: "tile sheet #1" (left), "tile sheet #2" (right), "back plate"; paths "tiles/...".
+    NameCounter names;
     const glm::mat4 identity(1.0f);
-    addObject(scene, sheet, grey, glm::translate(identity, {-4.0f, -0.4f, 0}));
-    addObject(scene, sheet, grey, glm::translate(identity, {0.2f, -0.4f, 0}));
-    addObject(scene, plate, grey, glm::translate(identity, {0, 0, -1.0f}));
+    names.add(scene, sheet, grey, glm::translate(identity, {-4.0f, -0.4f, 0}), "tiles");
+    names.add(scene, sheet, grey, glm::translate(identity, {0.2f, -0.4f, 0}), "tiles");
+    addNamedObject(scene, plate, grey, glm::translate(identity, {0, 0, -1.0f}), "tiles",
+                   "back plate");
     validate(scene);
     return scene;
 }

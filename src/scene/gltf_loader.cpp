@@ -213,6 +213,31 @@ bool isFinite(const glm::mat4& m) {
     return true;
 }
 
+// The name of node `index`, which the object it places takes and which is its element of
+// every path through it: the node's own name; for a node without one, the name of its mesh;
+// when both are empty (or it has no mesh), "node <index>" with the node's index in the file,
+// which no other node shares. Names are kept as the file spells them, '/' included.
+std::string nodeName(const tinygltf::Model& model, size_t index) {
+    const tinygltf::Node& node = model.nodes[index];
+    if (!node.name.empty()) return node.name;
+    if (node.mesh >= 0 && size_t(node.mesh) < model.meshes.size() &&
+        !model.meshes[size_t(node.mesh)].name.empty())
+        return model.meshes[size_t(node.mesh)].name;
+    return "node " + std::to_string(index);
+}
+
+// Every object keeps a copy of its path, so a crafted deep chain of nodes with meshes would
+// need memory quadratic in its depth: a path longer than this keeps only its last elements
+// that fit, after ".../" (the object's own name always stays whole).
+constexpr size_t kMaxPathChars = 1024;
+
+std::string clipPath(const std::string& path) {
+    const size_t last = path.rfind('/');
+    if (path.size() <= kMaxPathChars || last == std::string::npos) return path;
+    const size_t cut = std::min(path.find('/', path.size() - kMaxPathChars), last);
+    return ".../" + path.substr(cut + 1);
+}
+
 // Builds the Scene from a parsed model: geometries on first use, objects per node instance.
 class Builder {
   public:
@@ -269,21 +294,25 @@ class Builder {
     }
 
     // Depth-first without recursion (a deep chain must not overflow the stack); a node met
-    // again while it is still on the current path is a cycle.
+    // again while it is still on the current path is a cycle. `path_` holds the names of the
+    // nodes on the current path; leaving a node cuts it back to its parent's.
     void addTree(int root) {
         struct Step {
             int node;
             glm::mat4 parentWorld;
             bool leave;
+            size_t parentPathLength;
         };
-        std::vector<Step> stack{{root, glm::mat4(1.0f), false}};
+        std::vector<Step> stack{{root, glm::mat4(1.0f), false, 0}};
         onPath_.resize(model_.nodes.size(), false);
+        path_.clear();
         while (!stack.empty()) {
             Step step = stack.back();
             stack.pop_back();
             size_t n = size_t(step.node);
             if (step.leave) {
                 onPath_[n] = false;
+                path_.resize(step.parentPathLength);
                 continue;
             }
             if (onPath_[n])
@@ -293,14 +322,17 @@ class Builder {
             glm::mat4 world = step.parentWorld * localTransform(node, n);
             if (!isFinite(world))
                 throw Bad("node " + std::to_string(n) + " has a non-finite transform");
-            if (node.mesh >= 0) addObject(node.mesh, world, n);
-            stack.push_back({step.node, world, true});
+            const size_t parentPathLength = path_.size();
+            const std::string name = nodeName(model_, n);
+            path_ = joinPath(path_, name);
+            if (node.mesh >= 0) addObject(node.mesh, world, n, name);
+            stack.push_back({step.node, world, true, parentPathLength});
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
-                stack.push_back({*it, world, false});
+                stack.push_back({*it, world, false, 0});
         }
     }
 
-    void addObject(int mesh, const glm::mat4& world, size_t node) {
+    void addObject(int mesh, const glm::mat4& world, size_t node, const std::string& name) {
         if (size_t(mesh) >= model_.meshes.size())
             throw Bad("node " + std::to_string(node) + " refers to missing mesh " +
                       std::to_string(mesh));
@@ -311,7 +343,8 @@ class Builder {
             uint64_t(scene.uniquePartCount()) + scene.geometries[size_t(geometry)].partCount;
         if (scene.objects.size() >= kMaxObjects || ids > std::numeric_limits<uint32_t>::max())
             throw Bad("too many objects or parts");
-        scene::addObject(scene, uint32_t(geometry), materialForMesh_[size_t(mesh)], world);
+        scene::addObject(scene, uint32_t(geometry), materialForMesh_[size_t(mesh)], world, name,
+                         clipPath(path_));
     }
 
     int64_t geometryFor(int mesh) {
@@ -362,6 +395,7 @@ class Builder {
     int64_t defaultMaterial_ = kUnbuilt;
     std::vector<int> parentCount_;
     std::vector<bool> onPath_;
+    std::string path_;
 };
 
 } // namespace

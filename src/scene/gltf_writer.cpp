@@ -23,21 +23,21 @@ class GlbBuilder {
     }
 
     tinygltf::Model build() {
-        // idview scenes are z-up, glTF is y-up: one root node turns the whole assembly.
-        tinygltf::Node up;
-        up.name = "z-up to y-up";
-        up.rotation = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)}; // -90 degrees about x
-        model_.nodes.push_back(std::move(up));
+        // One root node per object, in object order, so that the file loads back with the same
+        // unique part IDs; the node is named after the object. idview scenes are z-up, glTF is
+        // y-up: each node's matrix turns its object.
+        tinygltf::Scene root;
+        const glm::mat4 up = zUpToYUp();
         for (const Object& object : scene_.objects) {
             tinygltf::Node node;
+            node.name = object.name;
             node.mesh = meshFor(object.geometry, object.material);
-            const float* m = &object.world[0][0];
+            const glm::mat4 world = up * object.world;
+            const float* m = &world[0][0];
             node.matrix.assign(m, m + 16); // both column-major
+            root.nodes.push_back(int(model_.nodes.size()));
             model_.nodes.push_back(std::move(node));
-            model_.nodes[0].children.push_back(int(model_.nodes.size() - 1));
         }
-        tinygltf::Scene root;
-        root.nodes.push_back(0);
         model_.scenes.push_back(std::move(root));
         model_.defaultScene = 0;
         return std::move(model_);

@@ -1,7 +1,9 @@
 // gltf_writer.h - saves a Scene as binary glTF (.glb): one mesh per (geometry, material)
-// pair with one primitive per part, one node per object under a root node that turns
-// idview's z-up into glTF's y-up. Loading the file back in
-// `primitives` part mode gives the same parts, triangles and unique part IDs.
+// pair with one primitive per part, one root node per object, named after it, whose matrix
+// also turns idview's z-up into glTF's y-up. Loading the file back in `primitives` part mode
+// gives the same parts, triangles, unique part IDs and object names; the nodes are flat (a
+// hierarchy would reorder objects and so change their IDs), so each path comes back as just
+// the object's name.
 #pragma once
 
 #include <string>
@@ -10,7 +12,7 @@
 
 namespace scene {
 
-// The rotation the writer puts on its root node: idview's z-up to glTF's y-up.
+// The rotation the writer puts into every node: idview's z-up to glTF's y-up.
 glm::mat4 zUpToYUp();
 
 // Throws std::runtime_error naming the file when it cannot be written.

@@ -63,19 +63,25 @@ glm::mat4 placeAlong(glm::vec3 position, glm::vec3 axis, float spin = 0.0f) {
 
 // --- the parts catalogue: each geometry is built once and placed many times ---
 
+// The metric thread size of diameter `d` metres: "M10".
+std::string thread(float d) {
+    std::string name = "M"; // appended, as "M" + ... trips GCC 12's -Wrestrict
+    return name += std::to_string(std::lround(d * 1000.0f));
+}
+
 uint32_t makeBolt(Scene& s, float d, float length) {
     MeshBuilder mb;
     addHexPrism(mb, {}, 1.8f * d, 0.0f, 0.65f * d, 0.0f, 0);
     const float r = 0.5f * d, c = 0.1f * d;
     const glm::vec2 shank[] = {{0, -length}, {r - c, -length}, {r, -length + c}, {r, 0}};
     addLathe(mb, {}, shank, 12);
-    return mb.finish(s, "bolt M" + std::to_string(int(d * 1000)));
+    return mb.finish(s, "bolt " + thread(d));
 }
 
 uint32_t makeNut(Scene& s, float d) {
     MeshBuilder mb;
     addHexPrism(mb, {}, 1.8f * d, 0.0f, 0.8f * d, 0.5f * d, 12);
-    return mb.finish(s, "nut M" + std::to_string(int(d * 1000)));
+    return mb.finish(s, "nut " + thread(d));
 }
 
 uint32_t makeWasher(Scene& s, float d) {
@@ -83,7 +89,7 @@ uint32_t makeWasher(Scene& s, float d) {
     const float ri = 0.55f * d, ro = 1.0f * d, t = 0.15f * d;
     const glm::vec2 ring[] = {{ri, 0}, {ro, 0}, {ro, t}, {ri, t}, {ri, 0}};
     addLathe(mb, {}, ring, 16);
-    return mb.finish(s, "washer");
+    return mb.finish(s, "washer " + thread(d));
 }
 
 // Three gears and their shaft in one geometry: a lay-shaft cluster of many tiny flank parts.
@@ -226,6 +232,12 @@ uint32_t makePulley(Scene& s, float r) {
 }
 
 // --- sub-assemblies ---
+// Objects are named as a CAD user would call them: one of a kind by what it is and where
+// ("frame rail left", "tyre front left"; x points to the front, y to the left), the rest by
+// their geometry's name and a number per kind ("bolt M10 #12", "cross member #3"). Paths
+// group them by sub-assembly: "car/chassis/angle bracket #2/bolt M6 #5".
+
+const std::string kCar = "car", kChassis = "car/chassis";
 
 struct Catalogue {
     uint32_t bolt, smallBolt, nut, smallNut, washer, hose, cluster;
@@ -250,22 +262,30 @@ Catalogue makeCatalogue(Scene& s, Rng& rng) {
 }
 
 // Bolted joint through a hole: the bolt head on one side, the nut `grip` below.
-void addJoint(Scene& s, const Catalogue& c, const Materials& m, glm::vec3 at, glm::vec3 axis,
-              float grip, bool small) {
-    addObject(s, small ? c.smallBolt : c.bolt, m.blackSteel, placeAlong(at, axis));
-    addObject(s, small ? c.smallNut : c.nut, m.steel, placeAlong(at - axis * grip, -axis));
+// The joint's bolt and nut go into `group`.
+void addJoint(Scene& s, NameCounter& names, const Catalogue& c, const Materials& m, glm::vec3 at,
+              glm::vec3 axis, float grip, bool small, const std::string& group) {
+    names.add(s, small ? c.smallBolt : c.bolt, m.blackSteel, placeAlong(at, axis), group);
+    names.add(s, small ? c.smallNut : c.nut, m.steel, placeAlong(at - axis * grip, -axis), group);
 }
 
-void addWheel(Scene& s, const Catalogue& c, const Materials& m, glm::vec3 hub, float side,
-              uint32_t tyre, uint32_t rim, uint32_t disc) {
+// "front left", "rear right", ...: where a point of the car is, seen from the driver's seat.
+std::string corner(glm::vec3 at) {
+    return std::string(at.x > 0 ? "front" : "rear") + (at.y > 0 ? " left" : " right");
+}
+
+void addWheel(Scene& s, NameCounter& names, const Catalogue& c, const Materials& m, glm::vec3 hub,
+              float side, uint32_t tyre, uint32_t rim, uint32_t disc) {
     glm::vec3 out{0, side, 0};
-    addObject(s, tyre, m.rubber, placeAlong(hub, out));
-    addObject(s, rim, m.aluminium, placeAlong(hub, out));
-    addObject(s, disc, m.steel, placeAlong(hub - out * 0.09f, out));
+    const std::string where = corner(hub), group = joinPath(kCar, "wheel " + where);
+    addNamedObject(s, tyre, m.rubber, placeAlong(hub, out), group, "tyre " + where);
+    addNamedObject(s, rim, m.aluminium, placeAlong(hub, out), group, "wheel rim " + where);
+    addNamedObject(s, disc, m.steel, placeAlong(hub - out * 0.09f, out), group,
+                   "brake disc and caliper " + where);
     for (int k = 0; k < 5; ++k) {
         float a = 2.0f * kPi * float(k) / 5.0f;
         glm::vec3 at = hub + glm::vec3(0.08f * std::cos(a), 0, 0.08f * std::sin(a)) + out * 0.05f;
-        addObject(s, c.nut, m.steel, placeAlong(at, out));
+        names.add(s, c.nut, m.steel, placeAlong(at, out), group);
     }
 }
 
@@ -273,64 +293,80 @@ struct Chassis {
     float length, track, railHeight, wheelbase;
 };
 
-void addFrame(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch, Rng& rng) {
+void addFrame(Scene& s, NameCounter& names, const Catalogue& c, const Materials& m,
+              const Chassis& ch, Rng& rng) {
     const uint32_t rail = makeRail(s, ch.length, ch.railHeight);
     const uint32_t cross = makeTubeBar(s, ch.track * 0.6f, "cross member");
     const uint32_t bracket = makeBracket(s);
     const float y = ch.track * 0.3f, z = 0.35f;
-    addObject(s, rail, m.framePaint, placeAt({0, y, z}));
-    addObject(s, rail, m.framePaint, glm::rotate(placeAt({0, -y, z}), kPi, {0, 0, 1}));
+    addNamedObject(s, rail, m.framePaint, placeAt({0, y, z}), kChassis, "frame rail left");
+    addNamedObject(s, rail, m.framePaint, glm::rotate(placeAt({0, -y, z}), kPi, {0, 0, 1}),
+                   kChassis, "frame rail right");
     const int members = rng.range(5, 7);
     for (int i = 0; i < members; ++i) {
         float x = -ch.length * 0.45f + ch.length * 0.9f * float(i) / float(members - 1);
-        addObject(s, cross, m.framePaint, placeAlong({x, -y, z}, {0, 1, 0}));
+        names.add(s, cross, m.framePaint, placeAlong({x, -y, z}, {0, 1, 0}), kChassis);
         for (float side : {-1.0f, 1.0f}) {
             glm::vec3 at{x, side * (y - 0.07f), z + 0.08f};
-            addObject(s, bracket, m.steel,
-                      glm::rotate(placeAt(at), side > 0 ? 0.0f : kPi, {0, 0, 1}));
+            const uint32_t b =
+                names.add(s, bracket, m.steel,
+                          glm::rotate(placeAt(at), side > 0 ? 0.0f : kPi, {0, 0, 1}), kChassis);
+            const std::string group = s.objects[b].path; // a copy: adding objects moves it
             for (float dx : {-0.04f, 0.0f, 0.04f})
-                addJoint(s, c, m, at + glm::vec3(dx, 0, 0.01f), {0, 0, 1}, 0.02f, true);
+                addJoint(s, names, c, m, at + glm::vec3(dx, 0, 0.01f), {0, 0, 1}, 0.02f, true,
+                         group);
         }
     }
-    addObject(s, makeFloorPan(s, {ch.length * 0.5f, ch.track * 0.6f}), m.framePaint,
-              placeAt({-ch.length * 0.12f, 0, z + ch.railHeight * 0.5f + 0.01f}));
+    addNamedObject(s, makeFloorPan(s, {ch.length * 0.5f, ch.track * 0.6f}), m.framePaint,
+                   placeAt({-ch.length * 0.12f, 0, z + ch.railHeight * 0.5f + 0.01f}), kChassis,
+                   "floor pan");
 }
 
-void addRunningGear(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch) {
+void addRunningGear(Scene& s, NameCounter& names, const Catalogue& c, const Materials& m,
+                    const Chassis& ch) {
     const uint32_t tyre = makeTyre(s), rim = makeRim(s), disc = makeDisc(s);
     const uint32_t axle = makeTubeBar(s, ch.track, "axle");
     const uint32_t diff = makeCasting(s, 0.3f, 0.14f, 96);
     for (float x : {-ch.wheelbase * 0.5f, ch.wheelbase * 0.5f}) {
-        addObject(s, axle, m.steel, placeAlong({x, -ch.track * 0.5f, 0.33f}, {0, 1, 0}));
+        addNamedObject(s, axle, m.steel, placeAlong({x, -ch.track * 0.5f, 0.33f}, {0, 1, 0}), kCar,
+                       x > 0 ? "axle front" : "axle rear");
         for (float side : {-1.0f, 1.0f})
-            addWheel(s, c, m, {x, side * ch.track * 0.5f, 0.33f}, side, tyre, rim, disc);
+            addWheel(s, names, c, m, {x, side * ch.track * 0.5f, 0.33f}, side, tyre, rim, disc);
     }
-    addObject(s, diff, m.aluminium,
-              placeAlong({-ch.wheelbase * 0.5f + 0.15f, 0, 0.33f}, {-1, 0, 0}));
+    addNamedObject(s, diff, m.aluminium,
+                   placeAlong({-ch.wheelbase * 0.5f + 0.15f, 0, 0.33f}, {-1, 0, 0}), kCar,
+                   "differential housing");
 }
 
-void addEngine(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch, Rng& rng) {
+void addEngine(Scene& s, NameCounter& names, const Catalogue& c, const Materials& m,
+               const Chassis& ch, Rng& rng) {
+    const std::string engine = joinPath(kCar, "engine");
     const int cylinders = rng.range(4, 6);
     const glm::vec3 size{0.11f * float(cylinders), 0.3f, 0.35f};
     const glm::vec3 base{ch.wheelbase * 0.5f - 0.1f, 0, 0.3f};
-    addObject(s, makeEngineBlock(s, size), m.enginePaint, placeAt(base));
+    addNamedObject(s, makeEngineBlock(s, size), m.enginePaint, placeAt(base), engine,
+                   "engine block");
     const uint32_t gearbox = makeCasting(s, 0.6f, 0.16f, 128);
-    addObject(s, gearbox, m.aluminium,
-              placeAlong(base + glm::vec3(-size.x * 0.5f, 0, 0.15f), {-1, 0, 0}));
+    addNamedObject(s, gearbox, m.aluminium,
+                   placeAlong(base + glm::vec3(-size.x * 0.5f, 0, 0.15f), {-1, 0, 0}), engine,
+                   "gearbox housing");
     const uint32_t pulley = makePulley(s, 0.07f);
     for (int k = 0; k < 3; ++k)
-        addObject(s, pulley, m.steel,
+        names.add(s, pulley, m.steel,
                   placeAlong(base + glm::vec3(size.x * 0.5f + 0.02f, 0.08f * float(k - 1),
                                               0.1f + 0.08f * float(k % 2)),
-                             {1, 0, 0}));
+                             {1, 0, 0}),
+                  engine);
     for (int i = 0; i < cylinders * 8; ++i) {
         float x = -size.x * 0.5f + size.x * (float(i / 2) + 0.5f) / float(cylinders * 4);
         glm::vec3 at = base + glm::vec3(x, (i % 2 ? 1.0f : -1.0f) * 0.13f, size.z + 0.005f);
-        addObject(s, c.bolt, m.blackSteel, placeAlong(at, {0, 0, 1}));
-        addObject(s, c.washer, m.steel, placeAlong(at - glm::vec3(0, 0, 0.0015f), {0, 0, 1}));
+        names.add(s, c.bolt, m.blackSteel, placeAlong(at, {0, 0, 1}), engine);
+        names.add(s, c.washer, m.steel, placeAlong(at - glm::vec3(0, 0, 0.0015f), {0, 0, 1}),
+                  engine);
     }
     const uint32_t fins = makeFinPack(s, 160, {0.6f, 0.4f});
-    addObject(s, fins, m.copper, placeAt({ch.length * 0.5f - 0.05f, 0, 0.6f}));
+    addNamedObject(s, fins, m.copper, placeAt({ch.length * 0.5f - 0.05f, 0, 0.6f}), kCar,
+                   "radiator");
 }
 
 struct Site {
@@ -384,8 +420,8 @@ glm::ivec3 fillPlan(const Counts& gap, const Counts& a, const Counts& b, const C
     return glm::max(glm::ivec3(glm::round(n)), glm::ivec3(0));
 }
 
-void addFill(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch, Rng& rng,
-             const Counts& target) {
+void addFill(Scene& s, NameCounter& names, const Catalogue& c, const Materials& m,
+             const Chassis& ch, Rng& rng, const Counts& target) {
     Counts now = countsOf(s);
     Counts gap{target.objects - now.objects, target.parts - now.parts,
                target.triangles - now.triangles};
@@ -397,23 +433,27 @@ void addFill(Scene& s, const Catalogue& c, const Materials& m, const Chassis& ch
     for (int i = 0; i < plan.y; ++i) {
         int row = i % 6, col = i / 6;
         glm::vec3 at{-ch.length * 0.4f + 0.09f * float(col), -0.25f + 0.1f * float(row), 0.15f};
-        addObject(s, c.cluster, i % 3 ? m.steel : m.brass,
-                  placeAlong(at, {0, 0, 1}, rng.uniform(0.0f, kPi)));
+        names.add(s, c.cluster, i % 3 ? m.steel : m.brass,
+                  placeAlong(at, {0, 0, 1}, rng.uniform(0.0f, kPi)),
+                  joinPath(kCar, "transfer gearbox"));
     }
     for (int i = 0; i < plan.z; ++i) {
         float y = (i % 2 ? 1.0f : -1.0f) * (ch.track * 0.3f - 0.12f + 0.03f * float(i / 2 % 8));
-        addObject(s, c.hose, i % 4 ? m.rubber : m.copper,
-                  placeAt({-1.6f, y, 0.08f + 0.03f * float(i / 16)}));
+        names.add(s, c.hose, i % 4 ? m.rubber : m.copper,
+                  placeAt({-1.6f, y, 0.08f + 0.03f * float(i / 16)}), joinPath(kCar, "hoses"));
     }
     const std::vector<Site> sites = fastenerSites(ch, rng);
     for (int i = 0; i < plan.x; ++i) {
         Site site = sites[size_t(i / 2) % sites.size()];
         // Past the last site the rows repeat a little higher: a second row of clips.
         site.at.z += float(size_t(i / 2) / sites.size()) * 0.02f;
+        const std::string rail =
+            joinPath(kChassis, site.at.y > 0 ? "frame rail left" : "frame rail right");
         if (i % 2 == 0)
-            addObject(s, c.bolt, m.blackSteel, placeAlong(site.at, site.axis));
+            names.add(s, c.bolt, m.blackSteel, placeAlong(site.at, site.axis), rail);
         else
-            addObject(s, c.nut, m.steel, placeAlong(site.at - site.axis * 0.016f, -site.axis));
+            names.add(s, c.nut, m.steel, placeAlong(site.at - site.axis * 0.016f, -site.axis),
+                      rail);
     }
 }
 
@@ -424,10 +464,11 @@ Scene makeCarLike(uint64_t seed) {
     const Catalogue c = makeCatalogue(s, rng);
     const Chassis ch{rng.uniform(4.0f, 4.4f), rng.uniform(1.45f, 1.6f), 0.16f,
                      rng.uniform(2.5f, 2.8f)};
-    addFrame(s, c, m, ch, rng);
-    addRunningGear(s, c, m, ch);
-    addEngine(s, c, m, ch, rng);
-    addFill(s, c, m, ch, rng, {2260, 99000, 2350000});
+    NameCounter names;
+    addFrame(s, names, c, m, ch, rng);
+    addRunningGear(s, names, c, m, ch);
+    addEngine(s, names, c, m, ch, rng);
+    addFill(s, names, c, m, ch, rng, {2260, 99000, 2350000});
     return s;
 }
 
@@ -438,27 +479,33 @@ Scene makeSmall(uint64_t seed) {
     const Materials m = addMaterials(s, rng);
     Catalogue c = makeFasteners(s);
     c.cluster = makeGearCluster(s, rng.range(30, 40));
+    NameCounter names;
+    const std::string module = "gearbox module", plate = joinPath(module, "base plate");
     MeshBuilder mb;
     addPlateWithHoles(mb, {}, {{0.6f, 0.4f}, 0.01f, {12, 8}, 3, 0.5f, 16});
-    addObject(s, mb.finish(s, "base plate"), m.framePaint, placeAt({0, 0, 0}));
+    addNamedObject(s, mb.finish(s, "base plate"), m.framePaint, placeAt({0, 0, 0}), module,
+                   "base plate");
     const int clusters = rng.range(3, 5);
     for (int i = 0; i < clusters; ++i)
-        addObject(s, c.cluster, m.steel,
+        names.add(s, c.cluster, m.steel,
                   placeAlong({-0.2f + 0.12f * float(i), -0.06f + 0.05f * float(i % 2), 0.005f},
-                             {0, 0, 1}, rng.uniform(0.0f, kPi)));
+                             {0, 0, 1}, rng.uniform(0.0f, kPi)),
+                  module);
     const uint32_t bracket = makeBracket(s);
     for (int i = 0; i < 4; ++i) {
         glm::vec3 at{-0.24f + 0.16f * float(i), -0.15f, 0.008f};
-        addObject(s, bracket, m.steel, placeAt(at));
+        const uint32_t b = names.add(s, bracket, m.steel, placeAt(at), module);
+        const std::string group = s.objects[b].path; // a copy: adding objects moves it
         for (float dx : {-0.04f, 0.0f, 0.04f})
-            addJoint(s, c, m, at + glm::vec3(dx, 0, 0.01f), {0, 0, 1}, 0.02f, true);
+            addJoint(s, names, c, m, at + glm::vec3(dx, 0, 0.01f), {0, 0, 1}, 0.02f, true, group);
     }
     // The back rows of plate holes (every third cell has one) carry bolts with washers.
     for (int cell = 5 * 12; cell < 8 * 12; cell += 3) {
         glm::vec3 at{-0.275f + 0.05f * float(cell % 12), -0.175f + 0.05f * float(cell / 12),
                      0.0065f};
-        addJoint(s, c, m, at, {0, 0, 1}, 0.013f, false);
-        addObject(s, c.washer, m.steel, placeAlong(at - glm::vec3(0, 0, 0.0015f), {0, 0, 1}));
+        addJoint(s, names, c, m, at, {0, 0, 1}, 0.013f, false, plate);
+        names.add(s, c.washer, m.steel, placeAlong(at - glm::vec3(0, 0, 0.0015f), {0, 0, 1}),
+                  plate);
     }
     return s;
 }

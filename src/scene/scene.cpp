@@ -35,8 +35,13 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
     const auto ref = scene.locate(uniquePartId);
     if (!ref) return std::nullopt;
     const Object& object = scene.objects[ref->object];
-    return PartInfo{uniquePartId, ref->object, ref->localPart, object.geometry,
-                    scene.part(object, ref->localPart).triangleCount};
+    return PartInfo{uniquePartId,
+                    ref->object,
+                    ref->localPart,
+                    object.geometry,
+                    scene.part(object, ref->localPart).triangleCount,
+                    object.name,
+                    object.path};
 }
 
 Bounds Scene::bounds() const {
@@ -56,14 +61,36 @@ Bounds Scene::bounds() const {
     return b;
 }
 
-uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world) {
+uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+                   std::string name, std::string path) {
     Object object;
     object.geometry = geometry;
     object.material = material;
     object.world = world;
     object.uniquePartOffset = scene.uniquePartCount();
-    scene.objects.push_back(object);
+    object.name = std::move(name);
+    object.path = std::move(path);
+    scene.objects.push_back(std::move(object));
     return static_cast<uint32_t>(scene.objects.size() - 1);
+}
+
+std::string joinPath(const std::string& group, const std::string& name) {
+    return group.empty() ? name : group + '/' + name;
+}
+
+uint32_t addNamedObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+                        const std::string& group, const std::string& name) {
+    return addObject(scene, geometry, material, world, name, joinPath(group, name));
+}
+
+std::string NameCounter::next(const std::string& kind) {
+    return kind + " #" + std::to_string(++counts_[kind]);
+}
+
+uint32_t NameCounter::add(Scene& scene, uint32_t geometry, uint32_t material,
+                          const glm::mat4& world, const std::string& group) {
+    return addNamedObject(scene, geometry, material, world, group,
+                          next(scene.geometries[geometry].name));
 }
 
 uint32_t addMaterial(Scene& scene, std::string name, glm::vec4 color) {

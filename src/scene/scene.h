@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct Object {
     uint32_t material = 0;
     glm::mat4 world{1.0f};
     uint32_t uniquePartOffset = 0;
+    std::string name; // what a person calls it, e.g. "bolt M10 #12"
+    // The names of the nodes from the scene root down to this object, joined by '/'; the last
+    // one is the object's own name, e.g. "car/wheel front left/tyre front left".
+    std::string path;
 };
 
 struct Bounds {
@@ -65,6 +70,8 @@ struct PartInfo {
     uint32_t localPart = 0;
     uint32_t geometry = 0;
     uint32_t triangleCount = 0;
+    std::string name; // the object's
+    std::string path;
 };
 
 struct Scene {
@@ -90,8 +97,30 @@ struct Scene {
 std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId);
 
 // Adds an object and gives it the next free range of unique part IDs.
-uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world);
+uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+                   std::string name = {}, std::string path = {});
 uint32_t addMaterial(Scene& scene, std::string name, glm::vec4 color);
+
+// `group` + '/' + `name`, or just `name` at the root (empty `group`).
+std::string joinPath(const std::string& group, const std::string& name);
+
+// For generated scenes: adds an object called `name` whose path is `group`/`name`.
+uint32_t addNamedObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+                        const std::string& group, const std::string& name);
+
+// Numbers generated object names per kind so that they are unique within a scene: the first
+// next("bolt M10") is "bolt M10 #1", the second "bolt M10 #2", whatever came in between.
+class NameCounter {
+  public:
+    std::string next(const std::string& kind);
+    // addNamedObject for one more object of `geometry`'s kind, numbered after the geometry's
+    // name: the 12th of geometry "bolt M10" is "bolt M10 #12".
+    uint32_t add(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+                 const std::string& group);
+
+  private:
+    std::map<std::string, uint32_t> counts_;
+};
 
 // Throws std::invalid_argument naming the first inconsistency (index out of range, parts not
 // covering their geometry's triangles, overlapping unique IDs, ...).
