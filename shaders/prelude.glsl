@@ -33,7 +33,14 @@ layout(push_constant, std430) uniform PushBlock {
     DrawPush push;
 };
 
-FrameData loadFrame() { return FrameRef(push.frameAddress).frame; }
+// Whether unique part `id` is in the bitset at `address` (see shared.h).
+bool partInSet(uint64_t address, uint id) {
+    return (UintsRef(address).values[id >> 5] & (1u << (id & 31u))) != 0u;
+}
+
+FrameData loadFrame() {
+    return FrameRef(push.frameAddress).frame;
+}
 
 ObjectData loadObject(uint64_t objectsAddress, uint objectIndex) {
     return ObjectsRef(objectsAddress).objects[objectIndex];

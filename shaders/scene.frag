@@ -15,8 +15,12 @@
 
 // Depth test before the shader, even though the pick writes memory: keeps early-Z for every
 // technique, and only fragments that pass the test at their time take part in the pick, which
-// makes the pick agree with the ID attachment even where surfaces share a depth.
+// makes the pick agree with the ID attachment even where surfaces share a depth. While parts
+// are hidden (IDV_HIDE_PARTS) the test must come after the shader: a fragment discarded after
+// an early test would still have written its depth and hidden what is behind it.
+#if !IDV_HIDE_PARTS
 layout(early_fragment_tests) in;
+#endif
 
 layout(location = VARYING_WORLD_POS) in vec3 inWorldPos;
 layout(location = VARYING_WORLD_NORMAL) in vec3 inWorldNormal;
@@ -62,12 +66,16 @@ void main() {
     uint localPart = lookupLocalPart(frame, draw, uint(gl_PrimitiveID));
 #endif
     uint uniquePartId = object.uniquePartOffset + localPart;
+    // Before any discard: derivatives need the whole quad.
+    float depth = pickDepth(frame);
+#if IDV_HIDE_PARTS
+    if (partInSet(frame.hiddenAddress, uniquePartId)) discard;
+#endif
     outPartId = uniquePartId;
 
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
     vec3 color = headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
 
-    float depth = pickDepth(frame);
     PickRef pick = PickRef(frame.pickAddress);
     // With MSAA, sample 0 decides, as in the resolve of the ID attachment (see targets.h):
     // only fragments covering it take part. Without MSAA the mask is always 1.
@@ -76,7 +84,7 @@ void main() {
         atomicMin(pick.pick.current, (depthBits << 32) | uint64_t(uniquePartId));
     }
     if (uniquePartId == uint(pick.pick.last)) color = highlightHovered(color, frame.time);
-    if (uniquePartId == frame.selectedPart) color = highlightSelected(color);
+    if (partInSet(frame.selectedAddress, uniquePartId)) color = highlightSelected(color);
     outColor = vec4(color, 1.0);
 #endif
 }

@@ -81,11 +81,18 @@ struct FrameData {
     uint64_t meshletsAddress;    // Meshlet[] (mesh techniques), or 0
     uint64_t meshletDataAddress; // uint[]: meshlet vertices, then packed triangles, or 0
     uint64_t drawIndicesAddress; // uint[]: the draw index attribute (mdi-attribute), or 0
+    uint64_t selectedAddress;    // uint[]: bitset over unique part IDs, drawn highlighted
+    uint64_t hiddenAddress;      // uint[]: bitset over unique part IDs, never drawn (see HIDING)
     uvec2 pickPixel;             // framebuffer pixel whose nearest part is picked; x NO_PICK: none
-    uint selectedPart;           // unique part ID drawn with the steady highlight, or BACKGROUND_ID
-    float time;                  // seconds, drives the blink of the hovered part
     vec2 sampleZero;             // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
+    float time;                  // seconds, drives the blink of the hovered part
+    uint unused;                 // keeps the size a multiple of 16
 };
+
+// Part bitsets (selection, hidden parts, the result of a part set pass): bit (id & 31) of
+// word (id >> 5) is set when unique part `id` is in the set. Hidden parts are discarded by a
+// pipeline variant without early fragment tests (IDV_HIDE_PARTS), used only while something
+// is hidden: with early tests a discarded fragment would still write depth.
 
 // The pick: during the scene pass, fragments at FrameData::pickPixel atomicMin `current` with
 // (depth bits << 32 | unique part ID); positive floats order like their bits, so the nearest
@@ -168,9 +175,50 @@ struct AnimationPush {
     float explode; // 0: at rest, 1: twice as far from the scene centre
 };
 
+// Passes over the resolved ID image, after the scene pass (render/id_passes.h). Both run in
+// 16x16 workgroups, one invocation per pixel.
+IDV_CONST ID_PASS_TILE = 16;
+// edges.comp: a pixel is drawn in a line colour when the square window of `width` pixels
+// starting width/2 pixels up-left of it and ending (width+1)/2 down-right holds two different
+// IDs (the background is an ID too). The selection's outline takes width + 2 and a window
+// holding selected and unselected IDs; the hovered part's outline width + 1. The tile it
+// reads holds the largest window's margin: EDGE_WIDTH_MAX + 2 wide.
+IDV_CONST EDGE_WIDTH_MAX = 3;
+IDV_CONST EDGE_LINES = 1u;    // EdgePush::flags: draw part edges
+IDV_CONST EDGE_SELECTED = 2u; // outline the selected parts
+IDV_CONST EDGE_HOVERED = 4u;  // outline the hovered part (PickData::last)
+struct EdgePush {
+    vec4 lineColor;           // display-encoded RGBA written where an edge is (the colour image's)
+    vec4 selectColor;         // the selection's outline
+    vec4 hoverColor;          // the hovered part's outline
+    uint64_t selectedAddress; // bitset, or 0
+    uint64_t pickAddress;     // PickData: `last` names the hovered part
+    uvec2 extent;
+    uint width; // 1 to EDGE_WIDTH_MAX
+    uint flags;
+};
+
+// part_set.comp: every unique part ID in an inclusive pixel rectangle of the ID image goes
+// into a bitset, and each bit set for the first time counts once: PartSetResult::count.
+struct PartSetPush {
+    uint64_t resultAddress; // PartSetResult
+    uvec2 rectMin;          // inclusive, pixels
+    uvec2 rectMax;          // inclusive
+    uint words;             // bitset words: ceil(unique parts / 32)
+    uint unused;
+};
+struct PartSetResult {
+    uint count;
+    uint unused[3];
+    // followed by `words` uints of bitset
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 48);
+static_assert(sizeof(PartSetPush) == 32);
+static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 192 && offsetof(FrameData, pickPixel) == 168);
+static_assert(sizeof(FrameData) == 208 && offsetof(FrameData, pickPixel) == 184);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(DrawData) == 32);
 static_assert(sizeof(Meshlet) == 16);

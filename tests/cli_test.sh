@@ -99,6 +99,38 @@ done <<<"$picks"
     { echo "FAIL pick-json:"; echo "$picks"; failures=$((failures + 1)); }
 expect pick-outside 2 'pixel 200,10 is outside the 160x100 image' -- "$idview" --headless --size 160x100 --pick 200,10
 
+# --select-rect and --visible-parts: one JSON line each, the parts the ID image holds in the
+# rectangle (corners given in any order, both included) or in the whole image, sorted.
+ids_in() { # ids_in X0 Y0 X1 Y1: the sorted unique IDs of $work/r.ids (160 wide) in the box
+    od -An -tu4 -v -w640 "$work/r.ids" | awk -v x0="$1" -v y0="$2" -v x1="$3" -v y1="$4" \
+        '{ for (x = x0; x <= x1; ++x) if (NR - 1 >= y0 && NR - 1 <= y1 && $(x + 1) != 4294967295) print $(x + 1) }' |
+        sort -nu | paste -sd, -
+}
+sets=$("$idview" --headless --validation --scene tiles --size 160x100 --frames 1 \
+    --select-rect 70,50,40,30 --visible-parts --id-image "$work/r.ids" 2>/dev/null)
+rect_parts=$(ids_in 40 30 70 50)
+all_parts=$(ids_in 0 0 159 99)
+rect_count=$(tr ',' '\n' <<<"$rect_parts" | grep -c .)
+all_count=$(tr ',' '\n' <<<"$all_parts" | grep -c .)
+want=$(printf '{"rect":[40,30,70,50],"parts":[%s],"count":%s}\n{"count":%s,"parts":[%s]}' \
+    "$rect_parts" "$rect_count" "$all_count" "$all_parts")
+[[ $sets == "$want" && $rect_count -gt 3 && $all_count -gt $rect_count ]] && echo "ok   part-set-json" ||
+    { echo "FAIL part-set-json: got"; echo "$sets"; echo "want"; echo "$want"; failures=$((failures + 1)); }
+# Hiding what the rectangle showed: none of it is visible any more.
+hidden=$("$idview" --headless --validation --scene tiles --size 160x100 --frames 1 --hide "$rect_parts" \
+    --visible-parts 2>/dev/null)
+left=$(sed -n 's/.*"parts":\[\([0-9,]*\)\].*/\1/p' <<<"$hidden" | tr ',' '\n')
+if [[ -n $left ]] && ! grep -qxF -f <(tr ',' '\n' <<<"$rect_parts") <<<"$left"; then
+    echo "ok   hide-visible-parts"
+else
+    echo "FAIL hide-visible-parts: hid $rect_parts, visible: $hidden"; failures=$((failures + 1))
+fi
+expect hide-unknown-part 1 '^idview: error: --hide: part 99999 is not in the scene \(its parts are 0 to 24\)' -- \
+    "$idview" --headless --scene tiles --size 16x16 --frames 1 --hide 99999
+expect hide-and-isolate 2 'cannot be combined' -- "$idview" --headless --hide 1 --isolate 2
+expect rect-outside 2 'pixel 160,10 is outside the 160x100 image' -- "$idview" --headless --size 160x100 --select-rect 0,0,160,10
+expect edge-colour 2 '--edge-color expects a colour as RRGGBB' -- "$idview" --headless --edge-color red
+
 # Without --headless idview opens a window; with no display it says so in one line, exit 1.
 out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$idview" --frames 1 2>&1)
 rc=$?

@@ -228,3 +228,33 @@ TEST(PickJson, NameAndPathFollowLocalPartAndAreEscaped) {
               R"({"x":7,"y":8,"part":null,"object":null,"local_part":null,"name":null,)"
               R"("path":null,"depth":null})");
 }
+
+TEST(Cli, PartFlags) {
+    auto o = app::parseArgs(std::vector<std::string>{
+        "--size", "100x50", "--select-rect", "90,40,10,5", "--hide", "3,1,4", "--visible-parts",
+        "--edges", "--edge-width", "3", "--edge-color", "FF8000"});
+    ASSERT_TRUE(o.selectRect.has_value());
+    // The corners in any order: the rectangle between them.
+    EXPECT_EQ(*o.selectRect, (render::PartSetQuery{{10, 5}, {90, 40}}));
+    EXPECT_EQ(o.hide, (std::vector<uint32_t>{3, 1, 4}));
+    EXPECT_TRUE(o.visibleParts);
+    EXPECT_TRUE(o.render.edges.on);
+    EXPECT_EQ(o.render.edges.width, 3u);
+    EXPECT_EQ(o.render.edges.color, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+    EXPECT_EQ(app::parseArgs(std::vector<std::string>{"--isolate", "7"}).isolate,
+              std::vector<uint32_t>{7});
+    const app::Options d;
+    EXPECT_FALSE(d.render.edges.on);
+    EXPECT_NE(app::usage().find("(default 101014)"), std::string::npos); // the edge colour's
+    for (const auto& bad : std::vector<std::vector<std::string>>{
+             {"--size", "100x50", "--select-rect", "0,0,100,10"}, // outside the image
+             {"--select-rect", "1,2,3"},
+             {"--hide", "1,,2"},
+             {"--hide", "x"},
+             {"--hide", "1", "--isolate", "2"},
+             {"--edge-width", "4"},
+             {"--edge-width", "0"},
+             {"--edge-color", "12345"},
+             {"--edge-color", "GG0000"}})
+        EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
+}

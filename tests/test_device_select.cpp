@@ -16,6 +16,7 @@ vk::DeviceInfo capable(uint32_t index, const char* name, VkPhysicalDeviceType ty
     d.bufferDeviceAddress = d.shaderInt64 = d.shaderBufferInt64Atomics = d.geometryShader = true;
     d.multiDrawIndirect = d.drawIndirectFirstInstance = d.fragmentStoresAndAtomics =
         d.independentBlend = true;
+    d.pushDescriptor = true;
     d.graphicsQueueFamily = 0;
     return d;
 }
@@ -50,7 +51,7 @@ TEST(DeviceSelect, NamesEveryMissingRequirement) {
     EXPECT_EQ(missing[3], "a graphics queue with timestamps");
 
     vk::DeviceInfo none;
-    EXPECT_EQ(vk::missingRequirements(none).size(), 10u);
+    EXPECT_EQ(vk::missingRequirements(none).size(), 11u);
 }
 
 TEST(DeviceSelect, PrefersDiscreteThenIntegratedThenCpu) {

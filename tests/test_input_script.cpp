@@ -64,6 +64,31 @@ TEST(InputScript, ParsesEveryCommand) {
     EXPECT_EQ(commands[12].op, app::ScriptOp::Quit);
 }
 
+TEST(InputScript, BoxObjectAndModifiers) {
+    const auto commands = app::parseScript("1 box 10 20 300 200\n"
+                                           "2 box 1 2 3 4 add\n"
+                                           "3 box 1 2 3 4 remove\n"
+                                           "4 object  bolt M10 #12 \n"
+                                           "5 key shift+h\n"
+                                           "6 key CTRL+alt+E\n",
+                                           "s.txt");
+    ASSERT_EQ(commands.size(), 6u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Box);
+    EXPECT_DOUBLE_EQ(commands[0].values[2], 300.0);
+    EXPECT_EQ(commands[0].mods, GLFW_MOD_SHIFT); // a plain box replaces, as Shift+drag does
+    EXPECT_EQ(commands[1].mods, GLFW_MOD_CONTROL);
+    EXPECT_EQ(commands[2].mods, GLFW_MOD_ALT);
+    EXPECT_EQ(commands[3].op, app::ScriptOp::Object);
+    EXPECT_EQ(commands[3].text, "bolt M10 #12"); // the rest of the line, spaces inside kept
+    EXPECT_EQ(commands[4].key, GLFW_KEY_H);
+    EXPECT_EQ(commands[4].mods, GLFW_MOD_SHIFT);
+    EXPECT_EQ(commands[5].key, GLFW_KEY_E);
+    EXPECT_EQ(commands[5].mods, GLFW_MOD_CONTROL | GLFW_MOD_ALT);
+    for (const char* bad : {"1 box 1 2 3\n", "1 box 1 2 3 4 toggle\n", "1 object\n",
+                            "1 key super+H\n", "1 key shift+\n", "1 box -1 2 3 4\n"})
+        EXPECT_THROW(app::parseScript(bad, "s.txt"), app::ScriptError) << bad;
+}
+
 TEST(InputScript, KeyNames) {
     EXPECT_EQ(app::scriptKeyCode("f"), GLFW_KEY_F);
     EXPECT_EQ(app::scriptKeyCode("F1"), GLFW_KEY_F1);

@@ -72,6 +72,12 @@ TEST(Shaders, VariantKeysCoverEveryChoice) {
                                                << " passthrough " << passthrough;
                         ++expected;
                     }
+            // The hiding variant, once per technique and mode with part IDs.
+            render::PipelineKey hiding{&t, &m};
+            hiding.hiding = true;
+            if (t.isFloor()) continue;
+            EXPECT_EQ(has(hiding.effective(true)), 1) << t.name << " + " << m.name << " hiding";
+            ++expected;
         }
     EXPECT_EQ(keys.size(), expected); // nothing else
 }

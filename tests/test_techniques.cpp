@@ -203,7 +203,8 @@ namespace {
 
 // The layer's synchronization validation over every technique and mode (and the no-id
 // floor), with what adds barriers: MSAA resolve, the pick's reset and copies, the animation's
-// compute pass and the readback. Any hazard it reports counts as a validation message.
+// compute pass, the edge and part set passes over the ID image, hidden parts (with MSAA) and
+// the readback. Any hazard it reports counts as a validation message.
 TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
     Reference& ref = reference("small-x2");
     for (uint32_t msaa : {1u, 4u}) {
@@ -213,8 +214,12 @@ TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
             for (const auto& t : render::techniques()) {
                 configs.push_back(testing_support::settingsFor(t, m));
                 configs.back().pipeline.msaa = msaa;
+                configs.back().edges.on = true;
             }
         app::Options o = referenceOptions();
+        o.selectRect = render::PartSetQuery{{10, 10}, {60, 50}};
+        o.visibleParts = true;
+        if (msaa > 1) o.hide = {0, 1, 2, 3, 40, 41};
         o.width = 96;
         o.height = 64;
         o.syncValidation = true;

@@ -109,13 +109,18 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
         // As headless and the viewer open the scene.
         render::FrameParams params = cameraFrame(initialCamera(loaded, aspect), rig.extent);
+        // --visible-parts: every frame counts the parts it shows, as the viewer's panel does.
+        if (options.visibleParts)
+            params.partSets = {{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}}};
         std::map<std::pair<std::string, std::string>, double> floorMs; // (floor, mode)
         uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
             const render::PipelineKey& key = list[i].pipeline;
-            if (i == 0) // the scene's upload is timed with the first switch
+            if (i == 0) { // the scene's upload is timed with the first switch
                 rig.renderer.setScene(scene, list[i]);
-            else
+                rig.renderer.setHidden(hiddenParts(options, scene));
+                report.hiddenParts = rig.renderer.hidden().size();
+            } else
                 rig.renderer.configure(scene, list[i]);
             std::vector<double> cpuMs;
             const uint32_t total = warmup + options.frames;
@@ -135,6 +140,8 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const auto& all = rig.slots.gpuMilliseconds();
             const size_t timed = std::min<size_t>(options.frames, all.size());
             const std::vector<double> gpuMs(all.end() - long(timed), all.end());
+            const auto& passes = rig.slots.idPassMilliseconds();
+            const std::vector<double> idPassMs(passes.end() - long(timed), passes.end());
 
             BenchmarkRow row;
             row.renderer = key.technique->name;
@@ -142,6 +149,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             row.gpuMsMedian = percentile(gpuMs, 0.5);
             row.gpuMsP90 = percentile(gpuMs, 0.9);
             row.cpuMsMedian = percentile(cpuMs, 0.5);
+            row.idPassMsMedian = percentile(idPassMs, 0.5);
             row.draws = rig.renderer.stats().draws;
             row.triangles = rig.renderer.stats().triangles;
             const render::RenderStats& stats = rig.renderer.stats();
@@ -162,9 +170,11 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const double floor = floorMs[{row.floor, row.mode}];
             row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
             report.rows.push_back(row);
-            std::fprintf(stderr, "benchmark: [%zu/%zu] %s + %s: GPU %.3f ms, CPU %.3f ms\n", i + 1,
-                         list.size(), row.renderer.c_str(), row.mode.c_str(), row.gpuMsMedian,
-                         row.cpuMsMedian);
+            std::fprintf(
+                stderr,
+                "benchmark: [%zu/%zu] %s + %s: GPU %.3f ms (+ %.3f ID passes), CPU %.3f ms\n",
+                i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(), row.gpuMsMedian,
+                row.idPassMsMedian, row.cpuMsMedian);
         }
     }
     report.validationMessages = instance.validationMessages();
@@ -183,7 +193,9 @@ std::string benchmarkJson(const BenchmarkReport& r) {
         << ",\"sort_draws\":" << (s.draws.sortDraws ? "true" : "false")
         << ",\"part_weight\":" << fixed(s.shading.partWeight, 3)
         << ",\"colorize_draws\":" << (s.shading.colorizeDraws ? "true" : "false")
-        << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false") << "},\n"
+        << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false")
+        << ",\"edges\":" << (s.edges.on ? "true" : "false") << ",\"edge_width\":" << s.edges.width
+        << ",\"hidden_parts\":" << r.hiddenParts << "},\n"
         << " \"results\":[";
     for (size_t i = 0; i < r.rows.size(); ++i) {
         const BenchmarkRow& row = r.rows[i];
@@ -191,9 +203,10 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << ",\"mode\":" << jsonString(row.mode)
             << ",\"gpu_ms_median\":" << fixed(row.gpuMsMedian, 4)
             << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
-            << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4) << ",\"draws\":" << row.draws
-            << ",\"triangles\":" << row.triangles << ",\"id_bytes\":" << row.idBytes
-            << ",\"geometry_bytes\":" << row.geometryBytes
+            << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4)
+            << ",\"id_pass_ms_median\":" << fixed(row.idPassMsMedian, 4)
+            << ",\"draws\":" << row.draws << ",\"triangles\":" << row.triangles
+            << ",\"id_bytes\":" << row.idBytes << ",\"geometry_bytes\":" << row.geometryBytes
             << ",\"added_vertices\":" << row.addedVertices
             << ",\"added_vertex_bytes\":" << row.addedVertexBytes
             << ",\"meshlets\":" << row.meshlets << ",\"floor\":" << jsonString(row.floor)

@@ -14,6 +14,7 @@ struct BenchmarkRow {
     std::string renderer, mode;
     double gpuMsMedian = 0, gpuMsP90 = 0; // timestamps around the scene pass
     double cpuMsMedian = 0;               // recording and submitting one frame
+    double idPassMsMedian = 0;            // the passes over the ID image after it (--edges), GPU
     size_t draws = 0;
     uint64_t triangles = 0;
     uint64_t idBytes = 0; // the technique's ID data
@@ -36,6 +37,7 @@ struct BenchmarkReport {
     std::string size, scene;
     uint32_t copies = 1, frames = 0;
     render::RenderSettings settings; // every row's, but for technique and mode
+    uint32_t hiddenParts = 0;        // --hide / --isolate
     std::vector<BenchmarkRow> rows;  // floor rows first, then renderer-major order
     // Techniques left out because the device cannot run them, each with the reason.
     std::vector<std::pair<std::string, std::string>> skipped;

@@ -64,6 +64,46 @@ Options::Pixel parsePixel(const std::string& flag, const std::string& text) {
             parseCount(flag + " y", text.substr(comma + 1), 0, 16383)};
 }
 
+// "4,7,12": unique part IDs.
+std::vector<uint32_t> parseIds(const std::string& flag, const std::string& text) {
+    std::vector<uint32_t> ids;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        ids.push_back(parseCount(flag, text.substr(start, comma - start), 0, 0xFFFFFFFEu));
+        start = comma + 1;
+    }
+    return ids;
+}
+
+render::PartSetQuery parseRect(const std::string& flag, const std::string& text) {
+    std::vector<uint32_t> corners;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        corners.push_back(parseCount(flag, text.substr(start, comma - start), 0, 16383));
+        start = comma + 1;
+    }
+    if (corners.size() != 4) throw UsageError(flag + " expects X0,Y0,X1,Y1, not '" + text + "'");
+    return render::spanning({corners[0], corners[1]}, {corners[2], corners[3]});
+}
+
+// "RRGGBB" in hex, as displayed.
+glm::vec3 parseColor(const std::string& flag, const std::string& text) {
+    uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value, 16);
+    if (text.size() != 6 || error != std::errc() || end != text.data() + text.size())
+        throw UsageError(flag + " expects a colour as RRGGBB in hex, not '" + text + "'");
+    return glm::vec3((value >> 16) & 0xFF, (value >> 8) & 0xFF, value & 0xFF) / 255.0f;
+}
+
+std::string hexColor(glm::vec3 color) {
+    char text[8];
+    const glm::uvec3 c = glm::uvec3(glm::round(glm::clamp(color, 0.0f, 1.0f) * 255.0f));
+    std::snprintf(text, sizeof text, "%02x%02x%02x", c.r, c.g, c.b);
+    return text;
+}
+
 // " (default 16)", " 1 to 32 (default 16)": help text from the settings' own defaults.
 template <typename T>
 std::string byDefault(const T& value) {
@@ -253,6 +293,27 @@ const std::vector<Flag>& flags() {
              [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
             {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
              [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
+            {"--select-rect", "X0,Y0,X1,Y1",
+             "headless: select every part visible in the pixel rectangle (corners included) "
+             "as a box selection would, and print one JSON line {rect,parts,count}",
+             [](Options& o, auto& v) { o.selectRect = parseRect("--select-rect", v); }},
+            {"--hide", "ID,...", "headless: do not draw these unique parts (nor pick them)",
+             [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }},
+            {"--isolate", "ID,...", "headless: draw only these unique parts",
+             [](Options& o, auto& v) { o.isolate = parseIds("--isolate", v); }},
+            on("--visible-parts",
+               "headless: print one JSON line {count,parts} of the unique parts the last frame "
+               "shows, counted on the GPU; with --benchmark every frame counts them",
+               &Options::visibleParts),
+            {"--edges", nullptr,
+             "draw part edges from the ID image, and outlines of the selected and hovered parts",
+             [](Options& o, auto&) { o.render.edges.on = true; }},
+            rangeFlag("--edge-width", "edge width in pixels (outlines are wider)",
+                      render::edgeWidthRange, d.render.edges.width,
+                      [](Options& o) -> uint32_t& { return o.render.edges.width; }),
+            {"--edge-color", "RRGGBB",
+             "edge colour in hex, as displayed" + byDefault(hexColor(d.render.edges.color)),
+             [](Options& o, auto& v) { o.render.edges.color = parseColor("--edge-color", v); }},
             {"--animate", nullptr,
              "exploded-view animation: objects move out from the scene centre to twice their "
              "distance and back every 4 s, their matrices written on the GPU each frame; headless "
@@ -379,12 +440,19 @@ Options parseArgs(const std::vector<std::string>& args) {
     auto outside = [&](const Options::Pixel& p) {
         return p.x >= options.width || p.y >= options.height;
     };
-    for (const auto* list : {&options.picks, &options.selects})
-        for (const auto& p : *list)
-            if (outside(p))
-                throw UsageError("pixel " + std::to_string(p.x) + "," + std::to_string(p.y) +
-                                 " is outside the " + std::to_string(options.width) + "x" +
-                                 std::to_string(options.height) + " image");
+    std::vector<Options::Pixel> pixels = options.picks;
+    pixels.insert(pixels.end(), options.selects.begin(), options.selects.end());
+    if (const auto& rect = options.selectRect) {
+        pixels.push_back({rect->min.x, rect->min.y});
+        pixels.push_back({rect->max.x, rect->max.y});
+    }
+    for (const auto& p : pixels)
+        if (outside(p))
+            throw UsageError("pixel " + std::to_string(p.x) + "," + std::to_string(p.y) +
+                             " is outside the " + std::to_string(options.width) + "x" +
+                             std::to_string(options.height) + " image");
+    if (!options.hide.empty() && !options.isolate.empty())
+        throw UsageError("--hide and --isolate cannot be combined: --isolate hides the rest");
     return options;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "render/pick.h"
 #include "render/settings.h"
 #include "scene/copies.h"
 #include "scene/gltf_loader.h"
@@ -70,6 +71,13 @@ struct Options {
     };
     std::vector<Pixel> picks;
     std::vector<Pixel> selects; // at most one; a vector keeps "not given" apart from 0,0
+    // Headless box selection: the parts inside the rectangle become the selection and one
+    // JSON line {"rect","parts","count"} is printed. Taken after --select, before --pick.
+    std::optional<render::PartSetQuery> selectRect;
+    // Headless visibility: the parts --hide names are not drawn; --isolate draws only its
+    // parts. Unique part IDs; checked against the scene when it is loaded.
+    std::vector<uint32_t> hide, isolate;
+    bool visibleParts = false; // print {"count","parts"} of the last frame's ID image
 
     SceneSettings scene;
     render::RenderSettings render;

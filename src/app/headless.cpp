@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 
 #include "app/image_io.h"
 #include "app/json.h"
@@ -35,6 +36,12 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
 }
 
 namespace {
+
+// What one frame found in a rectangle: the parts, and their count as the GPU counted it.
+struct RectResult {
+    scene::PartSet parts;
+    uint32_t count;
+};
 
 double median(std::vector<double> values) {
     if (values.empty()) return 0.0;
@@ -81,6 +88,19 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             slots.finish();
             return *slots.latestPick();
         };
+        // One frame that collects the parts in `rect`, waited for.
+        auto rectFrame = [&](const render::PartSetQuery& rect) {
+            render::FrameParams rectParams = params;
+            rectParams.partSets = {rect};
+            rectParams.explode = explodeAt(options.animation, frameNumber);
+            render::FrameSlot& slot = slots.begin(frameNumber++);
+            renderer.record(slot, rig.targets, rectParams);
+            slots.submit(slot);
+            slots.finish();
+            const render::PartSetReading& reading = *slots.latestPartSets();
+            return RectResult{reading.sets.front(), reading.counts.front()};
+        };
+        const render::PartSetQuery whole{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}};
         for (size_t c = 0; c < settings.size(); ++c) {
             HeadlessResult& result = results[c];
             result.width = rig.extent.width;
@@ -93,11 +113,22 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 renderer.configure(scene, settings[c]);
             rig.useMsaa(settings[c].pipeline.msaa);
             result.stats = renderer.stats();
-            params.selectedPart = gpu::BACKGROUND_ID;
+            if (c == 0) renderer.setHidden(hiddenParts(options, scene));
+            scene::PartSet selection(scene.uniquePartCount());
+            renderer.setSelection(selection);
             params.pickPixel.reset();
+            params.partSets.clear();
             for (const auto& pixel : options.selects) {
                 result.selected = pickFrame(pixel).part;
-                params.selectedPart = result.selected.value_or(gpu::BACKGROUND_ID);
+                selection.clear();
+                if (result.selected) selection.insert(*result.selected);
+                renderer.setSelection(selection);
+            }
+            if (options.selectRect) {
+                RectResult rect = rectFrame(*options.selectRect);
+                renderer.setSelection(rect.parts);
+                result.rectParts = std::move(rect.parts);
+                result.rectCount = rect.count;
             }
             for (const auto& pixel : options.picks) {
                 result.picks.push_back(pickFrame(pixel));
@@ -107,14 +138,24 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
                 params.explode = explodeAt(options.animation, frameNumber);
-                renderer.record(slot, rig.targets, params);
-                if (frame + 1 == options.frames) readback.record(slot.cmd, *rig.targets);
+                const bool lastFrame = frame + 1 == options.frames;
+                render::FrameParams frameParams = params;
+                if (lastFrame && options.visibleParts) frameParams.partSets = {whole};
+                renderer.record(slot, rig.targets, frameParams);
+                if (lastFrame) readback.record(slot.cmd, *rig.targets);
                 slots.submit(slot);
             }
             slots.finish();
+            if (options.visibleParts) {
+                const render::PartSetReading& reading = *slots.latestPartSets();
+                result.visibleParts = reading.sets.front();
+                result.visibleCount = reading.counts.front();
+            }
             const auto& gpuMs = slots.gpuMilliseconds(); // the last historyLimit at most
             const size_t timed = std::min<size_t>(slots.timedFrames() - timedBefore, gpuMs.size());
             result.gpuMs.assign(gpuMs.end() - long(timed), gpuMs.end());
+            const auto& idPassMs = slots.idPassMilliseconds();
+            result.idPassMs.assign(idPassMs.end() - long(timed), idPassMs.end());
             result.color = readback.colorBytes();
             result.ids = readback.idValues();
         }
@@ -141,11 +182,18 @@ int runHeadless(const Options& options) {
     if (!options.screenshot.empty())
         writePng(options.screenshot, result.width, result.height, result.color);
     if (!options.idImage.empty()) writeIdImage(options.idImage, result.ids);
+    if (result.rectParts)
+        std::printf("%s\n",
+                    partSetJson(*result.rectParts, result.rectCount, options.selectRect).c_str());
     for (const auto& pick : result.picks) std::printf("%s\n", pickJson(scene, pick).c_str());
+    if (result.visibleParts)
+        std::printf("%s\n",
+                    partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
 
-    // With picks, stdout carries only their JSON lines; the summary goes to stderr.
+    // With JSON lines, stdout carries only them; the summary goes to stderr.
+    const bool json = !options.picks.empty() || result.rectParts || result.visibleParts;
     std::fprintf(
-        options.picks.empty() ? stdout : stderr,
+        json ? stderr : stdout,
         "idview: %u frames of %ux%u on %s, %s%s + %s: %zu draws, %llu triangles, %u parts, "
         "scene pass GPU median %.3f ms\n",
         options.frames, result.width, result.height, result.deviceName.c_str(), key.technique->name,
@@ -153,6 +201,35 @@ int runHeadless(const Options& options) {
         static_cast<unsigned long long>(scene.drawnTriangleCount()), scene.uniquePartCount(),
         median(result.gpuMs));
     return exitCode(result.validationMessages);
+}
+
+scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene) {
+    const uint32_t count = scene.uniquePartCount();
+    scene::PartSet hidden(count);
+    const bool isolate = !options.isolate.empty();
+    for (uint32_t id : isolate ? options.isolate : options.hide) {
+        if (id >= count)
+            throw std::invalid_argument(
+                std::string(isolate ? "--isolate" : "--hide") + ": part " + std::to_string(id) +
+                " is not in the scene (its parts are 0 to " + std::to_string(count - 1) + ")");
+        hidden.insert(id);
+    }
+    if (isolate) hidden.invert();
+    return hidden;
+}
+
+std::string partSetJson(const scene::PartSet& parts, uint32_t count,
+                        const std::optional<render::PartSetQuery>& rect) {
+    std::string json = "{";
+    if (rect)
+        json += "\"rect\":[" + std::to_string(rect->min.x) + "," + std::to_string(rect->min.y) +
+                "," + std::to_string(rect->max.x) + "," + std::to_string(rect->max.y) + "],";
+    std::string list;
+    for (uint32_t id : parts.ids()) list += (list.empty() ? "" : ",") + std::to_string(id);
+    const std::string counted = "\"count\":" + std::to_string(count);
+    // --select-rect names the parts first, --visible-parts the count.
+    if (rect) return json + "\"parts\":[" + list + "]," + counted + "}";
+    return json + counted + ",\"parts\":[" + list + "]}";
 }
 
 int exitCode(uint32_t validationMessages) {

@@ -20,6 +20,14 @@ struct HeadlessResult {
     std::vector<double> gpuMs;  // scene pass time of each frame
     std::vector<render::PickReading> picks; // one per Options::picks entry, in order
     std::optional<uint32_t> selected;       // the part Options::selects picked, if any
+    // Options::selectRect: the parts in the rectangle (the selection afterwards), and their
+    // count as the GPU counted it.
+    std::optional<scene::PartSet> rectParts;
+    uint32_t rectCount = 0;
+    // Options::visibleParts: the parts in the last frame's ID image, and the GPU's count.
+    std::optional<scene::PartSet> visibleParts;
+    uint32_t visibleCount = 0;
+    std::vector<double> idPassMs; // per frame: the passes over the ID image (edges)
     std::string deviceName;
     render::RenderStats stats;
     uint32_t validationMessages = 0; // counted until the device is destroyed
@@ -30,8 +38,9 @@ struct HeadlessResult {
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
-// Picks come first: Options::selects (one frame, its part becomes the selection), then one
-// frame per Options::picks entry; the timed frames keep the last pick point hovered.
+// Options::hide / isolate apply first. Then the picks: Options::selects (one frame, its part
+// becomes the selection), Options::selectRect (one frame, its parts become the selection),
+// then one frame per Options::picks entry; the timed frames keep the last pick point hovered.
 // Throws vk::Error / vk::ShaderError with a message for people.
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
@@ -48,6 +57,14 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
 render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent);
 // --animate: the exploded view at --time, else at frame / 60 s; otherwise it stays put.
 float explodeAt(const Animation& animation, uint64_t frame);
+
+// The hidden parts Options::hide or isolate ask for in `scene`. Throws std::invalid_argument
+// naming an ID that is not in the scene.
+scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene);
+
+// The JSON lines of --select-rect and --visible-parts.
+std::string partSetJson(const scene::PartSet& parts, uint32_t count,
+                        const std::optional<render::PartSetQuery>& rect);
 
 // 0, or 3 with a line on stderr when validation reported anything (the CLI's exit codes).
 int exitCode(uint32_t validationMessages);

@@ -29,31 +29,11 @@ void requireCompute(const vk::Device& device) {
 
 Animator::Animator(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
     requireCompute(device);
-    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::AnimationPush)};
-    auto layoutInfo =
-        vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &range;
-    layout_ = vk::make(device, vkCreatePipelineLayout, layoutInfo, "animation pipeline layout");
-
-    const vk::ShaderRequest request{"animate.comp", VK_SHADER_STAGE_COMPUTE_BIT, {}, {}};
-    const vk::Handle<VkShaderModule> module =
-        vk::createShaderModule(device, compiler.compile(request), request.label());
-    auto info =
-        vk::init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
-    info.stage = vk::init<VkPipelineShaderStageCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module.get();
-    info.stage.pName = "main";
-    info.layout = layout_.get();
-    vk::faultPoint("animate objects");
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk::check(
-        vkCreateComputePipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-        "vkCreateComputePipelines (animation)");
-    pipeline_ = vk::Handle<VkPipeline>(device.handle(), pipeline);
-    device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, "animate objects");
+    ComputePipeline built =
+        createComputePipeline(device, compiler, "animate.comp", sizeof(gpu::AnimationPush),
+                              VK_NULL_HANDLE, "animate objects");
+    layout_ = std::move(built.layout);
+    pipeline_ = std::move(built.pipeline);
 }
 
 void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const {

@@ -33,7 +33,7 @@ FrameSlots::FrameSlots(vk::Device& device) : device_(device) {
 
         auto query = vk::init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
         query.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        query.queryCount = 2;
+        query.queryCount = 3;
         slot.timestamps = vk::make(device, vkCreateQueryPool, query, "scene timestamps" + suffix);
 
         slot.frameData =
@@ -73,11 +73,12 @@ FrameSlot& FrameSlots::begin(uint64_t frameNumber) {
     collect(slot);
     slot.frameNumber = frameNumber;
     slot.pickPixel.reset();
+    slot.partSetQueries.clear();
     vk::check(vkResetCommandPool(dev, slot.pool.get(), 0), "vkResetCommandPool");
     auto info = vk::init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vk::check(vkBeginCommandBuffer(slot.cmd, &info), "vkBeginCommandBuffer");
-    vkCmdResetQueryPool(slot.cmd, slot.timestamps.get(), 0, 2);
+    vkCmdResetQueryPool(slot.cmd, slot.timestamps.get(), 0, 3);
     return slot;
 }
 
@@ -117,6 +118,21 @@ bool FrameSlots::finished(uint64_t frameNumber) const {
     return true;
 }
 
+// The slot's readback, once its fence has signalled: per query a PartSetResult, then words.
+static PartSetReading readPartSets(const FrameSlot& slot) {
+    PartSetReading reading;
+    reading.frame = slot.frameNumber;
+    reading.queries = slot.partSetQueries;
+    const auto* base = static_cast<const uint32_t*>(slot.partSetsReadback.mapped());
+    const size_t stride = sizeof(gpu::PartSetResult) / 4 + slot.partSetWords;
+    for (size_t i = 0; i < slot.partSetQueries.size(); ++i) {
+        const uint32_t* result = base + stride * i;
+        reading.counts.push_back(result[0]);
+        reading.sets.emplace_back(slot.partSetParts, result + sizeof(gpu::PartSetResult) / 4);
+    }
+    return reading;
+}
+
 void FrameSlots::collect(FrameSlot& slot) {
     // The fence has signalled: what the frame kept is free, and so is every upload submitted
     // before it (a fence covers all earlier work on its queue).
@@ -129,17 +145,23 @@ void FrameSlots::collect(FrameSlot& slot) {
         std::memcpy(&value, slot.pickReadback.mapped(), sizeof value);
         latestPick_ = decodePick(value, slot.frameNumber, *slot.pickPixel);
     }
-    uint64_t ticks[2];
+    if (!slot.partSetQueries.empty() &&
+        (!latestPartSets_ || latestPartSets_->frame < slot.frameNumber))
+        latestPartSets_ = readPartSets(slot);
+    uint64_t ticks[3];
     VkResult result =
-        vkGetQueryPoolResults(device_.handle(), slot.timestamps.get(), 0, 2, sizeof ticks, ticks,
+        vkGetQueryPoolResults(device_.handle(), slot.timestamps.get(), 0, 3, sizeof ticks, ticks,
                               sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
     if (result == VK_NOT_READY) return; // fence signalled, so only a driver quirk gets here
     vk::check(result, "vkGetQueryPoolResults");
     const double period = device_.info().timestampPeriodNs;
     gpuMs_.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
+    idPassMs_.push_back(double(ticks[2] - ticks[1]) * period * 1e-6);
     ++timedFrames_;
-    if (gpuMs_.size() >= 2 * historyLimit)
+    if (gpuMs_.size() >= 2 * historyLimit) {
         gpuMs_.erase(gpuMs_.begin(), gpuMs_.end() - long(historyLimit));
+        idPassMs_.erase(idPassMs_.begin(), idPassMs_.end() - long(historyLimit));
+    }
 }
 
 } // namespace render

@@ -21,12 +21,18 @@ struct FrameSlot {
     vk::Handle<VkCommandPool> pool;
     VkCommandBuffer cmd = VK_NULL_HANDLE; // from `pool`
     vk::Handle<VkFence> done;
-    vk::Handle<VkQueryPool> timestamps; // [0] before the scene pass, [1] after it
-    vk::Buffer frameData;               // gpu::FrameData, written with vkCmdUpdateBuffer
-    vk::Buffer pickReadback;            // host-visible uint64: the frame's PickData::current
-    bool submitted = false;             // has work whose timestamps are not read yet
+    // [0] before the scene pass, [1] after it, [2] after the passes over the ID image
+    vk::Handle<VkQueryPool> timestamps;
+    vk::Buffer frameData;    // gpu::FrameData, written with vkCmdUpdateBuffer
+    vk::Buffer pickReadback; // host-visible uint64: the frame's PickData::current
+    bool submitted = false;  // has work whose timestamps are not read yet
     uint64_t frameNumber = 0;
     std::optional<glm::uvec2> pickPixel; // set by Renderer::record when the frame picks
+    // Part set queries of this frame (Renderer::record): PartSetResult and `partSetWords`
+    // bitset words per query, on the device and copied to the host.
+    std::vector<PartSetQuery> partSetQueries;
+    uint32_t partSetWords = 0, partSetParts = 0;
+    vk::Buffer partSets, partSetsReadback; // grown when a frame needs more
     // What this frame's commands use and someone else may let go of meanwhile.
     std::vector<std::shared_ptr<const void>> kept;
 
@@ -65,15 +71,21 @@ class FrameSlots {
     // The pick of the newest completed frame that picked a pixel. Read from a slot whose
     // fence has signalled, so asking never stalls the CPU.
     const std::optional<PickReading>& latestPick() const { return latestPick_; }
+    // The part sets of the newest completed frame that asked for some; the same way.
+    const std::optional<PartSetReading>& latestPartSets() const { return latestPartSets_; }
+    // GPU milliseconds of the passes over the ID image (edges, part sets), as above; 0 for
+    // frames without them.
+    const std::vector<double>& idPassMilliseconds() const { return idPassMs_; }
 
   private:
     void collect(FrameSlot& slot);
 
     vk::Device& device_;
     std::array<FrameSlot, count> slots_;
-    std::vector<double> gpuMs_;
+    std::vector<double> gpuMs_, idPassMs_;
     uint64_t timedFrames_ = 0;
     std::optional<PickReading> latestPick_;
+    std::optional<PartSetReading> latestPartSets_;
 };
 
 } // namespace render

@@ -1,13 +1,16 @@
 // pick.h - what the CPU learns from a frame's pick: the nearest part at the picked pixel and
-// its depth, decoded from the 64-bit value the fragment shaders atomicMin'ed (see PickData).
+// its depth, decoded from the 64-bit value the fragment shaders atomicMin'ed (see PickData);
+// and from its part set queries, the unique parts inside pixel rectangles (id_passes.h).
 #pragma once
 
 #include <bit>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "scene/part_set.h"
 #include "shared.h"
 
 namespace render {
@@ -26,5 +29,24 @@ inline PickReading decodePick(uint64_t value, uint64_t frame, glm::uvec2 pixel) 
     reading.depth = std::bit_cast<float>(static_cast<uint32_t>(value >> 32));
     return reading;
 }
+
+// An inclusive rectangle of framebuffer pixels, top-left origin; clamped to the image.
+struct PartSetQuery {
+    glm::uvec2 min{0}, max{0};
+    bool operator==(const PartSetQuery&) const = default;
+};
+
+// The rectangle spanned by two corners given in any order.
+inline PartSetQuery spanning(glm::uvec2 a, glm::uvec2 b) {
+    return {glm::min(a, b), glm::max(a, b)};
+}
+
+struct PartSetReading {
+    uint64_t frame = 0; // FrameSlots frame number the sets were taken in
+    std::vector<PartSetQuery> queries;
+    // Per query: the parts found, and their count as the GPU counted it.
+    std::vector<scene::PartSet> sets;
+    std::vector<uint32_t> counts;
+};
 
 } // namespace render

@@ -29,6 +29,40 @@ vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device) {
     return vk::make(device, vkCreatePipelineLayout, info, "scene pipeline layout");
 }
 
+ComputePipeline createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
+                                      const char* file, uint32_t pushBytes,
+                                      VkDescriptorSetLayout set, const std::string& name) {
+    ComputePipeline out;
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
+    auto layoutInfo =
+        vk::init<VkPipelineLayoutCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO);
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &range;
+    layoutInfo.setLayoutCount = set ? 1 : 0;
+    layoutInfo.pSetLayouts = &set;
+    out.layout = vk::make(device, vkCreatePipelineLayout, layoutInfo, name + " layout");
+
+    const vk::ShaderRequest request{file, VK_SHADER_STAGE_COMPUTE_BIT, {}, {}};
+    const vk::Handle<VkShaderModule> module =
+        vk::createShaderModule(device, compiler.compile(request), request.label());
+    auto info =
+        vk::init<VkComputePipelineCreateInfo>(VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO);
+    info.stage = vk::init<VkPipelineShaderStageCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module.get();
+    info.stage.pName = "main";
+    info.layout = out.layout.get();
+    vk::faultPoint(name.c_str());
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk::check(
+        vkCreateComputePipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        ("creating compute pipeline '" + name + "'").c_str());
+    out.pipeline = vk::Handle<VkPipeline>(device.handle(), pipeline);
+    device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
+    return out;
+}
+
 vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& scene,
                                            const std::vector<ShaderStage>& stages,
                                            const std::string& name) {

@@ -7,6 +7,7 @@
 
 #include "vk/context.h"
 #include "vk/handle.h"
+#include "vk/shader_compiler.h"
 
 namespace render {
 
@@ -32,6 +33,16 @@ struct ScenePipelineInfo {
     bool mesh = false;               // a mesh shader: no vertex input at all
     bool writeIds = true;            // false masks the ID attachment (the floors)
 };
+
+// A compute pipeline from one shader file (no defines), and the layout: `pushBytes` of push
+// constants for the compute stage and, if given, one descriptor set layout.
+struct ComputePipeline {
+    vk::Handle<VkPipelineLayout> layout;
+    vk::Handle<VkPipeline> pipeline;
+};
+ComputePipeline createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
+                                      const char* file, uint32_t pushBytes,
+                                      VkDescriptorSetLayout set, const std::string& name);
 
 vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& info,
                                            const std::vector<ShaderStage>& stages,

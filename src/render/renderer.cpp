@@ -20,11 +20,24 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+std::shared_ptr<const vk::Buffer> partSetBuffer(vk::UploadBatch& upload, const scene::PartSet& set,
+                                                const char* name) {
+    // At least one word: an empty scene still gets a buffer with an address.
+    std::vector<uint32_t> words = set.words();
+    if (words.empty()) words.push_back(0);
+    auto buffer = std::make_shared<vk::Buffer>(upload.add(
+        words, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+        name));
+    upload.keep(buffer);
+    return buffer;
+}
+
 } // namespace
 
 Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler)
     : device_(device), compiler_(compiler), pushStages_(pushStages(device)),
-      pipelines_(device, compiler), animator_(std::make_shared<Animator>(device, compiler)) {
+      pipelines_(device, compiler), animator_(std::make_shared<Animator>(device, compiler)),
+      idPasses_(std::make_shared<IdPasses>(device, compiler)) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -59,7 +72,9 @@ void Renderer::configure(const scene::Scene& scene, const RenderSettings& settin
 // replaced, so a throw leaves the previous configuration whole.
 void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene) {
     const auto start = Clock::now();
-    const PipelineKey key = settings.pipeline.effective(device_.info().geometryShaderPassthrough);
+    PipelineKey wanted = settings.pipeline;
+    wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
+    const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
     const Technique& technique = *key.technique;
     if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())
         throw vk::Error(std::string(technique.name) + " is unavailable here: " + why);
@@ -80,12 +95,21 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     upload.keep(partVertices);
     upload.keep(meshlets);
     upload.keep(draws);
+    const scene::PartSet none(scene.uniquePartCount());
+    auto selected = newScene ? partSetBuffer(upload, none, "selection") : selected_;
+    auto hidden = newScene ? partSetBuffer(upload, none, "hidden parts") : hidden_;
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
     sceneGpu_ = std::move(sceneGpu);
     partVertices_ = std::move(partVertices);
     meshlets_ = std::move(meshlets);
     draws_ = std::move(draws);
+    selected_ = std::move(selected);
+    hidden_ = std::move(hidden);
+    if (newScene) {
+        partCount_ = scene.uniquePartCount();
+        hiddenSet_ = none;
+    }
     settings_ = settings;
     stats_ = statsFor(draws_->list, *key.mode,
                       derivedPrimitives(draws_->partVertices.get(), draws_->meshlets.get()));
@@ -98,9 +122,39 @@ void Renderer::reloadShaders() {
     const PipelineKey key = pipeline_->key;
     pipelines_.clear();
     auto animator = std::make_shared<Animator>(device_, compiler_);
+    auto idPasses = std::make_shared<IdPasses>(device_, compiler_);
     bool cached = false;
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
     animator_ = std::move(animator);
+    idPasses_ = std::move(idPasses);
+}
+
+void Renderer::setSelection(const scene::PartSet& selected) {
+    if (!sceneGpu_ || selected.partCount() != partCount_)
+        throw vk::Error("Renderer::setSelection: not a set over the current scene's parts");
+    vk::UploadBatch upload(device_);
+    auto buffer = partSetBuffer(upload, selected, "selection");
+    upload.submit();
+    selected_ = std::move(buffer);
+}
+
+void Renderer::setHidden(const scene::PartSet& hidden) {
+    if (!sceneGpu_ || hidden.partCount() != partCount_)
+        throw vk::Error("Renderer::setHidden: not a set over the current scene's parts");
+    auto pipeline = pipeline_;
+    if (hidden.empty() != hiddenSet_.empty()) {
+        PipelineKey key = pipeline_->key;
+        key.hiding = !hidden.empty();
+        key = key.effective(device_.info().geometryShaderPassthrough);
+        bool cached = false;
+        pipeline = pipelines_.get(key, pass(key.msaa), cached);
+    }
+    vk::UploadBatch upload(device_);
+    auto buffer = partSetBuffer(upload, hidden, "hidden parts");
+    upload.submit();
+    pipeline_ = std::move(pipeline);
+    hidden_ = std::move(buffer);
+    hiddenSet_ = hidden;
 }
 
 // The draw list depends on the technique's split and ID data, the search batch it reads, the
@@ -173,6 +227,9 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     slot.keep(draws_);
     slot.keep(pick_);
     slot.keep(animator_);
+    slot.keep(idPasses_);
+    slot.keep(selected_);
+    slot.keep(hidden_);
     slot.keep(target);
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
@@ -196,18 +253,21 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
         frame.meshletDataAddress = draws_->meshlets->data.address();
         frame.drawIndicesAddress = draws_->drawIndices.address();
     }
+    frame.selectedAddress = selected_->address();
+    frame.hiddenAddress = hidden_->address();
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
-    frame.selectedPart = params.selectedPart;
     frame.time = params.time;
     vkCmdUpdateBuffer(cmd, slot.frameData.handle(), 0, sizeof frame, &frame);
     slot.pickPixel = params.pickPixel;
     recordPickReset(cmd);
 
-    // Frame data and the pick reset (this frame), `last` (the previous frame's copy).
+    // Frame data and the pick reset (this frame), `last` (the previous frame's copy, which the
+    // edge pass reads too).
     auto toShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     toShaders.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toShaders.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, sceneShaderStages(device_), 0, 1,
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         sceneShaderStages(device_) | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
                          &toShaders, 0, nullptr, 0, nullptr);
 
     animator_->record(cmd, *sceneGpu_, params.explode);
@@ -246,7 +306,44 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
 
     vkCmdEndRenderPass(cmd);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 1);
+    recordIdPasses(cmd, slot, targets, params);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 2);
     recordPickCopies(cmd, slot);
+}
+
+// Edges and outlines (when on), and the frame's part set queries, into the slot's buffers.
+void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
+                              const FrameParams& params) const {
+    const EdgeSettings& e = settings_.edges;
+    gpu::EdgePush edges{};
+    edges.lineColor = glm::vec4(e.color, 1.0f);
+    edges.selectColor = glm::vec4(e.selectColor, 1.0f);
+    edges.hoverColor = glm::vec4(e.hoverColor, 1.0f);
+    edges.selectedAddress = selected_->address();
+    edges.pickAddress = pick_->address();
+    edges.extent = {targets.extent().width, targets.extent().height};
+    edges.width = std::clamp(e.width, edgeWidthRange.min, edgeWidthRange.max);
+    edges.flags = gpu::EDGE_LINES | gpu::EDGE_SELECTED | gpu::EDGE_HOVERED;
+    const uint32_t words = std::max(1u, (partCount_ + 31) / 32);
+    if (!params.partSets.empty()) {
+        const VkDeviceSize bytes =
+            (sizeof(gpu::PartSetResult) + VkDeviceSize(words) * 4) * params.partSets.size();
+        // The slot's fence has signalled, so its old buffers are free to go.
+        if (slot.partSets.size() < bytes) {
+            slot.partSets = vk::Buffer(
+                device_, bytes,
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                0, "part sets");
+            slot.partSetsReadback = vk::hostBuffer(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                   "part sets readback");
+        }
+        slot.partSetQueries = params.partSets;
+        slot.partSetWords = words;
+        slot.partSetParts = partCount_;
+    }
+    idPasses_->record(cmd, targets, e.on ? &edges : nullptr, params.partSets, words, slot.partSets,
+                      slot.partSetsReadback);
 }
 
 // The vertex and index buffers the draws read: the scene's, the part vertices, or none for
@@ -285,8 +382,11 @@ void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) cons
     auto fromShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     fromShaders.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     fromShaders.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         0, 1, &fromShaders, 0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd,
+                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, // the edge pass reads `last`
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &fromShaders, 0, nullptr, 0,
+                         nullptr);
     VkBufferCopy toLast{offsetof(gpu::PickData, current), offsetof(gpu::PickData, last),
                         sizeof(uint64_t)};
     vkCmdCopyBuffer(cmd, pick_->handle(), pick_->handle(), 1, &toLast);

@@ -13,6 +13,7 @@
 #include "render/animator.h"
 #include "render/draw_list.h"
 #include "render/frame_slots.h"
+#include "render/id_passes.h"
 #include "render/pipeline_cache.h"
 #include "render/primitive_buffers.h"
 #include "render/scene_gpu.h"
@@ -30,7 +31,9 @@ struct FrameParams {
     // The pixel (top-left origin) whose nearest part this frame picks; the result reaches
     // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.
     std::optional<glm::uvec2> pickPixel;
-    uint32_t selectedPart = gpu::BACKGROUND_ID; // drawn with the steady highlight
+    // Rectangles whose unique parts this frame collects from its ID image (box selection,
+    // the visible parts); the result reaches FrameSlots::latestPartSets().
+    std::vector<PartSetQuery> partSets;
     float explode = 0.0f; // exploded view, 0 (at rest) to 1; see render/animator.h
 };
 
@@ -58,6 +61,15 @@ class Renderer {
     // depends on changed. A compile error throws vk::ShaderError; a failure leaves the
     // previous configuration drawing.
     void configure(const scene::Scene& scene, const RenderSettings& settings);
+
+    // The parts drawn with the selection's highlight (and outline, with edges), and the parts
+    // not drawn at all: never in the ID image, never picked, a pick finds what is behind them.
+    // Sets over the scene last set (setScene empties both). Each is uploaded once, without
+    // waiting; while any part is hidden the pipeline is the variant that discards them
+    // (built on first use, cached like the others), so with nothing hidden nothing changes.
+    void setSelection(const scene::PartSet& selected);
+    void setHidden(const scene::PartSet& hidden);
+    const scene::PartSet& hidden() const { return hiddenSet_; }
 
     // Forgets every cached pipeline and SPIR-V (shaders edited on disk) and rebuilds the
     // current pipeline. A compile error throws vk::ShaderError and the last good pipeline
@@ -98,6 +110,8 @@ class Renderer {
     void recordMeshDraws(VkCommandBuffer cmd) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
+    void recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
+                        const FrameParams& params) const;
 
     vk::Device& device_;
     const vk::ShaderCompiler& compiler_;
@@ -105,6 +119,7 @@ class Renderer {
     std::map<uint32_t, std::unique_ptr<ScenePass>> passes_; // by sample count
     PipelineCache pipelines_;
     std::shared_ptr<const Animator> animator_;
+    std::shared_ptr<const IdPasses> idPasses_;
     // gpu::PickData, shared by all frames in flight (ordered by barriers).
     std::shared_ptr<const vk::Buffer> pick_;
 
@@ -116,6 +131,10 @@ class Renderer {
     std::shared_ptr<const PartVertexBuffers> partVertices_;
     std::shared_ptr<const MeshletBuffers> meshlets_;
     std::shared_ptr<const DrawBuffers> draws_;
+    // The selection and hidden parts as the GPU reads them (bitsets, see scene/part_set.h).
+    std::shared_ptr<const vk::Buffer> selected_, hidden_;
+    scene::PartSet hiddenSet_;
+    uint32_t partCount_ = 0;
     RenderStats stats_;
     SwitchReport lastSwitch_;
 };

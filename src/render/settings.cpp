@@ -10,6 +10,7 @@ PipelineKey PipelineKey::effective(bool devicePassthrough) const {
     if (!technique->narySearch) key.nsearch = defaults.nsearch;
     key.gsPassthrough =
         technique->stage == LookupStage::Geometry && gsPassthrough && devicePassthrough;
+    if (technique->isFloor()) key.hiding = false; // no part IDs: nothing to hide by
     return key;
 }
 

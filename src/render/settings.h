@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include <glm/glm.hpp>
+
 #include "render/technique.h"
 
 namespace render {
@@ -33,6 +35,9 @@ struct PipelineKey {
     // gs techniques: VK_NV_geometry_shader_passthrough where the device offers it.
     bool gsPassthrough = true;
     uint32_t msaa = 1; // samples per pixel of the scene pass: 1, 2, 4 or 8
+    // Not a choice of the user's: the renderer sets it while any part is hidden, for the
+    // variant that discards hidden parts (see gpu::FrameData::hiddenAddress).
+    bool hiding = false;
 
     // The same key with what the technique ignores set to defaults, and passthrough only
     // where the technique has a geometry stage and the device offers it.
@@ -57,10 +62,24 @@ struct Shading {
     bool operator==(const Shading&) const = default;
 };
 
+// Lines drawn from the ID image after the scene pass (render/id_passes.h): part edges, and
+// outlines of the selected and the hovered parts. Colours are as displayed (sRGB), 0..1.
+struct EdgeSettings {
+    bool on = false;
+    uint32_t width = 1; // pixels, edgeWidthRange; outlines are wider
+    // Whole steps of 1/255, so that the 8-bit colour image holds them exactly.
+    glm::vec3 color = glm::vec3(16, 16, 20) / 255.0f;
+    glm::vec3 selectColor = glm::vec3(255, 184, 26) / 255.0f; // the selection's amber
+    glm::vec3 hoverColor = glm::vec3(51, 217, 255) / 255.0f;
+    bool operator==(const EdgeSettings&) const = default;
+};
+constexpr Range edgeWidthRange{1, 3}; // gpu::EDGE_WIDTH_MAX
+
 struct RenderSettings {
     PipelineKey pipeline;
     DrawSettings draws;
     Shading shading;
+    EdgeSettings edges;
     bool operator==(const RenderSettings&) const = default;
 };
 

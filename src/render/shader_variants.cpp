@@ -20,6 +20,7 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     defines.push_back(
         {"IDV_MESH_PART_PER_VERTEX", technique.ids == IdBuffer::MeshletVertexPartIds ? "1" : "0"});
     defines.push_back({"IDV_NO_ID", technique.isFloor() ? "1" : "0"});
+    defines.push_back({"IDV_HIDE_PARTS", key.hiding ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
     // An effective key holds defaults where the technique reads nothing, so the source of
     // other techniques never varies with these.
@@ -70,6 +71,12 @@ std::vector<PipelineKey> allPipelineKeys() {
                         if (passthrough && !key.gsPassthrough) continue; // no gs stage
                         keys.push_back(key);
                     }
+            // The hiding variant differs only in the fragment shader: once per technique
+            // and mode is enough to compile it.
+            PipelineKey hiding{&technique, &mode};
+            hiding.hiding = true;
+            hiding = hiding.effective(true);
+            if (hiding.hiding) keys.push_back(hiding);
         }
     return keys;
 }

@@ -156,8 +156,9 @@ glm::vec2 ScenePass::sampleZero() const {
 
 SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent)
     : pass_(pass), extent_(extent) {
-    const VkImageUsageFlags readable =
-        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    // Storage: the passes over the ID image read the IDs and draw edges into the colour.
+    const VkImageUsageFlags readable = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     color_ = vk::Image(device, extent, ScenePass::colorFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
                        "scene colour");
     ids_ = vk::Image(device, extent, ScenePass::idFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,

@@ -67,7 +67,7 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene) {
     }
 }
 
-std::optional<Hit> RayCaster::cast(const Ray& ray) const {
+std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden) const {
     std::optional<Hit> best;
     for (uint32_t oi = 0; oi < scene_.objects.size(); ++oi) {
         if (!hitsBox(ray, objects_[oi].worldBounds)) continue;
@@ -78,6 +78,7 @@ std::optional<Hit> RayCaster::cast(const Ray& ray) const {
         const glm::vec3 dir = glm::vec3(toLocal * glm::vec4(ray.direction, 0.0f));
         const Vertex* v = &scene_.vertices[g.firstVertex];
         for (uint32_t p = 0; p < g.partCount; ++p) {
+            if (hidden && hidden->contains(object.uniquePartOffset + p)) continue;
             const Part& part = scene_.parts[g.firstPart + p];
             for (uint32_t tri = part.firstTriangle; tri < part.firstTriangle + part.triangleCount;
                  ++tri) {

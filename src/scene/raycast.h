@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scene/camera.h"
+#include "scene/part_set.h"
 #include "scene/scene.h"
 
 namespace scene {
@@ -22,7 +23,8 @@ struct Hit {
 class RayCaster {
   public:
     explicit RayCaster(const Scene& scene);
-    std::optional<Hit> cast(const Ray& ray) const;
+    // The nearest hit of a part not in `hidden` (rays go through hidden parts).
+    std::optional<Hit> cast(const Ray& ray, const PartSet* hidden = nullptr) const;
 
   private:
     struct Prepared {

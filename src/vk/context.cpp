@@ -167,6 +167,7 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     features.features.independentBlend = VK_TRUE;
 
     std::vector<const char*> extensions = extraExtensions;
+    extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
     if (info.geometryShaderPassthrough)
         extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
     // Mesh shaders only (no task shaders): the mesh techniques draw one workgroup per meshlet.
@@ -189,6 +190,10 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     vkGetDeviceQueue(device_, info.graphicsQueueFamily, 0, &queue_);
     vkGetPhysicalDeviceMemoryProperties(info.handle, &memory_);
     if (info.meshShader) loadMeshCommands();
+    pushDescriptorSet_ = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+    if (!pushDescriptorSet_)
+        throw Error("the driver offers VK_KHR_push_descriptor but not vkCmdPushDescriptorSetKHR");
 
     auto pool = vk::init<VkCommandPoolCreateInfo>(VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO);
     pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;

@@ -149,6 +149,7 @@ class Device {
         PFN_vkCmdDrawMeshTasksIndirectEXT drawIndirect = nullptr;
     };
     const MeshCommands& meshCommands() const { return meshCommands_; }
+    PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet() const { return pushDescriptorSet_; }
 
   private:
     void submitAndWait(CommandBuffer cmd);
@@ -175,6 +176,7 @@ class Device {
     VkQueue queue_ = VK_NULL_HANDLE;
     VkPhysicalDeviceMemoryProperties memory_{};
     MeshCommands meshCommands_;
+    PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
     std::atomic<int64_t> liveAllocations_{0}, liveBytes_{0};
     Handle<VkCommandPool> uploadPool_;
     std::vector<Upload> uploads_; // submitted, not yet seen finished

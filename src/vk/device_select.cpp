@@ -33,6 +33,7 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     info.timestampPeriodNs = props.limits.timestampPeriod;
     info.maxDrawIndirectCount = props.limits.maxDrawIndirectCount;
 
+    info.pushDescriptor = hasDeviceExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
     info.geometryShaderPassthrough =
         hasDeviceExtension(device, VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
 
@@ -103,6 +104,7 @@ std::vector<std::string> missingRequirements(const DeviceInfo& info) {
     if (!info.drawIndirectFirstInstance) missing.push_back("drawIndirectFirstInstance");
     if (!info.fragmentStoresAndAtomics) missing.push_back("fragmentStoresAndAtomics");
     if (!info.independentBlend) missing.push_back("independentBlend");
+    if (!info.pushDescriptor) missing.push_back("VK_KHR_push_descriptor");
     if (info.graphicsQueueFamily == UINT32_MAX)
         missing.push_back("a graphics queue with timestamps");
     return missing;

@@ -30,6 +30,7 @@ struct DeviceInfo {
     bool drawIndirectFirstInstance = false;
     bool fragmentStoresAndAtomics = false;
     bool independentBlend = false; // no-id pipelines mask the ID attachment
+    bool pushDescriptor = false;   // VK_KHR_push_descriptor: the passes over the ID image
     // A queue family with graphics and timestamps; UINT32_MAX if there is none.
     uint32_t graphicsQueueFamily = UINT32_MAX;
     float timestampPeriodNs = 0.0f;

@@ -34,6 +34,9 @@ inline void destroy(VkDevice d, VkPipelineCache h) {
 inline void destroy(VkDevice d, VkShaderModule h) {
     vkDestroyShaderModule(d, h, nullptr);
 }
+inline void destroy(VkDevice d, VkDescriptorSetLayout h) {
+    vkDestroyDescriptorSetLayout(d, h, nullptr);
+}
 inline void destroy(VkDevice d, VkRenderPass h) {
     vkDestroyRenderPass(d, h, nullptr);
 }
@@ -111,6 +114,7 @@ IDV_OBJECT_TYPE(VkSemaphore, VK_OBJECT_TYPE_SEMAPHORE)
 IDV_OBJECT_TYPE(VkCommandPool, VK_OBJECT_TYPE_COMMAND_POOL)
 IDV_OBJECT_TYPE(VkQueryPool, VK_OBJECT_TYPE_QUERY_POOL)
 IDV_OBJECT_TYPE(VkDescriptorPool, VK_OBJECT_TYPE_DESCRIPTOR_POOL)
+IDV_OBJECT_TYPE(VkDescriptorSetLayout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT)
 IDV_OBJECT_TYPE(VkPipeline, VK_OBJECT_TYPE_PIPELINE)
 IDV_OBJECT_TYPE(VkSwapchainKHR, VK_OBJECT_TYPE_SWAPCHAIN_KHR)
 #undef IDV_OBJECT_TYPE

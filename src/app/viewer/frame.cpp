@@ -36,6 +36,11 @@ void Viewer::drawFrame(double seconds) {
     applySettings();
     render::FrameSlot& slot = slots_.begin(frameNumber_);
     if (input_.readPick(slots_.latestPick())) selectionChanged();
+    if (input_.readPartSets(slots_.latestPartSets())) selectionChanged();
+    if (input_.visibleParts() != saidVisible_) {
+        saidVisible_ = input_.visibleParts();
+        events_.say("visible parts: " + std::to_string(saidVisible_));
+    }
     const auto image = presenter_.acquire(frameNumber_);
     if (!image) return; // out of date: the next frame makes a new swapchain first
     recordScene(slot, frameParams(seconds));
@@ -54,8 +59,23 @@ void Viewer::drawFrame(double seconds) {
 // The panel first: what it changes applies before this frame records anything.
 void Viewer::drawPanel() {
     presenter_.beginPanel(input_.cursorInWindow());
-    if (view_.panelVisible) app::drawPanel(settings_, view_, panelInfo());
+    if (view_.panelVisible) act(app::drawPanel(settings_, view_, panelInfo()));
+    // The box being dragged, over everything.
+    if (const auto box = input_.boxInWindow())
+        ImGui::GetForegroundDrawList()->AddRect(ImVec2(box->first.x, box->first.y),
+                                                ImVec2(box->second.x, box->second.y),
+                                                IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     ImGui::Render();
+}
+
+void Viewer::act(const PanelActions& actions) {
+    Selection& selection = input_.selection();
+    if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);
+    if (actions.hide) selection.hideSelected();
+    if (actions.isolate) selection.isolateSelected();
+    if (actions.showAll) selection.showAll();
+    if (actions.hide) selectionChanged();
+    if (actions.hide || actions.isolate || actions.showAll) partsChanged();
 }
 
 void Viewer::applySettings() {
@@ -76,8 +96,8 @@ void Viewer::openDrops() {
 // at its own.
 void Viewer::follow(SceneState::Change change) {
     if (change == SceneState::Change::None) return;
-    input_.forgetParts();
     const scene::Scene& scene = scene_.scene();
+    input_.forgetParts(scene.uniquePartCount());
     if (change == SceneState::Change::Copies) {
         camera_.setBounds(scene.bounds()); // more copies: same view, planes follow
         return;
@@ -96,9 +116,33 @@ render::FrameParams Viewer::frameParams(double seconds) {
     render::FrameParams params = cameraFrame(camera_.camera(animate ? 2.0f : 1.0f), extent);
     params.time = float(seconds);
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
-    params.selectedPart = input_.selection().selected().value_or(gpu::BACKGROUND_ID);
+    // Every frame counts the visible parts for the panel; a released box asks for its parts.
+    params.partSets = {{{0, 0}, {extent.width - 1, extent.height - 1}}};
+    if (const auto box = input_.boxQuery(extent)) params.partSets.push_back(*box);
+    showParts();
     params.explode = animate ? scene::explodeLoop(float(seconds)) : 0.0f;
     return params;
+}
+
+// Hands the selection and the hidden parts to the renderer when they changed. Hiding the
+// first part builds the hiding pipeline variant; if that fails, nothing is hidden.
+void Viewer::showParts() {
+    render::Renderer& renderer = scene_.renderer();
+    Selection& selection = input_.selection();
+    if (selection.selected() != shownSelected_) {
+        renderer.setSelection(selection.selected());
+        shownSelected_ = selection.selected();
+    }
+    if (selection.hidden() == shownHidden_) return;
+    try {
+        renderer.setHidden(selection.hidden());
+        shownHidden_ = selection.hidden();
+    } catch (const std::exception& e) {
+        scene_.fail(std::string("hiding parts: ") + e.what());
+        selection.showAll();
+        renderer.setHidden(selection.hidden());
+        shownHidden_ = selection.hidden();
+    }
 }
 
 void Viewer::recordScene(render::FrameSlot& slot, const render::FrameParams& params) {
@@ -141,7 +185,12 @@ PanelInfo Viewer::panelInfo() const {
         return PartLine{part ? scene::describePart(scene_.scene(), *part) : std::nullopt, depth};
     };
     info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
-    info.selected = describe(input_.selection().selected(), input_.selectedDepth());
+    const Selection& selection = input_.selection();
+    info.selected = describe(selection.primary(), input_.selectedDepth());
+    info.selectedCount = selection.selected().size();
+    info.hiddenCount = selection.hidden().size();
+    info.visibleParts = input_.visibleParts();
+    info.idPassMs = mean(slots_.idPassMilliseconds(), 30);
     return info;
 }
 

@@ -42,6 +42,22 @@ void Input::onKey(int key, int scancode, int action, int mods) {
     case GLFW_KEY_F1:
         view.panelVisible = !view.panelVisible;
         break;
+    case GLFW_KEY_E:
+        viewer_.settings().render.edges.on = !viewer_.settings().render.edges.on;
+        break;
+    case GLFW_KEY_H:
+        if (mods & GLFW_MOD_SHIFT) {
+            selection_.showAll();
+        } else {
+            selection_.hideSelected();
+            viewer_.selectionChanged(); // hidden parts are not selected
+        }
+        viewer_.partsChanged();
+        break;
+    case GLFW_KEY_I:
+        selection_.isolateSelected();
+        viewer_.partsChanged();
+        break;
     case GLFW_KEY_ESCAPE:
         if (selection_.escape())
             viewer_.selectionChanged();
@@ -61,23 +77,35 @@ void Input::onCursor(double x, double y) {
     drag_->moved = std::max(drag_->moved, glm::length(position - drag_->start));
     int width = 0, height = 0;
     glfwGetWindowSize(window_, &width, &height);
-    if (drag_->pan)
+    if (drag_->kind == DragKind::Pan)
         viewer_.camera().pan(glm::vec2(delta), float(height));
-    else
-        viewer_.camera().orbit(glm::vec2(delta));
+    else if (drag_->kind == DragKind::Orbit)
+        viewer_.camera().orbit(glm::vec2(delta)); // a box leaves the view as it is
 }
 
 void Input::onButton(int button, int action, int mods) {
     ImGui_ImplGlfw_MouseButtonCallback(window_, button, action, mods);
     if (action == GLFW_PRESS) {
         if (drag_ || ImGui::GetIO().WantCaptureMouse) return; // the panel's, or a second button
-        const bool pan = button != GLFW_MOUSE_BUTTON_LEFT || (mods & GLFW_MOD_SHIFT);
-        drag_ = Drag{button, pan, cursor_, 0.0};
+        const bool left = button == GLFW_MOUSE_BUTTON_LEFT;
+        const int boxKeys = GLFW_MOD_SHIFT | GLFW_MOD_CONTROL | GLFW_MOD_ALT;
+        const DragKind kind = !left              ? DragKind::Pan
+                              : (mods & boxKeys) ? DragKind::Box
+                                                 : DragKind::Orbit;
+        const SelectMode mode = (mods & GLFW_MOD_ALT)       ? SelectMode::Remove
+                                : (mods & GLFW_MOD_CONTROL) ? SelectMode::Add
+                                                            : SelectMode::Replace;
+        drag_ = Drag{button, kind, mode, cursor_, 0.0};
     } else if (action == GLFW_RELEASE && drag_ && drag_->button == button) {
-        const bool click = !drag_->pan && drag_->moved < clickSlop;
+        const Drag done = *drag_;
         drag_.reset();
-        // The pick of the next frame (at this cursor position) decides what the click hits.
-        if (click) pendingClick_ = viewer_.nextFrame();
+        if (done.kind == DragKind::Box) {
+            // The parts come from the ID image of a frame after the release.
+            box_ = Box{done.start, cursor_, done.mode, viewer_.nextFrame()};
+        } else if (done.kind == DragKind::Orbit && done.moved < clickSlop) {
+            // The pick of the next frame (at this cursor position) decides what it hits.
+            pendingClick_ = viewer_.nextFrame();
+        }
     }
 }
 
@@ -147,10 +175,43 @@ bool Input::readPick(const std::optional<render::PickReading>& pick) {
     return false;
 }
 
-void Input::forgetParts() {
-    selection_.clear();
+std::optional<std::pair<glm::vec2, glm::vec2>> Input::boxInWindow() const {
+    if (!drag_ || drag_->kind != DragKind::Box) return std::nullopt;
+    return std::pair{glm::vec2(drag_->start), glm::vec2(cursor_)};
+}
+
+std::optional<render::PartSetQuery> Input::boxQuery(VkExtent2D extent) const {
+    if (!box_ || extent.width == 0 || extent.height == 0) return std::nullopt;
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    if (width <= 0 || height <= 0) return std::nullopt;
+    // Window coordinates to scene image pixels, clamped to the image.
+    auto pixel = [&](glm::dvec2 p) {
+        const glm::dvec2 scaled =
+            p * glm::dvec2(extent.width, extent.height) / glm::dvec2(width, height);
+        return glm::uvec2(
+            glm::clamp(scaled, glm::dvec2(0.0), glm::dvec2(extent.width - 1, extent.height - 1)));
+    };
+    return render::spanning(pixel(box_->a), pixel(box_->b));
+}
+
+bool Input::readPartSets(const std::optional<render::PartSetReading>& reading) {
+    if (!reading || reading->frame <= partSetsFrame_) return false;
+    partSetsFrame_ = reading->frame;
+    if (!reading->counts.empty()) visibleParts_ = reading->counts.front();
+    if (!box_ || reading->frame < box_->since || reading->sets.size() < 2) return false;
+    selection_.select(reading->sets[1], box_->mode);
+    box_.reset();
+    return true;
+}
+
+void Input::forgetParts(uint32_t partCount) {
+    selection_.reset(partCount);
     pendingClick_.reset();
     pickingSince_.reset();
+    box_.reset();
+    partSetsFrame_ = 0;
+    visibleParts_ = 0;
 }
 
 void Input::runScript(double seconds) {
@@ -173,16 +234,16 @@ void Input::queue(const ScriptCommand& c) {
     const auto& v = c.values;
     // Settings change in place, as the panel's widgets change them; the frame applies them.
     auto settings = [this](auto change) { return [this, change] { change(viewer_.settings()); }; };
-    auto press = [this](int action) {
-        return [this, action] { onButton(GLFW_MOUSE_BUTTON_LEFT, action, 0); };
+    auto press = [this](int action, int mods = 0) {
+        return [this, action, mods] { onButton(GLFW_MOUSE_BUTTON_LEFT, action, mods); };
     };
     switch (c.op) {
     case ScriptOp::Key:
         step(
-            [this, key = c.key] {
+            [this, key = c.key, mods = c.mods] {
                 const int code = glfwGetKeyScancode(key);
-                onKey(key, code, GLFW_PRESS, 0);
-                onKey(key, code, GLFW_RELEASE, 0);
+                onKey(key, code, GLFW_PRESS, mods);
+                onKey(key, code, GLFW_RELEASE, mods);
             },
             true); // a frame between key presses, as a hand gives (V twice must show off)
         break;
@@ -196,14 +257,18 @@ void Input::queue(const ScriptCommand& c) {
         step(press(GLFW_RELEASE), true);
         break;
     case ScriptOp::Drag:
+    case ScriptOp::Box: // the same hand movement, with the modifier held at the press
         step([this, v] { onCursor(v[0], v[1]); }, true);
-        step(press(GLFW_PRESS), true);
+        step(press(GLFW_PRESS, c.op == ScriptOp::Box ? c.mods : 0), true);
         for (int i = 1; i <= 8; ++i) { // a hand's drag arrives as several moves
             const double t = i / 8.0;
             step([this, v, t] { onCursor(v[0] + (v[2] - v[0]) * t, v[1] + (v[3] - v[1]) * t); },
                  true);
         }
         step(press(GLFW_RELEASE), true);
+        break;
+    case ScriptOp::Object:
+        step([this, name = c.text] { viewer_.selectObjects(name, SelectMode::Replace); }, true);
         break;
     case ScriptOp::Scroll:
         step([this, v] { onScroll(0.0, v[0]); }, false);

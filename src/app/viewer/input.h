@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -51,21 +52,38 @@ class Input {
     std::optional<glm::uvec2> pickPixel(VkExtent2D extent, uint64_t frame);
     // Hover and clicks from the newest completed pick. True when the selection changed.
     bool readPick(const std::optional<render::PickReading>& pick);
+    // The box being dragged (Shift/Ctrl/Alt + left drag), in window coordinates.
+    std::optional<std::pair<glm::vec2, glm::vec2>> boxInWindow() const;
+    // The released box, as scene image pixels, until its parts have arrived: each frame asks
+    // for it (after the whole image, see Viewer::frameParams).
+    std::optional<render::PartSetQuery> boxQuery(VkExtent2D extent) const;
+    // The visible parts (query 0) and a released box's parts (query 1) from the newest
+    // completed part sets. True when the selection changed.
+    bool readPartSets(const std::optional<render::PartSetReading>& reading);
+    uint32_t visibleParts() const { return visibleParts_; }
     // The scene changed: part IDs and picks in flight name parts of the old one.
-    void forgetParts();
+    void forgetParts(uint32_t partCount);
 
     const Selection& selection() const { return selection_; }
+    Selection& selection() { return selection_; }
     float hoveredDepth() const { return hoveredDepth_; }
     float selectedDepth() const { return selectedDepth_; }
     // Esc: clears the selection; false when there was none.
     bool escape() { return selection_.escape(); }
 
   private:
+    enum class DragKind { Orbit, Pan, Box };
     struct Drag {
         int button;
-        bool pan;
+        DragKind kind;
+        SelectMode mode; // Box: by the modifier held at the press
         glm::dvec2 start;
         double moved; // farthest distance from the start, in window pixels
+    };
+    struct Box {
+        glm::dvec2 a, b; // corners, window coordinates
+        SelectMode mode;
+        uint64_t since; // the first frame that asks for it
     };
     // A script command as steps: a click is a move, then the press and release a frame later,
     // as a hand would do it.
@@ -82,6 +100,9 @@ class Input {
     GLFWwindow* window_;
     glm::dvec2 cursor_{-1.0, -1.0};
     std::optional<Drag> drag_;
+    std::optional<Box> box_;
+    uint64_t partSetsFrame_ = 0; // newest part sets read
+    uint32_t visibleParts_ = 0;
     Selection selection_;
     float hoveredDepth_ = 1.0f, selectedDepth_ = 1.0f;
     std::optional<uint64_t> pendingClick_; // the frame whose pick the click selects from

@@ -2,6 +2,7 @@
 #include "app/viewer/panel.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cfloat>
 #include <cstdio>
 #include <type_traits>
@@ -14,9 +15,14 @@ namespace app {
 namespace {
 
 const char* const controlsHelp = "left drag          orbit\n"
-                                 "right/middle drag  pan (also shift + left drag)\n"
+                                 "right/middle drag  pan\n"
                                  "wheel              zoom towards the target\n"
                                  "left click         select the part (background: clear)\n"
+                                 "shift + left drag  select the parts in the box\n"
+                                 "ctrl/alt + drag    add them / remove them\n"
+                                 "H / I              hide / isolate the selection\n"
+                                 "shift + H          show all parts\n"
+                                 "E                  part edges on/off\n"
                                  "Esc                clear selection; if none, quit\n"
                                  "F                  fit the view to the scene\n"
                                  "Home               reset the view\n"
@@ -130,6 +136,18 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
         }
         ImGui::EndCombo();
     }
+    render::EdgeSettings& edges = s.edges;
+    ImGui::Checkbox("edges (E)", &edges.on);
+    if (edges.on) {
+        const render::Range widths = render::edgeWidthRange;
+        ImGui::SliderScalar("edge width", ImGuiDataType_U32, &edges.width, &widths.min,
+                            &widths.max);
+        ImGui::ColorEdit3("edge colour", &edges.color.x, ImGuiColorEditFlags_NoInputs);
+        ImGui::SameLine();
+        ImGui::ColorEdit3("selected", &edges.selectColor.x, ImGuiColorEditFlags_NoInputs);
+        ImGui::SameLine();
+        ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
+    }
     ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
     ImGui::Checkbox("vsync (V)", &view.vsync);
     // What the last switch cost: a cached pipeline makes it a lookup.
@@ -188,6 +206,10 @@ void sceneSection(SceneSettings& s, const PanelInfo& info) {
 void timing(const PanelInfo& info) {
     ImGui::Text("%.0f fps", info.fps);
     ImGui::Text("Render GPU [ms]  %.3f", info.gpuMs);
+    ImGui::Text("ID passes  [ms]  %.3f", info.idPassMs);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("edges and outlines, the visible part count and box selection: "
+                          "compute passes over the ID image after the scene pass");
     ImGui::Text("CPU record [ms]  %.3f", info.cpuRecordMs);
     if (!info.gpuHistory.empty())
         ImGui::PlotLines("##gpu", info.gpuHistory.data(), int(info.gpuHistory.size()), 0,
@@ -201,13 +223,76 @@ void partLine(const char* what, const PartLine& line) {
     }
     const scene::PartInfo& p = *line.part;
     ImGui::Text("%s: part %u", what, p.uniquePartId);
+    ImGui::TextWrapped("  %s", p.name.c_str());
+    ImGui::TextDisabled("  %s", p.path.c_str());
     ImGui::Text("  object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
     ImGui::Text("  %u triangles, depth %.6f", p.triangleCount, double(line.depth));
 }
 
+void picking(const PanelInfo& info, PanelActions& actions) {
+    ImGui::Text("visible parts  %u", info.visibleParts);
+    partLine("hovered", info.hovered);
+    if (info.selectedCount > 1)
+        ImGui::Text("selected: %u parts", info.selectedCount);
+    else
+        partLine("selected", info.selected);
+    ImGui::BeginDisabled(info.selectedCount == 0);
+    actions.hide = ImGui::Button("hide (H)");
+    ImGui::SameLine();
+    actions.isolate = ImGui::Button("isolate (I)");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(info.hiddenCount == 0);
+    actions.showAll = ImGui::Button("show all (shift+H)");
+    ImGui::EndDisabled();
+    if (info.hiddenCount) ImGui::Text("hidden parts   %u", info.hiddenCount);
+}
+
+bool matches(const std::string& text, const char* filter) {
+    if (!*filter) return true;
+    auto lower = [](unsigned char c) { return char(std::tolower(c)); };
+    std::string a(text), b(filter);
+    std::transform(a.begin(), a.end(), a.begin(), lower);
+    std::transform(b.begin(), b.end(), b.begin(), lower);
+    return a.find(b) != std::string::npos;
+}
+
+// The objects whose name or path holds the filter text; a click selects the parts of every
+// object of that name (Ctrl+click adds them).
+void objectList(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
+    if (!info.scene) return;
+    ImGui::InputTextWithHint("##filter", "filter by name or path", view.objectFilter.data(),
+                             view.objectFilter.size());
+    constexpr size_t shownAtMost = 2000; // a long list helps nobody: refine the filter
+    std::vector<size_t> shown;
+    size_t found = 0;
+    const auto& objects = info.scene->objects;
+    for (size_t i = 0; i < objects.size(); ++i)
+        if (matches(objects[i].name, view.objectFilter.data()) ||
+            matches(objects[i].path, view.objectFilter.data()))
+            if (found++ < shownAtMost) shown.push_back(i);
+    ImGui::Text("%zu of %zu objects", found, objects.size());
+    if (!ImGui::BeginListBox("##objects", ImVec2(-1, 180))) return;
+    ImGuiListClipper clipper;
+    clipper.Begin(int(shown.size()));
+    while (clipper.Step())
+        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
+            const scene::Object& object = objects[shown[size_t(row)]];
+            ImGui::PushID(row);
+            if (ImGui::Selectable(object.name.c_str())) {
+                actions.selectObjects = object.name;
+                actions.mode = ImGui::GetIO().KeyCtrl ? SelectMode::Add : SelectMode::Replace;
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", object.path.c_str());
+            ImGui::PopID();
+        }
+    ImGui::EndListBox();
+}
+
 } // namespace
 
-void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
+PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
+    PanelActions actions;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     // As tall as its contents, but never taller than the window (it scrolls then).
     const float maxHeight = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
@@ -215,7 +300,7 @@ void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (!ImGui::Begin("idview (F1 hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
-        return;
+        return actions;
     }
     ImGui::PushItemWidth(-120.0f); // room for the labels right of the widgets
     ImGui::TextDisabled("%s", info.device.c_str());
@@ -229,14 +314,13 @@ void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
         sceneSection(settings.scene, info);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
-    if (ImGui::CollapsingHeader("Picking", ImGuiTreeNodeFlags_DefaultOpen)) {
-        partLine("hovered", info.hovered);
-        partLine("selected", info.selected);
-    }
+    if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen)) picking(info, actions);
+    if (ImGui::CollapsingHeader("Objects")) objectList(view, info, actions);
     if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     ImGui::PopItemWidth();
     ImGui::End();
+    return actions;
 }
 
 } // namespace app

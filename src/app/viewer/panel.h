@@ -3,6 +3,7 @@
 // then applies whatever differs from what is drawn. The panel holds no state of its own.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include <vulkan/vulkan.h>
 
 #include "app/cli.h"
+#include "app/viewer/selection.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"
 #include "scene/part_data.h"
@@ -22,6 +24,14 @@ namespace app {
 struct ViewSettings {
     bool vsync = true;
     bool panelVisible = true;
+    std::array<char, 96> objectFilter{}; // the object list's filter text
+};
+
+// What the user asked of the parts through the panel, for the viewer to carry out.
+struct PanelActions {
+    std::optional<std::string> selectObjects; // the objects of this name (a list click)
+    SelectMode mode = SelectMode::Replace;    // Ctrl+click adds
+    bool hide = false, isolate = false, showAll = false;
 };
 
 // A part under the cursor or selected, as the pick reported it.
@@ -46,9 +56,13 @@ struct PanelInfo {
     double fps = 0.0, gpuMs = 0.0, cpuRecordMs = 0.0;
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
+    uint32_t selectedCount = 0, hiddenCount = 0;
+    uint32_t visibleParts = 0; // counted on the GPU in the newest completed frame
+    double idPassMs = 0.0;     // GPU time of the edge and part set passes
 };
 
-// Draws the panel; the user's changes land in `settings` (scene, render, animation) and `view`.
-void drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info);
+// Draws the panel; the user's changes land in `settings` (scene, render, animation) and
+// `view`, what it asks of the parts in the result.
+PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info);
 
 } // namespace app

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "render/technique.h"
 
@@ -28,6 +29,8 @@ const CommandSpec commandSpecs[] = {
     {"move", ScriptOp::Move, 2, "move X Y"},
     {"click", ScriptOp::Click, 2, "click X Y"},
     {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1"},
+    {"box", ScriptOp::Box, 4, "box X0 Y0 X1 Y1 [add|remove]"},
+    {"object", ScriptOp::Object, 0, "object NAME"},
     {"scroll", ScriptOp::Scroll, 1, "scroll DY"},
     {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT"},
     {"renderer", ScriptOp::Renderer, 0, "renderer NAME"},
@@ -68,8 +71,8 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (name == candidate.name) spec = &candidate;
     if (!spec)
         fail("unknown command '" + name +
-             "' (known: key, move, click, drag, scroll, resize, renderer, mode, msaa, copies, "
-             "screenshot, drop, frames, quit)");
+             "' (known: key, move, click, drag, box, object, scroll, resize, renderer, mode, "
+             "msaa, copies, screenshot, drop, frames, quit)");
     command.op = spec->op;
 
     std::vector<std::string> args;
@@ -77,8 +80,27 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     const bool takesText = spec->op == ScriptOp::Key || spec->op == ScriptOp::Renderer ||
                            spec->op == ScriptOp::Mode || spec->op == ScriptOp::Screenshot ||
                            spec->op == ScriptOp::Drop;
+    // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
-    if (args.size() != expected) fail(std::string("'") + spec->name + "' takes: " + spec->usage);
+    const bool fits = spec->op == ScriptOp::Object ? !args.empty()
+                      : spec->op == ScriptOp::Box  ? args.size() == 4 || args.size() == 5
+                                                   : args.size() == expected;
+    if (!fits) fail(std::string("'") + spec->name + "' takes: " + spec->usage);
+    if (spec->op == ScriptOp::Object) {
+        const auto start = line.find("object") + 6;
+        command.text = line.substr(line.find_first_not_of(" \t", start));
+        command.text.erase(command.text.find_last_not_of(" \t") + 1);
+    }
+    if (spec->op == ScriptOp::Box && args.size() == 5) {
+        if (args[4] == "add")
+            command.mods = GLFW_MOD_CONTROL;
+        else if (args[4] == "remove")
+            command.mods = GLFW_MOD_ALT;
+        else
+            fail("a box adds or removes, not '" + args[4] + "' (" + spec->usage + ")");
+    } else if (spec->op == ScriptOp::Box) {
+        command.mods = GLFW_MOD_SHIFT;
+    }
     for (size_t i = 0; i < spec->numbers; ++i)
         if (!parseNumber(args[i], command.values[i]))
             fail("'" + args[i] + "' is not a number (" + spec->usage + ")");
@@ -86,10 +108,11 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
 
     switch (spec->op) {
     case ScriptOp::Key:
-        if (auto code = scriptKeyCode(command.text))
-            command.key = *code;
+        if (auto chord = scriptKeyChord(command.text))
+            std::tie(command.key, command.mods) = *chord;
         else
-            fail("unknown key '" + command.text + "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB)");
+            fail("unknown key '" + command.text +
+                 "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB, HOME; shift+, ctrl+, alt+)");
         break;
     case ScriptOp::Copies:
         if (command.values[0] < 1.0 || command.values[0] > 1e6 ||
@@ -104,6 +127,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     case ScriptOp::Move:
     case ScriptOp::Click:
     case ScriptOp::Drag:
+    case ScriptOp::Box:
         for (size_t i = 0; i < spec->numbers; ++i)
             if (command.values[i] < 0.0) fail("window coordinates cannot be negative");
         break;
@@ -151,6 +175,26 @@ std::optional<int> scriptKeyCode(const std::string& name) {
     if (key == "TAB") return GLFW_KEY_TAB;
     if (key == "HOME") return GLFW_KEY_HOME;
     return std::nullopt;
+}
+
+std::optional<std::pair<int, int>> scriptKeyChord(const std::string& name) {
+    int mods = 0;
+    std::string rest = name;
+    for (size_t plus; (plus = rest.find('+')) != std::string::npos && plus + 1 < rest.size();) {
+        const std::string modifier = upper(rest.substr(0, plus));
+        if (modifier == "SHIFT")
+            mods |= GLFW_MOD_SHIFT;
+        else if (modifier == "CTRL")
+            mods |= GLFW_MOD_CONTROL;
+        else if (modifier == "ALT")
+            mods |= GLFW_MOD_ALT;
+        else
+            return std::nullopt;
+        rest = rest.substr(plus + 1);
+    }
+    const auto code = scriptKeyCode(rest);
+    if (!code) return std::nullopt;
+    return std::pair{*code, mods};
 }
 
 std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name) {

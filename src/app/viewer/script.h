@@ -3,10 +3,15 @@
 // seconds have passed since the first frame. The viewer feeds each command to the same
 // handlers as real keys, mouse and panel widgets. Parsing is plain C++ and unit-tested.
 //
-//   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB)
+//   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB,
+//                           HOME), with modifiers as in shift+H, ctrl+A or alt+X
 //   1   move 320 200        cursor to window coordinates (top-left origin)
 //   1.2 click 320 200       move there, press and release the left button
 //   1.5 drag 100 100 300 120  left-button drag (orbit) from the first point to the second
+//   1.6 box 10 10 200 150   box selection: Shift + left drag between the corners; `box ... add`
+//                           holds Ctrl (adds), `box ... remove` Alt (removes)
+//   1.7 object bolt M10 #3  select the parts of the objects with this name, as the panel's
+//                           object list does
 //   2   scroll 2            wheel steps, positive zooms in
 //   2.5 resize 800 500      window size
 //   3   renderer tri-fs     switch technique (no-id too), as the panel's combo box does
@@ -27,6 +32,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace app {
@@ -36,6 +42,8 @@ enum class ScriptOp {
     Move,
     Click,
     Drag,
+    Box,
+    Object,
     Scroll,
     Resize,
     Renderer,
@@ -53,6 +61,7 @@ struct ScriptCommand {
     ScriptOp op = ScriptOp::Quit;
     std::string text;               // key name, renderer or mode name, file path
     int key = 0;                    // Key: the GLFW key code
+    int mods = 0;                   // Key, Box: GLFW modifier bits held
     std::array<double, 4> values{}; // coordinates, wheel steps, window size or sample count
     std::string where;              // "file:line", for messages while it runs
 };
@@ -69,6 +78,8 @@ std::vector<ScriptCommand> loadScript(const std::string& path);
 
 // The GLFW key code of a key name as scripts spell it (case-insensitive); nullopt if unknown.
 std::optional<int> scriptKeyCode(const std::string& name);
+// "shift+ctrl+H": the key code and the GLFW modifier bits; nullopt if either is unknown.
+std::optional<std::pair<int, int>> scriptKeyChord(const std::string& name);
 
 // Hands out commands in time order as their time comes.
 class ScriptPlayer {

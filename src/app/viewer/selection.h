@@ -1,37 +1,80 @@
-// selection.h - hover and click selection of parts, independent of any technique or mode so
-// that switching renderers keeps what the user selected. Fed by the pick of each frame.
+// selection.h - what the user picked and hid, independent of any technique or mode so that
+// switching renderers keeps it: the hovered part (from each frame's pick), the selected
+// parts (a click, a box, the object list) and the hidden ones (H, I, Shift+H). Sets of
+// unique part IDs over the current scene; a new scene empties them.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 
+#include "scene/part_set.h"
+
 namespace app {
+
+// How a box or a list choice combines with the selection: Shift replaces, Ctrl adds, Alt
+// removes.
+enum class SelectMode { Replace, Add, Remove };
 
 class Selection {
   public:
+    // A new scene of `partCount` parts: nothing hovered, selected or hidden.
+    void reset(uint32_t partCount) {
+        hovered_.reset();
+        primary_.reset();
+        selected_ = hidden_ = scene::PartSet(partCount);
+    }
+
     // The part under the cursor from the newest completed pick; nullopt over background.
     void hover(std::optional<uint32_t> part) { hovered_ = part; }
-    // A click selects the hovered part; a click on empty space clears the selection.
-    void click() { selected_ = hovered_; }
+    // A click selects the hovered part alone; a click on empty space clears the selection.
+    void click() {
+        selected_.clear();
+        if (hovered_) selected_.insert(*hovered_);
+        primary_ = hovered_;
+    }
+    // A box or the object list: `parts` replace, join or leave the selection.
+    void select(const scene::PartSet& parts, SelectMode mode) {
+        if (mode == SelectMode::Replace) selected_.clear();
+        if (mode == SelectMode::Remove)
+            selected_.eraseAll(parts);
+        else
+            selected_.insertAll(parts);
+        primary_.reset();
+        if (selected_.size() == 1) primary_ = selected_.ids().front();
+    }
     // Esc clears the selection. Returns false when nothing was selected, so the caller may
     // give Esc its other meaning (closing the viewer).
     bool escape() {
-        const bool had = selected_.has_value();
-        selected_.reset();
+        const bool had = !selected_.empty();
+        selected_.clear();
+        primary_.reset();
         return had;
     }
-    // A new scene invalidates part IDs.
-    void clear() {
-        hovered_.reset();
-        selected_.reset();
+
+    // H: the selected parts are hidden, and so no longer selected.
+    void hideSelected() {
+        hidden_.insertAll(selected_);
+        selected_.clear();
+        primary_.reset();
     }
+    // I: everything but the selection is hidden (the selection stays).
+    void isolateSelected() {
+        if (selected_.empty()) return; // isolating nothing would leave an empty screen
+        hidden_ = selected_;
+        hidden_.invert();
+    }
+    // Shift+H.
+    void showAll() { hidden_.clear(); }
 
     std::optional<uint32_t> hovered() const { return hovered_; }
-    std::optional<uint32_t> selected() const { return selected_; }
+    // The part the panel details: the one clicked, or the only one selected.
+    std::optional<uint32_t> primary() const { return primary_; }
+    const scene::PartSet& selected() const { return selected_; }
+    const scene::PartSet& hidden() const { return hidden_; }
 
   private:
-    std::optional<uint32_t> hovered_;
-    std::optional<uint32_t> selected_;
+    std::optional<uint32_t> hovered_, primary_;
+    scene::PartSet selected_, hidden_;
 };
 
 } // namespace app

@@ -50,15 +50,33 @@ void Viewer::reloadShaders() {
 }
 
 void Viewer::selectionChanged() const {
-    const auto part = input_.selection().selected();
+    const Selection& selection = input_.selection();
+    const auto part = selection.primary();
     const auto info = part ? scene::describePart(scene_.scene(), *part) : std::nullopt;
     if (!info) {
-        events_.say("selected: none");
+        const uint32_t count = selection.selected().size();
+        events_.say(count ? "selected: " + std::to_string(count) + " parts" : "selected: none");
         return;
     }
     events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
                 std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
                 ")");
+}
+
+void Viewer::partsChanged() const {
+    events_.say("hidden: " + std::to_string(input_.selection().hidden().size()) + " parts");
+}
+
+void Viewer::selectObjects(const std::string& name, SelectMode mode) {
+    const scene::Scene& scene = scene_.scene();
+    scene::PartSet parts(scene.uniquePartCount());
+    for (const scene::Object& object : scene.objects)
+        if (object.name == name) {
+            const uint32_t count = scene.geometries[object.geometry].partCount;
+            for (uint32_t p = 0; p < count; ++p) parts.insert(object.uniquePartOffset + p);
+        }
+    input_.selection().select(parts, mode);
+    selectionChanged();
 }
 
 void Viewer::run() {

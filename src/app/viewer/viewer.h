@@ -47,6 +47,9 @@ class Viewer {
     void reloadShaders(); // R
     void screenshot(const std::string& path) { screenshotPath_ = path; }
     void selectionChanged() const; // tells the event lines
+    void partsChanged() const;     // hidden parts changed: tells the event lines
+    // The parts of every object named `name` join the selection as `mode` says.
+    void selectObjects(const std::string& name, SelectMode mode);
     void quit() { window_.close(); }
 
   private:
@@ -55,10 +58,12 @@ class Viewer {
     // frame.cpp: the steps of one frame.
     void drawFrame(double seconds);
     void drawPanel();
+    void act(const PanelActions& actions);
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);
     render::FrameParams frameParams(double seconds);
+    void showParts();
     void recordScene(render::FrameSlot& slot, const render::FrameParams& params);
     void saveScreenshot(const std::string& path);
     void updateTitle(double seconds, bool now);
@@ -85,6 +90,9 @@ class Viewer {
     double titleTime_ = 0.0, fps_ = 0.0;
     uint64_t titleFrame_ = 0;
     std::string title_, screenshotPath_;
+    // The selection and hidden parts last handed to the renderer.
+    scene::PartSet shownSelected_, shownHidden_;
+    uint32_t saidVisible_ = UINT32_MAX; // the visible part count last told
 };
 
 } // namespace app

@@ -1,0 +1,140 @@
+// id_passes.cpp - recording the edge and part set passes (see id_passes.h).
+#include "render/id_passes.h"
+
+#include <array>
+
+#include "vk/check.h"
+#include "vk/debug.h"
+
+namespace render {
+namespace {
+
+uint32_t groups(uint32_t pixels) {
+    return (pixels + gpu::ID_PASS_TILE - 1) / gpu::ID_PASS_TILE;
+}
+
+} // namespace
+
+IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
+    std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
+    for (uint32_t i = 0; i < bindings.size(); ++i)
+        bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT,
+                       nullptr};
+    auto info = vk::init<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    info.bindingCount = static_cast<uint32_t>(bindings.size());
+    info.pBindings = bindings.data();
+    images_ = vk::make(device, vkCreateDescriptorSetLayout, info, "ID pass images");
+    edges_ = createComputePipeline(device, compiler, "edges.comp", sizeof(gpu::EdgePush),
+                                   images_.get(), "part edges");
+    partSet_ = createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
+                                     images_.get(), "part sets");
+}
+
+void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
+                          const ComputePipeline& pass) const {
+    std::array<VkDescriptorImageInfo, 2> images = {
+        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL},
+        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.color().view(), VK_IMAGE_LAYOUT_GENERAL}};
+    std::array<VkWriteDescriptorSet, 2> writes{};
+    for (uint32_t i = 0; i < writes.size(); ++i) {
+        writes[i] = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[i].pImageInfo = &images[i];
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+    device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0,
+                                static_cast<uint32_t>(writes.size()), writes.data());
+}
+
+// To GENERAL: after the pass's writes and its transition to the final layout (which the
+// pass's outgoing dependency orders before the transfer stage). Back: before the copies and
+// blits that read the images, and the next frame's pass that overwrites them.
+void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const {
+    std::array<VkImageMemoryBarrier, 2> barriers{};
+    const std::array<VkImage, 2> images = {targets.ids().handle(), targets.color().handle()};
+    for (uint32_t i = 0; i < barriers.size(); ++i) {
+        VkImageMemoryBarrier& b = barriers[i];
+        b = vk::init<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = images[i];
+        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        if (toGeneral) {
+            b.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+            b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+            b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+        } else {
+            b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+            b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+            b.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
+            b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        }
+    }
+    const VkPipelineStageFlags src =
+        toGeneral ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT
+                  : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    const VkPipelineStageFlags dst =
+        toGeneral ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vkCmdPipelineBarrier(cmd, src, dst, 0, 0, nullptr, 0, nullptr,
+                         static_cast<uint32_t>(barriers.size()), barriers.data());
+}
+
+void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets, const gpu::EdgePush* edges,
+                      const std::vector<PartSetQuery>& queries, uint32_t words,
+                      const vk::Buffer& results, const vk::Buffer& readback) const {
+    if (!edges && queries.empty()) return;
+    vk::CmdLabel label(device_.debug(), cmd, "ID image passes");
+    const VkDeviceSize stride = sizeof(gpu::PartSetResult) + VkDeviceSize(words) * 4;
+    const VkDeviceSize bytes = stride * queries.size();
+    if (!queries.empty()) {
+        // The slot's buffers: the last frame that used them has finished (its fence).
+        vkCmdFillBuffer(cmd, results.handle(), 0, bytes, 0);
+        auto cleared = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+        cleared.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        cleared.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &cleared, 0, nullptr, 0,
+                             nullptr);
+    }
+    transition(cmd, targets, true);
+    const VkExtent2D extent = targets.extent();
+    if (edges) {
+        bindImages(cmd, targets, edges_);
+        vkCmdPushConstants(cmd, edges_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof *edges,
+                           edges);
+        vkCmdDispatch(cmd, groups(extent.width), groups(extent.height), 1);
+    }
+    if (!queries.empty()) bindImages(cmd, targets, partSet_);
+    for (size_t i = 0; i < queries.size(); ++i) {
+        const PartSetQuery& q = queries[i];
+        gpu::PartSetPush push{};
+        push.resultAddress = results.address() + stride * i;
+        push.rectMin = glm::min(q.min, glm::uvec2(extent.width - 1, extent.height - 1));
+        push.rectMax = glm::min(q.max, glm::uvec2(extent.width - 1, extent.height - 1));
+        push.words = words;
+        vkCmdPushConstants(cmd, partSet_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                           &push);
+        const glm::uvec2 size = push.rectMax - push.rectMin + 1u;
+        vkCmdDispatch(cmd, groups(size.x), groups(size.y), 1);
+    }
+    transition(cmd, targets, false);
+    if (queries.empty()) return;
+    auto written = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         0, 1, &written, 0, nullptr, 0, nullptr);
+    const VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, results.handle(), readback.handle(), 1, &copy);
+    auto toHost = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &toHost, 0, nullptr, 0, nullptr);
+}
+
+} // namespace render
