@@ -16,9 +16,10 @@
 // Depth test before the shader, even though the pick writes memory: keeps early-Z for every
 // technique, and only fragments that pass the test at their time take part in the pick, which
 // makes the pick agree with the ID attachment even where surfaces share a depth. While parts
-// are hidden (IDV_HIDE_PARTS) the test must come after the shader: a fragment discarded after
-// an early test would still have written its depth and hidden what is behind it.
-#if !IDV_HIDE_PARTS
+// are hidden and no earlier stage drops them (IDV_HIDE_IN_FRAGMENT), the test must come after
+// the shader: a fragment discarded after an early test would still have written its depth
+// and hidden what is behind it.
+#if !IDV_HIDE_IN_FRAGMENT
 layout(early_fragment_tests) in;
 #endif
 
@@ -68,7 +69,7 @@ void main() {
     uint uniquePartId = object.uniquePartOffset + localPart;
     // Before any discard: derivatives need the whole quad.
     float depth = pickDepth(frame);
-#if IDV_HIDE_PARTS
+#if IDV_HIDE_IN_FRAGMENT
     if (partInSet(frame.hiddenAddress, uniquePartId)) discard;
 #endif
     outPartId = uniquePartId;

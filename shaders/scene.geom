@@ -1,7 +1,8 @@
 #version 460
 // scene.geom - the gs techniques: finds the triangle's part once per primitive and hands it
 // to the fragment shader. With VK_NV_geometry_shader_passthrough (IDV_GS_PASSTHROUGH) the
-// vertices pass through untouched and only the per-primitive part index is written.
+// vertices pass through untouched and only the per-primitive part index is written (hidden
+// parts are then discarded by the fragment shader; the ordinary form drops them here).
 #if IDV_GS_PASSTHROUGH
 #extension GL_NV_geometry_shader_passthrough : require
 #endif
@@ -41,6 +42,11 @@ void main() {
     FrameData frame = loadFrame();
     DrawData draw = loadDraw(frame, inDrawIndex[0]);
     uint part = lookupLocalPart(frame, draw, uint(gl_PrimitiveIDIn));
+#if IDV_HIDE_PARTS
+    // A hidden part's triangle is not emitted: the fragment shader keeps its early tests.
+    uint offset = loadObject(frame.objectsAddress, draw.objectIndex).uniquePartOffset;
+    if (partInSet(frame.hiddenAddress, offset + part)) return;
+#endif
     for (int i = 0; i < 3; ++i) {
         gl_Position = gl_in[i].gl_Position;
         outWorldPos = inWorldPos[i];

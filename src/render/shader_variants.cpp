@@ -20,7 +20,11 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     defines.push_back(
         {"IDV_MESH_PART_PER_VERTEX", technique.ids == IdBuffer::MeshletVertexPartIds ? "1" : "0"});
     defines.push_back({"IDV_NO_ID", technique.isFloor() ? "1" : "0"});
+    // Hidden parts: a mesh shader or an ordinary geometry shader drops their triangles before
+    // the rasterizer, so early fragment tests stay; otherwise the fragment shader discards.
+    const bool dropEarlier = mesh || (inGeometry && !key.gsPassthrough);
     defines.push_back({"IDV_HIDE_PARTS", key.hiding ? "1" : "0"});
+    defines.push_back({"IDV_HIDE_IN_FRAGMENT", key.hiding && !dropEarlier ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
     // An effective key holds defaults where the technique reads nothing, so the source of
     // other techniques never varies with these.

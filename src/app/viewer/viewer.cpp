@@ -60,7 +60,7 @@ void Viewer::selectionChanged() const {
     }
     events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
                 std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
-                ")");
+                "): " + info->path);
 }
 
 void Viewer::partsChanged() const {
