@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace testing_support {
 
 inline std::string base64(const std::vector<unsigned char>& bytes) {
@@ -38,8 +40,10 @@ inline int sharedGridPrimitiveOf(int t) {
     return t % sharedGridPrimitives;
 }
 
-// Writes the model into `dir` and returns its path.
-inline std::filesystem::path writeSharedVertexGltf(const std::filesystem::path& dir) {
+// Writes the model into `base` with this process's ID appended (ctest runs test processes in
+// parallel, and one must not read the file while another rewrites it); returns its path.
+inline std::filesystem::path writeSharedVertexGltf(const std::filesystem::path& base) {
+    const std::filesystem::path dir = base.string() + "-" + std::to_string(getpid());
     const int n = sharedGridSide;
     std::vector<float> positions, normals;
     auto height = [](float x, float y) { return 0.25f * std::sin(2.1f * x) * std::cos(1.7f * y); };
