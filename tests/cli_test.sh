@@ -179,6 +179,20 @@ expect export 0 '"parts":312' -- "$idview" --scene assembly --export "$work/a.gl
 expect export-loads 0 '"source":".*a.glb".*"objects":32,.*"parts":312,.*"triangles":2360' -- \
     "$idview" --model "$work/a.glb" --stats
 expect missing-model 1 "^idview: error: $work/none.glb: " -- "$idview" --model "$work/none.glb" --stats
+# Another glTF version, or a buffer outside the model's folder: exactly one line, exit 1.
+mkdir -p "$work/old" "$work/escape"
+printf '{"asset":{"version":"1.0"},"buffers":{"b":{"uri":"b.bin"}},"scenes":{"s":{"nodes":[]}}}' >"$work/old/v1.gltf"
+out=$("$idview" --headless --model "$work/old/v1.gltf" 2>&1)
+rc=$?
+if [[ $rc -eq 1 && $(wc -l <<<"$out") -eq 1 &&
+    $out == "idview: error: $work/old/v1.gltf: glTF 1.0 is not supported (idview reads glTF 2.0; convert it, e.g. with Cesium's gltf-pipeline)" ]]; then
+    echo "ok   gltf-1.0-refused"
+else
+    echo "FAIL gltf-1.0-refused: exit $rc, output:"; echo "$out"; failures=$((failures + 1))
+fi
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"../v1.bin"}]}' >"$work/escape/up.gltf"
+expect uri-outside-refused 1 "^idview: error: $work/escape/up.gltf: uri '../v1.bin' points outside the model's folder" -- \
+    "$idview" --headless --model "$work/escape/up.gltf"
 expect bad-scene 2 "--scene: unknown procedural preset 'huge'" -- "$idview" --scene procedural:preset=huge
 
 echo "cli_test: $failures failed"

@@ -272,6 +272,30 @@ TEST(GltfCorpus, ClearlyBrokenFilesAreRefusedWithTheReason) {
     }
 }
 
+// assimp's glTF 1.0 models (1.0, 1.0.2, one without asset.version, a version-1 GLB) used to
+// come out as "empty scene" or tinygltf's words; each is now refused as what it is.
+TEST(GltfCorpus, GltfOneFilesAreRefusedAsGltfOne) {
+    size_t files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(kCorpus.parent_path() / "glTF")) {
+        std::string ext = entry.path().extension().string();
+        if (ext != ".gltf" && ext != ".glb") continue;
+        ++files;
+        const std::string path = entry.path().string();
+        try {
+            scene::loadGltf(path);
+            ADD_FAILURE() << path << " loaded";
+        } catch (const ModelError& e) {
+            std::string what = e.what();
+            EXPECT_TRUE(what.find(": glTF 1.0") != std::string::npos ||
+                        what.find(": binary glTF 1.0 (GLB version 1)") != std::string::npos ||
+                        what.find(": asset.version is missing") != std::string::npos)
+                << what;
+            EXPECT_NE(what.find("convert it"), std::string::npos) << what;
+        }
+    }
+    EXPECT_GE(files, 7u);
+}
+
 TEST(GltfCorpus, MissingFile) {
     std::string path = (kCorpus / "no-such-file.glb").string();
     expectModelError([&] { scene::loadGltf(path); }, path, "file not found");
@@ -689,4 +713,156 @@ TEST_F(GltfHandmade, VeryLongPathsKeepTheirLastElements) {
     }
     EXPECT_EQ(r.scene.objects[0].path, expected);
     EXPECT_EQ(r.scene.objects[0].name, "segment-199");
+}
+
+// ---- handmade files: versions ----------------------------------------------------------------
+
+std::string withAsset(const std::string& asset) {
+    return quadJson([&](std::string& j) {
+        replaceOnce(j, R"("asset":{"version":"2.0"})", R"("asset":)" + asset);
+    });
+}
+
+TEST_F(GltfHandmade, OtherMajorVersionsAreRefusedInWords) {
+    const std::string path = write("old.gltf", withAsset(R"({"version":"1.0"})"));
+    try {
+        scene::loadGltf(path);
+        ADD_FAILURE() << "a glTF 1.0 file loaded";
+    } catch (const ModelError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path + ": glTF 1.0 is not supported (idview reads glTF 2.0; convert it, e.g. "
+                         "with Cesium's gltf-pipeline)");
+    }
+    expectError(withAsset(R"({"version":"1.0.2"})"), "glTF 1.0.2 is not supported");
+    expectError(withAsset(R"({"version":"3.0"})"),
+                "glTF 3.0 is not supported (idview reads glTF 2.0)");
+    expectError(withAsset(R"({"version":"two"})"), "asset.version 'two' is not a glTF version");
+    expectError(withAsset(R"({"version":""})"), "asset.version '' is not a glTF version");
+}
+
+TEST_F(GltfHandmade, MissingVersionIsRefused) {
+    const std::string missing = "asset.version is missing or not a string: not a glTF 2.0 file";
+    expectError(withAsset(R"({"generator":"x"})"), missing);
+    expectError(withAsset(R"({"version":2.0})"), missing);
+    expectError(
+        quadJson([](std::string& j) { replaceOnce(j, R"("asset":{"version":"2.0"},)", ""); }),
+        missing);
+}
+
+// glTF 2.0, 3.2: a newer minor version can be read (what is new in it is ignored) unless
+// asset.minVersion says the file needs more than 2.0.
+TEST_F(GltfHandmade, MinorVersionsAreCompatibleUnlessMinVersionSaysOtherwise) {
+    EXPECT_EQ(load(withAsset(R"({"version":"2.1"})")).scene.drawnTriangleCount(), 2u);
+    EXPECT_EQ(load(withAsset(R"({"version":"2.1","minVersion":"2.0"})")).scene.drawnTriangleCount(),
+              2u);
+    expectError(withAsset(R"({"version":"2.1","minVersion":"2.1"})"),
+                "the file needs glTF 2.1 (asset.minVersion); idview reads glTF 2.0");
+    expectError(withAsset(R"({"version":"2.0","minVersion":"x"})"),
+                "asset.minVersion 'x' is not a glTF version");
+}
+
+TEST_F(GltfHandmade, GlbVersionOneIsRefusedInWords) {
+    std::vector<unsigned char> file = glb(quadJson(), {});
+    file[4] = 1;
+    const std::string path = write("old.glb", file);
+    try {
+        scene::loadGltf(path);
+        ADD_FAILURE() << "a version-1 GLB loaded";
+    } catch (const ModelError& e) {
+        EXPECT_EQ(std::string(e.what()), path +
+                                             ": binary glTF 1.0 (GLB version 1) is not supported "
+                                             "(idview reads glTF 2.0; convert it, e.g. with "
+                                             "Cesium's gltf-pipeline)");
+    }
+}
+
+// ---- handmade files: URIs stay inside the model's folder -------------------------------------
+
+// The quad's buffer as a file would hold it (the layout of quadWithIndices<uint32_t>).
+std::vector<unsigned char> quadBuffer() {
+    Blob blob;
+    blob.add(kQuad);
+    blob.add(kQuadIndices);
+    return blob.bytes;
+}
+
+// The quad document with its buffer at `uri` instead of inline.
+std::string quadAt(const std::string& uri) {
+    return quadJson([&](std::string& j) {
+        size_t begin = j.find(R"("uri":"data:)") + 7;
+        j.replace(begin, j.find('"', begin) - begin, uri);
+    });
+}
+
+class GltfUris : public GltfHandmade {
+  protected:
+    // The model goes in <dir>/model/; a valid copy of its buffer lies outside, beside that
+    // folder, and inside it: read, either would load.
+    void SetUp() override {
+        GltfHandmade::SetUp();
+        fs::create_directories(dir_ / "model");
+        write("outside.bin", quadBuffer());
+        write("model/inside.bin", quadBuffer());
+        write("model/in side.bin", quadBuffer());
+    }
+    std::string model(const std::string& json) { return write("model/model.gltf", json); }
+    void expectRefused(const std::string& uri, const std::string& reason) {
+        const std::string path = model(quadAt(uri));
+        expectModelError([&] { scene::loadGltf(path); }, path, reason);
+    }
+};
+
+TEST_F(GltfUris, InsideTheFolderAndDataUrisLoad) {
+    for (const char* uri : {"inside.bin", "./inside.bin", "sub/../inside.bin", "in%20side.bin"})
+        EXPECT_EQ(scene::loadGltf(model(quadAt(uri))).scene.drawnTriangleCount(), 2u) << uri;
+    EXPECT_EQ(scene::loadGltf(model(quadJson())).scene.drawnTriangleCount(), 2u); // data: URI
+}
+
+// Every refusal comes before any file is looked at: the outside file exists and holds the
+// right bytes, so a read would load it, and a lookup that failed would say "not found".
+TEST_F(GltfUris, PathsOutsideTheFolderAreRefusedUnread) {
+    const std::string rest = " (idview reads only files inside the model's folder, and data: URIs)";
+    const std::string path = model(quadAt("../outside.bin"));
+    try {
+        scene::loadGltf(path);
+        ADD_FAILURE() << "a buffer outside the model's folder was read";
+    } catch (const ModelError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  path + ": uri '../outside.bin' points outside the model's folder" + rest);
+    }
+    // glTF URIs are percent-encoded; tinygltf decodes them, the message shows what it means.
+    expectRefused("%2e%2e/outside.bin", "uri '../outside.bin' points outside the model's folder");
+    expectRefused("%2E%2E%2Foutside.bin", "uri '../outside.bin' points outside");
+    expectRefused("sub/../../outside.bin", "points outside the model's folder");
+    expectRefused("../../../../../../etc/passwd", "points outside the model's folder");
+    expectRefused("/etc/passwd", "uri '/etc/passwd' is an absolute path" + rest);
+    expectRefused((dir_ / "outside.bin").string(), "is an absolute path");
+    expectRefused("file:///etc/passwd", "uri 'file:///etc/passwd' is a URL, not a relative path");
+    expectRefused("inside.bin%00/../../outside.bin", "contains a NUL byte");
+}
+
+TEST_F(GltfUris, ImagesAreRefusedToo) {
+    write("outside.png", std::string("not read"));
+    const std::string path = model(quadJson([](std::string& j) {
+        replaceOnce(j, R"("asset")", R"("images":[{"uri":"../outside.png"}],"asset")");
+    }));
+    expectModelError([&] { scene::loadGltf(path); }, path,
+                     "uri '../outside.png' points outside the model's folder");
+}
+
+// tinygltf looks for a file it does not find in the model's folder in the working directory
+// as well; that second place is outside the folder, so the file is simply not found.
+TEST_F(GltfUris, TheWorkingDirectoryIsNotSearched) {
+    write("only-in-cwd.bin", quadBuffer());
+    const std::string path = fs::absolute(model(quadAt("only-in-cwd.bin"))).string();
+    const fs::path before = fs::current_path();
+    fs::current_path(dir_);
+    try {
+        scene::loadGltf(path);
+        ADD_FAILURE() << "the buffer was read from the working directory";
+    } catch (const ModelError& e) {
+        EXPECT_NE(std::string(e.what()).find("File not found : only-in-cwd.bin"), std::string::npos)
+            << e.what();
+    }
+    fs::current_path(before);
 }

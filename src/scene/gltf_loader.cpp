@@ -3,7 +3,9 @@
 #include "scene/gltf_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -40,14 +42,117 @@ std::vector<unsigned char> readFileBytes(const std::string& path) {
     return bytes;
 }
 
+// tinygltf messages span lines and may quote file content: make them one printable line.
+std::string oneLine(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+        if (space && (out.empty() || out.back() == ' ')) continue;
+        if (c == '\n' && out.size() >= 2 && out.back() != ';')
+            out += "; ";
+        else
+            out += (space || (unsigned char)c < 0x20 || c == 0x7f) ? ' ' : c;
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    if (out.size() > 300) out = out.substr(0, 297) + "...";
+    return out.empty() ? "unknown error" : out;
+}
+
+// What an old file's message suggests: a converter that upgrades glTF 1.0 (and its binary
+// container) to 2.0.
+constexpr const char* kConvertHint = "; convert it, e.g. with Cesium's gltf-pipeline";
+
+// "<major>.<minor>" at the start of a version string (glTF's pattern is ^[0-9]+\.[0-9]+$;
+// real 1.0 files say "1.0.2"), or -1 for the major number when there is none.
+std::pair<long, long> versionNumbers(const std::string& version) {
+    const char* begin = version.c_str();
+    char* end = nullptr;
+    if (!std::isdigit((unsigned char)*begin)) return {-1, 0};
+    long major = std::strtol(begin, &end, 10);
+    if (*end != '.' || !std::isdigit((unsigned char)end[1])) return {-1, 0};
+    return {major, std::strtol(end + 1, nullptr, 10)};
+}
+
+// glTF 2.0, 3.2: a minor version is compatible, another major one is not; minVersion, when
+// present, names the version the file cannot be read without.
+void checkVersion(const tinygltf::Asset& asset) {
+    const std::string version = asset.version.empty() ? "" : oneLine(asset.version);
+    const long major = versionNumbers(asset.version).first;
+    if (major < 0) throw Bad("asset.version '" + version + "' is not a glTF version");
+    if (major != 2)
+        throw Bad("glTF " + version + " is not supported (idview reads glTF 2.0" +
+                  (major < 2 ? kConvertHint : "") + ")");
+    if (asset.minVersion.empty()) return;
+    const std::string minVersion = oneLine(asset.minVersion);
+    auto [needMajor, needMinor] = versionNumbers(asset.minVersion);
+    if (needMajor < 0) throw Bad("asset.minVersion '" + minVersion + "' is not a glTF version");
+    if (needMajor != 2 || needMinor > 0)
+        throw Bad("the file needs glTF " + minVersion +
+                  " (asset.minVersion); idview reads glTF 2.0");
+}
+
+// The folder of the model: the only place external buffers and images are read from. The
+// check is lexical (after tinygltf's percent-decoding): symbolic links inside the folder are
+// followed wherever they point, since only the folder's owner can make them (and git-annex or
+// DVC checkouts are built from them), while the file's own text cannot escape.
+struct ModelFolder {
+    std::string dir;     // as tinygltf joins it: the model's parent path, "" for the cwd
+    std::string refusal; // the first URI refused, with the reason
+    const tinygltf::Asset* asset = nullptr; // parsed before any buffer or image
+};
+
+// Why a percent-decoded, non-data URI may not be read, or "" when it names a file inside the
+// model's folder: not an absolute path or a URL, and no ".." that climbs above the folder.
+std::string whyRefused(const std::string& uri) {
+    if (uri.find('\0') != std::string::npos) return "contains a NUL byte";
+    if (!uri.empty() && uri[0] == '/') return "is an absolute path";
+    size_t colon = uri.find(':');
+    if (colon != std::string::npos && colon > 0 && std::isalpha((unsigned char)uri[0]) &&
+        std::all_of(uri.begin(), uri.begin() + ptrdiff_t(colon), [](char c) {
+            return std::isalnum((unsigned char)c) || c == '+' || c == '-' || c == '.';
+        }))
+        return "is a URL, not a relative path";
+    int depth = 0;
+    for (const auto& segment : fs::path(uri)) {
+        if (segment == "..") {
+            if (--depth < 0) return "points outside the model's folder";
+        } else if (segment != "." && !segment.empty()) {
+            ++depth;
+        }
+    }
+    return "";
+}
+
 // tinygltf's file callbacks, replaced so that a URI can only name a regular file of sane
-// size (never a device or a pipe) and no shell-style path expansion happens.
+// size (never a device or a pipe) inside the model's folder, and no shell-style path
+// expansion happens. tinygltf asks ExpandFilePath about "<dir>/<uri>" before it looks at a
+// file, so a refused URI is never opened, nor even looked up. Its second try, "./<uri>" in
+// the working directory, is refused without a word (the file is simply not found).
 bool fileExists(const std::string& path, void*) {
     std::error_code ec;
-    return fs::is_regular_file(path, ec);
+    return !path.empty() && fs::is_regular_file(path, ec);
 }
-std::string expandPath(const std::string& path, void*) {
-    return path;
+std::string expandInsideFolder(const std::string& path, void* user) {
+    ModelFolder& folder = *static_cast<ModelFolder*>(user);
+    try {
+        checkVersion(*folder.asset); // a file of another version has no files read either
+    } catch (const Bad&) {
+        return "";
+    }
+    const std::string prefix =
+        folder.dir.empty() || folder.dir.back() == '/' ? folder.dir : folder.dir + "/";
+    if (path.compare(0, prefix.size(), prefix) != 0) return "";
+    const std::string uri = path.substr(prefix.size());
+    // A data: URI tinygltf cannot decode (say an unusual image type) is no file either.
+    if (uri.rfind("data:", 0) == 0) return "";
+    if (std::string why = whyRefused(uri); !why.empty()) {
+        if (folder.refusal.empty())
+            folder.refusal = "uri '" + oneLine(uri) + "' " + why +
+                             " (idview reads only files inside the model's folder, and data: URIs)";
+        return "";
+    }
+    // What is opened is what was checked: "sub/../a.bin" is "a.bin" even if sub is a link.
+    return (fs::path(folder.dir) / uri).lexically_normal().string();
 }
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void*) {
@@ -70,22 +175,6 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
     return true;
 }
 
-// tinygltf messages span lines and may quote file content: make them one printable line.
-std::string oneLine(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
-        if (space && (out.empty() || out.back() == ' ')) continue;
-        if (c == '\n' && out.size() >= 2 && out.back() != ';')
-            out += "; ";
-        else
-            out += (space || (unsigned char)c < 0x20 || c == 0x7f) ? ' ' : c;
-    }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
-    if (out.size() > 300) out = out.substr(0, 297) + "...";
-    return out.empty() ? "unknown error" : out;
-}
-
 uint32_t readLe32(const unsigned char* p) {
     return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
 }
@@ -94,8 +183,12 @@ uint32_t readLe32(const unsigned char* p) {
 void checkGlbHeader(std::span<const unsigned char> bytes) {
     if (bytes.size() < 20)
         throw Bad("truncated GLB file (" + std::to_string(bytes.size()) + " bytes)");
-    if (readLe32(bytes.data() + 4) != 2)
-        throw Bad("unsupported GLB version " + std::to_string(readLe32(bytes.data() + 4)));
+    const uint32_t version = readLe32(bytes.data() + 4);
+    if (version == 1)
+        throw Bad(std::string("binary glTF 1.0 (GLB version 1) is not supported (idview reads "
+                              "glTF 2.0") +
+                  kConvertHint + ")");
+    if (version != 2) throw Bad("unsupported GLB version " + std::to_string(version));
     uint64_t length = readLe32(bytes.data() + 8), jsonLength = readLe32(bytes.data() + 12);
     if (length > bytes.size())
         throw Bad("truncated GLB file: header says " + std::to_string(length) +
@@ -160,15 +253,26 @@ tinygltf::Model parse(std::span<const unsigned char> bytes, const std::string& n
     if (binary) checkGlbHeader(bytes);
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skipImage, nullptr);
-    loader.SetFsCallbacks({fileExists, expandPath, readWholeFile, refuseWrite, nullptr});
     tinygltf::Model model;
-    std::string err, warn, baseDir = fs::path(name).parent_path().string();
+    model.asset.version.clear(); // tinygltf's default is "2.0": tell a missing one apart
+    ModelFolder folder{fs::path(name).parent_path().string(), "", &model.asset};
+    loader.SetFsCallbacks({fileExists, expandInsideFolder, readWholeFile, refuseWrite, &folder});
+    std::string err, warn;
     auto length = static_cast<unsigned int>(bytes.size());
-    bool ok = binary
-                  ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, baseDir)
-                  : loader.LoadASCIIFromString(&model, &err, &warn,
-                                               reinterpret_cast<const char*>(bytes.data()), length,
-                                               baseDir);
+    bool ok =
+        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, folder.dir)
+               : loader.LoadASCIIFromString(&model, &err, &warn,
+                                            reinterpret_cast<const char*>(bytes.data()), length,
+                                            folder.dir);
+    // tinygltf reads the asset before anything else, and refuses a file without an
+    // asset.version string in words of its own; its errors on another version's file would
+    // only confuse, so the version is checked first.
+    if (!ok && err.find("\"asset\" object not found") != std::string::npos)
+        throw Bad(std::string("asset.version is missing or not a string: not a glTF 2.0 file "
+                              "(idview reads glTF 2.0") +
+                  kConvertHint + ")");
+    if (ok || !model.asset.version.empty()) checkVersion(model.asset);
+    if (!folder.refusal.empty()) throw Bad(folder.refusal);
     if (!ok) {
         // A Draco file fails in tinygltf (its accessors have no bufferView) before we see
         // extensionsRequired, so look for the real reason in the text first.
