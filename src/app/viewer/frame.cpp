@@ -79,6 +79,7 @@ void Viewer::act(const PanelActions& actions) {
 }
 
 void Viewer::applySettings() {
+    follow(scene_.poll(settings_.scene));
     follow(scene_.apply(settings_.scene, settings_.render));
     scene_.resize(presenter_.extent());
 }
@@ -86,7 +87,7 @@ void Viewer::applySettings() {
 void Viewer::openDrops() {
     for (const std::string& path : input_.takeDrops()) {
         if (isGltf(path))
-            follow(scene_.open(path, settings_.scene));
+            scene_.startOpen(path, settings_.scene); // follow() once it has loaded
         else
             scene_.fail("'" + path + "' is not a glTF model (.gltf or .glb)");
     }
@@ -169,6 +170,8 @@ PanelInfo Viewer::panelInfo() const {
     info.source = scene_.loaded().source;
     info.gltf = isGltf(info.source);
     info.error = scene_.error();
+    if (const auto loading = scene_.loading())
+        info.loading = PanelInfo::Loading{loading->path, loading->seconds};
     info.scene = &scene_.scene();
     info.stats = scene_.renderer().stats();
     info.lastSwitch = scene_.renderer().lastSwitch();

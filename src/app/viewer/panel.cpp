@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <type_traits>
 
@@ -308,6 +309,15 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", info.error.c_str());
         ImGui::PopStyleColor();
+    }
+    if (info.loading) {
+        // The loaders report no fraction: the bar sweeps once a second while the load runs,
+        // and the time says how long it has taken so far.
+        const double t = info.loading->seconds;
+        char label[64];
+        std::snprintf(label, sizeof label, "loading, %.1f s", t);
+        ImGui::TextWrapped("%s", info.loading->path.c_str());
+        ImGui::ProgressBar(float(t - std::floor(t)), ImVec2(-1, 0), label);
     }
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen))
         rendering(settings, view, info);

@@ -47,6 +47,11 @@ struct PanelInfo {
     std::string source; // model file or scene spec
     bool gltf = false;  // the parts mode applies
     std::string error;  // the last failed action's message, shown until the next success
+    struct Loading {
+        std::string path;
+        double seconds = 0.0;
+    };
+    std::optional<Loading> loading; // a dropped model still loading
     const scene::Scene* scene = nullptr;
     render::RenderStats stats;
     render::SwitchReport lastSwitch;

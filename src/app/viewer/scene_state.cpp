@@ -42,13 +42,46 @@ SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettin
     return change;
 }
 
-SceneState::Change SceneState::open(const std::string& path, SceneSettings& settings) {
+void SceneState::startOpen(const std::string& path, const SceneSettings& settings) {
     SceneSettings wanted = settings;
     wanted.model = path;
     wanted.builtin.clear();
-    if (!openScene(wanted)) return Change::None;
-    settings = wanted;
+    queued_.push_back(wanted);
+    launchNext();
+}
+
+void SceneState::launchNext() {
+    if (pending_ || queued_.empty()) return;
+    SceneSettings single = queued_.front();
+    single.copies = 1;
+    // Loading touches no Vulkan object and nothing the frames use: safe on its own thread.
+    pending_ = PendingOpen{std::async(std::launch::async, [single] { return loadScene(single); }),
+                           queued_.front(), std::chrono::steady_clock::now()};
+    queued_.pop_front();
+}
+
+SceneState::Change SceneState::poll(SceneSettings& settings) {
+    using namespace std::chrono_literals;
+    if (!pending_ || pending_->scene.wait_for(0s) != std::future_status::ready) return Change::None;
+    PendingOpen done = std::move(*pending_);
+    pending_.reset();
+    launchNext();
+    try {
+        use(done.scene.get(), done.settings, renderer_.settings());
+    } catch (const std::exception& e) {
+        fail(e.what()); // one line naming the file; the previous scene stays
+        return Change::None;
+    }
+    opened();
+    settings = done.settings;
     return Change::Model;
+}
+
+std::optional<SceneState::Loading> SceneState::loading() const {
+    if (!pending_) return std::nullopt;
+    return Loading{
+        pending_->settings.model,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - pending_->start).count()};
 }
 
 bool SceneState::openScene(const SceneSettings& settings) {
@@ -58,17 +91,25 @@ bool SceneState::openScene(const SceneSettings& settings) {
         fail(e.what()); // one line naming the file; the previous scene stays
         return false;
     }
+    opened();
+    return true;
+}
+
+void SceneState::opened() {
     events_.say("opened: " + base_.source + " (" + std::to_string(scene().objects.size()) +
                 " objects, " + std::to_string(scene().uniquePartCount()) + " parts, " +
                 std::to_string(scene().drawnTriangleCount()) + " triangles)");
-    return true;
 }
 
 // The model alone is loaded; the copies are made here, so changing them needs no reload.
 void SceneState::load(const SceneSettings& settings, const render::RenderSettings& render) {
     SceneSettings single = settings;
     single.copies = 1;
-    LoadedScene loaded = loadScene(single);
+    use(loadScene(single), settings, render);
+}
+
+void SceneState::use(LoadedScene loaded, const SceneSettings& settings,
+                     const render::RenderSettings& render) {
     std::optional<scene::Scene> copies;
     if (settings.copies > 1) {
         checkCopiesFit(loaded.scene, settings.copies);

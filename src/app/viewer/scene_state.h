@@ -5,6 +5,9 @@
 // in flight still use lives on in their slots.
 #pragma once
 
+#include <chrono>
+#include <deque>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,8 +32,19 @@ class SceneState {
     // Applies what differs between `wanted` and what is drawn. What fails is put back in
     // `wanted`, so the panel shows what is drawn.
     Change apply(SceneSettings& wanted, render::RenderSettings& render);
-    // Opens another model (a dropped file) with the current parts mode and copies.
-    Change open(const std::string& path, SceneSettings& settings);
+    // Starts opening another model (a dropped file) with the current parts mode and copies,
+    // on a worker thread: the scene drawn stays interactive meanwhile. One at a time: a drop
+    // while one loads waits for it, in the order dropped.
+    void startOpen(const std::string& path, const SceneSettings& settings);
+    // Once per frame: when the model being opened has loaded, uploads it and puts its
+    // settings in `settings` (Change::Model); a load that failed leaves its message.
+    Change poll(SceneSettings& settings);
+    // The model being opened, for the panel's progress line.
+    struct Loading {
+        std::string path;
+        double seconds = 0.0; // since the drop
+    };
+    std::optional<Loading> loading() const;
     // Targets at the window's new size.
     void resize(VkExtent2D extent);
     // R: shaders from disk, caches cleared; a compile error keeps the last good pipeline.
@@ -50,6 +64,10 @@ class SceneState {
   private:
     bool openScene(const SceneSettings& settings); // false: refused, the error is kept
     void load(const SceneSettings& settings, const render::RenderSettings& render); // throws
+    // Copies, upload and the switch to a scene loaded (with one copy) from `settings`.
+    void use(LoadedScene loaded, const SceneSettings& settings,
+             const render::RenderSettings& render); // throws
+    void opened();
     bool setCopies(uint32_t copies, uint32_t axes);
     void configure(render::RenderSettings& render);
     void sceneChanged();
@@ -63,6 +81,14 @@ class SceneState {
     scene::IdDataBytes idBytes_;
     VkSampleCountFlags sampleCounts_;
     std::string error_;
+    struct PendingOpen {
+        std::future<LoadedScene> scene;
+        SceneSettings settings;
+        std::chrono::steady_clock::time_point start;
+    };
+    std::deque<SceneSettings> queued_;   // drops waiting for the one loading
+    std::optional<PendingOpen> pending_; // destroyed first: waits for the worker
+    void launchNext();
 };
 
 } // namespace app
