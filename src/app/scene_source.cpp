@@ -10,6 +10,7 @@
 
 #include "app/json.h"
 #include "render/draw_list.h"
+#include "scene/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/generator.h"
 #include "scene/gltf_loader.h"
@@ -85,9 +86,23 @@ LoadedScene loadScene(const SceneSettings& settings) {
     loaded.settings = settings;
     if (!settings.model.empty() || settings.builtin.empty()) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
-        scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
-        loaded.scene = std::move(result.scene);
-        loaded.warnings = std::move(result.warnings);
+        if (scene::isCadPath(loaded.source)) {
+            scene::CadLoadResult result = scene::loadCad(loaded.source, settings.cad);
+            loaded.scene = std::move(result.scene);
+            loaded.warnings = std::move(result.warnings);
+            if (settings.parts != scene::PartMode::Primitives)
+                loaded.warnings.insert(loaded.warnings.begin(),
+                                       "--parts is ignored for CAD files: a part is a B-rep face");
+            loaded.cad = true;
+            loaded.readMs = result.readMs;
+            loaded.tessellationMs = result.tessellationMs;
+            loaded.deflection = result.deflection;
+            loaded.facesFailed = result.facesFailed;
+        } else {
+            scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
+            loaded.scene = std::move(result.scene);
+            loaded.warnings = std::move(result.warnings);
+        }
     } else {
         const SceneSpec spec = parseSceneSpec(settings.builtin);
         loaded.source = settings.builtin;
@@ -122,13 +137,15 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
     const scene::IdDataBytes bytes = scene::idDataBytes(s, key.searchBatch);
     std::ostringstream json;
     json.precision(3);
-    json << std::fixed << "{\"source\":" << jsonString(loaded.source)
-         << ",\"part_mode\":" << jsonString(scene::partModeName(loaded.settings.parts))
+    json << std::fixed << "{\"source\":" << jsonString(loaded.source) << ",\"part_mode\":"
+         << jsonString(loaded.cad ? "faces" : scene::partModeName(loaded.settings.parts))
          << ",\"copies\":" << loaded.settings.copies << ",\"objects\":" << s.objects.size()
          << ",\"geometries\":" << s.geometries.size() << ",\"parts\":" << s.uniquePartCount()
          << ",\"geometry_parts\":" << s.parts.size() << ",\"triangles\":" << s.drawnTriangleCount()
          << ",\"unique_triangles\":" << s.indices.size() / 3
          << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
+         << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
+         << ",\"faces_failed\":" << loaded.facesFailed << ",\"deflection\":" << loaded.deflection
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts

@@ -1,4 +1,4 @@
-// scene_source.h - where the scene comes from: a glTF file (--model), a built-in or
+// scene_source.h - where the scene comes from: a glTF or CAD file (--model), a built-in or
 // procedural scene (--scene), or the default model in assets/; then model copies. Shared by
 // the headless path, the viewer and --stats.
 #pragma once
@@ -27,6 +27,12 @@ struct LoadedScene {
     SceneSettings settings; // what it was loaded as (copies included)
     std::string source;     // file path or scene spec, for messages and stats
     double loadMs = 0.0;    // loading or generating, copies included
+    // CAD files (STEP, IGES, BREP): what the load took and did; zeros for other sources.
+    bool cad = false;
+    double readMs = 0.0;         // the reader, before tessellation
+    double tessellationMs = 0.0; // BRepMesh over the distinct shapes
+    double deflection = 0.0;     // the linear deflection used, in model units
+    uint32_t facesFailed = 0;    // faces left out for want of triangles
     std::vector<std::string> warnings;
     bool tilesLayout = false; // the test layout at its own camera
 };

@@ -85,10 +85,12 @@ void Viewer::applySettings() {
 
 void Viewer::openDrops() {
     for (const std::string& path : input_.takeDrops()) {
-        if (isGltf(path))
+        if (isGltf(path) || scene::isCadPath(path))
             follow(scene_.open(path, settings_.scene));
         else
-            scene_.fail("'" + path + "' is not a glTF model (.gltf or .glb)");
+            scene_.fail("'" + path +
+                        "' is neither a glTF model (.gltf, .glb) nor a CAD file (.step, .stp, "
+                        ".iges, .igs, .brep)");
     }
 }
 
