@@ -2,6 +2,7 @@
 // occt-misc (objects and parts against Open CASCADE's own counts), on an assembly written
 // here with OCCT (instancing, names, colours, placements), on malformed files, and through
 // the glTF export.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -27,6 +28,7 @@
 #include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
+#include <gp_Ax1.hxx>
 
 #include "scene/cad_loader.h"
 #include "scene/gltf_writer.h"
@@ -39,10 +41,18 @@ using scene::ModelError;
 
 const fs::path kData = "/usr/share/opencascade/data";
 
+// This process's scratch folder, removed when the tests end.
 fs::path tempDir() {
-    fs::path dir = fs::temp_directory_path() / ("idview_cad_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir;
+    struct Folder {
+        fs::path path = fs::temp_directory_path() / ("idview_cad_" + std::to_string(::getpid()));
+        ~Folder() {
+            std::error_code ignored;
+            fs::remove_all(path, ignored);
+        }
+    };
+    static const Folder folder;
+    fs::create_directories(folder.path);
+    return folder.path;
 }
 
 // What OCCT itself says a file holds: leaf objects and faces, each located instance counted.
@@ -168,8 +178,9 @@ TEST(CadLoader, FinerDeflectionMakesMoreTriangles) {
 
 // ---- an assembly written here -----------------------------------------------------------
 
-// Writes rig.step: one box placed twice ("left box" red, "right box" blue) and a cylinder
-// ("pin", product colour green), all under the assembly "rig".
+// Writes rig.step: one box placed twice ("left box" red, "right box" blue), a cylinder
+// ("pin", product colour green) and a sub-assembly holding the box once more, all under the
+// assembly "rig".
 fs::path writeRig() {
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
     Handle(TDocStd_Document) doc;
@@ -195,6 +206,17 @@ fs::path writeRig() {
     const TDF_Label left = place(box, gp_Vec(100.0, 0.0, 0.0), "left box");
     const TDF_Label right = place(box, gp_Vec(0.0, 200.0, 0.0), "right box");
     place(cylinder, gp_Vec(0.0, 0.0, 50.0), "pin");
+    // A sub-assembly, turned a quarter about z and raised, holding the box moved along x:
+    // the box lands at turn(5, 0, 0) + (0, 0, 100) = (0, 5, 100).
+    const TDF_Label arm = shapes->NewShape();
+    TDataStd_Name::Set(arm, "arm");
+    gp_Trsf along;
+    along.SetTranslation(gp_Vec(5.0, 0.0, 0.0));
+    TDataStd_Name::Set(shapes->AddComponent(arm, box, TopLoc_Location(along)), "arm box");
+    gp_Trsf turn;
+    turn.SetRotation(gp_Ax1(gp_Pnt(), gp_Dir(0.0, 0.0, 1.0)), M_PI / 2.0);
+    turn.SetTranslationPart(gp_Vec(0.0, 0.0, 100.0));
+    TDataStd_Name::Set(shapes->AddComponent(rig, arm, TopLoc_Location(turn)), "raised arm");
     colors->SetColor(left, Quantity_Color(1.0, 0.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
     colors->SetColor(right, Quantity_Color(0.0, 0.0, 1.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
     shapes->UpdateAssemblies();
@@ -220,7 +242,7 @@ TEST(CadLoader, WrittenAssemblyKeepsInstancesNamesColoursAndPlacements) {
     const CadLoadResult r = scene::loadCad(path.string());
     const scene::Scene& s = r.scene;
     expectWellFormed(s);
-    ASSERT_EQ(s.objects.size(), 3u);
+    ASSERT_EQ(s.objects.size(), 4u);
     const scene::Object* left = objectNamed(s, "left box");
     const scene::Object* right = objectNamed(s, "right box");
     const scene::Object* pin = objectNamed(s, "pin");
@@ -234,11 +256,20 @@ TEST(CadLoader, WrittenAssemblyKeepsInstancesNamesColoursAndPlacements) {
     EXPECT_EQ(s.geometries[left->geometry].partCount, 6u);
     EXPECT_EQ(s.geometries[left->geometry].name, "box");
     EXPECT_EQ(s.geometries[pin->geometry].partCount, 3u);
-    EXPECT_EQ(s.uniquePartCount(), 15u);
+    EXPECT_EQ(s.uniquePartCount(), 21u);
     // World translations.
     EXPECT_EQ(glm::vec3(left->world[3]), glm::vec3(100.0f, 0.0f, 0.0f));
     EXPECT_EQ(glm::vec3(right->world[3]), glm::vec3(0.0f, 200.0f, 0.0f));
     EXPECT_EQ(glm::vec3(pin->world[3]), glm::vec3(0.0f, 0.0f, 50.0f));
+    // Nested placements compose parent first: the sub-assembly's turn moves the box's offset.
+    const scene::Object* armBox = objectNamed(s, "arm box");
+    ASSERT_TRUE(armBox);
+    EXPECT_EQ(armBox->path, "rig/raised arm/arm box");
+    EXPECT_EQ(armBox->geometry, left->geometry);
+    const glm::vec3 armAt(armBox->world[3]);
+    EXPECT_NEAR(glm::distance(armAt, glm::vec3(0.0f, 5.0f, 100.0f)), 0.0f, 1e-4f) << armAt.x;
+    const glm::vec3 armX(armBox->world[0]); // the box's x axis, turned onto y
+    EXPECT_NEAR(glm::distance(armX, glm::vec3(0.0f, 1.0f, 0.0f)), 0.0f, 1e-6f);
     // Colours: instance colours for the boxes, the product's for the pin.
     auto colorOf = [&](const scene::Object* o) {
         return glm::vec3(s.materials[o->material].color);

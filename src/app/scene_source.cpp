@@ -4,6 +4,7 @@
 #include <charconv>
 #include <chrono>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -145,7 +146,8 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"unique_triangles\":" << s.indices.size() / 3
          << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
          << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
-         << ",\"faces_failed\":" << loaded.facesFailed << ",\"deflection\":" << loaded.deflection
+         << ",\"faces_failed\":" << loaded.facesFailed << ",\"deflection\":" << std::defaultfloat
+         << std::setprecision(6) << loaded.deflection << std::fixed << std::setprecision(3)
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts

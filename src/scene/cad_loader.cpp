@@ -123,9 +123,9 @@ std::string statusReason(IFSelect_ReturnStatus status, const char* format) {
     case IFSelect_RetVoid:
         return std::string("no ") + format + " data in the file";
     case IFSelect_RetError:
-        return std::string("not a readable ") + format + " file";
+        return std::string("not a readable ") + format + " file (the reader found errors)";
     case IFSelect_RetFail:
-        return std::string("the ") + format + " reader failed on this file";
+        return std::string("not a readable ") + format + " file (the reader failed on it)";
     case IFSelect_RetStop:
         return std::string("the ") + format + " reader stopped on this file";
     default:
