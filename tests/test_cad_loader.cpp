@@ -176,6 +176,19 @@ TEST(CadLoader, FinerDeflectionMakesMoreTriangles) {
     EXPECT_LT(coarse.scene.drawnTriangleCount(), fine.scene.drawnTriangleCount());
 }
 
+TEST(CadLoader, ReportsProgressByStage) {
+    const fs::path path = kData / "occ/bottle.brep";
+    SKIP_WITHOUT(path);
+    std::vector<std::string> stages;
+    bool inRange = true;
+    scene::loadCad(path.string(), {}, [&](const char* stage, double fraction) {
+        if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+        inRange &= fraction >= 0.0 && fraction <= 1.0;
+    });
+    EXPECT_EQ(stages, (std::vector<std::string>{"reading", "tessellating", "building"}));
+    EXPECT_TRUE(inRange);
+}
+
 // ---- an assembly written here -----------------------------------------------------------
 
 // Writes rig.step: one box placed twice ("left box" red, "right box" blue), a cylinder
@@ -239,7 +252,11 @@ const scene::Object* objectNamed(const scene::Scene& s, const std::string& name)
 
 TEST(CadLoader, WrittenAssemblyKeepsInstancesNamesColoursAndPlacements) {
     const fs::path path = writeRig();
-    const CadLoadResult r = scene::loadCad(path.string());
+    std::set<std::string> stages;
+    const CadLoadResult r =
+        scene::loadCad(path.string(), {}, [&](const char* stage, double) { stages.insert(stage); });
+    EXPECT_EQ(stages,
+              (std::set<std::string>{"reading", "translating", "tessellating", "building"}));
     const scene::Scene& s = r.scene;
     expectWellFormed(s);
     ASSERT_EQ(s.objects.size(), 4u);

@@ -1,10 +1,14 @@
 // scene_source.cpp - scene loading by source, copies, and the --stats report.
 #include "app/scene_source.h"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -81,6 +85,27 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
                                  "this machine has " + std::to_string(ram >> 30) + " GiB");
 }
 
+// CAD loads report on stderr once they have taken a second: "idview: loading FILE:
+// tessellating 40%", one line per stage and tenth at most.
+scene::CadProgress stderrProgress(const std::string& source) {
+    struct State {
+        std::mutex mutex;
+        std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+        std::string stage;
+        int tenth = -1;
+    };
+    auto state = std::make_shared<State>();
+    return [state, source](const char* stage, double fraction) {
+        const std::lock_guard lock(state->mutex);
+        if (std::chrono::steady_clock::now() - state->start < std::chrono::seconds(1)) return;
+        const int tenth = std::clamp(int(fraction * 10.0), 0, 10);
+        if (state->stage == stage && tenth <= state->tenth) return;
+        state->stage = stage;
+        state->tenth = tenth;
+        std::fprintf(stderr, "idview: loading %s: %s %d%%\n", source.c_str(), stage, tenth * 10);
+    };
+}
+
 LoadedScene loadScene(const SceneSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
@@ -88,7 +113,8 @@ LoadedScene loadScene(const SceneSettings& settings) {
     if (!settings.model.empty() || settings.builtin.empty()) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
         if (scene::isCadPath(loaded.source)) {
-            scene::CadLoadResult result = scene::loadCad(loaded.source, settings.cad);
+            scene::CadLoadResult result =
+                scene::loadCad(loaded.source, settings.cad, stderrProgress(loaded.source));
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
             if (settings.parts != scene::PartMode::Primitives)

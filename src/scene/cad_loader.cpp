@@ -27,6 +27,8 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
 #include <Poly.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Quantity_ColorRGBA.hxx>
@@ -107,6 +109,30 @@ class CoutCapture {
     std::ostringstream captured_;
     std::streambuf* saved_;
 };
+
+// Hands OCCT's progress of one stage on to a CadProgress (OCCT serialises Show calls).
+class ProgressRelay : public Message_ProgressIndicator {
+  public:
+    ProgressRelay(const CadProgress& to, const char* stage) : to_(to), stage_(stage) {
+        if (to_) to_(stage_, 0.0);
+    }
+
+  protected:
+    void Show(const Message_ProgressScope&, const Standard_Boolean) override {
+        if (to_) to_(stage_, GetPosition());
+    }
+
+  private:
+    const CadProgress& to_;
+    const char* stage_;
+};
+
+// A progress range for `stage` that reports to `to` while `relay` lives.
+Message_ProgressRange startStage(Handle(ProgressRelay) & relay, const CadProgress& to,
+                                 const char* stage) {
+    relay = new ProgressRelay(to, stage);
+    return relay->Start();
+}
 
 void checkFile(const std::string& path) {
     std::error_code ec;
@@ -281,17 +307,20 @@ struct DocumentGuard {
 // Reads the file into `doc` with names and colours; throws Bad with the reader's verdict.
 template <typename Reader>
 void transfer(Reader& reader, const std::string& path, const std::string& format,
-              Handle(TDocStd_Document) & doc) {
+              Handle(TDocStd_Document) & doc, const CadProgress& progress) {
     reader.SetColorMode(true);
     reader.SetNameMode(true);
     reader.SetLayerMode(false);
+    if (progress) progress("reading", 0.0);
     const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
     if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
     if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
-    if (!reader.Transfer(doc)) throw Bad("no shapes could be read from the " + format + " file");
+    Handle(ProgressRelay) relay;
+    if (!reader.Transfer(doc, startStage(relay, progress, "translating")))
+        throw Bad("no shapes could be read from the " + format + " file");
 }
 
-std::vector<Leaf> readXde(const std::string& path, Format format) {
+std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress) {
     DocumentGuard guard;
     if (format == Format::Step) {
         STEPCAFControl_Reader reader;
@@ -299,15 +328,16 @@ std::vector<Leaf> readXde(const std::string& path, Format format) {
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
         reader.SetViewMode(false);
-        transfer(reader, path, "STEP", guard.doc);
+        transfer(reader, path, "STEP", guard.doc, progress);
     } else {
         IGESCAFControl_Reader reader;
-        transfer(reader, path, "IGES", guard.doc);
+        transfer(reader, path, "IGES", guard.doc, progress);
     }
     return TreeWalker(guard.doc).run();
 }
 
-std::vector<Leaf> readBrep(const std::string& path, const std::string& stem) {
+std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
+                           const CadProgress& progress) {
     // BRepTools::Read reports a wrong header on stdout: check it here first.
     std::ifstream in(path, std::ios::binary);
     std::string head(256, '\0');
@@ -318,7 +348,9 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem) {
     TopoDS_Shape shape;
     BRep_Builder builder;
     const CoutCapture capture;
-    if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull()) {
+    Handle(ProgressRelay) relay;
+    if (!BRepTools::Read(shape, path.c_str(), builder, startStage(relay, progress, "reading")) ||
+        shape.IsNull()) {
         const std::string said = capture.firstLine();
         throw Bad("not a readable BREP file" + (said.empty() ? "" : " (" + said + ")"));
     }
@@ -374,7 +406,8 @@ std::string hex(const Rgba& color) {
     return text;
 }
 
-CadLoadResult load(const std::string& path, const CadOptions& options) {
+CadLoadResult load(const std::string& path, const CadOptions& options,
+                   const CadProgress& progress) {
     const Format format = formatOf(path);
     if (format == Format::None) throw Bad("not a STEP, IGES or BREP file name");
     if (!(options.deflection >= 0.0) || !std::isfinite(options.deflection))
@@ -390,7 +423,8 @@ CadLoadResult load(const std::string& path, const CadOptions& options) {
     std::vector<Leaf> leaves;
     {
         const CoutCapture quiet;
-        leaves = format == Format::Brep ? readBrep(path, stem) : readXde(path, format);
+        leaves = format == Format::Brep ? readBrep(path, stem, progress)
+                                        : readXde(path, format, progress);
     }
     result.readMs = msSince(start);
     if (leaves.empty()) throw Bad("the file holds no shapes");
@@ -453,12 +487,15 @@ CadLoadResult load(const std::string& path, const CadOptions& options) {
     parameters.Angle = options.angularDeflection;
     parameters.Relative = false;
     parameters.InParallel = true;
-    BRepMesh_IncrementalMesh mesher(all, parameters);
+    Handle(ProgressRelay) relay;
+    BRepMesh_IncrementalMesh mesher(all, parameters, startStage(relay, progress, "tessellating"));
     result.tessellationMs = msSince(start);
 
     Scene& scene = result.scene;
     uint32_t unnamedShapes = 0, emptyShapes = 0;
-    for (Distinct& d : distinct) {
+    for (size_t di = 0; di < distinct.size(); ++di) {
+        Distinct& d = distinct[di];
+        if (progress) progress("building", double(di) / double(distinct.size()));
         if (d.faces.Extent() == 0) continue;
         Geometry& g = scene.geometries.emplace_back();
         g.name = d.name.empty() ? stem + " shape " + std::to_string(++unnamedShapes) : d.name;
@@ -534,9 +571,10 @@ bool isCadPath(const std::string& path) {
     return formatOf(path) != Format::None;
 }
 
-CadLoadResult loadCad(const std::string& path, const CadOptions& options) {
+CadLoadResult loadCad(const std::string& path, const CadOptions& options,
+                      const CadProgress& progress) {
     try {
-        return load(path, options);
+        return load(path, options, progress);
     } catch (const Bad& e) {
         throw ModelError(path + ": " + e.what());
     } catch (const Standard_Failure& e) {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,11 +43,17 @@ struct CadLoadResult {
     uint32_t facesFailed = 0;    // of those, the ones without triangles (left out)
 };
 
+// How far a load is: `stage` is "reading", "translating" (the file's entities into shapes),
+// "tessellating" or "building" (the scene), `fraction` 0..1 within it. Calls may come from
+// Open CASCADE's worker threads, one at a time.
+using CadProgress = std::function<void(const char* stage, double fraction)>;
+
 // True for .step/.stp/.iges/.igs/.brep in any case.
 bool isCadPath(const std::string& path);
 
 // Loads the whole model. The result passes scene::validate(). Throws ModelError with one
 // line "<path>: <reason>"; never returns a half-built scene.
-CadLoadResult loadCad(const std::string& path, const CadOptions& options = {});
+CadLoadResult loadCad(const std::string& path, const CadOptions& options = {},
+                      const CadProgress& progress = {});
 
 } // namespace scene
