@@ -52,7 +52,8 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 
-// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ... and what
+// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, read_ms,
+// tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), ... and what
 // the renderer `settings` choose would draw and upload.
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings);
 

@@ -47,7 +47,24 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#endif
+
 namespace scene {
+
+#if defined(__SANITIZE_ADDRESS__)
+OcctLeaksIgnored::OcctLeaksIgnored() {
+    __lsan_disable();
+}
+OcctLeaksIgnored::~OcctLeaksIgnored() {
+    __lsan_enable();
+}
+#else
+OcctLeaksIgnored::OcctLeaksIgnored() = default;
+OcctLeaksIgnored::~OcctLeaksIgnored() = default;
+#endif
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -292,8 +309,13 @@ class TreeWalker {
 };
 
 // Closes the XDE document however the load ends, so that its memory goes.
+Handle(XCAFApp_Application) application() {
+    const OcctLeaksIgnored ignored; // its driver table, made once
+    return XCAFApp_Application::GetApplication();
+}
+
 struct DocumentGuard {
-    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+    Handle(XCAFApp_Application) app = application();
     Handle(TDocStd_Document) doc;
     DocumentGuard() { app->NewDocument("MDTV-XCAF", doc); }
     ~DocumentGuard() {
@@ -312,7 +334,11 @@ void transfer(Reader& reader, const std::string& path, const std::string& format
     reader.SetNameMode(true);
     reader.SetLayerMode(false);
     if (progress) progress("reading", 0.0);
-    const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
+    IFSelect_ReturnStatus status;
+    {
+        const OcctLeaksIgnored ignored; // the IGES parser's buffers on a failed read
+        status = reader.ReadFile(path.c_str());
+    }
     if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
     if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
     Handle(ProgressRelay) relay;
@@ -322,8 +348,11 @@ void transfer(Reader& reader, const std::string& path, const std::string& format
 
 std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress) {
     DocumentGuard guard;
+    // The first reader of each kind registers the toolkit's parameters, once per process.
+    std::optional<OcctLeaksIgnored> ignored(std::in_place);
     if (format == Format::Step) {
         STEPCAFControl_Reader reader;
+        ignored.reset();
         reader.SetPropsMode(false);
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
@@ -331,6 +360,7 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
         transfer(reader, path, "STEP", guard.doc, progress);
     } else {
         IGESCAFControl_Reader reader;
+        ignored.reset();
         transfer(reader, path, "IGES", guard.doc, progress);
     }
     return TreeWalker(guard.doc).run();
