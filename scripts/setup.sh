@@ -21,11 +21,15 @@ esac
 # Build-time libraries, then what running and testing need. mesa-vulkan-drivers brings
 # lavapipe, so idview has a Vulkan device even on a machine without a GPU driver, and the
 # libraries (libLLVM-15...) that the tests' Mesa 25 lavapipe links too.
+# Open CASCADE for STEP/IGES/BREP: the data-exchange package pulls in the other libocct-*-dev
+# ones; libtbb-dev only for the libtbb.so symlink that Debian's OCCT CMake config names.
 packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-tools libtinygltf-dev
-    libimgui-dev libvulkan-dev libstb-dev libmeshoptimizer-dev mesa-vulkan-drivers)
+    libimgui-dev libvulkan-dev libstb-dev libmeshoptimizer-dev mesa-vulkan-drivers
+    libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev libtbb-dev)
 if [[ $what == test ]]; then
+    # occt-misc: the STEP, IGES and BREP samples the CAD loader tests read.
     packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang
-        libclang-rt-14-dev python3-matplotlib)
+        libclang-rt-14-dev python3-matplotlib occt-misc)
 fi
 
 missing=()

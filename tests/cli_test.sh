@@ -195,5 +195,24 @@ expect uri-outside-refused 1 "^idview: error: $work/escape/up.gltf: uri '../v1.b
     "$idview" --headless --model "$work/escape/up.gltf"
 expect bad-scene 2 "--scene: unknown procedural preset 'huge'" -- "$idview" --scene procedural:preset=huge
 
+# CAD files (samples from Debian's occt-misc): counts are checked against OCCT in the unit tests.
+screw=/usr/share/opencascade/data/step/screw.step
+if [[ -f $screw ]]; then
+    expect cad-stats 0 '"part_mode":"faces".*"objects":1,.*"tessellation_ms":[0-9.]+,"faces_failed":0,"deflection":0\.1' -- \
+        "$idview" --model "$screw" --stats
+    expect cad-parts-ignored 0 '"warnings":\["--parts is ignored for CAD files' -- \
+        "$idview" --model "$screw" --parts components --stats
+    expect cad-deflection 0 '"deflection":0\.5,' -- "$idview" --model "$screw" --deflection 0.5 --stats
+    expect cad-pick 0 '"part":[0-9]+,"object":0,.*"name":"the product name"' -- \
+        "$idview" --headless --validation --frames 1 --model "$screw" --size 160x100 --pick 80,50
+    expect cad-export 0 '"source":".*screw.glb".*"objects":1,' -- \
+        bash -c '"$1" --model "$2" --export "$3" && "$1" --model "$3" --stats' _ "$idview" "$screw" "$work/screw.glb"
+fi
+head -c 4000 /dev/urandom >"$work/junk.STEP"
+expect cad-junk 1 "^idview: error: $work/junk.STEP: not a readable STEP file" -- "$idview" --model "$work/junk.STEP" --stats
+: >"$work/empty.igs"
+expect cad-empty 1 "^idview: error: $work/empty.igs: the file is empty" -- "$idview" --model "$work/empty.igs" --stats
+expect cad-bad-deflection 2 '--deflection expects a length' -- "$idview" --deflection -2
+
 echo "cli_test: $failures failed"
 exit $((failures > 0))

@@ -258,3 +258,22 @@ TEST(Cli, PartFlags) {
              {"--edge-color", "GG0000"}})
         EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
 }
+
+TEST(Cli, CadTessellationFlags) {
+    const app::Options d;
+    EXPECT_EQ(d.scene.cad.deflection, 0.0);
+    EXPECT_EQ(d.scene.cad.angularDeflection, 0.5);
+    auto o = app::parseArgs(std::vector<std::string>{"--model", "part.STEP", "--deflection", "0.25",
+                                                     "--angular-deflection=0.3"});
+    EXPECT_EQ(o.scene.model, "part.STEP");
+    EXPECT_FLOAT_EQ(float(o.scene.cad.deflection), 0.25f);
+    EXPECT_FLOAT_EQ(float(o.scene.cad.angularDeflection), 0.3f);
+    const std::string text = app::usage();
+    for (const char* needle : {"--deflection", "--angular-deflection", ".step", "0.1%"})
+        EXPECT_NE(text.find(needle), std::string::npos) << needle;
+    for (const auto& bad : std::vector<std::vector<std::string>>{{"--deflection", "-1"},
+                                                                 {"--deflection", "fine"},
+                                                                 {"--angular-deflection", "0"},
+                                                                 {"--angular-deflection", "4"}})
+        EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
+}

@@ -1,10 +1,12 @@
 // test_techniques.cpp - every technique x per-draw mode renders, on lavapipe with validation
 // on, an ID image identical pixel for pixel to per-draw + push, with the draw count its
 // formula predicts; on the procedural small preset with 2 copies, on 2CylinderEngine with
-// components as parts, and on a glTF whose parts share vertices (tests/shared_vertex_gltf.h).
+// components as parts, on a glTF whose parts share vertices (tests/shared_vertex_gltf.h), and
+// on an IGES file (one part per B-rep face) where occt-misc is installed.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 
@@ -49,6 +51,9 @@ size_t expectedDraws(const render::Technique& t, const scene::Scene& s, uint32_t
     return 0;
 }
 
+// An IGES file from Debian's occt-misc: 213 faces, over 100 of them in view.
+const char* const kCadBearing = "/usr/share/opencascade/data/iges/bearing.iges";
+
 Reference& reference(const std::string& name) {
     static std::map<std::string, Reference> cache;
     auto found = cache.find(name);
@@ -57,6 +62,8 @@ Reference& reference(const std::string& name) {
     if (name == "small-x2") {
         source.builtin = "procedural:preset=small,seed=1";
         source.copies = 2;
+    } else if (name == "cad-bearing") {
+        source.model = kCadBearing; // one part per B-rep face
     } else if (name == "shared-vertices") {
         source.model = testing_support::writeSharedVertexGltf(
                            std::filesystem::temp_directory_path() / "idview-techniques")
@@ -114,7 +121,9 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
 
 std::vector<Combination> combinations() {
     std::vector<Combination> all;
-    for (const char* scene : {"small-x2", "engine-components", "shared-vertices"})
+    std::vector<std::string> scenes = {"small-x2", "engine-components", "shared-vertices"};
+    if (std::filesystem::exists(kCadBearing)) scenes.push_back("cad-bearing");
+    for (const std::string& scene : scenes)
         for (const render::Technique* t : render::partIdTechniques())
             for (const auto& m : render::drawModes()) all.push_back({scene, t, &m});
     return all;

@@ -40,6 +40,8 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
     echo "$t $*"
     t=$(awk -v t="$t" 'BEGIN{print t + 0.1}')
 }
+# A STEP file to drop, from Debian's occt-misc where it is installed.
+screw=/usr/share/opencascade/data/step/screw.step
 {
     at move 420 230
     for r in $renderers; do
@@ -69,6 +71,10 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
     at drop "$work/broken.glb"
     at drop "$work/small.glb"
     at frames 6 # drops open between frames
+    if [[ -f $screw ]]; then
+        at drop "$screw"
+        at frames 6
+    fi
     at quit
 } >"$work/script.txt"
 # Dropped files: one that is not glTF at all, and the same scene exported as .glb.
@@ -120,6 +126,13 @@ if grep -q "^idview: opened: .*small.glb" "$work/out.txt"; then
     echo "ok   dropped model opened"
 else
     fail "the dropped model did not open"
+fi
+if [[ -f $screw ]]; then
+    if grep -q "^idview: opened: $screw ([1-9][0-9]* objects, [1-9][0-9]* parts" "$work/out.txt"; then
+        echo "ok   dropped STEP file opened"
+    else
+        fail "the dropped STEP file did not open"
+    fi
 fi
 
 # The screenshot is a picture: the window's size and many distinct colours.

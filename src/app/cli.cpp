@@ -114,6 +114,11 @@ std::string byDefault(const T& value) {
 std::string within(render::Range range, uint32_t value) {
     return ", " + std::to_string(range.min) + " to " + std::to_string(range.max) + byDefault(value);
 }
+std::string percent(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g%%", fraction * 100.0);
+    return text;
+}
 std::string onOff(bool value) {
     return byDefault(value ? "on" : "off");
 }
@@ -187,8 +192,27 @@ const std::vector<Flag>& flags() {
                  "first, "
                  "0xFFFFFFFF where no part is",
                  &Options::idImage),
-            {"--model", "FILE", "open a glTF model (.gltf or .glb); default: assets/default.glb",
+            {"--model", "FILE",
+             "open a glTF model (.gltf, .glb) or a CAD file (.step, .stp, .iges, .igs, .brep; "
+             "one part per B-rep face); default: assets/default.glb",
              [](Options& o, auto& v) { o.scene.model = v; }},
+            {"--deflection", "X",
+             "CAD files: linear tessellation deflection in model units; 0 picks " +
+                 percent(scene::kRelativeDeflection) + " of the model's bounding box diagonal" +
+                 byDefault(d.scene.cad.deflection),
+             [](Options& o, auto& v) {
+                 o.scene.cad.deflection = parseNumber("--deflection", v, 1e9f, "a length");
+             }},
+            {"--angular-deflection", "RAD",
+             "CAD files: angular tessellation deflection in radians, above 0 up to 3.14" +
+                 byDefault(d.scene.cad.angularDeflection),
+             [](Options& o, auto& v) {
+                 const float radians = parseNumber("--angular-deflection", v, 3.14f, "radians");
+                 if (radians <= 0.0f)
+                     throw UsageError("--angular-deflection expects radians above 0, not '" + v +
+                                      "'");
+                 o.scene.cad.angularDeflection = radians;
+             }},
             {"--scene", "SPEC",
              "built-in scene instead of a model: assembly, tiles (the test layout) or "
              "procedural[:preset=small|car-like][,seed=N]",
@@ -201,7 +225,8 @@ const std::vector<Flag>& flags() {
                  o.scene.builtin = v;
              }},
             {"--parts", "MODE",
-             "glTF parts: primitives (one part per primitive) or components (one per connected "
+             "glTF parts (CAD files: always one per face): primitives (one part per primitive) or "
+             "components (one per connected "
              "component, recovers CAD faces merged by an exporter)" +
                  byDefault(scene::partModeName(d.scene.parts)),
              [](Options& o, auto& v) {

@@ -12,6 +12,7 @@
 
 #include "render/pick.h"
 #include "render/settings.h"
+#include "scene/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/gltf_loader.h"
 
@@ -19,9 +20,10 @@ namespace app {
 
 // Where the scene comes from, and how many times it is placed.
 struct SceneSettings {
-    std::string model;   // glTF file; with `builtin` empty too, the default model
+    std::string model;   // glTF or CAD file; with `builtin` empty too, the default model
     std::string builtin; // built-in or procedural scene spec (scene_source.h)
     scene::PartMode parts = scene::PartMode::Primitives; // glTF: what one part is
+    scene::CadOptions cad;                               // STEP, IGES, BREP: the tessellation
     uint32_t copies = 1;
     uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans
     bool operator==(const SceneSettings&) const = default;

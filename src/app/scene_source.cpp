@@ -1,15 +1,21 @@
 // scene_source.cpp - scene loading by source, copies, and the --stats report.
 #include "app/scene_source.h"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
+#include <iomanip>
+#include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
 #include "app/json.h"
 #include "render/draw_list.h"
+#include "scene/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/generator.h"
 #include "scene/gltf_loader.h"
@@ -79,15 +85,51 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
                                  "this machine has " + std::to_string(ram >> 30) + " GiB");
 }
 
+// CAD loads report on stderr once they have taken a second: "idview: loading FILE:
+// tessellating 40%", one line per stage and tenth at most.
+scene::CadProgress stderrProgress(const std::string& source) {
+    struct State {
+        std::mutex mutex;
+        std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+        std::string stage;
+        int tenth = -1;
+    };
+    auto state = std::make_shared<State>();
+    return [state, source](const char* stage, double fraction) {
+        const std::lock_guard lock(state->mutex);
+        if (std::chrono::steady_clock::now() - state->start < std::chrono::seconds(1)) return;
+        const int tenth = std::clamp(int(fraction * 10.0), 0, 10);
+        if (state->stage == stage && tenth <= state->tenth) return;
+        state->stage = stage;
+        state->tenth = tenth;
+        std::fprintf(stderr, "idview: loading %s: %s %d%%\n", source.c_str(), stage, tenth * 10);
+    };
+}
+
 LoadedScene loadScene(const SceneSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
     loaded.settings = settings;
     if (!settings.model.empty() || settings.builtin.empty()) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
-        scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
-        loaded.scene = std::move(result.scene);
-        loaded.warnings = std::move(result.warnings);
+        if (scene::isCadPath(loaded.source)) {
+            scene::CadLoadResult result =
+                scene::loadCad(loaded.source, settings.cad, stderrProgress(loaded.source));
+            loaded.scene = std::move(result.scene);
+            loaded.warnings = std::move(result.warnings);
+            if (settings.parts != scene::PartMode::Primitives)
+                loaded.warnings.insert(loaded.warnings.begin(),
+                                       "--parts is ignored for CAD files: a part is a B-rep face");
+            loaded.cad = true;
+            loaded.readMs = result.readMs;
+            loaded.tessellationMs = result.tessellationMs;
+            loaded.deflection = result.deflection;
+            loaded.facesFailed = result.facesFailed;
+        } else {
+            scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
+            loaded.scene = std::move(result.scene);
+            loaded.warnings = std::move(result.warnings);
+        }
     } else {
         const SceneSpec spec = parseSceneSpec(settings.builtin);
         loaded.source = settings.builtin;
@@ -122,13 +164,16 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
     const scene::IdDataBytes bytes = scene::idDataBytes(s, key.searchBatch);
     std::ostringstream json;
     json.precision(3);
-    json << std::fixed << "{\"source\":" << jsonString(loaded.source)
-         << ",\"part_mode\":" << jsonString(scene::partModeName(loaded.settings.parts))
+    json << std::fixed << "{\"source\":" << jsonString(loaded.source) << ",\"part_mode\":"
+         << jsonString(loaded.cad ? "faces" : scene::partModeName(loaded.settings.parts))
          << ",\"copies\":" << loaded.settings.copies << ",\"objects\":" << s.objects.size()
          << ",\"geometries\":" << s.geometries.size() << ",\"parts\":" << s.uniquePartCount()
          << ",\"geometry_parts\":" << s.parts.size() << ",\"triangles\":" << s.drawnTriangleCount()
          << ",\"unique_triangles\":" << s.indices.size() / 3
          << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
+         << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
+         << ",\"faces_failed\":" << loaded.facesFailed << ",\"deflection\":" << std::defaultfloat
+         << std::setprecision(6) << loaded.deflection << std::fixed << std::setprecision(3)
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts

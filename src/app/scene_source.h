@@ -1,4 +1,4 @@
-// scene_source.h - where the scene comes from: a glTF file (--model), a built-in or
+// scene_source.h - where the scene comes from: a glTF or CAD file (--model), a built-in or
 // procedural scene (--scene), or the default model in assets/; then model copies. Shared by
 // the headless path, the viewer and --stats.
 #pragma once
@@ -27,6 +27,12 @@ struct LoadedScene {
     SceneSettings settings; // what it was loaded as (copies included)
     std::string source;     // file path or scene spec, for messages and stats
     double loadMs = 0.0;    // loading or generating, copies included
+    // CAD files (STEP, IGES, BREP): what the load took and did; zeros for other sources.
+    bool cad = false;
+    double readMs = 0.0;         // the reader, before tessellation
+    double tessellationMs = 0.0; // BRepMesh over the distinct shapes
+    double deflection = 0.0;     // the linear deflection used, in model units
+    uint32_t facesFailed = 0;    // faces left out for want of triangles
     std::vector<std::string> warnings;
     bool tilesLayout = false; // the test layout at its own camera
 };
@@ -46,7 +52,8 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 
-// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, ... and what
+// One JSON object for --stats: objects, geometries, parts, triangles, load_ms, read_ms,
+// tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), ... and what
 // the renderer `settings` choose would draw and upload.
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings);
 

@@ -86,10 +86,12 @@ void Viewer::applySettings() {
 
 void Viewer::openDrops() {
     for (const std::string& path : input_.takeDrops()) {
-        if (isGltf(path))
+        if (isGltf(path) || scene::isCadPath(path))
             scene_.startOpen(path, settings_.scene); // follow() once it has loaded
         else
-            scene_.fail("'" + path + "' is not a glTF model (.gltf or .glb)");
+            scene_.fail("'" + path +
+                        "' is neither a glTF model (.gltf, .glb) nor a CAD file (.step, .stp, "
+                        ".iges, .igs, .brep)");
     }
 }
 

@@ -1,0 +1,70 @@
+// cad_loader.h - CAD models in B-rep formats (STEP, IGES, BREP) through Open CASCADE.
+//
+// Mapping: every leaf shape instance of the assembly tree is one object, placed by the
+// locations accumulated from the root; instances of one shape share one geometry; each face
+// of that shape (in TopExp::MapShapes(shape, TopAbs_FACE) order) is one part. A face that
+// does not triangulate has no triangles, and a part needs some (scene::validate), so such a
+// face is left out (the parts after it move down one) and counted in CadLoadResult and in a
+// warning. Names: the instance label's name, else the product's, else "<file stem> solid N";
+// the path is the assembly names from the root joined by '/', the object's own name last.
+// Colours: one material per object, from the instance's XCAF colour, else the product's,
+// else the colour most of its coloured faces have; other face colours are not shown.
+// This header stays free of Open CASCADE types.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/gltf_loader.h" // ModelError
+#include "scene/scene.h"
+
+namespace scene {
+
+struct CadOptions {
+    // Linear deflection of the tessellation in model units; 0 picks
+    // kRelativeDeflection x the model's bounding box diagonal.
+    double deflection = 0.0;
+    double angularDeflection = 0.5; // radians
+    bool operator==(const CadOptions&) const = default;
+};
+
+// The automatic linear deflection, as a fraction of the bounding box diagonal.
+constexpr double kRelativeDeflection = 0.001;
+
+struct CadLoadResult {
+    Scene scene;
+    std::vector<std::string> warnings;
+    double readMs = 0.0;         // parsing the file and building the shapes
+    double tessellationMs = 0.0; // BRepMesh_IncrementalMesh over every distinct shape
+    double deflection = 0.0;     // the linear deflection used
+    uint32_t faces = 0;          // faces over all distinct shapes
+    uint32_t facesFailed = 0;    // of those, the ones without triangles (left out)
+};
+
+// How far a load is: `stage` is "reading", "translating" (the file's entities into shapes),
+// "tessellating" or "building" (the scene), `fraction` 0..1 within it. Calls may come from
+// Open CASCADE's worker threads, one at a time.
+using CadProgress = std::function<void(const char* stage, double fraction)>;
+
+// While one lives, LeakSanitizer does not track this thread's new allocations (in ASan
+// builds; nothing otherwise). Only around Open CASCADE calls that leak by design: the
+// data-exchange toolkits' one-time registrations (first reader, writer or XDE application of
+// the process) and the IGES parser's buffers on a failed read.
+struct OcctLeaksIgnored {
+    OcctLeaksIgnored();
+    ~OcctLeaksIgnored();
+    OcctLeaksIgnored(const OcctLeaksIgnored&) = delete;
+    OcctLeaksIgnored& operator=(const OcctLeaksIgnored&) = delete;
+};
+
+// True for .step/.stp/.iges/.igs/.brep in any case.
+bool isCadPath(const std::string& path);
+
+// Loads the whole model. The result passes scene::validate(). Throws ModelError with one
+// line "<path>: <reason>"; never returns a half-built scene.
+CadLoadResult loadCad(const std::string& path, const CadOptions& options = {},
+                      const CadProgress& progress = {});
+
+} // namespace scene
