@@ -113,6 +113,9 @@ void expectWellFormed(const scene::Scene& s) {
             covered += part.triangleCount;
         }
         EXPECT_EQ(covered, g.triangleCount);
+        // Each part names its B-rep face; the numbers only go up (failed faces skip one).
+        ASSERT_EQ(g.partFaces.size(), g.partCount) << g.name;
+        for (uint32_t p = 1; p < g.partCount; ++p) EXPECT_GT(g.partFaces[p], g.partFaces[p - 1]);
         for (uint32_t i = 0; i < 3 * g.triangleCount; ++i)
             ASSERT_LT(s.indices[g.firstIndex + i], g.vertexCount);
     }
@@ -147,6 +150,8 @@ CadLoadResult expectMatches(const fs::path& path, OcctCounts (*count)(const fs::
     EXPECT_EQ(r.scene.objects.size(), want.objects) << path;
     EXPECT_EQ(r.scene.uniquePartCount(), want.faces) << path;
     EXPECT_GT(r.deflection, 0.0) << path;
+    for (const scene::Geometry& g : r.scene.geometries) // every face has its part: i is face i
+        for (uint32_t p = 0; p < g.partFaces.size(); ++p) EXPECT_EQ(g.partFaces[p], p) << path;
     return r;
 }
 

@@ -40,8 +40,11 @@ at() { # at COMMAND...: one script line, 0.1 s after the previous one
     echo "$t $*"
     t=$(awk -v t="$t" 'BEGIN{print t + 0.1}')
 }
-# A STEP file to drop, from Debian's occt-misc where it is installed.
-screw=/usr/share/opencascade/data/step/screw.step
+# A STEP, an IGES and a BREP file to drop, from Debian's occt-misc where it is installed.
+cad_files=()
+for f in step/screw.step iges/bearing.iges occ/bottle.brep; do
+    [[ -f /usr/share/opencascade/data/$f ]] && cad_files+=("/usr/share/opencascade/data/$f")
+done
 {
     at move 420 230
     for r in $renderers; do
@@ -71,10 +74,9 @@ screw=/usr/share/opencascade/data/step/screw.step
     at drop "$work/broken.glb"
     at drop "$work/small.glb"
     at frames 6 # drops open between frames
-    if [[ -f $screw ]]; then
-        at drop "$screw"
-        at frames 6
-    fi
+    for f in "${cad_files[@]}"; do at drop "$f"; done
+    # They load one after the other on a worker thread while frames go on.
+    ((${#cad_files[@]})) && at frames 40
     at quit
 } >"$work/script.txt"
 # Dropped files: one that is not glTF at all, and the same scene exported as .glb.
@@ -127,13 +129,17 @@ if grep -q "^idview: opened: .*small.glb" "$work/out.txt"; then
 else
     fail "the dropped model did not open"
 fi
-if [[ -f $screw ]]; then
-    if grep -q "^idview: opened: $screw ([1-9][0-9]* objects, [1-9][0-9]* parts" "$work/out.txt"; then
-        echo "ok   dropped STEP file opened"
+# Each CAD file opened in the window with the counts headless --stats gives.
+for f in "${cad_files[@]}"; do
+    stats=$("$idview" --model "$f" --stats 2>/dev/null)
+    objects=$(sed -n 's/.*"objects":\([0-9]*\).*/\1/p' <<<"$stats")
+    parts=$(sed -n 's/.*"parts":\([0-9]*\).*/\1/p' <<<"$stats")
+    if [[ -n $objects ]] && grep -q "^idview: opened: $f ($objects objects, $parts parts" "$work/out.txt"; then
+        echo "ok   dropped $(basename "$f") opened: $objects objects, $parts parts"
     else
-        fail "the dropped STEP file did not open"
+        fail "the dropped $f did not open with $objects objects and $parts parts"
     fi
-fi
+done
 
 # The screenshot is a picture: the window's size and many distinct colours.
 png=$work/window.png

@@ -313,7 +313,8 @@ const std::vector<Flag>& flags() {
             {"--pick", "X,Y",
              "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
              "{x,y,part,object,local_part,name,path,depth} (name: the object's, path: its node "
-             "path from the root; all but x,y null on background); repeatable; the last point "
+             "path from the root; all but x,y null on background; CAD files add face, the "
+             "part's B-rep face); repeatable; the last point "
              "stays hovered in the images",
              [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
             {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",

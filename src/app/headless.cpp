@@ -27,9 +27,13 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
     if (!info)
         return std::string(head) + "\"part\":null,\"object\":null,\"local_part\":null,"
                                    "\"name\":null,\"path\":null,\"depth\":null}";
-    char ids[96], depth[48];
+    char ids[128], depth[48];
     std::snprintf(ids, sizeof ids, "\"part\":%u,\"object\":%u,\"local_part\":%u,",
                   info->uniquePartId, info->object, info->localPart);
+    // CAD files: the B-rep face (face numbers skip faces that did not triangulate).
+    if (info->face)
+        std::snprintf(ids + std::strlen(ids), sizeof ids - std::strlen(ids), "\"face\":%u,",
+                      *info->face);
     std::snprintf(depth, sizeof depth, ",\"depth\":%.9g}", double(pick.depth));
     return std::string(head) + ids + "\"name\":" + jsonString(info->name) +
            ",\"path\":" + jsonString(info->path) + depth;

@@ -106,15 +106,20 @@ scene::CadProgress stderrProgress(const std::string& source) {
     };
 }
 
-LoadedScene loadScene(const SceneSettings& settings) {
+LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
     loaded.settings = settings;
     if (!settings.model.empty() || settings.builtin.empty()) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
         if (scene::isCadPath(loaded.source)) {
-            scene::CadLoadResult result =
-                scene::loadCad(loaded.source, settings.cad, stderrProgress(loaded.source));
+            const scene::CadProgress onStderr = stderrProgress(loaded.source);
+            scene::CadLoadResult result = scene::loadCad(loaded.source, settings.cad,
+                                                         [&](const char* stage, double fraction) {
+                                                             onStderr(stage, fraction);
+                                                             if (progress)
+                                                                 progress->set(stage, fraction);
+                                                         });
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
             if (settings.parts != scene::PartMode::Primitives)

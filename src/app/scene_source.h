@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstdint>
+#include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/cli.h"
@@ -43,7 +45,28 @@ std::string defaultModelPath();
 
 // Loads or generates the scene `settings` name and makes its copies. Throws
 // scene::ModelError / std::runtime_error with a one-line message.
-LoadedScene loadScene(const SceneSettings& settings);
+// How far a load has come, for the viewer's progress bar: the loader writes it (from any
+// thread), the viewer reads it between frames. Only CAD loads report stages.
+class LoadProgress {
+  public:
+    void set(const char* stage, double fraction) {
+        const std::lock_guard lock(mutex_);
+        stage_ = stage;
+        fraction_ = fraction;
+    }
+    // The stage ("" until one reports) and how far it is, 0..1.
+    std::pair<std::string, double> get() const {
+        const std::lock_guard lock(mutex_);
+        return {stage_, fraction_};
+    }
+
+  private:
+    mutable std::mutex mutex_;
+    std::string stage_;
+    double fraction_ = 0.0;
+};
+
+LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress = nullptr);
 
 // Throws std::runtime_error, one line, when `copies` of `scene` would not fit in this
 // machine's memory (checked before any allocation).

@@ -534,7 +534,10 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
         g.firstPart = uint32_t(scene.parts.size());
         for (Standard_Integer f = 1; f <= d.faces.Extent(); ++f) {
             ++result.faces;
-            if (!appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex)) ++result.facesFailed;
+            if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex))
+                scene.geometries.back().partFaces.push_back(uint32_t(f - 1));
+            else
+                ++result.facesFailed;
             if (scene.vertices.size() > std::numeric_limits<uint32_t>::max() / 2 ||
                 scene.indices.size() > std::numeric_limits<uint32_t>::max() / 2)
                 throw Bad("the tessellation is too large (try a larger --deflection)");

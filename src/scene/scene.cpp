@@ -35,13 +35,16 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
     const auto ref = scene.locate(uniquePartId);
     if (!ref) return std::nullopt;
     const Object& object = scene.objects[ref->object];
-    return PartInfo{uniquePartId,
-                    ref->object,
-                    ref->localPart,
-                    object.geometry,
-                    scene.part(object, ref->localPart).triangleCount,
-                    object.name,
-                    object.path};
+    const Geometry& geometry = scene.geometries[object.geometry];
+    PartInfo info{uniquePartId,
+                  ref->object,
+                  ref->localPart,
+                  object.geometry,
+                  scene.part(object, ref->localPart).triangleCount,
+                  object.name,
+                  object.path};
+    if (ref->localPart < geometry.partFaces.size()) info.face = geometry.partFaces[ref->localPart];
+    return info;
 }
 
 Bounds Scene::bounds() const {

@@ -31,6 +31,10 @@ struct Geometry {
     uint32_t triangleCount = 0;
     uint32_t firstPart = 0; // into Scene::parts
     uint32_t partCount = 0;
+    // CAD files: each part's B-rep face, numbered as TopExp::MapShapes orders the shape's
+    // faces (a face that did not triangulate has no part, so the numbers may skip). Empty for
+    // other sources, whose parts are no faces.
+    std::vector<uint32_t> partFaces;
 };
 
 struct Material {
@@ -72,6 +76,7 @@ struct PartInfo {
     uint32_t triangleCount = 0;
     std::string name; // the object's
     std::string path;
+    std::optional<uint32_t> face; // CAD files: the part's B-rep face (Geometry::partFaces)
 };
 
 struct Scene {

@@ -69,6 +69,7 @@ void Viewer::drawPanel() {
 }
 
 void Viewer::act(const PanelActions& actions) {
+    if (actions.open) input_.onDrop(*actions.open); // opened like a dropped file
     Selection& selection = input_.selection();
     if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);
     if (actions.hide) selection.hideSelected();
@@ -173,7 +174,8 @@ PanelInfo Viewer::panelInfo() const {
     info.gltf = isGltf(info.source);
     info.error = scene_.error();
     if (const auto loading = scene_.loading())
-        info.loading = PanelInfo::Loading{loading->path, loading->seconds};
+        info.loading =
+            PanelInfo::Loading{loading->path, loading->seconds, loading->stage, loading->fraction};
     info.scene = &scene_.scene();
     info.stats = scene_.renderer().stats();
     info.lastSwitch = scene_.renderer().lastSwitch();

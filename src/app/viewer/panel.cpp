@@ -30,7 +30,9 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "R                  reload shaders, clear pipeline caches\n"
                                  "V                  vsync on/off\n"
                                  "F1                 hide/show this panel\n"
-                                 "drop .gltf/.glb    open the model";
+                                 "drop a file        open it (.gltf .glb .step .stp .iges\n"
+                                 "                   .igs .brep); or type its path in\n"
+                                 "                   Scene > open";
 
 // When to choose which technique, from the H100 figures in docs/benchmarks.md.
 const char* const techniqueHelp =
@@ -158,8 +160,14 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
     ImGui::Text("pipelines cached %zu (R clears)", info.cachedPipelines);
 }
 
-void sceneSection(SceneSettings& s, const PanelInfo& info) {
+void sceneSection(SceneSettings& s, ViewSettings& view, const PanelInfo& info,
+                  PanelActions& actions) {
     ImGui::TextWrapped("%s", info.source.c_str());
+    if (ImGui::InputTextWithHint("open", ".gltf .glb .step .iges .brep, Enter",
+                                 view.openPath.data(), view.openPath.size(),
+                                 ImGuiInputTextFlags_EnterReturnsTrue) &&
+        view.openPath[0])
+        actions.open = std::string(view.openPath.data());
     int copies = int(s.copies);
     if (ImGui::InputInt("model copies", &copies, 1, 4, ImGuiInputTextFlags_EnterReturnsTrue))
         s.copies = uint32_t(std::clamp(copies, 1, 256));
@@ -226,6 +234,7 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::Text("%s: part %u", what, p.uniquePartId);
     ImGui::TextWrapped("  %s", p.name.c_str());
     ImGui::TextDisabled("  %s", p.path.c_str());
+    if (p.face) ImGui::Text("  B-rep face %u (of the shape's faces, 0-based)", *p.face);
     ImGui::Text("  object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
     ImGui::Text("  %u triangles, depth %.6f", p.triangleCount, double(line.depth));
 }
@@ -310,19 +319,22 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         ImGui::TextWrapped("%s", info.error.c_str());
         ImGui::PopStyleColor();
     }
-    if (info.loading) {
-        // The loaders report no fraction: the bar sweeps once a second while the load runs,
-        // and the time says how long it has taken so far.
-        const double t = info.loading->seconds;
-        char label[64];
-        std::snprintf(label, sizeof label, "loading, %.1f s", t);
-        ImGui::TextWrapped("%s", info.loading->path.c_str());
-        ImGui::ProgressBar(float(t - std::floor(t)), ImVec2(-1, 0), label);
+    if (const auto& loading = info.loading) {
+        // CAD loads report their stage and how far it is; glTF loads report nothing, and the
+        // bar sweeps once a second while they run.
+        const double t = loading->seconds;
+        char label[96];
+        std::snprintf(label, sizeof label, "%s %.0f%%, %.1f s",
+                      loading->stage.empty() ? "loading" : loading->stage.c_str(),
+                      100.0 * loading->fraction, t);
+        ImGui::TextWrapped("%s", loading->path.c_str());
+        const double shown = loading->stage.empty() ? t - std::floor(t) : loading->fraction;
+        ImGui::ProgressBar(float(shown), ImVec2(-1, 0), label);
     }
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen))
         rendering(settings, view, info);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
-        sceneSection(settings.scene, info);
+        sceneSection(settings.scene, view, info, actions);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
     if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen)) picking(info, actions);
     if (ImGui::CollapsingHeader("Objects")) objectList(view, info, actions);

@@ -25,6 +25,7 @@ struct ViewSettings {
     bool vsync = true;
     bool panelVisible = true;
     std::array<char, 96> objectFilter{}; // the object list's filter text
+    std::array<char, 512> openPath{};    // the panel's "open" field
 };
 
 // What the user asked of the parts through the panel, for the viewer to carry out.
@@ -32,6 +33,7 @@ struct PanelActions {
     std::optional<std::string> selectObjects; // the objects of this name (a list click)
     SelectMode mode = SelectMode::Replace;    // Ctrl+click adds
     bool hide = false, isolate = false, showAll = false;
+    std::optional<std::string> open; // a model path entered in the panel, opened as a drop
 };
 
 // A part under the cursor or selected, as the pick reported it.
@@ -50,6 +52,8 @@ struct PanelInfo {
     struct Loading {
         std::string path;
         double seconds = 0.0;
+        std::string stage; // "" when the loader reports no stages
+        double fraction = 0.0;
     };
     std::optional<Loading> loading; // a dropped model still loading
     const scene::Scene* scene = nullptr;

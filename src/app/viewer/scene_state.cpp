@@ -55,8 +55,11 @@ void SceneState::launchNext() {
     SceneSettings single = queued_.front();
     single.copies = 1;
     // Loading touches no Vulkan object and nothing the frames use: safe on its own thread.
-    pending_ = PendingOpen{std::async(std::launch::async, [single] { return loadScene(single); }),
-                           queued_.front(), std::chrono::steady_clock::now()};
+    auto progress = std::make_shared<LoadProgress>();
+    pending_ =
+        PendingOpen{std::async(std::launch::async,
+                               [single, progress] { return loadScene(single, progress.get()); }),
+                    queued_.front(), std::chrono::steady_clock::now(), progress};
     queued_.pop_front();
 }
 
@@ -79,9 +82,11 @@ SceneState::Change SceneState::poll(SceneSettings& settings) {
 
 std::optional<SceneState::Loading> SceneState::loading() const {
     if (!pending_) return std::nullopt;
+    const auto [stage, fraction] = pending_->progress->get();
     return Loading{
         pending_->settings.model,
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - pending_->start).count()};
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - pending_->start).count(),
+        stage, fraction};
 }
 
 bool SceneState::openScene(const SceneSettings& settings) {

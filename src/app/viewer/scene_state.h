@@ -43,6 +43,8 @@ class SceneState {
     struct Loading {
         std::string path;
         double seconds = 0.0; // since the drop
+        std::string stage;    // CAD files: reading, translating, tessellating, building
+        double fraction = 0.0;
     };
     std::optional<Loading> loading() const;
     // Targets at the window's new size.
@@ -85,6 +87,7 @@ class SceneState {
         std::future<LoadedScene> scene;
         SceneSettings settings;
         std::chrono::steady_clock::time_point start;
+        std::shared_ptr<LoadProgress> progress; // written by the worker
     };
     std::deque<SceneSettings> queued_;   // drops waiting for the one loading
     std::optional<PendingOpen> pending_; // destroyed first: waits for the worker

@@ -1,0 +1,94 @@
+// test_cad_render.cpp - real CAD files (Debian's occt-misc samples: STEP, IGES, BREP)
+// through the renderer on lavapipe with validation on: every part-ID technique draws the same
+// ID image, and a pick names the B-rep face a CPU ray cast hits, with its product and path.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/headless.h"
+#include "app/scene_source.h"
+#include "render/technique.h"
+#include "scene/raycast.h"
+#include "test_support.h"
+
+namespace {
+
+constexpr uint32_t W = 240, H = 150;
+
+// The pixel nearest the image centre inside a 5x5 block of one part.
+app::Options::Pixel interiorNearCentre(const std::vector<uint32_t>& ids) {
+    app::Options::Pixel best{0, 0};
+    long bestDistance = -1;
+    for (uint32_t y = 2; y + 2 < H; ++y)
+        for (uint32_t x = 2; x + 2 < W; ++x) {
+            const uint32_t id = ids[size_t(y) * W + x];
+            bool inside = id != gpu::BACKGROUND_ID;
+            for (uint32_t dy = y - 2; dy <= y + 2 && inside; ++dy)
+                for (uint32_t dx = x - 2; dx <= x + 2 && inside; ++dx)
+                    inside = ids[size_t(dy) * W + dx] == id;
+            const long d = long(x - W / 2) * long(x - W / 2) + long(y - H / 2) * long(y - H / 2);
+            if (inside && (bestDistance < 0 || d < bestDistance)) {
+                best = {x, y};
+                bestDistance = d;
+            }
+        }
+    return best;
+}
+
+class CadRender : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CadRender, EveryTechniqueDrawsTheSameFacesAndAPickNamesTheFace) {
+    const std::string path = GetParam();
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    app::SceneSettings source;
+    source.model = path;
+    const app::LoadedScene loaded = app::loadScene(source);
+    const scene::Scene& scene = loaded.scene;
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+
+    app::Options o = testing_support::headlessOptions(W, H);
+    const auto first = app::renderHeadless(o, scene, camera);
+    const app::Options::Pixel pixel = interiorNearCentre(first.ids);
+    ASSERT_NE(first.ids[size_t(pixel.y) * W + pixel.x], gpu::BACKGROUND_ID) << path;
+
+    std::vector<render::RenderSettings> configs;
+    for (const render::Technique* t : render::partIdTechniques())
+        configs.push_back(testing_support::settingsFor(*t, render::defaultDrawMode()));
+    o.picks = {pixel};
+    const auto results = app::renderHeadlessSequence(o, scene, camera, configs);
+    EXPECT_EQ(results.front().validationMessages, 0u) << path;
+
+    const glm::mat4 viewProj = camera.viewProjection(float(W) / float(H));
+    const auto hit = scene::RayCaster(scene).cast(
+        scene::pixelRay(viewProj, glm::vec2(W, H), glm::vec2(pixel.x, pixel.y) + 0.5f));
+    ASSERT_TRUE(hit.has_value()) << path;
+    for (size_t c = 0; c < configs.size(); ++c) {
+        const std::string name = path + " " + configs[c].pipeline.technique->name;
+        const app::HeadlessResult& r = results[c];
+        EXPECT_EQ(r.ids, first.ids) << name;
+        ASSERT_EQ(r.picks.size(), 1u);
+        ASSERT_TRUE(r.picks.front().part.has_value()) << name;
+        EXPECT_EQ(*r.picks.front().part, hit->uniquePartId) << name;
+    }
+    // The pick names the face: its B-rep face number, and the product and path it belongs to.
+    const auto info = scene::describePart(scene, hit->uniquePartId);
+    ASSERT_TRUE(info && info->face.has_value()) << path;
+    EXPECT_EQ(*info->face, scene.geometries[info->geometry].partFaces.at(info->localPart));
+    EXPECT_FALSE(info->name.empty());
+    EXPECT_FALSE(info->path.empty());
+    const std::string json = app::pickJson(scene, results.front().picks.front());
+    EXPECT_NE(json.find("\"face\":" + std::to_string(*info->face) + ","), std::string::npos)
+        << json;
+    EXPECT_NE(json.find("\"name\":\""), std::string::npos) << json;
+}
+
+INSTANTIATE_TEST_SUITE_P(Lavapipe, CadRender,
+                         ::testing::Values("/usr/share/opencascade/data/step/screw.step",
+                                           "/usr/share/opencascade/data/iges/hammer.iges",
+                                           "/usr/share/opencascade/data/occ/bottle.brep"),
+                         [](const auto& info) {
+                             return testing_support::testName(
+                                 std::filesystem::path(info.param).filename().string());
+                         });
+
+} // namespace
