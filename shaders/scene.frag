@@ -67,6 +67,12 @@ void main() {
     uint localPart = lookupLocalPart(frame, draw, uint(gl_PrimitiveID));
 #endif
     uint uniquePartId = object.uniquePartOffset + localPart;
+    if (frame.partMaterialsAddress != 0ul && (frame.flags & FRAME_IGNORE_MATERIALS) == 0u &&
+        (frame.flags & FRAME_COLORIZE_DRAWS) == 0u) {
+        // A face with a colour of its own (CAD files) shows it instead of its object's.
+        uint own = UintsRef(frame.partMaterialsAddress).values[object.firstPart + localPart];
+        if (own != OBJECT_MATERIAL) base = MaterialsRef(frame.materialsAddress).materials[own].color.rgb;
+    }
     // Before any discard: derivatives need the whole quad.
     float depth = pickDepth(frame);
 #if IDV_HIDE_IN_FRAGMENT

@@ -83,11 +83,17 @@ struct FrameData {
     uint64_t drawIndicesAddress; // uint[]: the draw index attribute (mdi-attribute), or 0
     uint64_t selectedAddress;    // uint[]: bitset over unique part IDs, drawn highlighted
     uint64_t hiddenAddress;      // uint[]: bitset over unique part IDs, never drawn (see HIDING)
+    // uint[] per part of the scene (Scene::parts order): its own material, or OBJECT_MATERIAL
+    // for its object's; 0 when no part has one (CAD face colours)
+    uint64_t partMaterialsAddress;
     uvec2 pickPixel;             // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     vec2 sampleZero;             // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
     float time;                  // seconds, drives the blink of the hovered part
-    uint unused;                 // keeps the size a multiple of 16
+    uint unused[3];              // keeps the size a multiple of 16
 };
+
+// A part without a material of its own (FrameData::partMaterialsAddress).
+IDV_CONST OBJECT_MATERIAL = 0xFFFFFFFFu;
 
 // Part bitsets (selection, hidden parts, the result of a part set pass): bit (id & 31) of
 // word (id >> 5) is set when unique part `id` is in the set. Hidden parts are discarded by a
@@ -149,7 +155,7 @@ struct ObjectData {
     uint materialIndex;
     uint uniquePartOffset; // unique part ID of the geometry's part 0 in this object
     uint geometryIndex;
-    uint reserved;
+    uint firstPart; // the geometry's first part in the scene's parts (part materials)
 };
 
 struct Material {
@@ -218,7 +224,7 @@ static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 4
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 208 && offsetof(FrameData, pickPixel) == 184);
+static_assert(sizeof(FrameData) == 224 && offsetof(FrameData, pickPixel) == 192);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(DrawData) == 32);
 static_assert(sizeof(Meshlet) == 16);

@@ -202,8 +202,8 @@ TEST(CadLoader, ReportsProgressByStage) {
 // ---- an assembly written here -----------------------------------------------------------
 
 // Writes rig.step: one box placed twice ("left box" red, "right box" blue), a cylinder
-// ("pin", product colour green) and a sub-assembly holding the box once more, all under the
-// assembly "rig".
+// ("pin", product colour green, its second face yellow of its own) and a sub-assembly holding
+// the box once more, all under the assembly "rig".
 fs::path writeRig() {
     std::optional<scene::OcctLeaksIgnored> ignored(std::in_place);
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
@@ -217,9 +217,14 @@ fs::path writeRig() {
     TDataStd_Name::Set(rig, "rig");
     const TDF_Label box = shapes->AddShape(BRepPrimAPI_MakeBox(10.0, 20.0, 30.0).Shape(), false);
     TDataStd_Name::Set(box, "box");
-    const TDF_Label cylinder = shapes->AddShape(BRepPrimAPI_MakeCylinder(5.0, 15.0).Shape(), false);
+    const TopoDS_Shape cylinderShape = BRepPrimAPI_MakeCylinder(5.0, 15.0).Shape();
+    const TDF_Label cylinder = shapes->AddShape(cylinderShape, false);
     TDataStd_Name::Set(cylinder, "cylinder");
     colors->SetColor(cylinder, Quantity_Color(0.0, 1.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
+    TopTools_IndexedMapOfShape cylinderFaces;
+    TopExp::MapShapes(cylinderShape, TopAbs_FACE, cylinderFaces);
+    const TDF_Label ownFace = shapes->AddSubShape(cylinder, cylinderFaces(2));
+    colors->SetColor(ownFace, Quantity_Color(1.0, 1.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
 
     auto place = [&](const TDF_Label& shape, gp_Vec offset, const char* name) {
         gp_Trsf move;
@@ -309,6 +314,15 @@ TEST(CadLoader, WrittenAssemblyKeepsInstancesNamesColoursAndPlacements) {
     EXPECT_EQ(colorOf(left), glm::vec3(1.0f, 0.0f, 0.0f));
     EXPECT_EQ(colorOf(right), glm::vec3(0.0f, 0.0f, 1.0f));
     EXPECT_EQ(colorOf(pin), glm::vec3(0.0f, 1.0f, 0.0f));
+    // Face, then shape, then product: the pin's second face keeps its own yellow, its other
+    // faces take the object's; the boxes' faces have no colours of their own.
+    const scene::Geometry& pinShape = s.geometries[pin->geometry];
+    ASSERT_EQ(pinShape.partMaterials.size(), 3u);
+    EXPECT_EQ(pinShape.partMaterials[0], gpu::OBJECT_MATERIAL);
+    EXPECT_EQ(pinShape.partMaterials[2], gpu::OBJECT_MATERIAL);
+    ASSERT_LT(pinShape.partMaterials[1], s.materials.size());
+    EXPECT_EQ(glm::vec3(s.materials[pinShape.partMaterials[1]].color), glm::vec3(1, 1, 0));
+    EXPECT_TRUE(s.geometries[left->geometry].partMaterials.empty());
     // The box's local bounds: 10 x 20 x 30 from the origin.
     const scene::Geometry& g = s.geometries[left->geometry];
     glm::vec3 lo(1e9f), hi(-1e9f);

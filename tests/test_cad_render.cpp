@@ -3,7 +3,9 @@
 // ID image, and a pick names the B-rep face a CPU ray cast hits, with its product and path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "app/headless.h"
 #include "app/scene_source.h"
@@ -90,5 +92,55 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, CadRender,
                              return testing_support::testName(
                                  std::filesystem::path(info.param).filename().string());
                          });
+
+} // namespace
+
+namespace {
+
+// A part with a material of its own (CAD face colours, Geometry::partMaterials) shows it with
+// every technique: exactly that part's pixels change, to the pure red given (green and blue
+// stay 0 under the headlight); every other pixel is the image without part materials.
+TEST(PartMaterials, APartsOwnMaterialShowsWithEveryTechnique) {
+    app::SceneSettings source;
+    source.builtin = "tiles";
+    const app::LoadedScene loaded = app::loadScene(source);
+    scene::Scene own = loaded.scene;
+    const uint32_t red = scene::addMaterial(own, "own red", glm::vec4(1, 0, 0, 1));
+    const uint32_t geometry = own.objects.front().geometry;
+    scene::Geometry& g = own.geometries[geometry];
+    g.partMaterials.assign(g.partCount, gpu::OBJECT_MATERIAL);
+    g.partMaterials[3] = red;
+    scene::validate(own);
+    std::set<uint32_t> redIds; // part 3 of every object placing that geometry
+    for (const scene::Object& o : own.objects)
+        if (o.geometry == geometry) redIds.insert(o.uniquePartOffset + 3);
+
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    std::vector<render::RenderSettings> configs;
+    for (const render::Technique* t : render::partIdTechniques()) {
+        configs.push_back(testing_support::settingsFor(*t, render::defaultDrawMode()));
+        configs.back().shading.partWeight = 0.0f; // the material colour alone
+    }
+    const app::Options o = testing_support::headlessOptions(W, H);
+    const auto plain = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    const auto colored = app::renderHeadlessSequence(o, own, camera, configs);
+    EXPECT_EQ(colored.front().validationMessages, 0u);
+    for (size_t c = 0; c < configs.size(); ++c) {
+        const std::string name = configs[c].pipeline.technique->name;
+        ASSERT_EQ(colored[c].ids, plain[c].ids) << name;
+        size_t redPixels = 0, wrong = 0;
+        for (size_t i = 0; i < colored[c].ids.size(); ++i) {
+            const uint8_t* p = &colored[c].color[4 * i];
+            if (redIds.count(colored[c].ids[i])) {
+                ++redPixels;
+                wrong += !(p[0] > 40 && p[1] == 0 && p[2] == 0);
+            } else {
+                wrong += !std::equal(p, p + 4, &plain[c].color[4 * i]);
+            }
+        }
+        EXPECT_GT(redPixels, 50u) << name;
+        EXPECT_EQ(wrong, 0u) << name;
+    }
+}
 
 } // namespace

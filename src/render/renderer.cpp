@@ -244,6 +244,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     frame.sampleZero = targets.pass().sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();
+    frame.partMaterialsAddress = sceneGpu_->partMaterialsAddress();
     frame.idsAddress = draws_->ids.address();
     frame.drawsAddress = draws_->draws.address();
     frame.pickAddress = pick_->address();

@@ -25,6 +25,7 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
         data.materialIndex = o.material;
         data.uniquePartOffset = o.uniquePartOffset;
         data.geometryIndex = o.geometry;
+        data.firstPart = scene.geometries[o.geometry].firstPart;
         objects.push_back(data);
         rest.push_back(o.world);
     }
@@ -39,6 +40,19 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     materials_ = upload.add(materials, shaderRead, "scene materials");
     rest_ = upload.add(rest, shaderRead, "animation rest matrices");
     offsets_ = upload.add(scene::explodeOffsets(scene), shaderRead, "animation offsets");
+    // Part materials only where some part has one: other scenes read none.
+    std::vector<uint32_t> partMaterials;
+    for (const scene::Geometry& g : scene.geometries)
+        if (!g.partMaterials.empty()) {
+            partMaterials.assign(scene.parts.size(), gpu::OBJECT_MATERIAL);
+            break;
+        }
+    if (!partMaterials.empty()) {
+        for (const scene::Geometry& g : scene.geometries)
+            for (uint32_t p = 0; p < g.partMaterials.size(); ++p)
+                partMaterials[g.firstPart + p] = g.partMaterials[p];
+        partMaterials_ = upload.add(partMaterials, shaderRead, "part materials");
+    }
 }
 
 } // namespace render

@@ -18,6 +18,8 @@ class SceneGpu {
     const vk::Buffer& indices() const { return indices_; }
     VkDeviceAddress objectsAddress() const { return objects_.address(); }
     VkDeviceAddress materialsAddress() const { return materials_.address(); }
+    // 0 when no part has a material of its own.
+    VkDeviceAddress partMaterialsAddress() const { return partMaterials_.address(); }
     uint32_t objectCount() const { return objectCount_; }
 
     // The animation's inputs: each object's world matrix at rest (mat4) and its offset at
@@ -29,6 +31,7 @@ class SceneGpu {
 
   private:
     vk::Buffer vertices_, indices_, objects_, materials_, rest_, offsets_;
+    vk::Buffer partMaterials_; // empty (address 0) unless a part has its own material
     uint32_t objectCount_ = 0;
 };
 

@@ -201,7 +201,8 @@ struct Leaf {
     std::string product; // the shape label's name, for the geometry
     std::string group;   // the path of the assemblies above it
     std::optional<Rgba> color;
-    uint32_t otherFaceColors = 0; // faces whose own colour differs from `color`
+    // Faces (or solids and shells, for all their faces) with colours of their own.
+    std::vector<std::pair<TopoDS_Shape, Rgba>> subColors;
 };
 
 // Walks an XDE document from its free shapes down to the leaves.
@@ -234,22 +235,15 @@ class TreeWalker {
         return std::nullopt;
     }
 
-    // The colour most faces of the shape have through their sub-shape labels (faces, or
-    // solids and shells holding them), and how many faces each colour covers.
-    std::map<uint32_t, std::pair<uint32_t, Rgba>> faceColors(const TDF_Label& shapeLabel) const {
-        std::map<uint32_t, std::pair<uint32_t, Rgba>> counts;
+    // The sub-shapes of the shape (faces, or solids and shells holding them) with colours.
+    std::vector<std::pair<TopoDS_Shape, Rgba>> subColors(const TDF_Label& shapeLabel) const {
+        std::vector<std::pair<TopoDS_Shape, Rgba>> colored;
         TDF_LabelSequence subs;
         XCAFDoc_ShapeTool::GetSubShapes(shapeLabel, subs);
-        for (Standard_Integer i = 1; i <= subs.Length(); ++i) {
-            const auto color = colorOf(subs.Value(i));
-            if (!color) continue;
-            TopTools_IndexedMapOfShape faces;
-            TopExp::MapShapes(XCAFDoc_ShapeTool::GetShape(subs.Value(i)), TopAbs_FACE, faces);
-            auto& entry = counts[packed(*color)];
-            entry.first += uint32_t(faces.Extent());
-            entry.second = *color;
-        }
-        return counts;
+        for (Standard_Integer i = 1; i <= subs.Length(); ++i)
+            if (const auto color = colorOf(subs.Value(i)))
+                colored.emplace_back(XCAFDoc_ShapeTool::GetShape(subs.Value(i)), *color);
+        return colored;
     }
 
     void walk(const TDF_Label& label, const gp_Trsf& parent, const std::string& group,
@@ -290,16 +284,7 @@ class TreeWalker {
         leaf.group = group;
         leaf.color = instance ? colorOf(*instance) : std::nullopt;
         if (!leaf.color) leaf.color = colorOf(label);
-        const auto faces = faceColors(label);
-        if (!leaf.color && !faces.empty()) {
-            auto most = std::max_element(faces.begin(), faces.end(), [](auto& a, auto& b) {
-                return a.second.first < b.second.first;
-            });
-            leaf.color = most->second.second;
-        }
-        if (leaf.color)
-            for (const auto& [key, entry] : faces)
-                if (key != packed(*leaf.color)) leaf.otherFaceColors += entry.first;
+        leaf.subColors = subColors(label);
         leaves_.push_back(std::move(leaf));
     }
 
@@ -464,6 +449,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
         TopoDS_Shape shape;
         std::string name;
         TopTools_IndexedMapOfShape faces;
+        std::vector<std::optional<Rgba>> faceColor; // by face index - 1: its own colour
         Bnd_Box box;
         int64_t geometry = -1;
     };
@@ -483,6 +469,23 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
             d.name = leaf.product;
             TopExp::MapShapes(d.shape, TopAbs_FACE, d.faces);
             if (d.faces.Extent() > 0) BRepBndLib::Add(d.shape, d.box, false);
+            // Coloured sub-shapes name their faces by TShape: their locations are the
+            // product's, which the leaf's shape no longer carries.
+            d.faceColor.resize(size_t(d.faces.Extent()));
+            std::map<const void*, int> faceIndex;
+            for (int f = d.faces.Extent(); f >= 1; --f) // the first of equal TShapes wins
+                faceIndex[d.faces(f).TShape().get()] = f;
+            for (const auto& [sub, color] : leaf.subColors) {
+                TopTools_IndexedMapOfShape subFaces;
+                TopExp::MapShapes(sub, TopAbs_FACE, subFaces);
+                for (int f = 1; f <= subFaces.Extent(); ++f) {
+                    const auto found = faceIndex.find(subFaces(f).TShape().get());
+                    // A face's own label wins over a solid's or shell's that holds it.
+                    if (found != faceIndex.end() &&
+                        (!d.faceColor[size_t(found->second - 1)] || sub.ShapeType() == TopAbs_FACE))
+                        d.faceColor[size_t(found->second - 1)] = color;
+                }
+            }
         }
         leafDistinct[i] = it->second;
         const Distinct& d = distinct[it->second];
@@ -522,6 +525,20 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
     result.tessellationMs = msSince(start);
 
     Scene& scene = result.scene;
+    // A material per distinct colour, for objects and for faces with colours of their own.
+    std::map<uint32_t, uint32_t> materialOf;
+    const uint32_t grey = addMaterial(scene, "default", Material{}.color);
+    auto materialFor = [&](const Rgba& color) {
+        auto [it, added] = materialOf.try_emplace(packed(color), 0);
+        if (added) {
+            const Quantity_Color& rgb = color.GetRGB();
+            // XCAF holds linear RGB, as the renderer's material colours are.
+            it->second = addMaterial(
+                scene, "colour " + hex(color),
+                glm::vec4(float(rgb.Red()), float(rgb.Green()), float(rgb.Blue()), color.Alpha()));
+        }
+        return it->second;
+    };
     uint32_t unnamedShapes = 0, emptyShapes = 0;
     for (size_t di = 0; di < distinct.size(); ++di) {
         Distinct& d = distinct[di];
@@ -534,15 +551,22 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
         g.firstPart = uint32_t(scene.parts.size());
         for (Standard_Integer f = 1; f <= d.faces.Extent(); ++f) {
             ++result.faces;
-            if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex))
-                scene.geometries.back().partFaces.push_back(uint32_t(f - 1));
-            else
+            if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex)) {
+                Geometry& built = scene.geometries.back();
+                built.partFaces.push_back(uint32_t(f - 1));
+                const auto& own = d.faceColor[size_t(f - 1)];
+                built.partMaterials.push_back(own ? materialFor(*own) : gpu::OBJECT_MATERIAL);
+            } else {
                 ++result.facesFailed;
+            }
             if (scene.vertices.size() > std::numeric_limits<uint32_t>::max() / 2 ||
                 scene.indices.size() > std::numeric_limits<uint32_t>::max() / 2)
                 throw Bad("the tessellation is too large (try a larger --deflection)");
         }
         Geometry& built = scene.geometries.back();
+        if (std::all_of(built.partMaterials.begin(), built.partMaterials.end(),
+                        [](uint32_t m) { return m == gpu::OBJECT_MATERIAL; }))
+            built.partMaterials.clear(); // every face takes its object's colour
         built.vertexCount = uint32_t(scene.vertices.size()) - built.firstVertex;
         built.partCount = uint32_t(scene.parts.size()) - built.firstPart;
         if (built.partCount == 0) {
@@ -560,36 +584,19 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
         result.warnings.push_back(std::to_string(emptyShapes) +
                                   " shapes had no face that triangulated and are left out");
 
-    // Objects, one per leaf instance, with a material per distinct colour.
-    std::map<uint32_t, uint32_t> materialOf;
-    const uint32_t grey = addMaterial(scene, "default", Material{}.color);
-    uint32_t unnamed = 0, otherFaceColors = 0;
+    // Objects, one per leaf instance: the instance's colour, else the product's.
+    uint32_t unnamed = 0;
     for (size_t i = 0; i < leaves.size(); ++i) {
         const Leaf& leaf = leaves[i];
         const Distinct& d = distinct[leafDistinct[i]];
         if (d.geometry < 0) continue;
-        uint32_t material = grey;
-        if (leaf.color) {
-            auto [it, added] = materialOf.try_emplace(packed(*leaf.color), 0);
-            if (added) {
-                const Quantity_Color& rgb = leaf.color->GetRGB();
-                // XCAF holds linear RGB, as the renderer's material colours are.
-                it->second = addMaterial(scene, "colour " + hex(*leaf.color),
-                                         glm::vec4(float(rgb.Red()), float(rgb.Green()),
-                                                   float(rgb.Blue()), leaf.color->Alpha()));
-            }
-            material = it->second;
-        }
-        otherFaceColors += leaf.otherFaceColors;
+        const uint32_t material = leaf.color ? materialFor(*leaf.color) : grey;
         const std::string name =
             leaf.name.empty() ? stem + " solid " + std::to_string(++unnamed) : leaf.name;
         addObject(scene, uint32_t(d.geometry), material, toMat4(leaf.world), name,
                   joinPath(leaf.group, name));
     }
     if (scene.objects.empty()) throw Bad("no face of the model could be triangulated");
-    if (otherFaceColors)
-        result.warnings.push_back(std::to_string(otherFaceColors) +
-                                  " faces have colours of their own, shown in their object's");
     try {
         validate(scene);
     } catch (const std::invalid_argument& e) {

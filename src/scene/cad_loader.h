@@ -7,8 +7,9 @@
 // face is left out (the parts after it move down one) and counted in CadLoadResult and in a
 // warning. Names: the instance label's name, else the product's, else "<file stem> solid N";
 // the path is the assembly names from the root joined by '/', the object's own name last.
-// Colours: one material per object, from the instance's XCAF colour, else the product's,
-// else the colour most of its coloured faces have; other face colours are not shown.
+// Colours: a face with an XCAF colour of its own (on the face, or on a solid or shell holding
+// it) shows it (Geometry::partMaterials); the other faces take their object's material: the
+// instance's colour, else the product's, else a default grey.
 // This header stays free of Open CASCADE types.
 #pragma once
 

@@ -42,7 +42,8 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
                   object.geometry,
                   scene.part(object, ref->localPart).triangleCount,
                   object.name,
-                  object.path};
+                  object.path,
+                  std::nullopt};
     if (ref->localPart < geometry.partFaces.size()) info.face = geometry.partFaces[ref->localPart];
     return info;
 }
@@ -127,6 +128,11 @@ void validate(const Scene& scene) {
         for (uint32_t i = 0; i < 3 * g.triangleCount; ++i)
             if (scene.indices[g.firstIndex + i] >= g.vertexCount)
                 fail(name + " indexes a vertex it does not own");
+        if (!g.partMaterials.empty() && g.partMaterials.size() != g.partCount)
+            fail(name + " has part materials for another number of parts");
+        for (uint32_t m : g.partMaterials)
+            if (m != gpu::OBJECT_MATERIAL && m >= scene.materials.size())
+                fail(name + " gives a part a missing material");
     }
     uint32_t nextId = 0;
     for (size_t oi = 0; oi < scene.objects.size(); ++oi) {

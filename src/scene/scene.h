@@ -35,6 +35,9 @@ struct Geometry {
     // faces (a face that did not triangulate has no part, so the numbers may skip). Empty for
     // other sources, whose parts are no faces.
     std::vector<uint32_t> partFaces;
+    // A material per part, or gpu::OBJECT_MATERIAL where the object's applies (CAD faces
+    // with colours of their own); empty when every part takes its object's.
+    std::vector<uint32_t> partMaterials;
 };
 
 struct Material {
