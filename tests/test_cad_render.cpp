@@ -28,7 +28,8 @@ app::Options::Pixel interiorNearCentre(const std::vector<uint32_t>& ids) {
             for (uint32_t dy = y - 2; dy <= y + 2 && inside; ++dy)
                 for (uint32_t dx = x - 2; dx <= x + 2 && inside; ++dx)
                     inside = ids[size_t(dy) * W + dx] == id;
-            const long d = long(x - W / 2) * long(x - W / 2) + long(y - H / 2) * long(y - H / 2);
+            const long dx = long(x) - long(W / 2), dy = long(y) - long(H / 2);
+            const long d = dx * dx + dy * dy;
             if (inside && (bestDistance < 0 || d < bestDistance)) {
                 best = {x, y};
                 bestDistance = d;

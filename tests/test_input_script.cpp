@@ -70,9 +70,11 @@ TEST(InputScript, BoxObjectAndModifiers) {
                                            "3 box 1 2 3 4 remove\n"
                                            "4 object  bolt M10 #12 \n"
                                            "5 key shift+h\n"
-                                           "6 key CTRL+alt+E\n",
+                                           "6 key CTRL+alt+E\n"
+                                           "7 loaded\n",
                                            "s.txt");
-    ASSERT_EQ(commands.size(), 6u);
+    ASSERT_EQ(commands.size(), 7u);
+    EXPECT_EQ(commands[6].op, app::ScriptOp::Loaded);
     EXPECT_EQ(commands[0].op, app::ScriptOp::Box);
     EXPECT_DOUBLE_EQ(commands[0].values[2], 300.0);
     EXPECT_EQ(commands[0].mods, GLFW_MOD_SHIFT); // a plain box replaces, as Shift+drag does

@@ -76,7 +76,7 @@ done
     at frames 6 # drops open between frames
     for f in "${cad_files[@]}"; do at drop "$f"; done
     # They load one after the other on a worker thread while frames go on.
-    ((${#cad_files[@]})) && at frames 40
+    at loaded
     at quit
 } >"$work/script.txt"
 # Dropped files: one that is not glTF at all, and the same scene exported as .glb.

@@ -230,6 +230,10 @@ std::optional<double> Input::wakeIn(double seconds) const {
     return std::nullopt;
 }
 
+void Input::waitForLoads() {
+    if (viewer_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
+}
+
 void Input::queue(const ScriptCommand& c) {
     const auto& v = c.values;
     // Settings change in place, as the panel's widgets change them; the frame applies them.
@@ -298,6 +302,9 @@ void Input::queue(const ScriptCommand& c) {
         break;
     case ScriptOp::Drop:
         step([this, path = c.text] { onDrop(path); }, true);
+        break;
+    case ScriptOp::Loaded:
+        step([this] { waitForLoads(); }, true);
         break;
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(v[0]); ++i) step([] {}, true);

@@ -95,6 +95,8 @@ class Input {
     void step(std::function<void()> run, bool endsFrame) {
         steps_.push_back({std::move(run), endsFrame});
     }
+    // A step that comes back every frame while a dropped model is loading.
+    void waitForLoads();
 
     Viewer& viewer_;
     GLFWwindow* window_;

@@ -39,6 +39,7 @@ const CommandSpec commandSpecs[] = {
     {"copies", ScriptOp::Copies, 1, "copies N"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
+    {"loaded", ScriptOp::Loaded, 0, "loaded"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
     {"quit", ScriptOp::Quit, 0, "quit"},
 };
@@ -72,7 +73,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     if (!spec)
         fail("unknown command '" + name +
              "' (known: key, move, click, drag, box, object, scroll, resize, renderer, mode, "
-             "msaa, copies, screenshot, drop, frames, quit)");
+             "msaa, copies, screenshot, drop, loaded, frames, quit)");
     command.op = spec->op;
 
     std::vector<std::string> args;

@@ -20,6 +20,8 @@
 //   3.6 copies 3            model copies, as the panel's field does
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
+//   4.6 loaded              wait until every dropped model has loaded (they load while
+//                           frames go on), however long that takes
 //   4.8 frames 5            let 5 frames pass before the next command (results of a pick
 //                           arrive a frame or two later, however slow the frames are)
 //   5   quit
@@ -52,6 +54,7 @@ enum class ScriptOp {
     Copies,
     Screenshot,
     Drop,
+    Loaded,
     Frames,
     Quit
 };
