@@ -65,25 +65,33 @@ Options::Pixel parsePixel(const std::string& flag, const std::string& text) {
 }
 
 // "4,7,12": unique part IDs.
-std::vector<uint32_t> parseIds(const std::string& flag, const std::string& text) {
-    std::vector<uint32_t> ids;
+// "a,b,,c" -> {"a", "b", "", "c"}: every item, empty ones included (they are refused later).
+std::vector<std::string> commaList(const std::string& text) {
+    std::vector<std::string> items;
     size_t start = 0;
     while (start <= text.size()) {
         const size_t comma = std::min(text.find(',', start), text.size());
-        ids.push_back(parseCount(flag, text.substr(start, comma - start), 0, 0xFFFFFFFEu));
+        items.push_back(text.substr(start, comma - start));
         start = comma + 1;
     }
-    return ids;
+    return items;
+}
+
+// "4,7,12": whole numbers from 0 to `max`.
+std::vector<uint32_t> parseCounts(const std::string& flag, const std::string& text, uint32_t max) {
+    std::vector<uint32_t> values;
+    for (const std::string& item : commaList(text))
+        values.push_back(parseCount(flag, item, 0, max));
+    return values;
+}
+
+// "4,7,12": unique part IDs.
+std::vector<uint32_t> parseIds(const std::string& flag, const std::string& text) {
+    return parseCounts(flag, text, 0xFFFFFFFEu);
 }
 
 render::PartSetQuery parseRect(const std::string& flag, const std::string& text) {
-    std::vector<uint32_t> corners;
-    size_t start = 0;
-    while (start <= text.size()) {
-        const size_t comma = std::min(text.find(',', start), text.size());
-        corners.push_back(parseCount(flag, text.substr(start, comma - start), 0, 16383));
-        start = comma + 1;
-    }
+    const std::vector<uint32_t> corners = parseCounts(flag, text, 16383);
     if (corners.size() != 4) throw UsageError(flag + " expects X0,Y0,X1,Y1, not '" + text + "'");
     return render::spanning({corners[0], corners[1]}, {corners[2], corners[3]});
 }
@@ -389,16 +397,12 @@ std::vector<const Entry*> namedEntries(const char* flag, const std::string& valu
             if (inAll(entry)) entries.push_back(&entry);
         return entries;
     }
-    size_t start = 0;
-    while (start <= value.size()) {
-        const size_t comma = std::min(value.find(',', start), value.size());
-        const std::string name = value.substr(start, comma - start);
+    for (const std::string& name : commaList(value)) {
         const Entry* entry = find(name);
         if (!entry)
             throw UsageError(std::string(flag) + ": unknown name '" + name + "' (known: " + known +
                              ", or all)");
         entries.push_back(entry);
-        start = comma + 1;
     }
     return entries;
 }
