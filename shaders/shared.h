@@ -47,6 +47,10 @@ IDV_CONST BACKGROUND_ID = 0xFFFFFFFFu;
 // FrameData::flags bits.
 IDV_CONST FRAME_COLORIZE_DRAWS = 1u;
 IDV_CONST FRAME_IGNORE_MATERIALS = 2u; // every object shaded with NEUTRAL_MATERIAL
+IDV_CONST FRAME_HIDING = 4u;           // some part is hidden: culling skips draws of hidden parts
+// The floors write no ID image, so their culling remembers what passed the last frame's
+// occlusion test instead of what the ID image showed (CULL_PASSED, and the meshlet bits).
+IDV_CONST FRAME_BOUNDS_HISTORY = 8u;
 // The one material of FRAME_IGNORE_MATERIALS (linear RGB): a mid grey, so that only part
 // colours (--part-weight) tint the image.
 #ifdef __cplusplus
@@ -86,10 +90,21 @@ struct FrameData {
     // uint[] per part of the scene (Scene::parts order): its own material, or OBJECT_MATERIAL
     // for its object's; 0 when no part has one (CAD face colours)
     uint64_t partMaterialsAddress;
-    uvec2 pickPixel;             // framebuffer pixel whose nearest part is picked; x NO_PICK: none
-    vec2 sampleZero;             // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
-    float time;                  // seconds, drives the blink of the hovered part
-    uint unused[3];              // keeps the size a multiple of 16
+    // Culling (render/culling.h), 0 where it is off: the parts the last ID image showed
+    // (uint[] bitset), the depth pyramid (PyramidHeader, then floats), each draw's DrawCull,
+    // each meshlet's MeshletBox, one bit per (draw, meshlet) that the last culled frame found
+    // in view (and not occluded), and this frame's CullStats.
+    uint64_t visibleAddress;
+    uint64_t pyramidAddress;
+    uint64_t drawCullAddress;
+    uint64_t meshletBoxesAddress;
+    uint64_t meshletBitsAddress;
+    uint64_t cullStatsAddress;
+    uint64_t cullStateAddress; // mdi modes: per draw the CULL_* bits of this frame's first pass
+    uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
+    vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
+    float time;                // seconds, drives the blink of the hovered part
+    uint unused;               // keeps the size a multiple of 16
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
@@ -163,12 +178,129 @@ struct Material {
 };
 
 // Push constants. The frame address is pushed once per frame at offset 0; in `push` mode
-// each draw then pushes the fields of `draw` that changed since the previous draw.
+// each draw then pushes the fields of `draw` that changed since the previous draw. With
+// culling, each pass pushes its phase and, in the mdi modes, the commands it draws.
 struct DrawPush {
     uint64_t frameAddress; // FrameData
     DrawData draw;
+    uint64_t commandsAddress; // mesh techniques, mdi modes with culling: MeshTaskCommand[]
+    uint cullPhase;           // CULL_PHASE_*: what the task shader lets through
+    uint unused;
 };
 IDV_CONST DRAW_PUSH_DRAW_OFFSET = 8;
+IDV_CONST DRAW_PUSH_CULL_OFFSET = 40; // commandsAddress, cullPhase
+
+// GPU-driven culling (render/culling.h). Draws are culled per draw (an object, a part for
+// per-draw, a batch for the search techniques) by a compute pass that writes the indirect
+// draws and their count; meshlets by the task shader (scene.task). Every test is
+// conservative: a draw or meshlet is dropped only where no sample of it could pass the depth
+// test or lie in the view, so the images equal those drawn without culling.
+IDV_CONST CULL_GROUP_SIZE = 256; // cull.comp: draws per workgroup
+IDV_CONST TASK_GROUP_SIZE = 32;  // scene.task: meshlets per workgroup, one per invocation
+IDV_CONST PYRAMID_GROUP = 8;     // depth_pyramid.comp: 8x8 texels per workgroup
+IDV_CONST PYRAMID_MAX_LEVELS = 16;
+
+// What one culling pass lets through (DrawPush::cullPhase, CullPush::phase).
+IDV_CONST CULL_PHASE_NONE = 0;    // culling off: everything
+IDV_CONST CULL_PHASE_FRUSTUM = 1; // one pass: what may lie in the view frustum
+// Occlusion, two passes: first what the last ID image showed, then the depth pyramid is built
+// from that pass's depth and the rest is tested against it.
+IDV_CONST CULL_PHASE_EARLY = 2;
+IDV_CONST CULL_PHASE_LATE = 3;
+// "Freeze culling": the lists of the last culled frame are drawn again, and meshlets by the
+// bits that frame left.
+IDV_CONST CULL_PHASE_FROZEN = 4;      // the first (or only) list
+IDV_CONST CULL_PHASE_FROZEN_LATE = 5; // the late list: meshlets of draws the first had not
+
+// cull.comp runs each phase in two steps: decide (a flag per draw, a count per workgroup),
+// then compact (each workgroup adds the counts before it, so draws keep their order).
+IDV_CONST CULL_STEP_DECIDE = 0;
+IDV_CONST CULL_STEP_COMPACT = 1;
+// Per-draw state bits (CullPush::stateAddress), from the first pass of a frame.
+IDV_CONST CULL_IN_FRUSTUM = 1u;  // may lie in the view frustum, and not all its parts hidden
+IDV_CONST CULL_WAS_VISIBLE = 2u; // one of its parts is in the last ID image
+IDV_CONST CULL_DRAW_NOW = 4u;    // drawn by the current pass (decide -> compact)
+IDV_CONST CULL_PASSED = 8u;      // FRAME_BOUNDS_HISTORY: passed the late pass's test
+// CullPush::flags
+IDV_CONST CULL_MESH_DRAWS = 1u; // mesh tasks: the late pass lists every draw that may show,
+                                // the task shader then skips the meshlets drawn early
+
+// A draw's box for culling, in its geometry's coordinates, and for mesh techniques where
+// its meshlets' bits start (one bit per meshlet, each draw's run starting on a word).
+struct DrawCull {
+    vec3 boxMin;
+    uint meshletBit;
+    vec3 boxMax;
+    uint meshletCount;
+};
+// A meshlet's box, in its geometry's coordinates.
+struct MeshletBox {
+    vec3 boxMin;
+    uint unused0;
+    vec3 boxMax;
+    uint unused1;
+};
+
+// What the mesh techniques' culled indirect draws hold: task workgroups, then the draw.
+struct MeshTaskCommand {
+    uint groupCountX;
+    uint groupCountY;
+    uint groupCountZ;
+    uint drawIndex;
+};
+
+// Counters of one frame: the indirect draw counts of the two passes (the vertex draws' count
+// buffer), draws of the late list that the early list did not have, triangles of the listed
+// draws (vertex pipelines), and meshlets and their triangles the task shader let through.
+struct CullStats {
+    uint draws[2];
+    uint lateNew;
+    uint triangles;
+    uint meshlets;
+    uint meshletTriangles;
+    uint unused[2];
+};
+
+// The depth pyramid (render/culling.h): level 0 holds, per 2x2 pixels, the farthest depth of
+// any sample; level k + 1 the farthest of 2x2 texels of level k. Texel (x, y) of level k
+// covers pixels [x, x + 1) * 2^(k + 1) exactly, edges clipped to the image.
+struct PyramidLevel {
+    uint offset; // first float of the level, after the header
+    uint width;
+    uint height;
+    uint unused;
+};
+struct PyramidHeader {
+    uint levels;
+    uint unused[3];
+    PyramidLevel level[PYRAMID_MAX_LEVELS];
+};
+
+struct CullPush {
+    uint64_t frameAddress;  // FrameData
+    uint64_t drawsAddress;  // DrawData[] of the whole list
+    uint64_t cullAddress;   // DrawCull[]
+    uint64_t sourceAddress; // the whole list's indirect commands (uint words)
+    uint64_t targetAddress; // this pass's commands, compacted in list order
+    uint64_t stateAddress;  // uint per draw: CULL_* bits
+    uint64_t groupsAddress; // uint per workgroup: draws it lets through
+    uint64_t statsAddress;  // CullStats
+    uint drawCount;
+    uint phase;
+    uint step;
+    uint commandWords; // 5: VkDrawIndexedIndirectCommand, 4: MeshTaskCommand
+    uint flags;
+    uint groupCount;
+    uint unused[2];
+};
+
+// depth_pyramid.comp: level `level` from the depth attachment (level 0) or the level below.
+struct PyramidPush {
+    uint64_t pyramidAddress;
+    uvec2 extent; // pixels of the depth attachment
+    uint level;
+    uint samples;
+};
 
 // animate.comp: objects[i].world = rest[i] with its translation moved by offsets[i] * explode
 // (the exploded view, see src/scene/explode.h). One thread per object.
@@ -224,13 +356,18 @@ static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 4
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 224 && offsetof(FrameData, pickPixel) == 192);
+static_assert(sizeof(FrameData) == 272 && offsetof(FrameData, pickPixel) == 248);
+static_assert(sizeof(DrawCull) == 32 && sizeof(MeshletBox) == 32);
+static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 32);
+static_assert(sizeof(PyramidHeader) == 16 + 16 * PYRAMID_MAX_LEVELS);
+static_assert(sizeof(CullPush) == 96 && sizeof(PyramidPush) == 24);
+static_assert(offsetof(DrawPush, commandsAddress) == DRAW_PUSH_CULL_OFFSET);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(DrawData) == 32);
 static_assert(sizeof(Meshlet) == 16);
 static_assert(sizeof(ObjectData) == 144);
 static_assert(sizeof(Material) == 16);
-static_assert(sizeof(DrawPush) == 40 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
+static_assert(sizeof(DrawPush) == 56 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
 static_assert(sizeof(AnimationPush) == 32 && offsetof(AnimationPush, explode) == 28);
 } // namespace gpu
 #endif

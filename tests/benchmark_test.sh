@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # benchmark_test.sh IDVIEW LAVAPIPE_ICD - the benchmark smoke test: at a tiny size every
-# renderer x mode and the floors (no-id, and no-id-mesh for the mesh techniques) in every mode
-# run, with validation on, and the JSON and CSV carry every field. Timings are printed, never
-# asserted.
+# renderer x mode x culling mode and the floors (no-id, and no-id-mesh for the mesh
+# techniques) in every mode and culling mode run, with validation on, and the JSON and CSV
+# carry every field. Timings are printed, never asserted.
 set -uo pipefail
 idview=$1
 icd=$2
@@ -19,24 +19,36 @@ common=(--benchmark --validation --size 64x48 --frames 3 --copies 2 --scene proc
     fail "benchmark exit $?: $(tail -3 "$work/progress.txt")"
 cat "$work/table.txt"
 
-renderers=$("$idview" --list-renderers | awk '/^renderers:/{r=1;next} /^per-draw modes:/{r=0} r{print $1}')
-modes=$("$idview" --list-renderers | awk '/^per-draw modes:/{m=1;next} /^reference/{m=0} m{print $1}')
-floors=$("$idview" --list-renderers | awk '/^reference/{f=1;next} f{print $1}' | xargs)
+list=$("$idview" --list-renderers)
+renderers=$(awk '/^renderers:/{r=1;next} /^per-draw modes:/{r=0} r{print $1}' <<<"$list")
+modes=$(awk '/^per-draw modes:/{m=1;next} /^reference/{m=0} m{print $1}' <<<"$list")
+floors=$(awk '/^reference/{f=1;next} /^culling modes/{f=0} f{print $1}' <<<"$list" | xargs)
+cullings=$(awk '/^culling modes/{c=1;next} /^what each/{c=0} c{print $1}' <<<"$list" | xargs)
 [[ $(wc -w <<<"$floors") -eq 2 ]] || fail "expected two floors in --list-renderers: $floors"
+[[ $cullings == "off frustum occlusion" ]] || fail "culling modes in --list-renderers: $cullings"
 [[ $(wc -w <<<"$renderers") -ge 2 && $(wc -w <<<"$modes") -ge 1 ]] || fail "renderer list: $renderers / $modes"
-# Every renderer and floor, in every mode, as --list-renderers names them.
-rows=$((($(wc -w <<<"$renderers") + $(wc -w <<<"$floors")) * $(wc -w <<<"$modes")))
+# Every renderer and floor, in every mode and culling mode, as --list-renderers names them.
+rows=$((($(wc -w <<<"$renderers") + $(wc -w <<<"$floors")) * $(wc -w <<<"$modes") * 3))
 [[ $(grep -c '"renderer":' "$work/b.json") -eq $rows ]] ||
     fail "expected $rows rows in the JSON, got $(grep -c '"renderer":' "$work/b.json")"
 isFloor() { [[ " $floors " == *" $1 "* ]]; }
 for r in $floors $renderers; do
-    for m in $modes; do
-        row=$(grep "\"renderer\":\"$r\",\"mode\":\"$m\"" "$work/b.json")
-        [[ -n $row ]] || { fail "no row for $r + $m"; continue; }
-        for key in gpu_ms_median gpu_ms_p90 cpu_ms_median draws triangles id_bytes geometry_bytes \
+    for m in $modes; do for c in $cullings; do
+        row=$(grep "\"renderer\":\"$r\",\"mode\":\"$m\",\"culling\":\"$c\"" "$work/b.json")
+        [[ -n $row ]] || { fail "no row for $r + $m, culling $c"; continue; }
+        for key in gpu_ms_median gpu_ms_p90 cpu_ms_median cull_ms_median pyramid_ms_median draws \
+            draws_drawn triangles triangles_drawn meshlets_drawn id_bytes geometry_bytes \
             added_vertices added_vertex_bytes meshlets ratio_to_floor; do
-            [[ $row =~ \"$key\":[0-9] ]] || fail "$r + $m lacks $key: $row"
+            [[ $row =~ \"$key\":[0-9] ]] || fail "$r + $m + $c lacks $key: $row"
         done
+        [[ $row =~ \"culling_applied\":\"[a-zA-Z] ]] || fail "$r + $m + $c lacks culling_applied: $row"
+        # Without culling everything is drawn; with it never more than there is.
+        [[ $row =~ \"draws\":([0-9]+),\"draws_drawn\":([0-9]+)\.0, ]] || fail "draws: $row"
+        if [[ $c == off ]]; then
+            [[ ${BASH_REMATCH[1]} -eq ${BASH_REMATCH[2]} ]] || fail "$r + $m drew other than all without culling"
+        else
+            [[ ${BASH_REMATCH[2]} -le ${BASH_REMATCH[1]} ]] || fail "$r + $m + $c drew more than all"
+        fi
         for key in id_image_hash color_image_hash; do
             [[ $row =~ \"$key\":\"[0-9a-f]{16}\" ]] || fail "$r + $m lacks $key: $row"
         done
@@ -46,11 +58,12 @@ for r in $floors $renderers; do
         [[ $row =~ \"gpu_ms_median\":0\.0000, ]] && fail "$r + $m has no GPU time"
         isFloor "$r" && [[ ! $row =~ \"floor\":\"$r\",\"ratio_to_floor\":1\.000 ]] && fail "floor ratio: $row"
         isFloor "$r" && [[ ! $row =~ \"draws\":136, ]] && fail "floor draws (2 x 68 objects): $row"
-    done
+    done; done
 done
 for key in '"device":{"name":"llvmpipe' '"driver":"' '"api":"1\.' '"size":"64x48"' '"msaa":4' \
     '"scene":"procedural:preset=small"' '"copies":2' '"search_batch":16' '"frames":3' \
-    '"visible":1.000' '"part_weight":0.500' '"colorize_draws":false' '"ignore_materials":false'; do
+    '"visible":1.000' '"part_weight":0.500' '"colorize_draws":false' '"ignore_materials":false' \
+    '"camera_path":"none"'; do
     grep -qE "$key" "$work/b.json" || fail "JSON lacks $key"
 done
 grep -q '"skipped":\[\]' "$work/b.json" || fail "JSON lacks an empty skipped list (lavapipe 25 runs all)"
@@ -65,12 +78,13 @@ floorIds=$(grep -E "$floorRows" "$work/b.json" | grep -o '"id_image_hash":"[0-9a
 grep -q "benchmark: \[$rows/$rows\]" "$work/progress.txt" || fail "progress lines on stderr"
 
 # CSV: a header and one row per renderer x mode, the floor first (two vertex-pipeline
-# renderers: only the no-id floor).
+# renderers: only the no-id floor; one culling mode).
 set -- $renderers
 two="$1,$2"
+common+=(--culling occlusion)
 "$idview" "${common[@]}" --renderer "$two" --mode push --benchmark-out "$work/b.csv" \
     >/dev/null 2>&1 || fail "csv run"
-[[ $(head -1 "$work/b.csv") == renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,color_image_hash ]] ||
+[[ $(head -1 "$work/b.csv") == renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,color_image_hash,culling,draws_drawn,meshlets_drawn,triangles_drawn,cull_ms_median,pyramid_ms_median ]] ||
     fail "csv header: $(head -1 "$work/b.csv")"
 [[ $(wc -l <"$work/b.csv") -eq 4 ]] || fail "csv rows (no-id, $two in push): $(cat "$work/b.csv")"
 
@@ -87,6 +101,12 @@ for r in $(head -2 "$work/b.csv" | tail -1 | cut -d, -f1) $1 $2; do
     [[ -n $plain && ${plain%,*} == "${colored%,*}" ]] || fail "$r: --colorize-draws changed the IDs ($plain / $colored)"
     [[ ${plain#*,} != "${colored#*,}" ]] || fail "$r: --colorize-draws did not change the colours"
 done
+# A camera path: every timed frame's GPU time in path order, and the path in the settings.
+"$idview" "${common[@]}" --renderer "$1" --mode mdi-baseinstance --camera-path dolly \
+    --benchmark-out "$work/p.json" >/dev/null 2>&1 || fail "camera path run"
+grep -q '"camera_path":"dolly"' "$work/p.json" || fail "JSON lacks camera_path dolly"
+[[ $(grep -c '"gpu_ms_frames":\[[0-9.]*,[0-9.]*,[0-9.]*\]' "$work/p.json") -eq 2 ]] ||
+    fail "rows lack 3 frame times: $(grep -o '"gpu_ms_frames":[^]]*' "$work/p.json")"
 out=$("$idview" --benchmark --renderer "$1",nope 2>&1)
 [[ $? -eq 2 && $out == *"--renderer: unknown name 'nope'"* ]] || fail "bad renderer list: $out"
 "$idview" --headless --renderer all >/dev/null 2>&1

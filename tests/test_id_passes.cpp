@@ -283,8 +283,9 @@ TEST(Hide, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
                 caster.cast(scene::pixelRay(viewProj, glm::vec2(W, H), sample), &middle);
             ASSERT_TRUE(pick.part.has_value()) << where;
             EXPECT_FALSE(middle.contains(*pick.part)) << where;
-            if (configs[c].pipeline.msaa == 1)
+            if (configs[c].pipeline.msaa == 1) {
                 EXPECT_EQ(*pick.part, r.ids[size_t(pick.pixel.y) * W + pick.pixel.x]) << where;
+            }
             ASSERT_TRUE(hit.has_value()) << where;
             EXPECT_EQ(*pick.part, hit->uniquePartId) << where;
         }
@@ -301,7 +302,9 @@ TEST(Hide, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
         const auto& ids = isolated[c].ids;
         for (size_t i = 0; i < ids.size(); ++i) {
             ASSERT_TRUE(ids[i] == NONE || middle.contains(ids[i])) << nameOf(configs[c]);
-            if (middle.contains(f.ids[i])) ASSERT_EQ(ids[i], f.ids[i]) << nameOf(configs[c]);
+            if (middle.contains(f.ids[i])) {
+                ASSERT_EQ(ids[i], f.ids[i]) << nameOf(configs[c]);
+            }
         }
     }
 }

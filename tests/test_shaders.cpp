@@ -72,6 +72,14 @@ TEST(Shaders, VariantKeysCoverEveryChoice) {
                                                << " passthrough " << passthrough;
                         ++expected;
                     }
+            // The culling variant (a task shader) of the mesh techniques and their floor.
+            render::PipelineKey culling{&t, &m};
+            culling.taskCulling = true;
+            if (t.usesMeshShader()) {
+                EXPECT_EQ(has(culling.effective(true)), 1)
+                    << t.name << " + " << m.name << " culling";
+                ++expected;
+            }
             // The hiding variant, once per technique and mode with part IDs.
             render::PipelineKey hiding{&t, &m};
             hiding.hiding = true;
@@ -85,10 +93,12 @@ TEST(Shaders, VariantKeysCoverEveryChoice) {
 TEST(Shaders, EveryVariantCompiles) {
     vk::ShaderCompiler compiler(IDVIEW_SOURCE_SHADER_DIR);
     const auto variants = render::allShaderVariants();
-    // Vertex and fragment for each key, and geometry where the technique looks up there.
+    // Vertex (or mesh) and fragment for each key, geometry where the technique looks up
+    // there, task where it culls meshlets.
     size_t stages = 0;
     for (const auto& key : render::allPipelineKeys())
-        stages += key.technique->stage == render::LookupStage::Geometry ? 3 : 2;
+        stages += (key.technique->stage == render::LookupStage::Geometry ? 3 : 2) +
+                  (key.taskCulling ? 1 : 0);
     ASSERT_EQ(variants.size(), stages);
     for (const auto& request : variants) {
         std::vector<uint32_t> spirv;

@@ -7,11 +7,13 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "app/headless.h"
 #include "app/json.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
+#include "scene/camera_path.h"
 #include "scene/explode.h"
 #include "vk/check.h"
 
@@ -39,20 +41,43 @@ rows(const Options& options, const vk::DeviceInfo& device,
         const render::Technique* floor = &render::floorOf(*technique);
         if (std::find(floors.begin(), floors.end(), floor) == floors.end()) floors.push_back(floor);
     }
+    std::vector<render::CullMode> culling;
+    for (const render::CullModeEntry* entry : options.benchmarkCulling)
+        culling.push_back(entry->mode);
+    if (culling.empty()) culling.push_back(options.render.culling.mode);
     std::vector<render::RenderSettings> list;
-    auto add = [&](const render::Technique& technique, const render::DrawMode& mode) {
+    auto add = [&](const render::Technique& technique, const render::DrawMode& mode,
+                   render::CullMode cull) {
         render::RenderSettings settings = options.render;
         settings.pipeline.technique = &technique;
         settings.pipeline.mode = &mode;
+        settings.culling.mode = cull;
         list.push_back(settings);
     };
-    for (const render::DrawMode* mode : options.benchmarkModes)
-        for (const render::Technique* floor : floors) add(*floor, *mode);
+    for (render::CullMode cull : culling)
+        for (const render::DrawMode* mode : options.benchmarkModes)
+            for (const render::Technique* floor : floors) add(*floor, *mode, cull);
+    // Each technique's culling modes side by side.
     for (const render::Technique* technique : techniques) {
         if (technique->isFloor()) continue;
-        for (const render::DrawMode* mode : options.benchmarkModes) add(*technique, *mode);
+        for (const render::DrawMode* mode : options.benchmarkModes)
+            for (render::CullMode cull : culling) add(*technique, *mode, cull);
     }
     return list;
+}
+
+// Median over the frames of what the culling let through.
+void countDrawn(BenchmarkRow& row, const std::vector<gpu::CullStats>& stats, bool mesh) {
+    std::vector<double> draws, meshlets, triangles;
+    for (const gpu::CullStats& s : stats) {
+        const render::CullCounts c = render::countsOf(s, mesh);
+        draws.push_back(double(c.draws));
+        meshlets.push_back(double(c.meshlets));
+        triangles.push_back(double(c.triangles));
+    }
+    row.drawsDrawn = percentile(draws, 0.5);
+    row.meshletsDrawn = percentile(meshlets, 0.5);
+    row.trianglesDrawn = percentile(triangles, 0.5);
 }
 
 std::string hex(uint64_t value) {
@@ -91,6 +116,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     report.copies = loaded.settings.copies;
     report.frames = options.frames;
     report.settings = options.render;
+    report.cameraPath = scene::cameraPathName(options.cameraPath);
     // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
     const uint32_t warmup = std::clamp(options.frames / 5, 5u, 50u);
 
@@ -107,12 +133,16 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         Readback readback(rig.device, rig.extent);
 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
-        // As headless and the viewer open the scene.
-        render::FrameParams params = cameraFrame(initialCamera(loaded, aspect), rig.extent);
+        // As headless and the viewer open the scene; with a path, timed frame f is frame f
+        // of the path (the warm-up frames stay at its start).
+        const scene::Camera start = initialCamera(loaded, aspect);
+        const scene::Bounds bounds =
+            options.cameraPath == scene::CameraPath::None ? scene::Bounds{} : scene.bounds();
+        render::FrameParams params = cameraFrame(start, rig.extent);
         // --visible-parts: every frame counts the parts it shows, as the viewer's panel does.
         if (options.visibleParts)
             params.partSets = {{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}}};
-        std::map<std::pair<std::string, std::string>, double> floorMs; // (floor, mode)
+        std::map<std::tuple<std::string, std::string, render::CullMode>, double> floorMs;
         uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
             const render::PipelineKey& key = list[i].pipeline;
@@ -128,6 +158,12 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
                 render::FrameSlot& slot = rig.slots.begin(frameNumber);
                 // --animate: objects move while being timed, the compute pass included.
                 params.explode = explodeAt(options.animation, frameNumber);
+                const render::FrameParams moved =
+                    cameraFrame(scene::cameraOnPath(options.cameraPath, start, bounds,
+                                                    f < warmup ? 0 : f - warmup, options.frames),
+                                rig.extent);
+                params.viewProj = moved.viewProj;
+                params.eye = moved.eye;
                 const auto start = Clock::now();
                 rig.renderer.record(slot, rig.targets, params);
                 if (f + 1 == total) readback.record(slot.cmd, *rig.targets); // after the timing
@@ -142,22 +178,38 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const std::vector<double> gpuMs(all.end() - long(timed), all.end());
             const auto& passes = rig.slots.idPassMilliseconds();
             const std::vector<double> idPassMs(passes.end() - long(timed), passes.end());
+            std::vector<double> cullMs, pyramidMs;
+            for (auto t = rig.slots.frameTimes().end() - long(timed);
+                 t != rig.slots.frameTimes().end(); ++t) {
+                cullMs.push_back(t->cullMs);
+                pyramidMs.push_back(t->pyramidMs);
+            }
+            const std::vector<gpu::CullStats> stats(rig.slots.cullStats().end() - long(timed),
+                                                    rig.slots.cullStats().end());
 
             BenchmarkRow row;
             row.renderer = key.technique->name;
             row.mode = key.mode->name;
+            const render::CullMode cull = list[i].culling.mode;
+            row.culling = render::cullModeName(cull);
+            row.cullingApplied =
+                render::describeCulling(*key.mode, cull, key.technique->usesMeshShader());
+            row.cullMsMedian = percentile(cullMs, 0.5);
+            row.pyramidMsMedian = percentile(pyramidMs, 0.5);
+            countDrawn(row, stats, key.technique->usesMeshShader());
+            if (options.cameraPath != scene::CameraPath::None) row.gpuMsFrames = gpuMs;
             row.gpuMsMedian = percentile(gpuMs, 0.5);
             row.gpuMsP90 = percentile(gpuMs, 0.9);
             row.cpuMsMedian = percentile(cpuMs, 0.5);
             row.idPassMsMedian = percentile(idPassMs, 0.5);
             row.draws = rig.renderer.stats().draws;
             row.triangles = rig.renderer.stats().triangles;
-            const render::RenderStats& stats = rig.renderer.stats();
-            row.idBytes = stats.idBufferBytes;
-            row.geometryBytes = stats.geometryBytes;
-            row.addedVertices = stats.addedVertices;
-            row.addedVertexBytes = stats.addedVertexBytes;
-            row.meshlets = stats.meshlets;
+            const render::RenderStats& renderStats = rig.renderer.stats();
+            row.idBytes = renderStats.idBufferBytes;
+            row.geometryBytes = renderStats.geometryBytes;
+            row.addedVertices = renderStats.addedVertices;
+            row.addedVertexBytes = renderStats.addedVertexBytes;
+            row.meshlets = rig.renderer.cullTotals().meshlets;
             row.frames = options.frames;
             row.switchMs = rig.renderer.lastSwitch().ms;
             row.pipelineCached = rig.renderer.lastSwitch().pipelineCached;
@@ -166,15 +218,17 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
             row.colorImageHash = imageHash(color.data(), color.size());
             row.floor = render::floorOf(*key.technique).name;
-            if (key.technique->isFloor()) floorMs[{row.floor, row.mode}] = row.gpuMsMedian;
-            const double floor = floorMs[{row.floor, row.mode}];
+            if (key.technique->isFloor()) floorMs[{row.floor, row.mode, cull}] = row.gpuMsMedian;
+            const double floor = floorMs[{row.floor, row.mode, cull}];
             row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
             report.rows.push_back(row);
-            std::fprintf(
-                stderr,
-                "benchmark: [%zu/%zu] %s + %s: GPU %.3f ms (+ %.3f ID passes), CPU %.3f ms\n",
-                i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(), row.gpuMsMedian,
-                row.idPassMsMedian, row.cpuMsMedian);
+            std::fprintf(stderr,
+                         "benchmark: [%zu/%zu] %s + %s, culling %s: GPU %.3f ms (cull %.3f, "
+                         "pyramid %.3f; + %.3f ID passes), CPU %.3f ms, %.0f of %zu draws\n",
+                         i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(),
+                         row.culling.c_str(), row.gpuMsMedian, row.cullMsMedian,
+                         row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian, row.drawsDrawn,
+                         row.draws);
         }
     }
     report.validationMessages = instance.validationMessages();
@@ -195,17 +249,24 @@ std::string benchmarkJson(const BenchmarkReport& r) {
         << ",\"colorize_draws\":" << (s.shading.colorizeDraws ? "true" : "false")
         << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false")
         << ",\"edges\":" << (s.edges.on ? "true" : "false") << ",\"edge_width\":" << s.edges.width
-        << ",\"hidden_parts\":" << r.hiddenParts << "},\n"
+        << ",\"hidden_parts\":" << r.hiddenParts << ",\"camera_path\":" << jsonString(r.cameraPath)
+        << "},\n"
         << " \"results\":[";
     for (size_t i = 0; i < r.rows.size(); ++i) {
         const BenchmarkRow& row = r.rows[i];
         out << (i ? ",\n  " : "\n  ") << "{\"renderer\":" << jsonString(row.renderer)
-            << ",\"mode\":" << jsonString(row.mode)
+            << ",\"mode\":" << jsonString(row.mode) << ",\"culling\":" << jsonString(row.culling)
+            << ",\"culling_applied\":" << jsonString(row.cullingApplied)
             << ",\"gpu_ms_median\":" << fixed(row.gpuMsMedian, 4)
             << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
             << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4)
             << ",\"id_pass_ms_median\":" << fixed(row.idPassMsMedian, 4)
-            << ",\"draws\":" << row.draws << ",\"triangles\":" << row.triangles
+            << ",\"cull_ms_median\":" << fixed(row.cullMsMedian, 4)
+            << ",\"pyramid_ms_median\":" << fixed(row.pyramidMsMedian, 4)
+            << ",\"draws\":" << row.draws << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1)
+            << ",\"triangles\":" << row.triangles
+            << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)
+            << ",\"meshlets_drawn\":" << fixed(row.meshletsDrawn, 1)
             << ",\"id_bytes\":" << row.idBytes << ",\"geometry_bytes\":" << row.geometryBytes
             << ",\"added_vertices\":" << row.addedVertices
             << ",\"added_vertex_bytes\":" << row.addedVertexBytes
@@ -214,7 +275,14 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << hex(row.idImageHash) << "\""
             << ",\"color_image_hash\":\"" << hex(row.colorImageHash) << "\""
             << ",\"switch_ms\":" << fixed(row.switchMs, 3)
-            << ",\"pipeline_cached\":" << (row.pipelineCached ? "true" : "false") << "}";
+            << ",\"pipeline_cached\":" << (row.pipelineCached ? "true" : "false");
+        if (!row.gpuMsFrames.empty()) {
+            out << ",\"gpu_ms_frames\":[";
+            for (size_t f = 0; f < row.gpuMsFrames.size(); ++f)
+                out << (f ? "," : "") << fixed(row.gpuMsFrames[f], 4);
+            out << "]";
+        }
+        out << "}";
     }
     out << "\n ],\n \"skipped\":[";
     for (size_t i = 0; i < r.skipped.size(); ++i)
@@ -228,14 +296,17 @@ std::string benchmarkCsv(const BenchmarkReport& r) {
     std::ostringstream out;
     out << "renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,"
            "geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,"
-           "color_image_hash\n";
+           "color_image_hash,culling,draws_drawn,meshlets_drawn,triangles_drawn,cull_ms_median,"
+           "pyramid_ms_median\n";
     for (const BenchmarkRow& row : r.rows)
         out << row.renderer << ',' << row.mode << ',' << fixed(row.gpuMsMedian, 4) << ','
             << fixed(row.gpuMsP90, 4) << ',' << fixed(row.cpuMsMedian, 4) << ',' << row.draws << ','
             << row.triangles << ',' << row.idBytes << ',' << row.geometryBytes << ','
             << row.addedVertices << ',' << row.meshlets << ',' << row.floor << ','
             << fixed(row.ratioToFloor, 3) << ',' << hex(row.idImageHash) << ','
-            << hex(row.colorImageHash) << '\n';
+            << hex(row.colorImageHash) << ',' << row.culling << ',' << fixed(row.drawsDrawn, 1)
+            << ',' << fixed(row.meshletsDrawn, 1) << ',' << fixed(row.trianglesDrawn, 1) << ','
+            << fixed(row.cullMsMedian, 4) << ',' << fixed(row.pyramidMsMedian, 4) << '\n';
     return out.str();
 }
 
@@ -243,16 +314,22 @@ std::string benchmarkTable(const BenchmarkReport& r) {
     std::ostringstream out;
     out << r.deviceName << " (" << r.driver << ", Vulkan " << r.api << "), " << r.size << ", "
         << r.settings.pipeline.msaa << "x MSAA, " << r.scene << " x" << r.copies
-        << ", search batch " << r.settings.pipeline.searchBatch << ", " << r.frames << " frames\n";
-    char line[200];
-    std::snprintf(line, sizeof line, "%-14s %-17s %9s %9s %9s %8s %11s %7s %s\n", "renderer",
-                  "mode", "GPU ms", "GPU p90", "CPU ms", "draws", "ID bytes", "x floor", "floor");
+        << ", search batch " << r.settings.pipeline.searchBatch << ", " << r.frames << " frames"
+        << (r.cameraPath == "none" ? "" : ", camera path " + r.cameraPath) << "\n";
+    char line[240];
+    std::snprintf(line, sizeof line, "%-14s %-17s %-9s %9s %9s %9s %7s %7s %8s %7s %s\n",
+                  "renderer", "mode", "culling", "GPU ms", "GPU p90", "CPU ms", "cull ms",
+                  "draws %", "tris %", "x floor", "floor");
     out << line;
+    auto percentOf = [](double part, double total) { return total > 0 ? 100 * part / total : 0.0; };
     for (const BenchmarkRow& row : r.rows) {
-        std::snprintf(line, sizeof line, "%-14s %-17s %9.3f %9.3f %9.3f %8zu %11llu %7.3f %s\n",
-                      row.renderer.c_str(), row.mode.c_str(), row.gpuMsMedian, row.gpuMsP90,
-                      row.cpuMsMedian, row.draws, static_cast<unsigned long long>(row.idBytes),
-                      row.ratioToFloor, row.floor.c_str());
+        std::snprintf(line, sizeof line,
+                      "%-14s %-17s %-9s %9.3f %9.3f %9.3f %7.3f %7.1f %8.1f %7.3f %s\n",
+                      row.renderer.c_str(), row.mode.c_str(), row.culling.c_str(), row.gpuMsMedian,
+                      row.gpuMsP90, row.cpuMsMedian, row.cullMsMedian + row.pyramidMsMedian,
+                      percentOf(row.drawsDrawn, double(row.draws)),
+                      percentOf(row.trianglesDrawn, double(row.triangles)), row.ratioToFloor,
+                      row.floor.c_str());
         out << line;
     }
     for (const auto& [name, why] : r.skipped) out << name << ": skipped, " << why << "\n";

@@ -12,18 +12,26 @@ namespace app {
 
 struct BenchmarkRow {
     std::string renderer, mode;
-    double gpuMsMedian = 0, gpuMsP90 = 0; // timestamps around the scene pass
-    double cpuMsMedian = 0;               // recording and submitting one frame
-    double idPassMsMedian = 0;            // the passes over the ID image after it (--edges), GPU
+    std::string culling;                  // the culling mode asked for (render::cullModeName)
+    std::string cullingApplied;           // what the technique and mode get of it (describeCulling)
+    double gpuMsMedian = 0, gpuMsP90 = 0; // timestamps around the scene pass, culling included
+    double cullMsMedian = 0, pyramidMsMedian = 0; // GPU: the cull passes, the depth pyramid
+    // Medians per frame of what was drawn (draws, meshlets, triangles); totals in `draws`,
+    // `meshlets` and `triangles`.
+    double drawsDrawn = 0, meshletsDrawn = 0, trianglesDrawn = 0;
+    std::vector<double> gpuMsFrames; // with --camera-path: every timed frame, in path order
+    double cpuMsMedian = 0;          // recording and submitting one frame
+    double idPassMsMedian = 0;       // the passes over the ID image after it (--edges), GPU
     size_t draws = 0;
     uint64_t triangles = 0;
     uint64_t idBytes = 0; // the technique's ID data
     // Derived geometry drawn instead of the scene's indices (vertex-*, mesh-*): its bytes,
     // and the vertices vertex-* duplicated and the meshlets mesh-* draws.
     uint64_t geometryBytes = 0, addedVertices = 0, addedVertexBytes = 0, meshlets = 0;
-    std::string floor;       // the floor row of this row's kind (render::floorOf)
-    double ratioToFloor = 0; // gpuMsMedian / the floor's gpuMsMedian in the same mode
-    uint32_t frames = 0;     // timed frames (after warm-up)
+    std::string floor; // the floor row of this row's kind (render::floorOf)
+    // gpuMsMedian / the floor's gpuMsMedian in the same mode and culling mode
+    double ratioToFloor = 0;
+    uint32_t frames = 0; // timed frames (after warm-up)
     // FNV-1a of the last frame's ID and colour images: every part-ID row of one run must
     // show the same ID image, and the colour shows that the shading settings took effect.
     uint64_t idImageHash = 0, colorImageHash = 0;
@@ -36,7 +44,8 @@ struct BenchmarkReport {
     std::string deviceName, driver, api;
     std::string size, scene;
     uint32_t copies = 1, frames = 0;
-    render::RenderSettings settings; // every row's, but for technique and mode
+    render::RenderSettings settings; // every row's, but for technique, mode and culling
+    std::string cameraPath;          // --camera-path, "none" when the camera stands still
     uint32_t hiddenParts = 0;        // --hide / --isolate
     std::vector<BenchmarkRow> rows;  // floor rows first, then renderer-major order
     // Techniques left out because the device cannot run them, each with the reason.

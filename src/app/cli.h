@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "render/culling.h"
 #include "render/pick.h"
 #include "render/settings.h"
 #include "scene/cad_loader.h"
+#include "scene/camera_path.h"
 #include "scene/copies.h"
 #include "scene/gltf_loader.h"
 
@@ -52,6 +54,7 @@ struct Options {
     // and every mode when not given). Other runs use render.pipeline alone.
     std::vector<const render::Technique*> benchmarkTechniques;
     std::vector<const render::DrawMode*> benchmarkModes;
+    std::vector<const render::CullModeEntry*> benchmarkCulling; // --culling (default: all)
 
     // The device and how it is driven.
     std::string device; // index or name substring; empty: best device
@@ -63,6 +66,12 @@ struct Options {
     uint32_t width = 1280;
     uint32_t height = 720;
     uint32_t frames = 10;
+    // Headless and the benchmark: the camera moves along this path, frame by frame over
+    // `frames` frames (scene/camera_path.h); the images hold the last frame.
+    scene::CameraPath cameraPath = scene::CameraPath::None;
+    // In-process callers (the tests): keep every frame's images, not only the last's
+    // (HeadlessResult::frames); each frame is then waited for.
+    bool keepEveryFrame = false;
     std::string screenshot; // PNG path
     std::string idImage;    // raw little-endian uint32 path
     // Headless picking: one frame per point picks it and prints a JSON line; `selects` is
@@ -100,7 +109,7 @@ struct UsageError : std::runtime_error {
 
 // Accepts "--flag value" and "--flag=value". Throws UsageError.
 // With --benchmark, flags not given take the benchmark's defaults (the seed's results table:
-// 2560x1440, 4x MSAA, 3 copies, 200 frames, all renderers and modes).
+// 2560x1440, 4x MSAA, 3 copies, 200 frames, all renderers, modes and culling modes).
 Options parseArgs(const std::vector<std::string>& args);
 Options parseArgs(int argc, char** argv);
 
@@ -108,6 +117,7 @@ Options parseArgs(int argc, char** argv);
 // one; for --renderer every part-ID technique, the benchmark adds the no-id floor itself).
 std::vector<const render::Technique*> techniqueList(const std::string& value);
 std::vector<const render::DrawMode*> modeList(const std::string& value);
+std::vector<const render::CullModeEntry*> cullingList(const std::string& value);
 
 std::string usage();
 

@@ -13,6 +13,7 @@
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
+#include "scene/camera_path.h"
 #include "scene/explode.h"
 #include "vk/check.h"
 #include "vk/context.h"
@@ -79,7 +80,16 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
         render::FrameSlots& slots = rig.slots;
         render::Renderer& renderer = rig.renderer;
         Readback readback(device, rig.extent);
-        render::FrameParams params = cameraFrame(camera, rig.extent);
+        // The camera of frame `frame` (of the timed frames) along the path, if any.
+        const scene::Bounds bounds =
+            options.cameraPath == scene::CameraPath::None ? scene::Bounds{} : scene.bounds();
+        auto frameCamera = [&](uint32_t frame) {
+            return cameraFrame(
+                scene::cameraOnPath(options.cameraPath, camera, bounds, frame, options.frames),
+                rig.extent);
+        };
+        // Picks and selections see the last frame's view, which the images hold.
+        render::FrameParams params = frameCamera(options.frames - 1);
         uint64_t frameNumber = 0;
         // One frame that picks `pixel`, waited for: headless has nothing else to overlap.
         auto pickFrame = [&](const Options::Pixel& pixel) {
@@ -144,10 +154,19 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 params.explode = explodeAt(options.animation, frameNumber);
                 const bool lastFrame = frame + 1 == options.frames;
                 render::FrameParams frameParams = params;
+                if (options.cameraPath != scene::CameraPath::None) {
+                    const render::FrameParams moved = frameCamera(frame);
+                    frameParams.viewProj = moved.viewProj;
+                    frameParams.eye = moved.eye;
+                }
                 if (lastFrame && options.visibleParts) frameParams.partSets = {whole};
                 renderer.record(slot, rig.targets, frameParams);
-                if (lastFrame) readback.record(slot.cmd, *rig.targets);
+                if (lastFrame || options.keepEveryFrame) readback.record(slot.cmd, *rig.targets);
                 slots.submit(slot);
+                if (options.keepEveryFrame) {
+                    slots.finish();
+                    result.frames.push_back({readback.idValues(), readback.colorBytes()});
+                }
             }
             slots.finish();
             if (options.visibleParts) {
@@ -160,6 +179,10 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             result.gpuMs.assign(gpuMs.end() - long(timed), gpuMs.end());
             const auto& idPassMs = slots.idPassMilliseconds();
             result.idPassMs.assign(idPassMs.end() - long(timed), idPassMs.end());
+            result.frameTimes.assign(slots.frameTimes().end() - long(timed),
+                                     slots.frameTimes().end());
+            result.cullStats.assign(slots.cullStats().end() - long(timed), slots.cullStats().end());
+            result.cullTotals = renderer.cullTotals();
             result.color = readback.colorBytes();
             result.ids = readback.idValues();
         }
@@ -196,14 +219,26 @@ int runHeadless(const Options& options) {
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
     const bool json = !options.picks.empty() || result.rectParts || result.visibleParts;
-    std::fprintf(
-        json ? stderr : stdout,
-        "idview: %u frames of %ux%u on %s, %s%s + %s: %zu draws, %llu triangles, %u parts, "
-        "scene pass GPU median %.3f ms\n",
-        options.frames, result.width, result.height, result.deviceName.c_str(), key.technique->name,
-        result.stats.gsPassthrough ? " (passthrough)" : "", key.mode->name, result.stats.draws,
-        static_cast<unsigned long long>(scene.drawnTriangleCount()), scene.uniquePartCount(),
-        median(result.gpuMs));
+    // What the last frame drew, culling's counters against their totals.
+    const render::CullCounts drawn =
+        result.cullStats.empty()
+            ? render::CullCounts{}
+            : render::countsOf(result.cullStats.back(), key.technique->usesMeshShader());
+    std::string meshlets;
+    if (result.cullTotals.meshlets)
+        meshlets = std::to_string(drawn.meshlets) + " of " +
+                   std::to_string(result.cullTotals.meshlets) + " meshlets, ";
+    std::fprintf(json ? stderr : stdout,
+                 "idview: %u frames of %ux%u on %s, %s%s + %s, culling %s: %zu draws, %llu "
+                 "triangles, %u parts; the last frame drew %llu draws, %s%llu triangles; scene "
+                 "pass GPU median %.3f ms\n",
+                 options.frames, result.width, result.height, result.deviceName.c_str(),
+                 key.technique->name, result.stats.gsPassthrough ? " (passthrough)" : "",
+                 key.mode->name, render::cullModeName(options.render.culling.mode),
+                 result.stats.draws, static_cast<unsigned long long>(scene.drawnTriangleCount()),
+                 scene.uniquePartCount(), static_cast<unsigned long long>(drawn.draws),
+                 meshlets.c_str(), static_cast<unsigned long long>(drawn.triangles),
+                 median(result.gpuMs));
     return exitCode(result.validationMessages);
 }
 
@@ -229,7 +264,11 @@ std::string partSetJson(const scene::PartSet& parts, uint32_t count,
         json += "\"rect\":[" + std::to_string(rect->min.x) + "," + std::to_string(rect->min.y) +
                 "," + std::to_string(rect->max.x) + "," + std::to_string(rect->max.y) + "],";
     std::string list;
-    for (uint32_t id : parts.ids()) list += (list.empty() ? "" : ",") + std::to_string(id);
+    // Appended piece by piece: GCC 12 warns (-Wrestrict) on "literal" + to_string() here.
+    for (uint32_t id : parts.ids()) {
+        if (!list.empty()) list += ',';
+        list += std::to_string(id);
+    }
     const std::string counted = "\"count\":" + std::to_string(count);
     // --select-rect names the parts first, --visible-parts the count.
     if (rect) return json + "\"parts\":[" + list + "]," + counted + "}";

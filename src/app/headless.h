@@ -27,7 +27,18 @@ struct HeadlessResult {
     // Options::visibleParts: the parts in the last frame's ID image, and the GPU's count.
     std::optional<scene::PartSet> visibleParts;
     uint32_t visibleCount = 0;
+    // Options::keepEveryFrame: the images of every frame, in order (the last is ids, color).
+    struct Images {
+        std::vector<uint32_t> ids;
+        std::vector<uint8_t> color;
+    };
+    std::vector<Images> frames;
     std::vector<double> idPassMs; // per frame: the passes over the ID image (edges)
+    // Per timed frame: the GPU time of each step, and the culling counters; and what those
+    // are counted against (render::Renderer::cullTotals).
+    std::vector<render::FrameTimes> frameTimes;
+    std::vector<gpu::CullStats> cullStats;
+    render::CullCounts cullTotals;
     std::string deviceName;
     render::RenderStats stats;
     uint32_t validationMessages = 0; // counted until the device is destroyed

@@ -7,6 +7,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "app/viewer/viewer.h"
+#include "render/culling.h"
 #include "render/technique.h"
 #include "scene/gltf_writer.h"
 #include "vk/context.h"
@@ -28,6 +29,16 @@ int listRenderers() {
     std::printf("reference (the benchmark's floors, no part IDs):\n");
     for (const render::Technique& t : render::techniques())
         if (t.isFloor()) line(t);
+    std::printf("culling modes (--culling, default %s):\n",
+                render::cullModeName(render::CullSettings{}.mode));
+    for (const auto& c : render::cullModes()) std::printf("  %-15s %s\n", c.name, c.description);
+    std::printf("what each per-draw mode gets of them (vertex pipelines | mesh techniques):\n");
+    for (const auto& m : render::drawModes())
+        for (const auto& c : render::cullModes())
+            if (c.mode != render::CullMode::Off)
+                std::printf("  %-17s %-10s %s | %s\n", m.name, c.name,
+                            render::describeCulling(m, c.mode, false).c_str(),
+                            render::describeCulling(m, c.mode, true).c_str());
     return 0;
 }
 

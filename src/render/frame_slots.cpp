@@ -33,7 +33,7 @@ FrameSlots::FrameSlots(vk::Device& device) : device_(device) {
 
         auto query = vk::init<VkQueryPoolCreateInfo>(VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO);
         query.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        query.queryCount = 3;
+        query.queryCount = StampCount;
         slot.timestamps = vk::make(device, vkCreateQueryPool, query, "scene timestamps" + suffix);
 
         slot.frameData =
@@ -43,6 +43,9 @@ FrameSlots::FrameSlots(vk::Device& device) : device_(device) {
                        0, "frame data" + suffix);
         slot.pickReadback = vk::hostBuffer(
             device, sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, "pick readback" + suffix);
+        slot.cullReadback =
+            vk::hostBuffer(device, sizeof(gpu::CullStats), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           "cull counters readback" + suffix);
     }
 }
 
@@ -78,7 +81,7 @@ FrameSlot& FrameSlots::begin(uint64_t frameNumber) {
     auto info = vk::init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
     info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vk::check(vkBeginCommandBuffer(slot.cmd, &info), "vkBeginCommandBuffer");
-    vkCmdResetQueryPool(slot.cmd, slot.timestamps.get(), 0, 3);
+    vkCmdResetQueryPool(slot.cmd, slot.timestamps.get(), 0, StampCount);
     return slot;
 }
 
@@ -148,19 +151,35 @@ void FrameSlots::collect(FrameSlot& slot) {
     if (!slot.partSetQueries.empty() &&
         (!latestPartSets_ || latestPartSets_->frame < slot.frameNumber))
         latestPartSets_ = readPartSets(slot);
-    uint64_t ticks[3];
+    uint64_t ticks[StampCount];
     VkResult result =
-        vkGetQueryPoolResults(device_.handle(), slot.timestamps.get(), 0, 3, sizeof ticks, ticks,
-                              sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
+        vkGetQueryPoolResults(device_.handle(), slot.timestamps.get(), 0, StampCount, sizeof ticks,
+                              ticks, sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
     if (result == VK_NOT_READY) return; // fence signalled, so only a driver quirk gets here
     vk::check(result, "vkGetQueryPoolResults");
     const double period = device_.info().timestampPeriodNs;
-    gpuMs_.push_back(double(ticks[1] - ticks[0]) * period * 1e-6);
-    idPassMs_.push_back(double(ticks[2] - ticks[1]) * period * 1e-6);
+    auto ms = [&](Stamp from, Stamp to) { return double(ticks[to] - ticks[from]) * period * 1e-6; };
+    FrameTimes t;
+    t.sceneMs = ms(StampStart, StampVisibility);
+    t.cullMs = ms(StampStart, StampEarlyCulled) + ms(StampPyramid, StampLateCulled) +
+               ms(StampDrawn, StampVisibility);
+    t.pyramidMs = ms(StampEarlyDrawn, StampPyramid);
+    t.idPassMs = ms(StampVisibility, StampIdPasses);
+    gpu::CullStats stats;
+    std::memcpy(&stats, slot.cullReadback.mapped(), sizeof stats);
+    gpuMs_.push_back(t.sceneMs);
+    idPassMs_.push_back(t.idPassMs);
+    times_.push_back(t);
+    cullStats_.push_back(stats);
     ++timedFrames_;
     if (gpuMs_.size() >= 2 * historyLimit) {
-        gpuMs_.erase(gpuMs_.begin(), gpuMs_.end() - long(historyLimit));
-        idPassMs_.erase(idPassMs_.begin(), idPassMs_.end() - long(historyLimit));
+        const auto keep = [](auto& history) {
+            history.erase(history.begin(), history.end() - long(historyLimit));
+        };
+        keep(gpuMs_);
+        keep(idPassMs_);
+        keep(times_);
+        keep(cullStats_);
     }
 }
 

@@ -13,19 +13,43 @@
 #include <vector>
 
 #include "render/pick.h"
+#include "shared.h"
 #include "vk/resources.h"
 
 namespace render {
+
+// The timestamps of a frame, in the order the GPU writes them. A step the frame leaves out
+// (culling off: the cull passes, the pyramid and the second half) writes its stamp right
+// after the one before, so it takes no time.
+enum Stamp : uint32_t {
+    StampStart,       // before the first cull pass
+    StampEarlyCulled, // after it: the first (or whole) scene pass starts
+    StampEarlyDrawn,  // the depth pyramid starts
+    StampPyramid,     // the late cull starts
+    StampLateCulled,  // the second half starts
+    StampDrawn,       // the scene pass is done; the visible-part pass for culling starts
+    StampVisibility,  // the passes over the ID image (edges, part sets) start
+    StampIdPasses,    // they are done
+    StampCount
+};
+
+// What a frame's timestamps and culling counters say, once its fence has signalled.
+struct FrameTimes {
+    double sceneMs = 0.0;   // StampStart to StampVisibility: drawing, culling included
+    double cullMs = 0.0;    // the cull passes and the visible-part pass culling needs
+    double pyramidMs = 0.0; // building the depth pyramid
+    double idPassMs = 0.0;  // edges and part sets
+};
 
 struct FrameSlot {
     vk::Handle<VkCommandPool> pool;
     VkCommandBuffer cmd = VK_NULL_HANDLE; // from `pool`
     vk::Handle<VkFence> done;
-    // [0] before the scene pass, [1] after it, [2] after the passes over the ID image
-    vk::Handle<VkQueryPool> timestamps;
-    vk::Buffer frameData;    // gpu::FrameData, written with vkCmdUpdateBuffer
-    vk::Buffer pickReadback; // host-visible uint64: the frame's PickData::current
-    bool submitted = false;  // has work whose timestamps are not read yet
+    vk::Handle<VkQueryPool> timestamps; // StampCount of them
+    vk::Buffer frameData;               // gpu::FrameData, written with vkCmdUpdateBuffer
+    vk::Buffer pickReadback;            // host-visible uint64: the frame's PickData::current
+    vk::Buffer cullReadback;            // host-visible gpu::CullStats of the frame
+    bool submitted = false;             // has work whose timestamps are not read yet
     uint64_t frameNumber = 0;
     std::optional<glm::uvec2> pickPixel; // set by Renderer::record when the frame picks
     // Part set queries of this frame (Renderer::record): PartSetResult and `partSetWords`
@@ -62,9 +86,13 @@ class FrameSlots {
     // fence without waiting.
     bool finished(uint64_t frameNumber) const;
 
-    // GPU milliseconds of the scene pass, one per completed frame, oldest first: the last
-    // historyLimit frames at least (older ones are dropped, so a long session stays small).
+    // GPU milliseconds of the scene pass (culling included), one per completed frame, oldest
+    // first: the last historyLimit frames at least (older ones are dropped, so a long session
+    // stays small).
     const std::vector<double>& gpuMilliseconds() const { return gpuMs_; }
+    // The same frames' times of each step, and their culling counters.
+    const std::vector<FrameTimes>& frameTimes() const { return times_; }
+    const std::vector<gpu::CullStats>& cullStats() const { return cullStats_; }
     // GPU times collected since the start, dropped ones included.
     uint64_t timedFrames() const { return timedFrames_; }
     static constexpr size_t historyLimit = 1 << 16;
@@ -83,6 +111,8 @@ class FrameSlots {
     vk::Device& device_;
     std::array<FrameSlot, count> slots_;
     std::vector<double> gpuMs_, idPassMs_;
+    std::vector<FrameTimes> times_;
+    std::vector<gpu::CullStats> cullStats_;
     uint64_t timedFrames_ = 0;
     std::optional<PickReading> latestPick_;
     std::optional<PartSetReading> latestPartSets_;

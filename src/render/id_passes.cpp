@@ -3,6 +3,7 @@
 
 #include <array>
 
+#include "vk/barrier.h"
 #include "vk/check.h"
 #include "vk/debug.h"
 
@@ -83,6 +84,39 @@ void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
                          static_cast<uint32_t>(barriers.size()), barriers.data());
 }
 
+void IdPasses::dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
+                               const PartSetQuery& query, VkDeviceAddress result,
+                               uint32_t words) const {
+    const glm::uvec2 last(targets.extent().width - 1, targets.extent().height - 1);
+    gpu::PartSetPush push{};
+    push.resultAddress = result;
+    push.rectMin = glm::min(query.min, last);
+    push.rectMax = glm::min(query.max, last);
+    push.words = words;
+    vkCmdPushConstants(cmd, partSet_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                       &push);
+    const glm::uvec2 size = push.rectMax - push.rectMin + 1u;
+    vkCmdDispatch(cmd, groups(size.x), groups(size.y), 1);
+}
+
+void IdPasses::recordVisible(VkCommandBuffer cmd, const SceneTargets& targets,
+                             const vk::Buffer& visible, uint32_t words) const {
+    vk::CmdLabel label(device_.debug(), cmd, "visible parts for culling");
+    // This frame's culling has read the last image's parts (compute, task shader).
+    vk::memoryBarrier(
+        cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+        VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, visible.handle(), 0, visible.size(), 0);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    transition(cmd, targets, true);
+    bindImages(cmd, targets, partSet_);
+    const VkExtent2D e = targets.extent();
+    dispatchPartSet(cmd, targets, {{0, 0}, {e.width - 1, e.height - 1}}, visible.address(), words);
+    transition(cmd, targets, false);
+}
+
 void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets, const gpu::EdgePush* edges,
                       const std::vector<PartSetQuery>& queries, uint32_t words,
                       const vk::Buffer& results, const vk::Buffer& readback) const {
@@ -109,18 +143,8 @@ void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets, const gp
         vkCmdDispatch(cmd, groups(extent.width), groups(extent.height), 1);
     }
     if (!queries.empty()) bindImages(cmd, targets, partSet_);
-    for (size_t i = 0; i < queries.size(); ++i) {
-        const PartSetQuery& q = queries[i];
-        gpu::PartSetPush push{};
-        push.resultAddress = results.address() + stride * i;
-        push.rectMin = glm::min(q.min, glm::uvec2(extent.width - 1, extent.height - 1));
-        push.rectMax = glm::min(q.max, glm::uvec2(extent.width - 1, extent.height - 1));
-        push.words = words;
-        vkCmdPushConstants(cmd, partSet_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
-                           &push);
-        const glm::uvec2 size = push.rectMax - push.rectMin + 1u;
-        vkCmdDispatch(cmd, groups(size.x), groups(size.y), 1);
-    }
+    for (size_t i = 0; i < queries.size(); ++i)
+        dispatchPartSet(cmd, targets, queries[i], results.address() + stride * i, words);
     transition(cmd, targets, false);
     if (queries.empty()) return;
     auto written = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);

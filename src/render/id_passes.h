@@ -25,7 +25,15 @@ class IdPasses {
                 const std::vector<PartSetQuery>& queries, uint32_t words, const vk::Buffer& results,
                 const vk::Buffer& readback) const;
 
+    // Culling's visible-part pass: every unique part of the resolved ID image into
+    // `visible` (a gpu::PartSetResult, then `words` words), cleared first. The next frame's
+    // culling reads it: what the last ID image showed is drawn first.
+    void recordVisible(VkCommandBuffer cmd, const SceneTargets& targets, const vk::Buffer& visible,
+                       uint32_t words) const;
+
   private:
+    void dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
+                         const PartSetQuery& query, VkDeviceAddress result, uint32_t words) const;
     void bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
                     const ComputePipeline& pass) const;
     void transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const;

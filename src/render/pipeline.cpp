@@ -11,13 +11,16 @@ namespace render {
 VkShaderStageFlags pushStages(const vk::Device& device) {
     return VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT |
            VK_SHADER_STAGE_FRAGMENT_BIT |
-           (device.info().meshShader ? VkShaderStageFlags(VK_SHADER_STAGE_MESH_BIT_EXT) : 0u);
+           (device.info().meshShader
+                ? VkShaderStageFlags(VK_SHADER_STAGE_MESH_BIT_EXT | VK_SHADER_STAGE_TASK_BIT_EXT)
+                : 0u);
 }
 
 VkPipelineStageFlags sceneShaderStages(const vk::Device& device) {
     return VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
            VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-           (device.info().meshShader ? VkPipelineStageFlags(VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT)
+           (device.info().meshShader ? VkPipelineStageFlags(VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT |
+                                                            VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT)
                                      : 0u);
 }
 
@@ -29,9 +32,10 @@ vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device) {
     return vk::make(device, vkCreatePipelineLayout, info, "scene pipeline layout");
 }
 
-ComputePipeline createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
-                                      const char* file, uint32_t pushBytes,
-                                      VkDescriptorSetLayout set, const std::string& name) {
+ComputePipeline
+createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler, const char* file,
+                      uint32_t pushBytes, VkDescriptorSetLayout set, const std::string& name,
+                      const std::vector<std::pair<std::string, std::string>>& defines) {
     ComputePipeline out;
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
     auto layoutInfo =
@@ -42,7 +46,7 @@ ComputePipeline createComputePipeline(vk::Device& device, const vk::ShaderCompil
     layoutInfo.pSetLayouts = &set;
     out.layout = vk::make(device, vkCreatePipelineLayout, layoutInfo, name + " layout");
 
-    const vk::ShaderRequest request{file, VK_SHADER_STAGE_COMPUTE_BIT, {}, {}};
+    const vk::ShaderRequest request{file, VK_SHADER_STAGE_COMPUTE_BIT, defines, {}};
     const vk::Handle<VkShaderModule> module =
         vk::createShaderModule(device, compiler.compile(request), request.label());
     auto info =

@@ -34,15 +34,16 @@ struct ScenePipelineInfo {
     bool writeIds = true;            // false masks the ID attachment (the floors)
 };
 
-// A compute pipeline from one shader file (no defines), and the layout: `pushBytes` of push
+// A compute pipeline from one shader file (with `defines`), and the layout: `pushBytes` of push
 // constants for the compute stage and, if given, one descriptor set layout.
 struct ComputePipeline {
     vk::Handle<VkPipelineLayout> layout;
     vk::Handle<VkPipeline> pipeline;
 };
-ComputePipeline createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
-                                      const char* file, uint32_t pushBytes,
-                                      VkDescriptorSetLayout set, const std::string& name);
+ComputePipeline
+createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler, const char* file,
+                      uint32_t pushBytes, VkDescriptorSetLayout set, const std::string& name,
+                      const std::vector<std::pair<std::string, std::string>>& defines = {});
 
 vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& info,
                                            const std::vector<ShaderStage>& stages,

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "render/pipeline.h"
+#include "vk/barrier.h"
 #include "vk/check.h"
 #include "vk/debug.h"
 
@@ -37,7 +38,8 @@ std::shared_ptr<const vk::Buffer> partSetBuffer(vk::UploadBatch& upload, const s
 Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler)
     : device_(device), compiler_(compiler), pushStages_(pushStages(device)),
       pipelines_(device, compiler), animator_(std::make_shared<Animator>(device, compiler)),
-      idPasses_(std::make_shared<IdPasses>(device, compiler)) {
+      idPasses_(std::make_shared<IdPasses>(device, compiler)),
+      culler_(std::make_shared<CullPasses>(device, compiler)) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -74,10 +76,19 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     const auto start = Clock::now();
     PipelineKey wanted = settings.pipeline;
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
+    wanted.taskCulling = settings.culling.mode != CullMode::Off;
     const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
     const Technique& technique = *key.technique;
     if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())
         throw vk::Error(std::string(technique.name) + " is unavailable here: " + why);
+    // The culled lists are drawn in one indirect call each.
+    if (cullPlan(technique, *key.mode, settings.culling.mode).gpuLists &&
+        scene.uniquePartCount() > device_.info().maxDrawIndirectCount)
+        throw vk::Error("culling in " + std::string(key.mode->name) + " needs up to " +
+                        std::to_string(scene.uniquePartCount()) + " draws in one indirect call, " +
+                        device_.info().name + " allows " +
+                        std::to_string(device_.info().maxDrawIndirectCount) +
+                        ": use --culling off or push mode");
     bool cached = false;
     auto pipeline = pipelines_.get(key, pass(key.msaa), cached);
     const bool keepDraws = !newScene && drawsStillRight(key, settings.draws);
@@ -89,8 +100,9 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
         partVertices = std::make_shared<PartVertexBuffers>(scene, upload);
     if (technique.primitives == Primitives::Meshlets && !meshlets)
         meshlets = std::make_shared<MeshletBuffers>(scene, upload);
-    auto draws =
-        keepDraws ? draws_ : buildDraws(scene, key, settings.draws, partVertices, meshlets, upload);
+    auto draws = keepDraws ? draws_
+                           : buildDrawBuffers(device_, scene, *sceneGpu, key, settings.draws,
+                                              partVertices, meshlets, upload);
     upload.keep(sceneGpu);
     upload.keep(partVertices);
     upload.keep(meshlets);
@@ -98,6 +110,15 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     const scene::PartSet none(scene.uniquePartCount());
     auto selected = newScene ? partSetBuffer(upload, none, "selection") : selected_;
     auto hidden = newScene ? partSetBuffer(upload, none, "hidden parts") : hidden_;
+    // Nothing shown yet: the first frame draws everything in the late pass.
+    auto visible = visible_;
+    if (newScene) {
+        std::vector<uint32_t> zeros(sizeof(gpu::PartSetResult) / 4 + none.words().size(), 0u);
+        visible = std::make_shared<vk::Buffer>(upload.add(
+            zeros, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+            "visible parts for culling"));
+        upload.keep(visible);
+    }
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
     sceneGpu_ = std::move(sceneGpu);
@@ -106,9 +127,14 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     draws_ = std::move(draws);
     selected_ = std::move(selected);
     hidden_ = std::move(hidden);
+    visible_ = std::move(visible);
     if (newScene) {
         partCount_ = scene.uniquePartCount();
         hiddenSet_ = none;
+        objectParts_.clear();
+        for (const scene::Object& o : scene.objects)
+            objectParts_.push_back({o.uniquePartOffset, scene.geometries[o.geometry].partCount});
+        objectHidden_.assign(scene.objects.size(), 0);
     }
     settings_ = settings;
     stats_ = statsFor(draws_->list, *key.mode,
@@ -123,10 +149,12 @@ void Renderer::reloadShaders() {
     pipelines_.clear();
     auto animator = std::make_shared<Animator>(device_, compiler_);
     auto idPasses = std::make_shared<IdPasses>(device_, compiler_);
+    auto culler = std::make_shared<CullPasses>(device_, compiler_);
     bool cached = false;
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
     animator_ = std::move(animator);
     idPasses_ = std::move(idPasses);
+    culler_ = std::move(culler);
 }
 
 void Renderer::setSelection(const scene::PartSet& selected) {
@@ -155,6 +183,13 @@ void Renderer::setHidden(const scene::PartSet& hidden) {
     pipeline_ = std::move(pipeline);
     hidden_ = std::move(buffer);
     hiddenSet_ = hidden;
+    // Objects with every part hidden are left out by the CPU's culling too (push mode).
+    for (size_t o = 0; o < objectParts_.size(); ++o) {
+        const auto [first, count] = objectParts_[o];
+        bool all = count > 0;
+        for (uint32_t id = first; all && id < first + count; ++id) all = hidden.contains(id);
+        objectHidden_[o] = all ? 1 : 0;
+    }
 }
 
 // The draw list depends on the technique's split and ID data, the search batch it reads, the
@@ -166,55 +201,20 @@ bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws
            built.technique->ids == key.technique->ids &&
            built.technique->primitives == key.technique->primitives &&
            built.searchBatch == key.searchBatch && built.mode == key.mode &&
-           draws_->inputs == draws;
+           built.taskCulling == key.taskCulling && draws_->inputs == draws;
 }
 
-std::shared_ptr<const Renderer::DrawBuffers>
-Renderer::buildDraws(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
-                     std::shared_ptr<const PartVertexBuffers> partVertices,
-                     std::shared_ptr<const MeshletBuffers> meshlets,
-                     vk::UploadBatch& upload) const {
-    auto b = std::make_shared<DrawBuffers>();
-    // Only what this technique draws is held (and counted in its stats).
-    if (key.technique->primitives == Primitives::PartVertices) b->partVertices = partVertices;
-    if (key.technique->usesMeshShader()) b->meshlets = meshlets;
-    b->list = buildDrawList(scene, key, draws,
-                            derivedPrimitives(b->partVertices.get(), b->meshlets.get()));
-    b->key = key;
-    b->inputs = draws;
-    const DrawList& list = b->list;
-    const VkBufferUsageFlags shaderRead =
-        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    const VkBufferUsageFlags vertexRead = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
-    if (!list.idBytes.empty()) b->ids = upload.add(list.idBytes, shaderRead, "technique ID data");
-    if (!key.mode->indirect || list.data.empty()) return b;
-    b->draws = upload.add(list.data, shaderRead, "per-draw data");
-    if (b->meshlets) {
-        std::vector<VkDrawMeshTasksIndirectCommandEXT> commands;
-        commands.reserve(list.ranges.size());
-        // One workgroup per meshlet; the draw index is the command's (gl_DrawID).
-        for (uint32_t count : list.meshletCounts) commands.push_back({count, 1, 1});
-        b->indirect = upload.add(commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
-    } else {
-        std::vector<VkDrawIndexedIndirectCommand> commands;
-        commands.reserve(list.ranges.size());
-        for (uint32_t i = 0; i < list.ranges.size(); ++i) {
-            const DrawItem& d = list.ranges[i];
-            // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
-            commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
-        }
-        b->indirect = upload.add(commands, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "indirect draws");
-    }
-    if (key.mode->drawIndexAttribute) {
-        std::vector<uint32_t> rows(list.ranges.size());
-        for (uint32_t i = 0; i < rows.size(); ++i) rows[i] = i;
-        // Mesh shaders have no vertex input: they read the rows by address instead.
-        b->drawIndices =
-            upload.add(rows, b->meshlets ? shaderRead : vertexRead, "draw index attribute");
-    }
-    return b;
+CullPlan Renderer::cullingPlan() const {
+    const PipelineKey& key = draws_->key;
+    return cullPlan(*key.technique, *key.mode, settings_.culling.mode);
 }
 
+CullCounts Renderer::cullTotals() const {
+    return {stats_.draws, draws_->meshletTotal, stats_.triangles};
+}
+
+// The frame, step by step. Culling (render/culling.h) may split the scene pass in two halves
+// around the depth pyramid; every step writes its timestamp, steps left out included.
 void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& target,
                       const FrameParams& params) const {
     if (!pipeline_ || !sceneGpu_) throw vk::Error("Renderer::record before setScene");
@@ -222,235 +222,79 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     if (uint32_t(targets.pass().samples()) != pipeline_->key.msaa)
         throw vk::Error("Renderer::record: targets of another MSAA setting than configured");
     VkCommandBuffer cmd = slot.cmd;
-    slot.keep(pipeline_);
-    slot.keep(sceneGpu_);
-    slot.keep(draws_);
-    slot.keep(pick_);
-    slot.keep(animator_);
-    slot.keep(idPasses_);
-    slot.keep(selected_);
-    slot.keep(hidden_);
-    slot.keep(target);
+    for (const std::shared_ptr<const void>& used :
+         std::initializer_list<std::shared_ptr<const void>>{pipeline_, sceneGpu_, draws_, pick_,
+                                                            animator_, idPasses_, culler_,
+                                                            selected_, hidden_, visible_, target})
+        slot.keep(used);
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
-    const Shading& shading = settings_.shading;
-    gpu::FrameData frame{};
-    frame.viewProj = params.viewProj;
-    frame.eyePosition = glm::vec4(params.eye, 1.0f);
-    frame.viewport = {targets.extent().width, targets.extent().height};
-    frame.partColorWeight = shading.partWeight;
-    frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
-                  (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u);
-    frame.sampleZero = targets.pass().sampleZero();
-    frame.objectsAddress = sceneGpu_->objectsAddress();
-    frame.materialsAddress = sceneGpu_->materialsAddress();
-    frame.partMaterialsAddress = sceneGpu_->partMaterialsAddress();
-    frame.idsAddress = draws_->ids.address();
-    frame.drawsAddress = draws_->draws.address();
-    frame.pickAddress = pick_->address();
-    if (draws_->meshlets) {
-        frame.verticesAddress = draws_->meshlets->vertices.address();
-        frame.meshletsAddress = draws_->meshlets->meshlets.address();
-        frame.meshletDataAddress = draws_->meshlets->data.address();
-        frame.drawIndicesAddress = draws_->drawIndices.address();
-    }
-    frame.selectedAddress = selected_->address();
-    frame.hiddenAddress = hidden_->address();
-    frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
-    frame.time = params.time;
+    FrameCulling culling = planFrame(params);
+    const gpu::FrameData frame = frameData(targets, params, culling);
     vkCmdUpdateBuffer(cmd, slot.frameData.handle(), 0, sizeof frame, &frame);
     slot.pickPixel = params.pickPixel;
     recordPickReset(cmd);
-
     // Frame data and the pick reset (this frame), `last` (the previous frame's copy, which the
     // edge pass reads too).
-    auto toShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    toShaders.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toShaders.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         sceneShaderStages(device_) | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
-                         &toShaders, 0, nullptr, 0, nullptr);
-
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      sceneShaderStages(device_) | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     animator_->record(cmd, *sceneGpu_, params.explode);
-    // The start is written once every earlier command has finished (bottom of the pipe), so
-    // neither the animation's dispatch nor the previous frame's tail counts as the pass.
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 0);
-    std::array<VkClearValue, 3> clears{};
-    clears[0].color = {{0.16f, 0.17f, 0.19f, 1.0f}};
-    clears[1].color.uint32[0] = gpu::BACKGROUND_ID;
-    clears[2].depthStencil = {1.0f, 0};
-    auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
-    begin.renderPass = targets.pass().handle();
-    begin.framebuffer = targets.framebuffer();
-    begin.renderArea = {{0, 0}, targets.extent()};
-    begin.clearValueCount = static_cast<uint32_t>(clears.size());
-    begin.pClearValues = clears.data();
-    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-
-    VkViewport viewport{0, 0, float(targets.extent().width), float(targets.extent().height), 0, 1};
-    VkRect2D scissor{{0, 0}, targets.extent()};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle.get());
-    bindGeometry(cmd);
-
-    // The whole block once per frame (frame address, zeroed draw); push mode changes the draw.
-    gpu::DrawPush push{};
-    push.frameAddress = slot.frameData.address();
-    vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_, 0, sizeof push, &push);
-    if (draws_->meshlets && pipeline_->key.mode->indirect)
-        recordMeshDraws(cmd);
-    else if (pipeline_->key.mode->indirect)
-        recordIndirectDraws(cmd);
-    else
-        recordPushDraws(cmd);
-
-    vkCmdEndRenderPass(cmd);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 1);
+    recordScene(slot, targets, culling);
     recordIdPasses(cmd, slot, targets, params);
-    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), 2);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(),
+                        StampIdPasses);
     recordPickCopies(cmd, slot);
 }
 
-// Edges and outlines (when on), and the frame's part set queries, into the slot's buffers.
-void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
-                              const FrameParams& params) const {
-    const EdgeSettings& e = settings_.edges;
-    gpu::EdgePush edges{};
-    edges.lineColor = glm::vec4(e.color, 1.0f);
-    edges.selectColor = glm::vec4(e.selectColor, 1.0f);
-    edges.hoverColor = glm::vec4(e.hoverColor, 1.0f);
-    edges.selectedAddress = selected_->address();
-    edges.pickAddress = pick_->address();
-    edges.extent = {targets.extent().width, targets.extent().height};
-    edges.width = std::clamp(e.width, edgeWidthRange.min, edgeWidthRange.max);
-    edges.flags = gpu::EDGE_LINES | gpu::EDGE_SELECTED | gpu::EDGE_HOVERED;
-    const uint32_t words = std::max(1u, (partCount_ + 31) / 32);
-    if (!params.partSets.empty()) {
-        const VkDeviceSize bytes =
-            (sizeof(gpu::PartSetResult) + VkDeviceSize(words) * 4) * params.partSets.size();
-        // The slot's fence has signalled, so its old buffers are free to go.
-        if (slot.partSets.size() < bytes) {
-            slot.partSets = vk::Buffer(
-                device_, bytes,
-                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                0, "part sets");
-            slot.partSetsReadback = vk::hostBuffer(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                   "part sets readback");
-        }
-        slot.partSetQueries = params.partSets;
-        slot.partSetWords = words;
-        slot.partSetParts = partCount_;
+// Culling, the scene pass (whole, or its two halves around the depth pyramid), and what
+// culling needs of the ID image for the next frame.
+void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
+                           FrameCulling& culling) const {
+    VkCommandBuffer cmd = slot.cmd;
+    const VkDeviceAddress frame = slot.frameData.address();
+    const CullPlan& plan = culling.plan;
+    CullBuffers& cull = *draws_->cull;
+    const bool cullOnGpu = plan.gpuLists && !culling.frozen;
+    const bool split = plan.twoPasses && !culling.frozen;
+    const bool mesh = draws_->meshlets != nullptr;
+    auto stamp = [&](Stamp s) {
+        // Once every earlier command has finished (bottom of the pipe), so neither the
+        // animation's dispatch nor the previous frame's tail counts as the frame's work.
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), s);
+    };
+    stamp(StampStart);
+    recordCounters(cmd, culling, true);
+    const uint32_t firstPhase = culling.frozen   ? gpu::CULL_PHASE_FROZEN
+                                : !plan.on()     ? gpu::CULL_PHASE_NONE
+                                : plan.twoPasses ? gpu::CULL_PHASE_EARLY
+                                                 : gpu::CULL_PHASE_FRUSTUM;
+    if (cullOnGpu)
+        culler_->recordCull(cmd, cull, frame, draws_->draws.address(), draws_->indirect.address(),
+                            firstPhase, mesh);
+    stamp(StampEarlyCulled);
+    beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame);
+    drawPhase(cmd, culling, firstPhase);
+    if (culling.frozen && plan.twoPasses) drawPhase(cmd, culling, gpu::CULL_PHASE_FROZEN_LATE);
+    vkCmdEndRenderPass(cmd);
+    stamp(StampEarlyDrawn);
+    if (split) culler_->recordPyramid(cmd, targets);
+    stamp(StampPyramid);
+    if (split && plan.gpuLists)
+        culler_->recordCull(cmd, cull, frame, draws_->draws.address(), draws_->indirect.address(),
+                            gpu::CULL_PHASE_LATE, mesh);
+    stamp(StampLateCulled);
+    if (split) {
+        beginPass(cmd, targets, PassPart::Second, frame);
+        drawPhase(cmd, culling, gpu::CULL_PHASE_LATE);
+        vkCmdEndRenderPass(cmd);
     }
-    idPasses_->record(cmd, targets, e.on ? &edges : nullptr, params.partSets, words, slot.partSets,
-                      slot.partSetsReadback);
-}
-
-// The vertex and index buffers the draws read: the scene's, the part vertices, or none for
-// a mesh shader (it reads the scene's vertices by address).
-void Renderer::bindGeometry(VkCommandBuffer cmd) const {
-    if (draws_->meshlets) return;
-    const VkDeviceSize zero = 0;
-    const PartVertexBuffers* partVertices = draws_->partVertices.get();
-    const VkBuffer vertices =
-        partVertices ? partVertices->vertices.handle() : sceneGpu_->vertices().handle();
-    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &vertices, &zero);
-    if (const VkBuffer rows = draws_->drawIndices.handle())
-        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &rows, &zero);
-    vkCmdBindIndexBuffer(
-        cmd, partVertices ? partVertices->indices.handle() : sceneGpu_->indices().handle(), 0,
-        VK_INDEX_TYPE_UINT32);
-}
-
-// Before the pass: the previous frame's shaders and copies are done with the pick buffer
-// (write-after-read and write-after-write across frames on the one queue), then reset it.
-void Renderer::recordPickReset(VkCommandBuffer cmd) const {
-    auto before = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    before.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
-                           VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    before.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd,
-                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0, nullptr, 0, nullptr);
-    vkCmdFillBuffer(cmd, pick_->handle(), offsetof(gpu::PickData, current), sizeof(uint64_t),
-                    0xFFFFFFFFu);
-}
-
-// After the pass: `current` becomes `last` for the next frame's highlight and goes to the
-// slot's host-visible readback, read when the slot's fence has signalled.
-void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const {
-    auto fromShaders = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    fromShaders.srcAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    fromShaders.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd,
-                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, // the edge pass reads `last`
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &fromShaders, 0, nullptr, 0,
-                         nullptr);
-    VkBufferCopy toLast{offsetof(gpu::PickData, current), offsetof(gpu::PickData, last),
-                        sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, pick_->handle(), pick_->handle(), 1, &toLast);
-    VkBufferCopy toHost{offsetof(gpu::PickData, current), 0, sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, pick_->handle(), slot.pickReadback.handle(), 1, &toHost);
-    auto toHostRead = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-    toHostRead.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHostRead.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                         &toHostRead, 0, nullptr, 0, nullptr);
-}
-
-// `push` mode: per draw, push only the span of DrawData fields that differ from the last draw.
-void Renderer::recordPushDraws(VkCommandBuffer cmd) const {
-    constexpr uint32_t fieldCount = sizeof(gpu::DrawData) / sizeof(uint32_t);
-    std::array<uint32_t, fieldCount> last{}; // as pushed, zeroed, at the start of the frame
-    const DrawList& list = draws_->list;
-    for (size_t i = 0; i < list.ranges.size(); ++i) {
-        std::array<uint32_t, fieldCount> now;
-        std::memcpy(now.data(), &list.data[i], sizeof(gpu::DrawData));
-        uint32_t first = fieldCount, end = 0;
-        for (uint32_t f = 0; f < fieldCount; ++f)
-            if (now[f] != last[f]) {
-                first = std::min(first, f);
-                end = f + 1;
-            }
-        if (first < end)
-            vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_,
-                               gpu::DRAW_PUSH_DRAW_OFFSET + first * sizeof(uint32_t),
-                               (end - first) * sizeof(uint32_t), &now[first]);
-        last = now;
-        const DrawItem& d = list.ranges[i];
-        if (draws_->meshlets)
-            device_.meshCommands().draw(cmd, list.meshletCounts[i], 1, 1);
-        else
-            vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
-    }
-}
-
-// mdi modes with a mesh shader: gl_DrawID restarts at 0 in every call, so each call pushes
-// the index of its first draw (DrawData::drawIndex of the push block) for the shader to add.
-void Renderer::recordMeshDraws(VkCommandBuffer cmd) const {
-    const uint32_t total = static_cast<uint32_t>(draws_->list.ranges.size());
-    const uint32_t limit = std::max(1u, device_.info().maxDrawIndirectCount);
-    constexpr uint32_t stride = sizeof(VkDrawMeshTasksIndirectCommandEXT);
-    for (uint32_t first = 0; first < total; first += limit) {
-        vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_,
-                           gpu::DRAW_PUSH_DRAW_OFFSET + offsetof(gpu::DrawData, drawIndex),
-                           sizeof(uint32_t), &first);
-        device_.meshCommands().drawIndirect(cmd, draws_->indirect.handle(),
-                                            VkDeviceSize(first) * stride,
-                                            std::min(limit, total - first), stride);
-    }
-}
-
-// mdi modes: the whole draw list in as few indirect calls as the device's limit allows.
-void Renderer::recordIndirectDraws(VkCommandBuffer cmd) const {
-    const uint32_t total = static_cast<uint32_t>(draws_->list.ranges.size());
-    const uint32_t limit = std::max(1u, device_.info().maxDrawIndirectCount);
-    constexpr uint32_t stride = sizeof(VkDrawIndexedIndirectCommand);
-    for (uint32_t first = 0; first < total; first += limit)
-        vkCmdDrawIndexedIndirect(cmd, draws_->indirect.handle(), VkDeviceSize(first) * stride,
-                                 std::min(limit, total - first), stride);
+    stamp(StampDrawn);
+    recordCounters(cmd, culling, false);
+    if (split)
+        idPasses_->recordVisible(cmd, targets, *visible_, std::max(1u, (partCount_ + 31) / 32));
+    stamp(StampVisibility);
+    cull.culled = cull.culled || plan.on();
 }
 
 } // namespace render

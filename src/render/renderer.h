@@ -11,6 +11,8 @@
 #include <glm/glm.hpp>
 
 #include "render/animator.h"
+#include "render/culling.h"
+#include "render/draw_buffers.h"
 #include "render/draw_list.h"
 #include "render/frame_slots.h"
 #include "render/id_passes.h"
@@ -36,6 +38,15 @@ struct FrameParams {
     std::vector<PartSetQuery> partSets;
     float explode = 0.0f; // exploded view, 0 (at rest) to 1; see render/animator.h
 };
+
+// What the culling of a configuration leaves out, per frame (FrameSlots::cullStats() holds
+// the GPU's counters; countsOf reads them).
+struct CullCounts {
+    uint64_t draws = 0;     // draws drawn (objects; parts for per-draw, batches for search)
+    uint64_t meshlets = 0;  // meshlets drawn (mesh techniques)
+    uint64_t triangles = 0; // triangles drawn
+};
+CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique);
 
 // How the last configure() or setScene() went, for the panel.
 struct SwitchReport {
@@ -88,26 +99,30 @@ class Renderer {
     size_t cachedPipelines() const { return pipelines_.size(); }
     VkPipeline pipeline() const { return pipeline_ ? pipeline_->handle.get() : VK_NULL_HANDLE; }
 
+    // What culling the drawn configuration gets (cullPlan of its technique and mode).
+    CullPlan cullingPlan() const;
+    // The totals the culling counters are measured against: draws, meshlets, triangles.
+    CullCounts cullTotals() const;
+
   private:
-    struct DrawBuffers {
-        DrawList list;
-        vk::Buffer ids, draws, indirect, drawIndices;
-        // The derived geometry the draws read, if the technique draws one.
-        std::shared_ptr<const PartVertexBuffers> partVertices;
-        std::shared_ptr<const MeshletBuffers> meshlets;
-        PipelineKey key;     // effective key it was built for (technique, mode, batch)
-        DrawSettings inputs; // and the draw settings
+    // One frame's culling as recorded (frame.cpp's steps read it).
+    struct FrameCulling {
+        CullPlan plan;
+        bool frozen = false;              // drawing the lists of the last culled frame
+        std::vector<uint8_t> objectShown; // push mode: the CPU's frustum test per object
+        Issued issued;                    // push mode: the first pass's draws
     };
     void apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
-    std::shared_ptr<const DrawBuffers>
-    buildDraws(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
-               std::shared_ptr<const PartVertexBuffers> partVertices,
-               std::shared_ptr<const MeshletBuffers> meshlets, vk::UploadBatch& upload) const;
     void bindGeometry(VkCommandBuffer cmd) const;
     bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const;
-    void recordPushDraws(VkCommandBuffer cmd) const;
-    void recordIndirectDraws(VkCommandBuffer cmd) const;
-    void recordMeshDraws(VkCommandBuffer cmd) const;
+    gpu::FrameData frameData(const SceneTargets& targets, const FrameParams& params,
+                             const FrameCulling& culling) const;
+    FrameCulling planFrame(const FrameParams& params) const;
+    void beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
+                   VkDeviceAddress frame) const;
+    void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
+    void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
+    void recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
     void recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
@@ -120,6 +135,7 @@ class Renderer {
     PipelineCache pipelines_;
     std::shared_ptr<const Animator> animator_;
     std::shared_ptr<const IdPasses> idPasses_;
+    std::shared_ptr<const CullPasses> culler_;
     // gpu::PickData, shared by all frames in flight (ordered by barriers).
     std::shared_ptr<const vk::Buffer> pick_;
 
@@ -131,9 +147,13 @@ class Renderer {
     std::shared_ptr<const PartVertexBuffers> partVertices_;
     std::shared_ptr<const MeshletBuffers> meshlets_;
     std::shared_ptr<const DrawBuffers> draws_;
-    // The selection and hidden parts as the GPU reads them (bitsets, see scene/part_set.h).
-    std::shared_ptr<const vk::Buffer> selected_, hidden_;
+    // The selection and hidden parts as the GPU reads them (bitsets, see scene/part_set.h),
+    // and the parts the last ID image showed (a gpu::PartSetResult, then the bitset), which
+    // occlusion culling draws first.
+    std::shared_ptr<const vk::Buffer> selected_, hidden_, visible_;
     scene::PartSet hiddenSet_;
+    std::vector<uint8_t> objectHidden_;                      // per object: all its parts are hidden
+    std::vector<std::pair<uint32_t, uint32_t>> objectParts_; // per object: first ID, count
     uint32_t partCount_ = 0;
     RenderStats stats_;
     SwitchReport lastSwitch_;

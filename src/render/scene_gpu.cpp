@@ -1,8 +1,10 @@
 // scene_gpu.cpp - uploads a scene once, when it is loaded or its copies change.
 #include "render/scene_gpu.h"
 
+#include <algorithm>
 #include <vector>
 
+#include "scene/bounds.h"
 #include "scene/explode.h"
 #include "shared.h"
 #include "vk/check.h"
@@ -39,7 +41,10 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     objects_ = upload.add(objects, shaderRead, "scene objects");
     materials_ = upload.add(materials, shaderRead, "scene materials");
     rest_ = upload.add(rest, shaderRead, "animation rest matrices");
-    offsets_ = upload.add(scene::explodeOffsets(scene), shaderRead, "animation offsets");
+    explodeOffsets_ = scene::explodeOffsets(scene);
+    offsets_ = upload.add(explodeOffsets_, shaderRead, "animation offsets");
+    restWorld_ = std::move(rest);
+    partBounds_ = scene::partBounds(scene);
     // Part materials only where some part has one: other scenes read none.
     std::vector<uint32_t> partMaterials;
     for (const scene::Geometry& g : scene.geometries)
@@ -53,6 +58,13 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
                 partMaterials[g.firstPart + p] = g.partMaterials[p];
         partMaterials_ = upload.add(partMaterials, shaderRead, "part materials");
     }
+}
+
+glm::mat4 SceneGpu::worldAt(uint32_t object, float explode) const {
+    glm::mat4 world = restWorld_[object];
+    explode = explode > 0.0f ? std::min(explode, 1.0f) : 0.0f; // as Animator::record clamps
+    if (explode > 0.0f) world[3] += glm::vec4(glm::vec3(explodeOffsets_[object]) * explode, 0.0f);
+    return world;
 }
 
 } // namespace render

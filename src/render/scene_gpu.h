@@ -3,6 +3,8 @@
 // exploded-view animation writes the objects' matrices from.
 #pragma once
 
+#include <vector>
+
 #include "scene/scene.h"
 #include "vk/resources.h"
 #include "vk/upload.h"
@@ -29,7 +31,15 @@ class SceneGpu {
     // The explode value the objects' matrices hold once recorded work has run.
     float explodeWritten = 0.0f;
 
+    // For culling: each of the scene's parts' box in its geometry (scene/bounds.h), and the
+    // objects' world matrices at an explode value, as animate.comp writes them.
+    const std::vector<scene::Bounds>& partBounds() const { return partBounds_; }
+    glm::mat4 worldAt(uint32_t object, float explode) const;
+
   private:
+    std::vector<scene::Bounds> partBounds_;
+    std::vector<glm::mat4> restWorld_;
+    std::vector<glm::vec4> explodeOffsets_;
     vk::Buffer vertices_, indices_, objects_, materials_, rest_, offsets_;
     vk::Buffer partMaterials_; // empty (address 0) unless a part has its own material
     uint32_t objectCount_ = 0;

@@ -11,6 +11,7 @@ PipelineKey PipelineKey::effective(bool devicePassthrough) const {
     key.gsPassthrough =
         technique->stage == LookupStage::Geometry && gsPassthrough && devicePassthrough;
     if (technique->isFloor()) key.hiding = false; // no part IDs: nothing to hide by
+    key.taskCulling = key.taskCulling && technique->usesMeshShader();
     return key;
 }
 

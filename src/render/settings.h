@@ -38,6 +38,9 @@ struct PipelineKey {
     // Not a choice of the user's: the renderer sets it while any part is hidden, for the
     // variant that discards hidden parts (see gpu::FrameData::hiddenAddress).
     bool hiding = false;
+    // Nor this: set from CullSettings for the mesh techniques, whose culling pipeline has a
+    // task shader that culls meshlets (shaders/scene.task).
+    bool taskCulling = false;
 
     // The same key with what the technique ignores set to defaults, and passthrough only
     // where the technique has a geometry stage and the device offers it.
@@ -75,11 +78,25 @@ struct EdgeSettings {
 };
 constexpr Range edgeWidthRange{1, 3}; // gpu::EDGE_WIDTH_MAX
 
+// What is left out before the scene pass draws (render/culling.h). Every mode leaves the
+// images exactly as without it; what a technique and per-draw mode get of it is
+// cullingPlan() (GPU-built draw lists in the mdi modes and for mesh tasks, the CPU's frustum
+// test per object in push mode).
+enum class CullMode { Off, Frustum, Occlusion };
+struct CullSettings {
+    CullMode mode = CullMode::Occlusion;
+    // Keep drawing what the last culled frame chose while the camera moves on, so a user can
+    // fly around and see what was left out.
+    bool freeze = false;
+    bool operator==(const CullSettings&) const = default;
+};
+
 struct RenderSettings {
     PipelineKey pipeline;
     DrawSettings draws;
     Shading shading;
     EdgeSettings edges;
+    CullSettings culling;
     bool operator==(const RenderSettings&) const = default;
 };
 

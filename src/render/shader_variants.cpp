@@ -26,6 +26,7 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     defines.push_back({"IDV_HIDE_PARTS", key.hiding ? "1" : "0"});
     defines.push_back({"IDV_HIDE_IN_FRAGMENT", key.hiding && !dropEarlier ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
+    defines.push_back({"IDV_TASK_CULLING", key.taskCulling ? "1" : "0"});
     // An effective key holds defaults where the technique reads nothing, so the source of
     // other techniques never varies with these.
     defines.push_back({"IDV_SEARCH_COUNT",
@@ -38,6 +39,8 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     std::map<std::string, std::string> aliases;
     if (technique.lookupFile) aliases["technique.glsl"] = technique.lookupFile;
     std::vector<vk::ShaderRequest> requests;
+    if (key.taskCulling)
+        requests.push_back({"scene.task", VK_SHADER_STAGE_TASK_BIT_EXT, defines, aliases});
     if (mesh)
         requests.push_back({"scene.mesh", VK_SHADER_STAGE_MESH_BIT_EXT, defines, aliases});
     else
@@ -81,6 +84,11 @@ std::vector<PipelineKey> allPipelineKeys() {
             hiding.hiding = true;
             hiding = hiding.effective(true);
             if (hiding.hiding) keys.push_back(hiding);
+            // The culling variant adds a task shader to the mesh techniques.
+            PipelineKey culling{&technique, &mode};
+            culling.taskCulling = true;
+            culling = culling.effective(true);
+            if (culling.taskCulling) keys.push_back(culling);
         }
     return keys;
 }

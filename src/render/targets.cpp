@@ -55,37 +55,48 @@ VkSampleCountFlagBits checkedSampleCount(const vk::Device& device, uint32_t samp
 
 ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : samples_(samples) {
     depthFormat_ = pickDepthFormat(device.physical());
-    const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(device.physical(), &props);
-    if (msaa && !props.limits.standardSampleLocations)
+    if (samples != VK_SAMPLE_COUNT_1_BIT && !props.limits.standardSampleLocations)
         throw vk::Error("MSAA needs the standard sample locations, which " +
                         std::string(props.deviceName) + " does not use");
+    for (PassPart part : {PassPart::Whole, PassPart::First, PassPart::Second})
+        passes_[size_t(part)] = create(device, part);
+}
 
-    auto colorAttachment = [](VkFormat format, VkSampleCountFlagBits count) {
+vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part) const {
+    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
+    const bool first = part == PassPart::First, second = part == PassPart::Second;
+    // The first half keeps what it drew for the second; the second starts from it.
+    const VkImageLayout kept = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    const VkImageLayout sampledDepth = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    auto colorAttachment = [&](VkFormat format, VkSampleCountFlagBits count) {
         VkAttachmentDescription a{};
         a.format = format;
         a.samples = count;
-        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.loadOp = second ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-        a.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED; // cleared every frame
-        a.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        a.initialLayout = second ? kept : VK_IMAGE_LAYOUT_UNDEFINED; // cleared every frame
+        a.finalLayout = first ? kept : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         return a;
     };
-    // 0 colour, 1 IDs, 2 depth; with MSAA also 3 and 4, the single-sample colour and IDs the
-    // multisampled ones resolve into (the multisampled contents are not kept).
-    std::vector<VkAttachmentDescription> attachments = {colorAttachment(colorFormat, samples),
-                                                        colorAttachment(idFormat, samples),
-                                                        colorAttachment(depthFormat_, samples)};
+    // 0 colour, 1 IDs, 2 depth; with MSAA (but for the first half) also 3 and 4, the
+    // single-sample colour and IDs the multisampled ones resolve into.
+    std::vector<VkAttachmentDescription> attachments = {colorAttachment(colorFormat, samples_),
+                                                        colorAttachment(idFormat, samples_),
+                                                        colorAttachment(depthFormat_, samples_)};
     VkAttachmentDescription& depth = attachments[2];
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    depth.storeOp = first ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depth.initialLayout = second ? sampledDepth : VK_IMAGE_LAYOUT_UNDEFINED;
+    depth.finalLayout = first ? sampledDepth : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    const bool resolve = msaa && !first;
     std::array<VkAttachmentReference, 2> resolveRefs = {
         VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
         VkAttachmentReference{4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
-    if (msaa) {
+    if (msaa && !first) {
+        // The multisampled contents are not kept past the resolve.
         for (uint32_t i : {0u, 1u}) {
             attachments[i].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
             attachments[i].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -93,6 +104,8 @@ ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : sample
         for (VkFormat format : {colorFormat, idFormat}) {
             attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT));
             attachments.back().loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // fully overwritten
+            attachments.back().initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+            attachments.back().finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         }
     }
 
@@ -104,31 +117,36 @@ ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : sample
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
     subpass.pColorAttachments = colorRefs.data();
-    subpass.pResolveAttachments = msaa ? resolveRefs.data() : nullptr;
+    subpass.pResolveAttachments = resolve ? resolveRefs.data() : nullptr;
     subpass.pDepthStencilAttachment = &depthRef;
 
     // In: the previous frame's pass and its copies out of the colour and ID images must be
-    // done before this frame clears them. Out: the copies wait for this pass's writes.
+    // done before this frame clears them; the second half waits for the first half's writes
+    // and for the pyramid's reads of depth. Out: the copies wait for the pass's writes; after
+    // the first half, the pyramid reads depth.
     std::array<VkSubpassDependency, 2> deps{};
     deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
     deps[0].dstSubpass = 0;
     deps[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
-                           VK_PIPELINE_STAGE_TRANSFER_BIT;
+                           VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     deps[0].srcAccessMask =
         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                            VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    deps[0].dstAccessMask =
+        VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     deps[1].srcSubpass = 0;
     deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    deps[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    deps[1].srcStageMask =
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    deps[1].srcAccessMask =
+        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    // The same for every part: compatible render passes have identical dependencies.
+    deps[1].dstStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+    deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
 
     auto info = vk::init<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
     info.attachmentCount = static_cast<uint32_t>(attachments.size());
@@ -137,8 +155,9 @@ ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : sample
     info.pSubpasses = &subpass;
     info.dependencyCount = static_cast<uint32_t>(deps.size());
     info.pDependencies = deps.data();
-    pass_ = vk::make(device, vkCreateRenderPass, info,
-                     "scene pass (" + std::to_string(samples) + "x MSAA)");
+    const char* names[] = {"scene pass", "scene pass, first half", "scene pass, second half"};
+    return vk::make(device, vkCreateRenderPass, info,
+                    std::string(names[size_t(part)]) + " (" + std::to_string(samples_) + "x MSAA)");
 }
 
 glm::vec2 ScenePass::sampleZero() const {
@@ -164,9 +183,10 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
     ids_ = vk::Image(device, extent, ScenePass::idFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
                      "scene part IDs");
     const VkSampleCountFlagBits samples = pass.samples();
-    depth_ =
-        vk::Image(device, extent, pass.depthFormat(), VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                  VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
+    // Sampled: the depth pyramid of occlusion culling reads it.
+    depth_ = vk::Image(device, extent, pass.depthFormat(),
+                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                       VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
     std::vector<VkImageView> views = {color_.view(), ids_.view(), depth_.view()};
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
         // Only ever rendered to and resolved within the pass.
@@ -185,6 +205,37 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
     info.height = extent.height;
     info.layers = 1;
     framebuffer_ = vk::make(device, vkCreateFramebuffer, info, "scene framebuffer");
+    // The first half resolves nothing: its attachments are the first three.
+    info.renderPass = pass.handle(PassPart::First);
+    info.attachmentCount = 3;
+    firstFramebuffer_ =
+        vk::make(device, vkCreateFramebuffer, info, "scene framebuffer, first half");
+
+    pyramidHeader_ = pyramidLevels(extent);
+    pyramid_ = vk::Buffer(device, pyramidBytes(pyramidHeader_),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                              VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                          0, "depth pyramid");
+}
+
+gpu::PyramidHeader pyramidLevels(VkExtent2D extent) {
+    gpu::PyramidHeader header{};
+    uint32_t offset = 0;
+    for (uint32_t k = 0; k < gpu::PYRAMID_MAX_LEVELS; ++k) {
+        // Level k: a texel per 2^(k + 1) pixels, rounded up.
+        const uint32_t w = (extent.width + (2u << k) - 1) >> (k + 1);
+        const uint32_t h = (extent.height + (2u << k) - 1) >> (k + 1);
+        header.level[k] = {offset, w, h, 0};
+        offset += w * h;
+        header.levels = k + 1;
+        if (w == 1 && h == 1) break;
+    }
+    return header;
+}
+
+VkDeviceSize pyramidBytes(const gpu::PyramidHeader& header) {
+    const gpu::PyramidLevel& top = header.level[header.levels - 1];
+    return sizeof header + VkDeviceSize(top.offset + top.width * top.height) * sizeof(float);
 }
 
 } // namespace render

@@ -7,8 +7,11 @@
 // which part a pixel shows, and the pick follows the same rule (see scene.frag).
 #pragma once
 
+#include <array>
+
 #include <glm/glm.hpp>
 
+#include "shared.h"
 #include "vk/handle.h"
 #include "vk/resources.h"
 
@@ -19,6 +22,12 @@ VkSampleCountFlags supportedSampleCounts(const vk::Device& device);
 // Throws vk::Error naming the counts the device offers when `samples` is not among them.
 VkSampleCountFlagBits checkedSampleCount(const vk::Device& device, uint32_t samples);
 
+// The scene pass, whole, or split in two around the depth pyramid of occlusion culling
+// (render/culling.h): the first half clears and keeps every attachment, leaving depth ready
+// to be sampled; the second loads them, draws on and resolves. All three render into the
+// same attachments, so the pipelines built for the whole pass draw in either half.
+enum class PassPart { Whole, First, Second };
+
 class ScenePass {
   public:
     static constexpr VkFormat colorFormat = VK_FORMAT_R8G8B8A8_UNORM;
@@ -26,7 +35,9 @@ class ScenePass {
 
     ScenePass(vk::Device& device, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
 
-    VkRenderPass handle() const { return pass_.get(); }
+    VkRenderPass handle(PassPart part = PassPart::Whole) const {
+        return passes_[size_t(part)].get();
+    }
     VkFormat depthFormat() const { return depthFormat_; }
     VkSampleCountFlagBits samples() const { return samples_; }
     // Position of sample 0 inside a pixel: Vulkan's standard locations, which the pass
@@ -34,9 +45,11 @@ class ScenePass {
     glm::vec2 sampleZero() const;
 
   private:
+    vk::Handle<VkRenderPass> create(vk::Device& device, PassPart part) const;
+
     VkSampleCountFlagBits samples_;
     VkFormat depthFormat_ = VK_FORMAT_UNDEFINED;
-    vk::Handle<VkRenderPass> pass_;
+    std::array<vk::Handle<VkRenderPass>, 3> passes_; // by PassPart
 };
 
 // After the pass, the single-sample colour and ID images are in TRANSFER_SRC_OPTIMAL layout.
@@ -47,16 +60,32 @@ class SceneTargets {
 
     const ScenePass& pass() const { return pass_; }
     VkExtent2D extent() const { return extent_; }
-    VkFramebuffer framebuffer() const { return framebuffer_.get(); }
+    VkFramebuffer framebuffer(PassPart part = PassPart::Whole) const {
+        return part == PassPart::First ? firstFramebuffer_.get() : framebuffer_.get();
+    }
     const vk::Image& color() const { return color_; }
     const vk::Image& ids() const { return ids_; }
+    // Sampled by the depth pyramid between the two halves of the pass (layout
+    // DEPTH_STENCIL_READ_ONLY_OPTIMAL then).
+    const vk::Image& depth() const { return depth_; }
+    // The depth pyramid of these targets (gpu::PyramidHeader, then the levels' floats),
+    // built by render/culling.h; `pyramidHeader` is what its header holds.
+    const vk::Buffer& pyramid() const { return pyramid_; }
+    const gpu::PyramidHeader& pyramidHeader() const { return pyramidHeader_; }
 
   private:
     const ScenePass& pass_;
     VkExtent2D extent_;
     vk::Image color_, ids_, depth_;
     vk::Image msColor_, msIds_; // multisampled attachments, resolved into color_ and ids_
-    vk::Handle<VkFramebuffer> framebuffer_;
+    vk::Handle<VkFramebuffer> framebuffer_, firstFramebuffer_;
+    gpu::PyramidHeader pyramidHeader_{};
+    vk::Buffer pyramid_;
 };
+
+// The levels of the depth pyramid over `extent` (shared.h PyramidHeader), and its size in
+// bytes, header included.
+gpu::PyramidHeader pyramidLevels(VkExtent2D extent);
+VkDeviceSize pyramidBytes(const gpu::PyramidHeader& header);
 
 } // namespace render

@@ -32,6 +32,17 @@ Camera fitCamera(const Bounds& bounds, glm::vec3 direction, glm::vec3 up, float 
     return camera;
 }
 
+void fitPlanes(Camera& camera, const Bounds& bounds, float reach) {
+    float radius = bounds.radius();
+    if (!std::isfinite(radius) || !(radius > 0.0f)) radius = 1.0f; // a point, or nothing
+    radius *= 1.05f * std::max(reach, 1.0f);
+    const float centre = glm::length(camera.eye - bounds.center());
+    camera.farPlane = centre + radius;
+    const float floor =
+        std::min(0.5f * glm::length(camera.target - camera.eye), camera.farPlane * 1e-3f);
+    camera.nearPlane = std::max(centre - radius, floor);
+}
+
 Ray pixelRay(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel) {
     const glm::mat4 inverse = glm::inverse(viewProj);
     const glm::vec2 ndc = pixel / size * 2.0f - 1.0f;

@@ -25,6 +25,12 @@ struct Camera {
 // far planes hugging the bounding sphere so depth precision follows the model's size.
 Camera fitCamera(const Bounds& bounds, glm::vec3 direction, glm::vec3 up, float fovY, float aspect);
 
+// Near and far planes that hug the bounding sphere of `bounds` (5% margin, `reach` radii:
+// an exploded view reaches 2) as seen from the camera's eye. From inside the sphere the near
+// plane stays in front of the target and at most a thousandth of the far plane, which keeps
+// both the close-up part and the far end of a large plant.
+void fitPlanes(Camera& camera, const Bounds& bounds, float reach = 1.0f);
+
 struct Ray {
     glm::vec3 origin;
     glm::vec3 direction; // not normalised: origin + direction reaches the far plane

@@ -156,6 +156,7 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     f12.pNext = &f11;
     f12.bufferDeviceAddress = VK_TRUE;
     f12.shaderBufferInt64Atomics = VK_TRUE;
+    f12.drawIndirectCount = VK_TRUE; // culled draw lists (render/culling.h)
     auto features =
         vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
     features.pNext = &f12;
@@ -170,10 +171,11 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
     if (info.geometryShaderPassthrough)
         extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
-    // Mesh shaders only (no task shaders): the mesh techniques draw one workgroup per meshlet.
+    // Mesh shaders, and task shaders for culling their meshlets (shaders/scene.task).
     auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);
     mesh.meshShader = VK_TRUE;
+    mesh.taskShader = VK_TRUE;
     if (info.meshShader) {
         extensions.push_back(VK_EXT_MESH_SHADER_EXTENSION_NAME);
         f11.pNext = &mesh;
@@ -207,7 +209,9 @@ void Device::loadMeshCommands() {
         vkGetDeviceProcAddr(device_, "vkCmdDrawMeshTasksEXT"));
     meshCommands_.drawIndirect = reinterpret_cast<PFN_vkCmdDrawMeshTasksIndirectEXT>(
         vkGetDeviceProcAddr(device_, "vkCmdDrawMeshTasksIndirectEXT"));
-    if (!meshCommands_.draw || !meshCommands_.drawIndirect)
+    meshCommands_.drawIndirectCount = reinterpret_cast<PFN_vkCmdDrawMeshTasksIndirectCountEXT>(
+        vkGetDeviceProcAddr(device_, "vkCmdDrawMeshTasksIndirectCountEXT"));
+    if (!meshCommands_.draw || !meshCommands_.drawIndirect || !meshCommands_.drawIndirectCount)
         throw Error("the driver offers VK_EXT_mesh_shader but not its draw commands");
 }
 

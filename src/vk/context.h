@@ -147,6 +147,7 @@ class Device {
     struct MeshCommands {
         PFN_vkCmdDrawMeshTasksEXT draw = nullptr;
         PFN_vkCmdDrawMeshTasksIndirectEXT drawIndirect = nullptr;
+        PFN_vkCmdDrawMeshTasksIndirectCountEXT drawIndirectCount = nullptr; // culled lists
     };
     const MeshCommands& meshCommands() const { return meshCommands_; }
     PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet() const { return pushDescriptorSet_; }

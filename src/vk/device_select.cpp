@@ -55,6 +55,7 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
         vkGetPhysicalDeviceFeatures2(device, &f2);
         info.bufferDeviceAddress = f12.bufferDeviceAddress;
         info.shaderBufferInt64Atomics = f12.shaderBufferInt64Atomics;
+        info.drawIndirectCount = f12.drawIndirectCount;
 
         if (hasDeviceExtension(device, VK_EXT_MESH_SHADER_EXTENSION_NAME)) {
             auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
@@ -66,8 +67,9 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
                 vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
             meshFeatures.pNext = &f11;
             vkGetPhysicalDeviceFeatures2(device, &meshFeatures);
-            // The mdi modes read gl_DrawID in the mesh shader: shaderDrawParameters.
-            info.meshShader = mesh.meshShader && f11.shaderDrawParameters;
+            // The mdi modes read gl_DrawID in the mesh shader: shaderDrawParameters; culling
+            // their meshlets needs task shaders.
+            info.meshShader = mesh.meshShader && mesh.taskShader && f11.shaderDrawParameters;
         }
     }
     VkPhysicalDeviceFeatures features;
@@ -105,6 +107,7 @@ std::vector<std::string> missingRequirements(const DeviceInfo& info) {
     if (!info.fragmentStoresAndAtomics) missing.push_back("fragmentStoresAndAtomics");
     if (!info.independentBlend) missing.push_back("independentBlend");
     if (!info.pushDescriptor) missing.push_back("VK_KHR_push_descriptor");
+    if (!info.drawIndirectCount) missing.push_back("drawIndirectCount");
     if (info.graphicsQueueFamily == UINT32_MAX)
         missing.push_back("a graphics queue with timestamps");
     return missing;

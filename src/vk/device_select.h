@@ -29,15 +29,17 @@ struct DeviceInfo {
     bool multiDrawIndirect = false;
     bool drawIndirectFirstInstance = false;
     bool fragmentStoresAndAtomics = false;
-    bool independentBlend = false; // no-id pipelines mask the ID attachment
-    bool pushDescriptor = false;   // VK_KHR_push_descriptor: the passes over the ID image
+    bool independentBlend = false;  // no-id pipelines mask the ID attachment
+    bool pushDescriptor = false;    // VK_KHR_push_descriptor: the passes over the ID image
+    bool drawIndirectCount = false; // culled draw lists draw by a count the GPU wrote
     // A queue family with graphics and timestamps; UINT32_MAX if there is none.
     uint32_t graphicsQueueFamily = UINT32_MAX;
     float timestampPeriodNs = 0.0f;
 
     // Optional, used when present.
     bool geometryShaderPassthrough = false; // VK_NV_geometry_shader_passthrough
-    // VK_EXT_mesh_shader with its meshShader feature, and shaderDrawParameters (mesh-*)
+    // VK_EXT_mesh_shader with its meshShader and taskShader features, and
+    // shaderDrawParameters (mesh-*)
     bool meshShader = false;
     uint32_t maxDrawIndirectCount = 1;
 };

@@ -61,6 +61,9 @@ inline void destroy(VkDevice d, VkDescriptorPool h) {
 inline void destroy(VkDevice d, VkSwapchainKHR h) {
     vkDestroySwapchainKHR(d, h, nullptr);
 }
+inline void destroy(VkDevice d, VkSampler h) {
+    vkDestroySampler(d, h, nullptr);
+}
 
 template <typename T>
 class Handle {
@@ -109,6 +112,7 @@ IDV_OBJECT_TYPE(VkPipelineCache, VK_OBJECT_TYPE_PIPELINE_CACHE)
 IDV_OBJECT_TYPE(VkShaderModule, VK_OBJECT_TYPE_SHADER_MODULE)
 IDV_OBJECT_TYPE(VkRenderPass, VK_OBJECT_TYPE_RENDER_PASS)
 IDV_OBJECT_TYPE(VkFramebuffer, VK_OBJECT_TYPE_FRAMEBUFFER)
+IDV_OBJECT_TYPE(VkSampler, VK_OBJECT_TYPE_SAMPLER)
 IDV_OBJECT_TYPE(VkFence, VK_OBJECT_TYPE_FENCE)
 IDV_OBJECT_TYPE(VkSemaphore, VK_OBJECT_TYPE_SEMAPHORE)
 IDV_OBJECT_TYPE(VkCommandPool, VK_OBJECT_TYPE_COMMAND_POOL)

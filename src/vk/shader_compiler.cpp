@@ -39,6 +39,8 @@ EShLanguage language(VkShaderStageFlagBits stage) {
         return EShLangCompute;
     case VK_SHADER_STAGE_MESH_BIT_EXT:
         return EShLangMesh;
+    case VK_SHADER_STAGE_TASK_BIT_EXT:
+        return EShLangTask;
     default:
         throw Error("shader stage not supported by idview's compiler");
     }

@@ -198,6 +198,19 @@ PanelInfo Viewer::panelInfo() const {
     info.hiddenCount = selection.hidden().size();
     info.visibleParts = input_.visibleParts();
     info.idPassMs = mean(slots_.idPassMilliseconds(), 30);
+    const render::Renderer& renderer = scene_.renderer();
+    const render::PipelineKey& key = renderer.settings().pipeline;
+    info.cullingApplied = render::describeCulling(*key.mode, renderer.settings().culling.mode,
+                                                  key.technique->usesMeshShader());
+    info.totals = renderer.cullTotals();
+    if (!slots_.cullStats().empty())
+        info.drawn = render::countsOf(slots_.cullStats().back(), key.technique->usesMeshShader());
+    const auto& times = slots_.frameTimes();
+    const size_t last = std::min<size_t>(times.size(), 30);
+    for (size_t i = times.size() - last; i < times.size(); ++i) {
+        info.cullMs += times[i].cullMs / double(last);
+        info.pyramidMs += times[i].pyramidMs / double(last);
+    }
     return info;
 }
 

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "app/viewer/viewer.h"
+#include "render/culling.h"
 
 namespace app {
 namespace {
@@ -290,6 +291,15 @@ void Input::queue(const ScriptCommand& c) {
         step(settings(
                  [m = render::findDrawMode(c.text)](Options& s) { s.render.pipeline.mode = m; }),
              true);
+        break;
+    case ScriptOp::Culling:
+        step(settings([m = render::findCullMode(c.text)->mode](Options& s) {
+                 s.render.culling.mode = m;
+             }),
+             true);
+        break;
+    case ScriptOp::Freeze:
+        step(settings([on = c.text == "on"](Options& s) { s.render.culling.freeze = on; }), true);
         break;
     case ScriptOp::Copies:
         step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);

@@ -98,14 +98,7 @@ scene::Camera OrbitCamera::camera(float reach) const {
     camera.target = target_;
     camera.up = up_;
     camera.fovY = fovY_;
-    // Planes at the bounding sphere (5% margin) as seen from the eye. From inside the sphere
-    // the near plane stays in front of the target and at most a thousandth of the far plane,
-    // which keeps both the close-up part and the far end of a large plant.
-    const float radius = usableRadius(bounds_) * 1.05f * std::max(reach, 1.0f);
-    const float centre = glm::length(camera.eye - bounds_.center());
-    camera.farPlane = centre + radius;
-    const float floor = std::min(0.5f * distance_, camera.farPlane * 1e-3f);
-    camera.nearPlane = std::max(centre - radius, floor);
+    scene::fitPlanes(camera, bounds_, reach);
     return camera;
 }
 

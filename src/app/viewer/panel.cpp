@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "render/culling.h"
 #include "render/technique.h"
 
 namespace app {
@@ -117,6 +118,38 @@ void techniqueCombo(const render::Technique*& current, const PanelInfo& info) {
     ImGui::EndCombo();
 }
 
+std::string counted(uint64_t drawn, uint64_t total) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%llu of %llu (%.0f%%)",
+                  static_cast<unsigned long long>(drawn), static_cast<unsigned long long>(total),
+                  total ? 100.0 * double(drawn) / double(total) : 0.0);
+    return text;
+}
+
+// The culling mode, freezing its lists, what this technique and mode get of it, and what the
+// newest frame drew.
+void culling(render::CullSettings& c, const PanelInfo& info) {
+    if (ImGui::BeginCombo("culling", render::cullModeName(c.mode))) {
+        for (const render::CullModeEntry& entry : render::cullModes()) {
+            if (ImGui::Selectable(entry.name, entry.mode == c.mode)) c.mode = entry.mode;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.description);
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::BeginDisabled(c.mode == render::CullMode::Off);
+    ImGui::Checkbox("freeze culling", &c.freeze);
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("keep drawing what the last culled frame chose while the camera "
+                          "moves: fly around to see what was left out");
+    ImGui::TextDisabled("%s", info.cullingApplied.c_str());
+    ImGui::Text("draws drawn    %s", counted(info.drawn.draws, info.totals.draws).c_str());
+    if (info.totals.meshlets)
+        ImGui::Text("meshlets       %s",
+                    counted(info.drawn.meshlets, info.totals.meshlets).c_str());
+    ImGui::Text("triangles      %s", counted(info.drawn.triangles, info.totals.triangles).c_str());
+}
+
 void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
     render::RenderSettings& s = settings.render;
     render::PipelineKey& key = s.pipeline;
@@ -151,6 +184,7 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
         ImGui::SameLine();
         ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
     }
+    culling(s.culling, info);
     ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
     ImGui::Checkbox("vsync (V)", &view.vsync);
     // What the last switch cost: a cached pipeline makes it a lookup.
@@ -219,6 +253,10 @@ void timing(const PanelInfo& info) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("edges and outlines, the visible part count and box selection: "
                           "compute passes over the ID image after the scene pass");
+    ImGui::Text("cull, pyramid [ms] %.3f, %.3f", info.cullMs, info.pyramidMs);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("GPU time of the cull passes (and the visible-part pass culling "
+                          "reads) and of the depth pyramid; included in Render GPU");
     ImGui::Text("CPU record [ms]  %.3f", info.cpuRecordMs);
     if (!info.gpuHistory.empty())
         ImGui::PlotLines("##gpu", info.gpuHistory.data(), int(info.gpuHistory.size()), 0,

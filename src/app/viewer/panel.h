@@ -68,6 +68,11 @@ struct PanelInfo {
     uint32_t selectedCount = 0, hiddenCount = 0;
     uint32_t visibleParts = 0; // counted on the GPU in the newest completed frame
     double idPassMs = 0.0;     // GPU time of the edge and part set passes
+    // Culling: what the technique and mode get of the mode chosen, what the newest completed
+    // frame drew of the totals, and the GPU time of the cull passes and the depth pyramid.
+    std::string cullingApplied;
+    render::CullCounts drawn, totals;
+    double cullMs = 0.0, pyramidMs = 0.0;
 };
 
 // Draws the panel; the user's changes land in `settings` (scene, render, animation) and

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "render/culling.h"
 #include "render/technique.h"
 
 // Only the key code constants are used; no GLFW function is called here.
@@ -35,6 +36,8 @@ const CommandSpec commandSpecs[] = {
     {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT"},
     {"renderer", ScriptOp::Renderer, 0, "renderer NAME"},
     {"mode", ScriptOp::Mode, 0, "mode NAME"},
+    {"culling", ScriptOp::Culling, 0, "culling off|frustum|occlusion"},
+    {"freeze", ScriptOp::Freeze, 0, "freeze on|off"},
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
     {"copies", ScriptOp::Copies, 1, "copies N"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
@@ -73,13 +76,14 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     if (!spec)
         fail("unknown command '" + name +
              "' (known: key, move, click, drag, box, object, scroll, resize, renderer, mode, "
-             "msaa, copies, screenshot, drop, loaded, frames, quit)");
+             "culling, freeze, msaa, copies, screenshot, drop, loaded, frames, quit)");
     command.op = spec->op;
 
     std::vector<std::string> args;
     for (std::string word; in >> word;) args.push_back(word);
     const bool takesText = spec->op == ScriptOp::Key || spec->op == ScriptOp::Renderer ||
-                           spec->op == ScriptOp::Mode || spec->op == ScriptOp::Screenshot ||
+                           spec->op == ScriptOp::Mode || spec->op == ScriptOp::Culling ||
+                           spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Screenshot ||
                            spec->op == ScriptOp::Drop;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
@@ -151,6 +155,14 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     case ScriptOp::Mode:
         if (!render::findDrawMode(command.text))
             fail("unknown mode '" + command.text + "' (known: " + render::drawModeNames() + ")");
+        break;
+    case ScriptOp::Culling:
+        if (!render::findCullMode(command.text))
+            fail("unknown culling '" + command.text + "' (known: " + render::cullModeNames() + ")");
+        break;
+    case ScriptOp::Freeze:
+        if (command.text != "on" && command.text != "off")
+            fail(std::string("'freeze' takes on or off, not '") + command.text + "'");
         break;
     default:
         break;

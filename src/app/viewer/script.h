@@ -50,6 +50,8 @@ enum class ScriptOp {
     Resize,
     Renderer,
     Mode,
+    Culling,
+    Freeze,
     Msaa,
     Copies,
     Screenshot,

@@ -1,0 +1,157 @@
+#version 460
+// cull.comp - the draws of one culling pass, written as indirect commands in list order with
+// their count (render/culling.h). Step "decide" flags each draw and counts per workgroup;
+// step "compact" adds up the counts of the workgroups before its own and writes its draws
+// there, so the commands keep the order of the whole list (where two surfaces share a depth,
+// the one drawn first wins, as without culling).
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_buffer_reference : require
+#extension GL_EXT_control_flow_attributes : require
+
+#include "shared.h"
+#include "cull.glsl"
+
+layout(local_size_x = CULL_GROUP_SIZE) in;
+
+layout(push_constant, std430) uniform CullBlock {
+    CullPush cull;
+};
+
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer FrameRef {
+    FrameData frame;
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer ObjectsRef {
+    ObjectData objects[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer DrawsRef {
+    DrawData draws[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer DrawCullRef {
+    DrawCull draws[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer StatsRef {
+    CullStats stats;
+};
+
+shared uint counts[CULL_GROUP_SIZE];
+
+// The state bits of draw `i` for this pass: the first pass of a frame finds them, the late
+// pass reads them back.
+uint decide(FrameData frame, uint i) {
+    CullWordsRef state = CullWordsRef(cull.stateAddress);
+    bool boundsHistory = (frame.flags & FRAME_BOUNDS_HISTORY) != 0u;
+    uint bits = 0u;
+    if (cull.phase == CULL_PHASE_LATE) {
+        bits = state.words[i] & (CULL_IN_FRUSTUM | CULL_WAS_VISIBLE);
+    } else {
+        bool passedBefore = (state.words[i] & CULL_PASSED) != 0u;
+        DrawData draw = DrawsRef(cull.drawsAddress).draws[i];
+        ObjectData object = ObjectsRef(frame.objectsAddress).objects[draw.objectIndex];
+        uint firstId = object.uniquePartOffset + draw.firstPart;
+        bool hidden = (frame.flags & FRAME_HIDING) != 0u &&
+                      allBitsInRange(frame.hiddenAddress, firstId, draw.partCount);
+        DrawCull box = DrawCullRef(cull.cullAddress).draws[i];
+        if (!hidden && !viewBox(frame, object.world, box.boxMin, box.boxMax).outside)
+            bits |= CULL_IN_FRUSTUM;
+        if (cull.phase == CULL_PHASE_EARLY &&
+            (boundsHistory ? passedBefore
+                           : anyBitInRange(frame.visibleAddress, firstId, draw.partCount)))
+            bits |= CULL_WAS_VISIBLE;
+    }
+    bool inFrustum = (bits & CULL_IN_FRUSTUM) != 0u;
+    bool wasVisible = (bits & CULL_WAS_VISIBLE) != 0u;
+    bool draw = inFrustum;
+    if (cull.phase == CULL_PHASE_EARLY) draw = inFrustum && wasVisible;
+    // Mesh tasks go through again when they were drawn early (their meshlets not drawn then
+    // are tested now, scene.task), and so do the floors' draws, whose test is the history.
+    bool retest = (cull.flags & CULL_MESH_DRAWS) != 0u || boundsHistory;
+    if (cull.phase == CULL_PHASE_LATE && inFrustum && (!wasVisible || retest)) {
+        DrawData d = DrawsRef(cull.drawsAddress).draws[i];
+        ObjectData object = ObjectsRef(frame.objectsAddress).objects[d.objectIndex];
+        DrawCull box = DrawCullRef(cull.cullAddress).draws[i];
+        bool passed = !occluded(frame, viewBox(frame, object.world, box.boxMin, box.boxMax));
+        if (passed && boundsHistory) bits |= CULL_PASSED;
+        draw = passed && (!wasVisible || (cull.flags & CULL_MESH_DRAWS) != 0u);
+    } else if (cull.phase == CULL_PHASE_LATE) {
+        draw = false;
+    }
+    return bits | (draw ? CULL_DRAW_NOW : 0u);
+}
+
+// Sum of counts[0 .. n) over the workgroup, left in counts[0]. n is a power of two.
+void reduce(uint lane, uint n) {
+    for (uint stride = n >> 1; stride > 0u; stride >>= 1) {
+        barrier();
+        if (lane < stride) counts[lane] += counts[lane + stride];
+    }
+    barrier();
+}
+
+void decideStep(uint lane, uint i) {
+    uint bits = 0u;
+    if (i < cull.drawCount) {
+        bits = decide(FrameRef(cull.frameAddress).frame, i);
+        CullWordsRef(cull.stateAddress).words[i] = bits;
+    }
+    counts[lane] = (bits & CULL_DRAW_NOW) != 0u ? 1u : 0u;
+    reduce(lane, CULL_GROUP_SIZE);
+    if (lane == 0u) CullWordsRef(cull.groupsAddress).words[gl_WorkGroupID.x] = counts[0];
+}
+
+void compactStep(uint lane, uint i) {
+    CullWordsRef groups = CullWordsRef(cull.groupsAddress);
+    // The draws of the workgroups before this one.
+    uint before = 0u;
+    for (uint g = lane; g < gl_WorkGroupID.x; g += CULL_GROUP_SIZE) before += groups.words[g];
+    counts[lane] = before;
+    reduce(lane, CULL_GROUP_SIZE);
+    uint base = counts[0];
+    barrier();
+    uint bits = i < cull.drawCount ? CullWordsRef(cull.stateAddress).words[i] : 0u;
+    bool drawn = (bits & CULL_DRAW_NOW) != 0u;
+    // Inclusive prefix of the flags within the workgroup (Hillis-Steele).
+    counts[lane] = drawn ? 1u : 0u;
+    barrier();
+    for (uint stride = 1u; stride < CULL_GROUP_SIZE; stride <<= 1) {
+        uint add = lane >= stride ? counts[lane - stride] : 0u;
+        barrier();
+        counts[lane] += add;
+        barrier();
+    }
+    uint groupTotal = counts[CULL_GROUP_SIZE - 1u];
+    StatsRef stats = StatsRef(cull.statsAddress);
+    if (drawn) {
+        uint slot = base + counts[lane] - 1u;
+        CullWordsRef source = CullWordsRef(cull.sourceAddress);
+        CullWordsRef target = CullWordsRef(cull.targetAddress);
+        for (uint w = 0u; w < cull.commandWords; ++w)
+            target.words[slot * cull.commandWords + w] = source.words[i * cull.commandWords + w];
+    }
+    // Triangles (indexed draws: indexCount / 3) and late draws the early pass did not list.
+    barrier();
+    counts[lane] = drawn && cull.commandWords == 5u
+                       ? CullWordsRef(cull.sourceAddress).words[i * 5u] / 3u
+                       : 0u;
+    reduce(lane, CULL_GROUP_SIZE);
+    uint triangles = counts[0];
+    barrier();
+    counts[lane] = drawn && (bits & CULL_WAS_VISIBLE) == 0u ? 1u : 0u;
+    reduce(lane, CULL_GROUP_SIZE);
+    if (lane == 0u) {
+        uint pass = cull.phase == CULL_PHASE_LATE ? 1u : 0u;
+        if (triangles != 0u) atomicAdd(stats.stats.triangles, triangles);
+        if (pass == 1u && counts[0] != 0u) atomicAdd(stats.stats.lateNew, counts[0]);
+        // The last workgroup knows the total: the pass's indirect draw count.
+        if (gl_WorkGroupID.x + 1u == cull.groupCount)
+            stats.stats.draws[pass] = base + groupTotal;
+    }
+}
+
+void main() {
+    uint lane = gl_LocalInvocationID.x;
+    uint i = gl_GlobalInvocationID.x;
+    if (cull.step == CULL_STEP_DECIDE)
+        decideStep(lane, i);
+    else
+        compactStep(lane, i);
+}

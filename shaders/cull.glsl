@@ -1,0 +1,126 @@
+// cull.glsl - the conservative tests every culling decision is made of, shared by cull.comp
+// (per draw) and scene.task (per meshlet): a box in an object's coordinates against the view
+// frustum and against the depth pyramid, and bit ranges of the part bitsets. Something is
+// dropped only where no sample of it could pass: the margins below cover the rounding by
+// which the vertex shader's positions may differ from the box's corners computed here, and
+// the rasterizer's snapping of vertices to its sub-pixel grid.
+// Needs shared.h and GL_EXT_buffer_reference before it.
+
+// The tests can be made wrong on purpose (tests/test_culling.cpp): every screen rectangle
+// shrunk by this many pixels on each side must change the images.
+#ifndef IDV_CULL_SHRINK_PIXELS
+#define IDV_CULL_SHRINK_PIXELS 0
+#endif
+
+// Boxes are inflated by this fraction of the largest coordinate magnitude involved (world
+// position and eye): 16 float ulps, several times the rounding of one matrix product.
+const float CULL_RELATIVE_MARGIN = 1.0 / 524288.0;
+// Screen rectangles grow by this much on each side (vertices snap to 1/256 pixel).
+const float CULL_PIXEL_MARGIN = 1.0 / 16.0;
+// Depth comparisons keep this much apart for the rasterizer's depth interpolation.
+const float CULL_DEPTH_MARGIN = 1.0 / 1048576.0;
+
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer CullWordsRef {
+    uint words[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PyramidRef {
+    PyramidHeader header;
+    float depth[];
+};
+
+// Whether any (all) of the bits [first, first + count) of a bitset are set.
+bool anyBitInRange(uint64_t address, uint first, uint count) {
+    if (count == 0u) return false;
+    CullWordsRef bits = CullWordsRef(address);
+    uint last = first + count - 1u;
+    for (uint w = first >> 5; w <= (last >> 5); ++w) {
+        uint lo = w == (first >> 5) ? (first & 31u) : 0u;
+        uint hi = w == (last >> 5) ? (last & 31u) : 31u;
+        uint mask = (0xFFFFFFFFu >> (31u - hi)) & (0xFFFFFFFFu << lo);
+        if ((bits.words[w] & mask) != 0u) return true;
+    }
+    return false;
+}
+
+bool allBitsInRange(uint64_t address, uint first, uint count) {
+    CullWordsRef bits = CullWordsRef(address);
+    uint last = first + count - 1u;
+    for (uint w = first >> 5; count != 0u && w <= (last >> 5); ++w) {
+        uint lo = w == (first >> 5) ? (first & 31u) : 0u;
+        uint hi = w == (last >> 5) ? (last & 31u) : 31u;
+        uint mask = (0xFFFFFFFFu >> (31u - hi)) & (0xFFFFFFFFu << lo);
+        if ((bits.words[w] & mask) != mask) return false;
+    }
+    return true;
+}
+
+// A box seen by the camera: outside the frustum, or its screen rectangle (pixels) and its
+// nearest depth, unless it reaches behind the near plane (then it cannot be occluded).
+struct BoxView {
+    bool outside;
+    bool crossesNear;
+    vec2 minPixel, maxPixel;
+    float minDepth;
+};
+
+BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
+    vec3 center = (boxMin + boxMax) * 0.5;
+    vec3 halfSize = max((boxMax - boxMin) * 0.5, vec3(0.0));
+    vec3 scales = vec3(length(world[0].xyz), length(world[1].xyz), length(world[2].xyz));
+    float reach = length(world[3].xyz) + length(frame.eyePosition.xyz) +
+                  (length(center) + length(halfSize)) * max(scales.x, max(scales.y, scales.z));
+    halfSize += reach * CULL_RELATIVE_MARGIN / max(min(scales.x, min(scales.y, scales.z)), 1e-30);
+
+    mat4 mvp = frame.viewProj * world;
+    vec4 c = mvp * vec4(center, 1.0);
+    vec4 ex = mvp[0] * halfSize.x, ey = mvp[1] * halfSize.y, ez = mvp[2] * halfSize.z;
+    uint outsideAll = 63u; // planes every corner is outside of: -x +x -y +y near far
+    BoxView view;
+    view.crossesNear = false;
+    view.minPixel = vec2(1e30);
+    view.maxPixel = vec2(-1e30);
+    view.minDepth = 1.0;
+    [[unroll]] for (uint i = 0u; i < 8u; ++i) {
+        vec4 p = c + ((i & 1u) != 0u ? ex : -ex) + ((i & 2u) != 0u ? ey : -ey) +
+                 ((i & 4u) != 0u ? ez : -ez);
+        uint outside = (p.x < -p.w ? 1u : 0u) | (p.x > p.w ? 2u : 0u) |
+                       (p.y < -p.w ? 4u : 0u) | (p.y > p.w ? 8u : 0u) |
+                       (p.z < 0.0 ? 16u : 0u) | (p.z > p.w ? 32u : 0u);
+        outsideAll &= outside;
+        if (p.w <= 0.0 || p.z < 0.0) {
+            view.crossesNear = true;
+            continue;
+        }
+        vec3 ndc = p.xyz / p.w;
+        vec2 pixel = (ndc.xy * 0.5 + 0.5) * vec2(frame.viewport);
+        view.minPixel = min(view.minPixel, pixel);
+        view.maxPixel = max(view.maxPixel, pixel);
+        view.minDepth = min(view.minDepth, ndc.z);
+    }
+    view.outside = outsideAll != 0u;
+    return view;
+}
+
+// Whether every sample the box may cover already holds a nearer depth in the pyramid.
+bool occluded(FrameData frame, BoxView view) {
+    if (view.crossesNear || frame.pyramidAddress == 0ul) return false;
+    vec2 last = vec2(frame.viewport) - 1.0;
+    vec2 lo = clamp(floor(view.minPixel - CULL_PIXEL_MARGIN), vec2(0.0), last);
+    vec2 hi = clamp(floor(view.maxPixel + CULL_PIXEL_MARGIN), vec2(0.0), last);
+    ivec2 first = ivec2(lo) + IDV_CULL_SHRINK_PIXELS;
+    ivec2 end = max(ivec2(hi) - IDV_CULL_SHRINK_PIXELS, first);
+    PyramidRef pyramid = PyramidRef(frame.pyramidAddress);
+    uint levels = pyramid.header.levels;
+    // The finest level where the rectangle spans at most 2 x 2 texels.
+    uint k = 0u;
+    while (k + 1u < levels && any(greaterThan((end >> (k + 1u)) - (first >> (k + 1u)), ivec2(1))))
+        ++k;
+    PyramidLevel level = pyramid.header.level[k];
+    ivec2 t0 = first >> (k + 1u);
+    ivec2 t1 = min(end >> (k + 1u), ivec2(level.width, level.height) - 1);
+    float farthest = 0.0;
+    for (int y = t0.y; y <= t1.y; ++y)
+        for (int x = t0.x; x <= t1.x; ++x)
+            farthest = max(farthest, pyramid.depth[level.offset + uint(y) * level.width + uint(x)]);
+    return view.minDepth - CULL_DEPTH_MARGIN >= farthest;
+}

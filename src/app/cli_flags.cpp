@@ -1,0 +1,411 @@
+// cli_flags.cpp - the flag table: each flag's name, value, help (with the default the
+// settings define) and what it writes into Options; and the parsing of its values.
+#include "app/cli_flags.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+
+#include "app/scene_source.h"
+#include "render/culling.h"
+#include "render/technique.h"
+#include "scene/camera_path.h"
+#include "scene/copies.h"
+
+namespace app {
+
+// "a,b,,c" -> {"a", "b", "", "c"}: every item, empty ones included (they are refused later).
+std::vector<std::string> commaList(const std::string& text) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        items.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
+}
+
+namespace {
+
+uint32_t parseCount(const std::string& flag, const std::string& text, uint32_t min, uint32_t max) {
+    uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || value < min || value > max)
+        throw UsageError(flag + " expects a whole number from " + std::to_string(min) + " to " +
+                         std::to_string(max) + ", not '" + text + "'");
+    return value;
+}
+
+// A number from 0 to `max`; `what` names it in the refusal ("a number", "seconds").
+float parseNumber(const std::string& flag, const std::string& text, float max, const char* what) {
+    try {
+        size_t used = 0;
+        float value = std::stof(text, &used);
+        if (used == text.size() && value >= 0.0f && value <= max) return value;
+    } catch (const std::exception&) { // not a number at all: the same refusal
+    }
+    char range[48];
+    std::snprintf(range, sizeof range, " from 0 to %.10g", double(max));
+    throw UsageError(flag + " expects " + what + range + ", not '" + text + "'");
+}
+
+float parseFraction(const std::string& flag, const std::string& text) {
+    return parseNumber(flag, text, 1.0f, "a number");
+}
+
+void parseSize(const std::string& text, Options& o) {
+    auto x = text.find('x');
+    if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, not '" + text + "'");
+    o.width = parseCount("--size width", text.substr(0, x), 1, 16384);
+    o.height = parseCount("--size height", text.substr(x + 1), 1, 16384);
+}
+
+uint32_t parseRange(const std::string& flag, const std::string& text, render::Range range) {
+    return parseCount(flag, text, range.min, range.max);
+}
+
+bool parseOnOff(const std::string& flag, const std::string& text) {
+    if (text != "on" && text != "off")
+        throw UsageError(flag + " expects on or off, not '" + text + "'");
+    return text == "on";
+}
+
+Options::Pixel parsePixel(const std::string& flag, const std::string& text) {
+    auto comma = text.find(',');
+    if (comma == std::string::npos) throw UsageError(flag + " expects X,Y, not '" + text + "'");
+    return {parseCount(flag + " x", text.substr(0, comma), 0, 16383),
+            parseCount(flag + " y", text.substr(comma + 1), 0, 16383)};
+}
+
+// "4,7,12": whole numbers from 0 to `max`.
+std::vector<uint32_t> parseCounts(const std::string& flag, const std::string& text, uint32_t max) {
+    std::vector<uint32_t> values;
+    for (const std::string& item : commaList(text))
+        values.push_back(parseCount(flag, item, 0, max));
+    return values;
+}
+
+// "4,7,12": unique part IDs.
+std::vector<uint32_t> parseIds(const std::string& flag, const std::string& text) {
+    return parseCounts(flag, text, 0xFFFFFFFEu);
+}
+
+render::PartSetQuery parseRect(const std::string& flag, const std::string& text) {
+    const std::vector<uint32_t> corners = parseCounts(flag, text, 16383);
+    if (corners.size() != 4) throw UsageError(flag + " expects X0,Y0,X1,Y1, not '" + text + "'");
+    return render::spanning({corners[0], corners[1]}, {corners[2], corners[3]});
+}
+
+// "RRGGBB" in hex, as displayed.
+glm::vec3 parseColor(const std::string& flag, const std::string& text) {
+    uint32_t value = 0;
+    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value, 16);
+    if (text.size() != 6 || error != std::errc() || end != text.data() + text.size())
+        throw UsageError(flag + " expects a colour as RRGGBB in hex, not '" + text + "'");
+    return glm::vec3((value >> 16) & 0xFF, (value >> 8) & 0xFF, value & 0xFF) / 255.0f;
+}
+
+std::string hexColor(glm::vec3 color) {
+    char text[8];
+    const glm::uvec3 c = glm::uvec3(glm::round(glm::clamp(color, 0.0f, 1.0f) * 255.0f));
+    std::snprintf(text, sizeof text, "%02x%02x%02x", c.r, c.g, c.b);
+    return text;
+}
+
+// " (default 16)", " 1 to 32 (default 16)": help text from the settings' own defaults.
+template <typename T>
+std::string byDefault(const T& value) {
+    std::ostringstream text;
+    text << " (default " << value << ")";
+    return text.str();
+}
+std::string within(render::Range range, uint32_t value) {
+    return ", " + std::to_string(range.min) + " to " + std::to_string(range.max) + byDefault(value);
+}
+std::string percent(double fraction) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g%%", fraction * 100.0);
+    return text;
+}
+std::string onOff(bool value) {
+    return byDefault(value ? "on" : "off");
+}
+
+// A flag whose value is stored as given in a string of Options.
+Flag text(const char* name, const char* value, std::string help, std::string Options::*field) {
+    return {name, value, std::move(help),
+            [field](Options& o, const std::string& v) { o.*field = v; }};
+}
+
+// A switch that sets a bool of Options.
+Flag on(const char* name, std::string help, bool Options::*field) {
+    return {name, nullptr, std::move(help),
+            [field](Options& o, const std::string&) { o.*field = true; }};
+}
+
+// --renderer or --mode: one registry entry into the pipeline key, or with --benchmark a list.
+template <typename Entry>
+Flag registryFlag(const char* name, const char* help, const char* value,
+                  std::vector<const Entry*> (*list)(const std::string&),
+                  std::vector<const Entry*> Options::*benchmarkList,
+                  const Entry* render::PipelineKey::*field) {
+    return {name, "NAME",
+            help + byDefault(value) + "; with --benchmark a comma list or all (default)",
+            [=](Options& o, const std::string& v) {
+                o.*benchmarkList = list(v);
+                o.render.pipeline.*field = (o.*benchmarkList).front();
+            }};
+}
+
+// A whole-number flag within `range`, written into the field `field` names.
+Flag rangeFlag(const char* name, const char* help, render::Range range, uint32_t value,
+               uint32_t& (*field)(Options&)) {
+    return {name, "N", help + within(range, value),
+            [=](Options& o, const std::string& v) { field(o) = parseRange(name, v, range); }};
+}
+
+} // namespace
+
+const std::vector<Flag>& flags() {
+    static const std::vector<Flag> table = [] {
+        const Options d; // the defaults, as the settings structs define them
+        const render::PipelineKey& key = d.render.pipeline;
+        const render::NarySearch& nary = key.nsearch;
+        return std::vector<Flag>{
+            on("--help", "print this text", &Options::help),
+            on("--headless", "render offscreen without a window or surface", &Options::headless),
+            {"--size", "WxH",
+             "render size in pixels" +
+                 byDefault(std::to_string(d.width) + "x" + std::to_string(d.height)),
+             [](Options& o, auto& v) { parseSize(v, o); }},
+            {"--msaa", "N",
+             "samples per pixel: 1, 2, 4 or 8, as the device offers" + byDefault(key.msaa),
+             [](Options& o, auto& v) {
+                 uint32_t& msaa = o.render.pipeline.msaa;
+                 msaa = parseCount("--msaa", v, 1, 8);
+                 if (msaa & (msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
+             }},
+            {"--frames", "N",
+             "frames to render headless" + byDefault(d.frames) + "; files hold the last one",
+             [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }},
+            text("--screenshot", "FILE", "write the last frame's colour image as PNG",
+                 &Options::screenshot),
+            text("--id-image", "FILE",
+                 "write the last frame's part IDs: W*H little-endian uint32, row-major, top row "
+                 "first, "
+                 "0xFFFFFFFF where no part is",
+                 &Options::idImage),
+            {"--model", "FILE",
+             "open a glTF model (.gltf, .glb) or a CAD file (.step, .stp, .iges, .igs, .brep; "
+             "one part per B-rep face); default: assets/default.glb",
+             [](Options& o, auto& v) { o.scene.model = v; }},
+            {"--deflection", "X",
+             "CAD files: linear tessellation deflection in model units; 0 picks " +
+                 percent(scene::kRelativeDeflection) + " of the model's bounding box diagonal" +
+                 byDefault(d.scene.cad.deflection),
+             [](Options& o, auto& v) {
+                 o.scene.cad.deflection = parseNumber("--deflection", v, 1e9f, "a length");
+             }},
+            {"--angular-deflection", "RAD",
+             "CAD files: angular tessellation deflection in radians, above 0 up to 3.14" +
+                 byDefault(d.scene.cad.angularDeflection),
+             [](Options& o, auto& v) {
+                 const float radians = parseNumber("--angular-deflection", v, 3.14f, "radians");
+                 if (radians <= 0.0f)
+                     throw UsageError("--angular-deflection expects radians above 0, not '" + v +
+                                      "'");
+                 o.scene.cad.angularDeflection = radians;
+             }},
+            {"--scene", "SPEC",
+             "built-in scene instead of a model: assembly, tiles (the test layout) or "
+             "procedural[:preset=small|car-like][,seed=N]",
+             [](Options& o, auto& v) {
+                 try {
+                     parseSceneSpec(v);
+                 } catch (const std::invalid_argument& e) {
+                     throw UsageError(std::string("--scene: ") + e.what());
+                 }
+                 o.scene.builtin = v;
+             }},
+            {"--parts", "MODE",
+             "glTF parts (CAD files: always one per face): primitives (one part per primitive) or "
+             "components (one per connected "
+             "component, recovers CAD faces merged by an exporter)" +
+                 byDefault(scene::partModeName(d.scene.parts)),
+             [](Options& o, auto& v) {
+                 try {
+                     o.scene.parts = scene::parsePartMode(v);
+                 } catch (const std::invalid_argument&) {
+                     throw UsageError("--parts expects primitives or components, not '" + v + "'");
+                 }
+             }},
+            {"--copies", "N", "replicate the model N times on a grid" + byDefault(d.scene.copies),
+             [](Options& o, auto& v) { o.scene.copies = parseCount("--copies", v, 1, 1000000); }},
+            {"--copy-axes", "AXES",
+             "axes the copies' grid spans: any of x, y, z, e.g. x, xz or xyz" +
+                 byDefault(scene::copyAxesName(d.scene.copyAxes)),
+             [](Options& o, auto& v) {
+                 try {
+                     o.scene.copyAxes = scene::parseCopyAxes(v);
+                 } catch (const std::invalid_argument& e) {
+                     throw UsageError(std::string("--copy-axes: ") + e.what());
+                 }
+             }},
+            rangeFlag("--search-batch", "parts per draw of the search techniques",
+                      render::searchBatchRange, key.searchBatch,
+                      [](Options& o) -> uint32_t& { return o.render.pipeline.searchBatch; }),
+            rangeFlag("--nsearch-n", "nsearch renderers: offsets read per step",
+                      render::nsearchFanOutRange, nary.n,
+                      [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.n; }),
+            {"--nsearch-guess", "on|off",
+             "nsearch renderers: start at the part a uniform part size predicts" +
+                 onOff(nary.guess),
+             [](Options& o, auto& v) {
+                 o.render.pipeline.nsearch.guess = parseOnOff("--nsearch-guess", v);
+             }},
+            rangeFlag(
+                "--nsearch-linear", "nsearch renderers: scan linearly from N parts left",
+                render::nsearchLinearRange, nary.linearBelow,
+                [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.linearBelow; }),
+            rangeFlag("--nsearch-steps",
+                      "nsearch renderers: N-ary steps at most, a linear scan finishes",
+                      render::nsearchStepsRange, nary.maxSteps,
+                      [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.maxSteps; }),
+            {"--visible", "F",
+             "draw only the first ceil(F * objects) objects in scene order, 0 to 1" +
+                 byDefault(d.render.draws.visible),
+             [](Options& o, auto& v) { o.render.draws.visible = parseFraction("--visible", v); }},
+            {"--ignore-materials", nullptr,
+             "shade every object with one neutral grey, so only part colours show",
+             [](Options& o, auto&) { o.render.shading.ignoreMaterials = true; }},
+            on("--stats",
+               "print the scene's statistics as one JSON object (objects, geometries, parts, "
+               "triangles, load_ms, ID buffer bytes) and, for the chosen renderer and mode, draws, "
+               "pipelines and the bytes of each buffer; then exit",
+               &Options::stats),
+            text("--export", "FILE", "write the scene (after copies) as binary glTF and exit",
+                 &Options::exportPath),
+            registryFlag("--renderer", "part-ID technique (see --list-renderers)",
+                         key.technique->name, techniqueList, &Options::benchmarkTechniques,
+                         &render::PipelineKey::technique),
+            registryFlag("--mode", "per-draw parameter mode", key.mode->name, modeList,
+                         &Options::benchmarkModes, &render::PipelineKey::mode),
+            {"--culling", "MODE",
+             "leave out what cannot show, the images unchanged: off, frustum or occlusion "
+             "(two-phase, against the last ID image and a depth pyramid)" +
+                 byDefault(render::cullModeName(d.render.culling.mode)) +
+                 "; what each per-draw mode gets: --list-renderers; with --benchmark a comma "
+                 "list or all (default)",
+             [](Options& o, auto& v) {
+                 o.benchmarkCulling = cullingList(v);
+                 o.render.culling.mode = o.benchmarkCulling.front()->mode;
+             }},
+            {"--freeze-culling", nullptr,
+             "keep the draw lists of the first culled frame in every later one (what the "
+             "panel's freeze culling does), so the camera can move and show what was left out",
+             [](Options& o, auto&) { o.render.culling.freeze = true; }},
+            {"--camera-path", "PATH",
+             "headless and --benchmark: move the camera every frame, orbit (around the scene "
+             "at the fitted distance) or dolly (from the fitted view into the middle of the "
+             "assembly and back), over --frames frames; the images hold the last",
+             [](Options& o, auto& v) {
+                 const auto path = scene::findCameraPath(v);
+                 if (!path)
+                     throw UsageError("--camera-path expects " + scene::cameraPathNames() +
+                                      ", not '" + v + "'");
+                 o.cameraPath = *path;
+             }},
+            {"--benchmark", nullptr,
+             "headless: time every renderer x mode x culling mode and the floors (no-id, "
+             "no-id-mesh with mesh techniques); defaults 2560x1440, "
+             "--msaa 4, --copies 3, --frames 200 (each flag overrides)",
+             [](Options& o, auto&) { o.benchmark = o.headless = true; }},
+            text("--benchmark-out", "FILE",
+                 "write the benchmark as JSON (CSV when FILE ends in .csv)",
+                 &Options::benchmarkOut),
+            {"--part-weight", "F",
+             "blend of part colour over material colour, 0 to 1" +
+                 byDefault(d.render.shading.partWeight),
+             [](Options& o, auto& v) {
+                 o.render.shading.partWeight = parseFraction("--part-weight", v);
+             }},
+            {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
+             [](Options& o, auto&) { o.render.shading.colorizeDraws = true; }},
+            {"--no-sort-draws", nullptr,
+             "keep draws in scene order instead of by geometry and material",
+             [](Options& o, auto&) { o.render.draws.sortDraws = false; }},
+            {"--gs-ordinary", nullptr,
+             "gs renderers: use an ordinary geometry shader even where "
+             "VK_NV_geometry_shader_passthrough is offered",
+             [](Options& o, auto&) { o.render.pipeline.gsPassthrough = false; }},
+            {"--pick", "X,Y",
+             "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
+             "{x,y,part,object,local_part,name,path,depth} (name: the object's, path: its node "
+             "path from the root; all but x,y null on background; CAD files add face, the "
+             "part's B-rep face); repeatable; the last point "
+             "stays hovered in the images",
+             [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
+            {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
+             [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
+            {"--select-rect", "X0,Y0,X1,Y1",
+             "headless: select every part visible in the pixel rectangle (corners included) "
+             "as a box selection would, and print one JSON line {rect,parts,count}",
+             [](Options& o, auto& v) { o.selectRect = parseRect("--select-rect", v); }},
+            {"--hide", "ID,...", "headless: do not draw these unique parts (nor pick them)",
+             [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }},
+            {"--isolate", "ID,...", "headless: draw only these unique parts",
+             [](Options& o, auto& v) { o.isolate = parseIds("--isolate", v); }},
+            on("--visible-parts",
+               "headless: print one JSON line {count,parts} of the unique parts the last frame "
+               "shows, counted on the GPU; with --benchmark every frame counts them",
+               &Options::visibleParts),
+            {"--edges", nullptr,
+             "draw part edges from the ID image, and outlines of the selected and hovered parts",
+             [](Options& o, auto&) { o.render.edges.on = true; }},
+            rangeFlag("--edge-width", "edge width in pixels (outlines are wider)",
+                      render::edgeWidthRange, d.render.edges.width,
+                      [](Options& o) -> uint32_t& { return o.render.edges.width; }),
+            {"--edge-color", "RRGGBB",
+             "edge colour in hex, as displayed" + byDefault(hexColor(d.render.edges.color)),
+             [](Options& o, auto& v) { o.render.edges.color = parseColor("--edge-color", v); }},
+            {"--animate", nullptr,
+             "exploded-view animation: objects move out from the scene centre to twice their "
+             "distance and back every 4 s, their matrices written on the GPU each frame; headless "
+             "at --time, else at frame / 60 s",
+             [](Options& o, auto&) { o.animation.animate = true; }},
+            {"--time", "SECONDS",
+             "with --animate: the moment of the loop to render (default: frame / 60)",
+             [](Options& o, auto& v) {
+                 o.animation.time = parseNumber("--time", v, 1e6f, "seconds");
+             }},
+            on("--list-renderers", "print the renderers and modes, then exit",
+               &Options::listRenderers),
+            on("--validation", "enable the Khronos validation layer; messages make exit 3",
+               &Options::validation),
+            {"--sync-validation", nullptr,
+             "--validation plus the layer's synchronization validation (slower; for testing)",
+             [](Options& o, auto&) { o.validation = o.syncValidation = true; }},
+            text("--device", "INDEX|NAME",
+                 "Vulkan device by index or name substring (default: best)", &Options::device),
+            on("--list-devices", "print the Vulkan devices and whether idview runs there",
+               &Options::listDevices),
+            text("--shader-dir", "DIR", "read shaders from DIR instead of the built-in location",
+                 &Options::shaderDir),
+            text(
+                "--script", "FILE",
+                "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
+                "drag, scroll, resize, renderer, mode, msaa, copies, frames, screenshot, drop, "
+                "quit)",
+                &Options::script),
+            on("--print-events",
+               "viewer: print one 'idview: ...' line on stdout per event (title, selection, opened "
+               "model, screenshot, shader reload), for scripts and tests; quiet otherwise",
+               &Options::printEvents),
+        };
+    }();
+    return table;
+}
+
+} // namespace app

@@ -1,0 +1,247 @@
+// culling.cpp - culling modes, what each technique and mode gets, the CPU frustum test, and
+// recording the cull and depth pyramid passes (see culling.h).
+#include "render/culling.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "vk/barrier.h"
+#include "vk/check.h"
+#include "vk/debug.h"
+
+namespace render {
+namespace {
+
+// shaders/cull.glsl's margin: boxes grow by this fraction of the coordinate magnitudes.
+constexpr float relativeMargin = 1.0f / 524288.0f;
+
+uint32_t groupsOf(uint32_t count, uint32_t size) {
+    return (count + size - 1) / size;
+}
+
+} // namespace
+
+const std::vector<CullModeEntry>& cullModes() {
+    static const std::vector<CullModeEntry> list = {
+        {CullMode::Off, "off", "draw every object every frame"},
+        {CullMode::Frustum, "frustum", "leave out what lies outside the view frustum"},
+        {CullMode::Occlusion, "occlusion",
+         "frustum, and two-phase occlusion: what the last ID image showed first, then the "
+         "rest against a depth pyramid of that"},
+    };
+    return list;
+}
+
+const char* cullModeName(CullMode mode) {
+    for (const CullModeEntry& e : cullModes())
+        if (e.mode == mode) return e.name;
+    return "off";
+}
+
+const CullModeEntry* findCullMode(const std::string& name) {
+    for (const CullModeEntry& e : cullModes())
+        if (name == e.name) return &e;
+    return nullptr;
+}
+
+std::string cullModeNames() {
+    std::string text;
+    for (const CullModeEntry& e : cullModes())
+        text += (text.empty() ? "" : ", ") + std::string(e.name);
+    return text;
+}
+
+CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode culling) {
+    CullPlan plan;
+    if (culling == CullMode::Off) return plan;
+    plan.gpuLists = mode.indirect;
+    plan.cpuFrustum = !mode.indirect;
+    plan.taskShader = technique.usesMeshShader();
+    // Push mode draws from the CPU, which does not know what the GPU found occluded; the
+    // task shader does, so push mode's mesh draws still get the two phases for meshlets.
+    plan.twoPasses = culling == CullMode::Occlusion && (plan.gpuLists || plan.taskShader);
+    return plan;
+}
+
+std::string describeCulling(const DrawMode& mode, CullMode culling, bool meshTechnique) {
+    if (culling == CullMode::Off) return "none";
+    const bool occlusion = culling == CullMode::Occlusion;
+    std::string text =
+        mode.indirect ? std::string("GPU-built draw lists: frustum") +
+                            (occlusion ? " and two-phase occlusion" : "") + " per draw"
+                      : std::string("CPU: frustum per object") +
+                            (occlusion && !meshTechnique ? " (occlusion needs an mdi mode)" : "");
+    if (meshTechnique)
+        text += std::string("; task shader: meshlets by frustum") +
+                (occlusion ? " and depth pyramid" : "");
+    return text;
+}
+
+bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3 eye,
+                    const scene::Bounds& box) {
+    // The same inflated box as cull.glsl's viewBox().
+    const glm::vec3 center = (box.min + box.max) * 0.5f;
+    glm::vec3 half = glm::max((box.max - box.min) * 0.5f, glm::vec3(0.0f));
+    const glm::vec3 scales(glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])),
+                           glm::length(glm::vec3(world[2])));
+    const float largest = std::max({scales.x, scales.y, scales.z});
+    const float smallest = std::max(std::min({scales.x, scales.y, scales.z}), 1e-30f);
+    const float reach = glm::length(glm::vec3(world[3])) + glm::length(eye) +
+                        (glm::length(center) + glm::length(half)) * largest;
+    half += reach * relativeMargin / smallest;
+    const glm::mat4 mvp = viewProj * world;
+    uint32_t outsideAll = 63;
+    for (uint32_t i = 0; i < 8; ++i) {
+        const glm::vec3 corner =
+            center +
+            glm::vec3(i & 1 ? half.x : -half.x, i & 2 ? half.y : -half.y, i & 4 ? half.z : -half.z);
+        const glm::vec4 p = mvp * glm::vec4(corner, 1.0f);
+        outsideAll &= (p.x < -p.w ? 1u : 0u) | (p.x > p.w ? 2u : 0u) | (p.y < -p.w ? 4u : 0u) |
+                      (p.y > p.w ? 8u : 0u) | (p.z < 0.0f ? 16u : 0u) | (p.z > p.w ? 32u : 0u);
+    }
+    return outsideAll != 0;
+}
+
+CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
+                         const std::vector<gpu::DrawCull>& cull, uint32_t meshletBitCount,
+                         uint32_t bytesPerCommand)
+    : drawCount(static_cast<uint32_t>(cull.size())),
+      groupCount(groupsOf(static_cast<uint32_t>(cull.size()), gpu::CULL_GROUP_SIZE)),
+      commandBytes(bytesPerCommand) {
+    const VkBufferUsageFlags shader =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+    const VkDeviceSize drawsAtLeastOne = std::max<VkDeviceSize>(drawCount, 1);
+    draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
+    // Zeros: nothing passed a test yet (what the floors' early pass reads).
+    state = upload.add(std::vector<uint32_t>(drawsAtLeastOne, 0u), shader, "cull state");
+    groups = vk::Buffer(device, std::max<VkDeviceSize>(groupCount, 1) * 4, shader, 0,
+                        "cull workgroup counts");
+    const char* names[2] = {"culled draws (early or only pass)", "culled draws (late pass)"};
+    for (int i = 0; i < 2; ++i)
+        lists[i] = vk::Buffer(device, drawsAtLeastOne * std::max(commandBytes, 4u),
+                              shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, 0, names[i]);
+    stats = vk::Buffer(device, sizeof(gpu::CullStats),
+                       shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                           VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                       0, "cull counters");
+    // Zeros: no meshlet passed a test yet, so the first early pass draws none of them and
+    // the late pass tests them all.
+    if (meshletBitCount)
+        meshletBits = upload.add(std::vector<uint32_t>((meshletBitCount + 31) / 32, 0u), shader,
+                                 "meshlet visibility bits");
+}
+
+CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
+    cull_ = createComputePipeline(device, compiler, "cull.comp", sizeof(gpu::CullPush),
+                                  VK_NULL_HANDLE, "cull draws");
+    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                         VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    auto layout = vk::init<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    layout.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    layout.bindingCount = 1;
+    layout.pBindings = &binding;
+    depthLayout_ = vk::make(device, vkCreateDescriptorSetLayout, layout, "depth pyramid input");
+    // texelFetch only: the sampler's filtering is never used.
+    auto sampler = vk::init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
+    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler_ = vk::make(device, vkCreateSampler, sampler, "depth pyramid sampler");
+    for (int msaa = 0; msaa < 2; ++msaa)
+        pyramid_[msaa] = createComputePipeline(device, compiler, "depth_pyramid.comp",
+                                               sizeof(gpu::PyramidPush), depthLayout_.get(),
+                                               msaa ? "depth pyramid (MSAA)" : "depth pyramid",
+                                               {{"IDV_PYRAMID_MSAA", msaa ? "1" : "0"}});
+}
+
+void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkDeviceAddress frame,
+                            VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase,
+                            bool meshDraws) const {
+    vk::CmdLabel label(device_.debug(), cmd,
+                       phase == gpu::CULL_PHASE_LATE ? "cull draws (late)" : "cull draws");
+    const bool late = phase == gpu::CULL_PHASE_LATE;
+    // Earlier reads of what this pass writes (the last frame's draws of these lists, the
+    // early pass's state) are done; the counters' reset and earlier passes' writes are seen.
+    const VkPipelineStageFlags before = VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
+                                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                                        VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vk::memoryBarrier(cmd, before | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                      VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    gpu::CullPush push{};
+    push.frameAddress = frame;
+    push.drawsAddress = draws;
+    push.cullAddress = buffers.draws.address();
+    push.sourceAddress = source;
+    push.targetAddress = buffers.lists[late ? 1 : 0].address();
+    push.stateAddress = buffers.state.address();
+    push.groupsAddress = buffers.groups.address();
+    push.statsAddress = buffers.stats.address();
+    push.drawCount = buffers.drawCount;
+    push.phase = phase;
+    push.commandWords = buffers.commandBytes / 4;
+    push.flags = meshDraws ? gpu::CULL_MESH_DRAWS : 0u;
+    push.groupCount = buffers.groupCount;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
+    for (uint32_t step : {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT}) {
+        push.step = step;
+        vkCmdPushConstants(cmd, cull_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                           &push);
+        if (buffers.groupCount) vkCmdDispatch(cmd, buffers.groupCount, 1, 1);
+        if (step == gpu::CULL_STEP_DECIDE)
+            vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    }
+    // The draws read the commands and the count; the task shader the state.
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT |
+                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
+}
+
+void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const {
+    vk::CmdLabel label(device_.debug(), cmd, "depth pyramid");
+    const gpu::PyramidHeader& header = targets.pyramidHeader();
+    // Earlier readers of the pyramid (the last frame's late pass, in the cull and the task
+    // shader) are done before it is rewritten.
+    vk::memoryBarrier(
+        cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+        VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdUpdateBuffer(cmd, targets.pyramid().handle(), 0, sizeof header, &header);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    const bool msaa = targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT;
+    const ComputePipeline& pass = pyramid_[msaa ? 1 : 0];
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+    VkDescriptorImageInfo image{sampler_.get(), targets.depth().view(),
+                                VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    auto write = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    write.dstBinding = 0;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &image;
+    device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
+                                &write);
+    gpu::PyramidPush push{};
+    push.pyramidAddress = targets.pyramid().address();
+    push.extent = {targets.extent().width, targets.extent().height};
+    push.samples = uint32_t(targets.pass().samples());
+    for (uint32_t level = 0; level < header.levels; ++level) {
+        push.level = level;
+        vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                           &push);
+        vkCmdDispatch(cmd, groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
+                      groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1);
+        // The next level reads this one; after the last, the cull and task shaders do.
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                          VK_ACCESS_SHADER_READ_BIT);
+    }
+}
+
+} // namespace render

@@ -1,0 +1,97 @@
+// culling.h - drawing only what can show, with images unchanged (shaders/cull.glsl).
+//
+// In the mdi modes a compute pass (shaders/cull.comp) writes each frame's indirect draws and
+// their count from every draw's box; the mesh techniques' task shader (shaders/scene.task)
+// culls meshlets; in push mode the CPU skips objects outside the view frustum. Occlusion
+// culling is two-phase: the first half of the scene pass draws what the last ID image showed
+// (the visible-part pass over it names exactly those parts), a depth pyramid is built from
+// that depth (the farthest sample of every pixel), and the second half draws the rest that
+// the pyramid does not hide. Every test is conservative and the lists keep the draw order,
+// so the ID and colour images are byte for byte those drawn without culling.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/pipeline.h"
+#include "render/settings.h"
+#include "render/targets.h"
+#include "scene/scene.h"
+#include "shared.h"
+#include "vk/resources.h"
+#include "vk/upload.h"
+
+namespace render {
+
+struct CullModeEntry {
+    CullMode mode;
+    const char* name;
+    const char* description;
+};
+const std::vector<CullModeEntry>& cullModes();
+const char* cullModeName(CullMode mode);
+const CullModeEntry* findCullMode(const std::string& name);
+std::string cullModeNames(); // "off, frustum, occlusion"
+
+// What a technique in a per-draw mode gets of a culling mode.
+struct CullPlan {
+    bool gpuLists = false;   // cull.comp writes the indirect draws (mdi modes)
+    bool cpuFrustum = false; // push mode: the CPU skips objects outside the frustum
+    bool taskShader = false; // mesh techniques: scene.task culls meshlets
+    bool twoPasses = false;  // occlusion: early half, depth pyramid, late half
+    bool on() const { return gpuLists || cpuFrustum; }
+};
+CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode culling);
+// One line on what `mode` gets with `culling`, for --list-renderers, the panel and the
+// benchmark ("GPU lists: frustum and two-phase occlusion per draw, ...").
+std::string describeCulling(const DrawMode& mode, CullMode culling, bool meshTechnique);
+
+// The CPU's frustum test of push mode: whether `box` (in the coordinates `world` places)
+// lies outside the view frustum with the margins cull.glsl uses.
+bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3 eye,
+                    const scene::Bounds& box);
+
+// The culling state of one draw list on the GPU, shared by the frames in flight (the queue
+// orders them, barriers keep their accesses apart): the boxes, per-draw state and counts,
+// the two passes' compacted commands, the counters, and the meshlet bits.
+struct CullBuffers {
+    CullBuffers(vk::Device& device, vk::UploadBatch& upload,
+                const std::vector<gpu::DrawCull>& draws, uint32_t meshletBits,
+                uint32_t commandBytes);
+    uint32_t drawCount = 0, groupCount = 0, commandBytes = 0;
+    vk::Buffer draws;       // gpu::DrawCull[]
+    vk::Buffer state;       // uint per draw: CULL_* bits
+    vk::Buffer groups;      // uint per cull.comp workgroup
+    vk::Buffer lists[2];    // the early (or only) and the late pass's commands
+    vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts
+    vk::Buffer meshletBits; // uint words, empty without meshlets
+    // CPU side, changed while recording: whether the lists were ever written (a frozen list
+    // needs one culled frame first), and push mode's objects shown by the last culled frame.
+    bool culled = false;
+    std::vector<uint8_t> frozenObjects;
+};
+
+// The compute pipelines: the cull and the depth pyramid.
+class CullPasses {
+  public:
+    CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler);
+
+    // One pass of cull.comp over the whole list: decide, then compact into
+    // buffers.lists[phase == LATE]. `draws` and `source` are the list's DrawData and commands.
+    void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkDeviceAddress frame,
+                    VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase,
+                    bool meshDraws) const;
+    // The pyramid of `targets` from their depth, left in DEPTH_STENCIL_READ_ONLY_OPTIMAL by
+    // the first half of the pass; its header is written first.
+    void recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const;
+
+  private:
+    vk::Device& device_;
+    ComputePipeline cull_;
+    vk::Handle<VkDescriptorSetLayout> depthLayout_;
+    vk::Handle<VkSampler> sampler_;
+    ComputePipeline pyramid_[2]; // single-sampled depth, multisampled depth
+};
+
+} // namespace render

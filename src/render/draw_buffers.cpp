@@ -1,0 +1,216 @@
+// draw_buffers.cpp - uploading a draw list, and recording its draws.
+#include "render/draw_buffers.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include "scene/bounds.h"
+#include "vk/check.h"
+
+namespace render {
+namespace {
+
+// Each draw's box and, for mesh tasks, where its meshlet bits start: on a word, so each task
+// workgroup's 32 meshlets have one word to themselves. Returns the bits needed.
+uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const DrawList& list,
+                   std::vector<gpu::DrawCull>& out) {
+    uint32_t bits = 0;
+    out.reserve(list.ranges.size());
+    for (size_t i = 0; i < list.ranges.size(); ++i) {
+        const DrawItem& d = list.ranges[i];
+        const uint32_t g = scene.objects[d.object].geometry;
+        scene::Bounds box =
+            scene::partRangeBounds(scene, sceneGpu.partBounds(), g, d.firstPart, d.partCount);
+        if (scene::isEmpty(box)) box = {}; // no triangles: nothing to draw anyway
+        gpu::DrawCull cull{};
+        cull.boxMin = box.min;
+        cull.boxMax = box.max;
+        if (!list.meshletCounts.empty()) {
+            cull.meshletBit = bits;
+            cull.meshletCount = list.meshletCounts[i];
+            bits += (cull.meshletCount + 31) / 32 * 32;
+        }
+        out.push_back(cull);
+    }
+    return bits;
+}
+
+uint32_t taskGroups(uint32_t meshlets) {
+    return (meshlets + gpu::TASK_GROUP_SIZE - 1) / gpu::TASK_GROUP_SIZE;
+}
+
+} // namespace
+
+std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::Scene& scene,
+                                              const SceneGpu& sceneGpu, const PipelineKey& key,
+                                              const DrawSettings& draws,
+                                              std::shared_ptr<const PartVertexBuffers> partVertices,
+                                              std::shared_ptr<const MeshletBuffers> meshlets,
+                                              vk::UploadBatch& upload) {
+    auto b = std::make_shared<DrawBuffers>();
+    // Only what this technique draws is held (and counted in its stats).
+    if (key.technique->primitives == Primitives::PartVertices) b->partVertices = partVertices;
+    if (key.technique->usesMeshShader()) b->meshlets = meshlets;
+    b->list = buildDrawList(scene, key, draws,
+                            derivedPrimitives(b->partVertices.get(), b->meshlets.get()));
+    b->key = key;
+    b->inputs = draws;
+    const DrawList& list = b->list;
+    for (uint32_t count : list.meshletCounts) b->meshletTotal += count;
+    const VkBufferUsageFlags shaderRead =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+    if (!list.idBytes.empty()) b->ids = upload.add(list.idBytes, shaderRead, "technique ID data");
+
+    const bool indirect = key.mode->indirect && !list.data.empty();
+    if (indirect) b->draws = upload.add(list.data, shaderRead, "per-draw data");
+    // The commands are read by the indirect draws and, with culling, by cull.comp.
+    const VkBufferUsageFlags commandUse = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | shaderRead;
+    if (indirect && b->meshlets && key.taskCulling) {
+        // Task workgroups of TASK_GROUP_SIZE meshlets, and the draw they belong to.
+        std::vector<gpu::MeshTaskCommand> commands;
+        for (uint32_t i = 0; i < list.meshletCounts.size(); ++i)
+            commands.push_back({taskGroups(list.meshletCounts[i]), 1, 1, i});
+        b->indirect = upload.add(commands, commandUse, "indirect draws");
+        b->commandBytes = sizeof(gpu::MeshTaskCommand);
+    } else if (indirect && b->meshlets) {
+        std::vector<VkDrawMeshTasksIndirectCommandEXT> commands;
+        // One workgroup per meshlet; the draw index is the command's (gl_DrawID).
+        for (uint32_t count : list.meshletCounts) commands.push_back({count, 1, 1});
+        b->indirect = upload.add(commands, commandUse, "indirect draws");
+        b->commandBytes = sizeof(VkDrawMeshTasksIndirectCommandEXT);
+    } else if (indirect) {
+        std::vector<VkDrawIndexedIndirectCommand> commands;
+        commands.reserve(list.ranges.size());
+        for (uint32_t i = 0; i < list.ranges.size(); ++i) {
+            const DrawItem& d = list.ranges[i];
+            // firstInstance carries the draw index (gl_InstanceIndex, or the attribute's row).
+            commands.push_back({d.indexCount, 1, d.firstIndex, d.vertexOffset, i});
+        }
+        b->indirect = upload.add(commands, commandUse, "indirect draws");
+        b->commandBytes = sizeof(VkDrawIndexedIndirectCommand);
+    }
+    if (indirect && key.mode->drawIndexAttribute) {
+        std::vector<uint32_t> rows(list.ranges.size());
+        for (uint32_t i = 0; i < rows.size(); ++i) rows[i] = i;
+        // Mesh shaders have no vertex input: they read the rows by address instead.
+        const VkBufferUsageFlags rowUse =
+            b->meshlets ? shaderRead : VkBufferUsageFlags(VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        b->drawIndices = upload.add(rows, rowUse, "draw index attribute");
+    }
+
+    // Culling reads each draw's box on the GPU where a shader culls (mdi lists, mesh tasks).
+    std::vector<gpu::DrawCull> boxes;
+    const bool gpuCulling = indirect || key.taskCulling;
+    const uint32_t bits = gpuCulling ? cullBoxes(scene, sceneGpu, list, boxes) : 0;
+    b->cull =
+        std::make_shared<CullBuffers>(device, upload, boxes, bits, indirect ? b->commandBytes : 0);
+    if (!key.mode->indirect) {
+        b->objectBoxes.reserve(scene.objects.size());
+        for (const scene::Object& o : scene.objects)
+            b->objectBoxes.push_back(
+                scene::partRangeBounds(scene, sceneGpu.partBounds(), o.geometry, 0,
+                                       scene.geometries[o.geometry].partCount));
+    }
+    return b;
+}
+
+// `push` mode: per draw, push only the span of DrawData fields that differ from the last draw.
+// `shown` (null: all) says which objects are drawn.
+static Issued pushDraws(const DrawContext& c, const std::vector<uint8_t>* shown) {
+    constexpr uint32_t fieldCount = sizeof(gpu::DrawData) / sizeof(uint32_t);
+    std::array<uint32_t, fieldCount> last{}; // as pushed, zeroed, at the start of the frame
+    const DrawList& list = c.buffers.list;
+    const bool mesh = c.buffers.meshlets != nullptr;
+    const bool task = c.buffers.key.taskCulling;
+    Issued issued;
+    for (size_t i = 0; i < list.ranges.size(); ++i) {
+        const DrawItem& d = list.ranges[i];
+        if (shown && !(*shown)[d.object]) continue;
+        std::array<uint32_t, fieldCount> now;
+        std::memcpy(now.data(), &list.data[i], sizeof(gpu::DrawData));
+        uint32_t first = fieldCount, end = 0;
+        for (uint32_t f = 0; f < fieldCount; ++f)
+            if (now[f] != last[f]) {
+                first = std::min(first, f);
+                end = f + 1;
+            }
+        if (first < end)
+            vkCmdPushConstants(c.cmd, c.layout, c.pushStages,
+                               gpu::DRAW_PUSH_DRAW_OFFSET + first * sizeof(uint32_t),
+                               (end - first) * sizeof(uint32_t), &now[first]);
+        last = now;
+        if (mesh)
+            c.device.meshCommands().draw(
+                c.cmd, task ? taskGroups(list.meshletCounts[i]) : list.meshletCounts[i], 1, 1);
+        else
+            vkCmdDrawIndexed(c.cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+        ++issued.draws;
+        issued.triangles += d.indexCount / 3;
+    }
+    return issued;
+}
+
+// Pushes the phase the task shader culls by, and the commands it reads its draws from.
+static void pushPhase(const DrawContext& c, VkDeviceAddress commands, uint32_t phase) {
+    struct {
+        uint64_t commandsAddress;
+        uint32_t cullPhase;
+    } block{commands, phase};
+    vkCmdPushConstants(c.cmd, c.layout, c.pushStages, gpu::DRAW_PUSH_CULL_OFFSET, 12, &block);
+}
+
+void recordAllDraws(const DrawContext& c) {
+    const DrawBuffers& b = c.buffers;
+    if (!b.key.mode->indirect) {
+        pushDraws(c, nullptr);
+        return;
+    }
+    const uint32_t total = static_cast<uint32_t>(b.list.ranges.size());
+    const uint32_t limit = std::max(1u, c.device.info().maxDrawIndirectCount);
+    for (uint32_t first = 0; first < total; first += limit) {
+        const uint32_t count = std::min(limit, total - first);
+        if (b.meshlets) {
+            // gl_DrawID restarts at 0 in every call: each call pushes the index of its first
+            // draw (DrawData::drawIndex of the push block) for the shader to add.
+            vkCmdPushConstants(c.cmd, c.layout, c.pushStages,
+                               gpu::DRAW_PUSH_DRAW_OFFSET + offsetof(gpu::DrawData, drawIndex),
+                               sizeof(uint32_t), &first);
+            c.device.meshCommands().drawIndirect(c.cmd, b.indirect.handle(),
+                                                 VkDeviceSize(first) * b.commandBytes, count,
+                                                 b.commandBytes);
+        } else {
+            vkCmdDrawIndexedIndirect(c.cmd, b.indirect.handle(),
+                                     VkDeviceSize(first) * b.commandBytes, count, b.commandBytes);
+        }
+    }
+}
+
+Issued recordPushDraws(const DrawContext& c, const std::vector<uint8_t>& objectShown,
+                       uint32_t phase) {
+    if (c.buffers.key.taskCulling) pushPhase(c, 0, phase);
+    return pushDraws(c, &objectShown);
+}
+
+void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase) {
+    const DrawBuffers& b = c.buffers;
+    const CullBuffers& cull = *b.cull;
+    const uint32_t maxDraws = static_cast<uint32_t>(b.list.ranges.size());
+    if (maxDraws == 0) return; // nothing to draw (--visible 0): no commands either
+    const VkDeviceSize countOffset = offsetof(gpu::CullStats, draws) + which * sizeof(uint32_t);
+    if (b.meshlets) {
+        const uint32_t first = 0; // one call: gl_DrawID indexes the whole compacted list
+        vkCmdPushConstants(c.cmd, c.layout, c.pushStages,
+                           gpu::DRAW_PUSH_DRAW_OFFSET + offsetof(gpu::DrawData, drawIndex),
+                           sizeof(uint32_t), &first);
+        pushPhase(c, cull.lists[which].address(), phase);
+        c.device.meshCommands().drawIndirectCount(c.cmd, cull.lists[which].handle(), 0,
+                                                  cull.stats.handle(), countOffset, maxDraws,
+                                                  b.commandBytes);
+    } else {
+        vkCmdDrawIndexedIndirectCount(c.cmd, cull.lists[which].handle(), 0, cull.stats.handle(),
+                                      countOffset, maxDraws, b.commandBytes);
+    }
+}
+
+} // namespace render

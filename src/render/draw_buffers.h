@@ -1,0 +1,68 @@
+// draw_buffers.h - a draw list on the GPU: the technique's ID data, the per-draw data and the
+// indirect commands of the mdi modes, the derived geometry the draws read, and what culling
+// needs of them (each draw's box, the meshlet bits, the passes' lists and counters). Built
+// when the scene or what the list depends on changes, never per frame; recording a frame's
+// draws from it is draw_recording.cpp's.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "render/culling.h"
+#include "render/draw_list.h"
+#include "render/primitive_buffers.h"
+#include "render/scene_gpu.h"
+#include "render/settings.h"
+
+namespace render {
+
+struct DrawBuffers {
+    DrawList list;
+    vk::Buffer ids, draws, indirect, drawIndices;
+    // The derived geometry the draws read, if the technique draws one.
+    std::shared_ptr<const PartVertexBuffers> partVertices;
+    std::shared_ptr<const MeshletBuffers> meshlets;
+    PipelineKey key;     // effective key it was built for (technique, mode, batch)
+    DrawSettings inputs; // and the draw settings
+    // Culling: the GPU state (shared by the frames in flight, mutable while recording), the
+    // bytes of one indirect command, and the meshlets all draws launch.
+    std::shared_ptr<CullBuffers> cull;
+    uint32_t commandBytes = 0;
+    uint64_t meshletTotal = 0;
+    // Push mode: each object's box, for the CPU's frustum test.
+    std::vector<scene::Bounds> objectBoxes;
+};
+
+// The draws of `key` under `draws` over the scene on the GPU; `partVertices` and `meshlets`
+// are the derived geometry, built by the caller when the technique draws it.
+std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::Scene& scene,
+                                              const SceneGpu& sceneGpu, const PipelineKey& key,
+                                              const DrawSettings& draws,
+                                              std::shared_ptr<const PartVertexBuffers> partVertices,
+                                              std::shared_ptr<const MeshletBuffers> meshlets,
+                                              vk::UploadBatch& upload);
+
+// What one frame draws of a list, and how, for draw_recording.cpp.
+struct DrawContext {
+    VkCommandBuffer cmd;
+    const vk::Device& device;
+    VkPipelineLayout layout;
+    VkShaderStageFlags pushStages;
+    const DrawBuffers& buffers;
+};
+
+// The whole list: one draw call per draw in push mode, indirect calls in the mdi modes.
+void recordAllDraws(const DrawContext& c);
+// Push mode with culling: the draws whose objects `objectShown` holds (indexed by object),
+// with `phase` pushed for the task shader. Returns draws issued and their triangles.
+struct Issued {
+    uint32_t draws = 0;
+    uint64_t triangles = 0;
+};
+Issued recordPushDraws(const DrawContext& c, const std::vector<uint8_t>& objectShown,
+                       uint32_t phase);
+// mdi modes with culling: list `which` (0 early or only, 1 late) of the cull pass, drawn by
+// the count it wrote.
+void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase);
+
+} // namespace render

@@ -1,0 +1,251 @@
+// frame_steps.cpp - the steps Renderer::record's recipe is made of: the frame's constants,
+// its culling decisions on the CPU, the scene pass's begin and draws, the culling counters,
+// the pick's reset and copies, and the passes over the ID image.
+#include <algorithm>
+#include <array>
+#include <cstddef>
+
+#include "render/renderer.h"
+#include "vk/barrier.h"
+#include "vk/check.h"
+
+namespace render {
+
+CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
+    CullCounts counts;
+    // The late list of the vertex pipelines holds only draws the early one had not; the mesh
+    // tasks' holds every draw that may show, so only the new ones count.
+    counts.draws = uint64_t(stats.draws[0]) + stats.lateNew;
+    counts.meshlets = stats.meshlets;
+    counts.triangles = meshTechnique ? stats.meshletTriangles : stats.triangles;
+    return counts;
+}
+
+Renderer::FrameCulling Renderer::planFrame(const FrameParams& params) const {
+    FrameCulling c;
+    c.plan = cullingPlan();
+    CullBuffers& cull = *draws_->cull;
+    // A frozen frame draws the lists of the last culled one; until there is one, it culls.
+    c.frozen = settings_.culling.freeze && c.plan.on() && cull.culled;
+    if (!c.plan.cpuFrustum) return c;
+    if (c.frozen) {
+        c.objectShown = cull.frozenObjects;
+        return c;
+    }
+    // Push mode: the CPU tests each object's box, placed as the animation places it.
+    c.objectShown.assign(objectParts_.size(), 0);
+    for (size_t o = 0; o < objectParts_.size(); ++o)
+        c.objectShown[o] =
+            !objectHidden_[o] &&
+            !outsideFrustum(params.viewProj, sceneGpu_->worldAt(uint32_t(o), params.explode),
+                            params.eye, draws_->objectBoxes[o]);
+    cull.frozenObjects = c.objectShown;
+    return c;
+}
+
+gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParams& params,
+                                   const FrameCulling& culling) const {
+    const Shading& shading = settings_.shading;
+    gpu::FrameData frame{};
+    frame.viewProj = params.viewProj;
+    frame.eyePosition = glm::vec4(params.eye, 1.0f);
+    frame.viewport = {targets.extent().width, targets.extent().height};
+    frame.partColorWeight = shading.partWeight;
+    frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
+                  (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u) |
+                  (hiddenSet_.empty() ? 0u : gpu::FRAME_HIDING) |
+                  (draws_->key.technique->isFloor() ? gpu::FRAME_BOUNDS_HISTORY : 0u);
+    frame.sampleZero = targets.pass().sampleZero();
+    frame.objectsAddress = sceneGpu_->objectsAddress();
+    frame.materialsAddress = sceneGpu_->materialsAddress();
+    frame.partMaterialsAddress = sceneGpu_->partMaterialsAddress();
+    frame.idsAddress = draws_->ids.address();
+    frame.drawsAddress = draws_->draws.address();
+    frame.pickAddress = pick_->address();
+    if (draws_->meshlets) {
+        frame.verticesAddress = draws_->meshlets->vertices.address();
+        frame.meshletsAddress = draws_->meshlets->meshlets.address();
+        frame.meshletDataAddress = draws_->meshlets->data.address();
+        frame.drawIndicesAddress = draws_->drawIndices.address();
+        frame.meshletBoxesAddress = draws_->meshlets->boxes.address();
+    }
+    frame.selectedAddress = selected_->address();
+    frame.hiddenAddress = hidden_->address();
+    const CullBuffers& cull = *draws_->cull;
+    frame.visibleAddress = visible_->address() + sizeof(gpu::PartSetResult);
+    frame.pyramidAddress = targets.pyramid().address();
+    frame.drawCullAddress = cull.draws.address();
+    frame.meshletBitsAddress = cull.meshletBits.address();
+    frame.cullStatsAddress = cull.stats.address();
+    if (culling.plan.gpuLists) frame.cullStateAddress = cull.state.address();
+    frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
+    frame.time = params.time;
+    return frame;
+}
+
+void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
+                         VkDeviceAddress frame) const {
+    std::array<VkClearValue, 3> clears{};
+    clears[0].color = {{0.16f, 0.17f, 0.19f, 1.0f}};
+    clears[1].color.uint32[0] = gpu::BACKGROUND_ID;
+    clears[2].depthStencil = {1.0f, 0};
+    auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
+    begin.renderPass = targets.pass().handle(part);
+    begin.framebuffer = targets.framebuffer(part);
+    begin.renderArea = {{0, 0}, targets.extent()};
+    begin.clearValueCount = static_cast<uint32_t>(clears.size());
+    begin.pClearValues = clears.data();
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+
+    VkViewport viewport{0, 0, float(targets.extent().width), float(targets.extent().height), 0, 1};
+    VkRect2D scissor{{0, 0}, targets.extent()};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle.get());
+    bindGeometry(cmd);
+    // The whole block once per pass (frame address, zeroed draw); draws change parts of it.
+    gpu::DrawPush push{};
+    push.frameAddress = frame;
+    vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_, 0, sizeof push, &push);
+}
+
+// The draws of one phase: the whole list, the GPU's culled list, or push mode's shown objects.
+void Renderer::drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const {
+    const DrawContext context{cmd, device_, pipelines_.layout(), pushStages_, *draws_};
+    if (!culling.plan.on()) {
+        recordAllDraws(context);
+    } else if (culling.plan.gpuLists) {
+        const bool late = phase == gpu::CULL_PHASE_LATE || phase == gpu::CULL_PHASE_FROZEN_LATE;
+        recordCulledDraws(context, late ? 1 : 0, phase);
+    } else {
+        const Issued issued = recordPushDraws(context, culling.objectShown, phase);
+        if (phase != gpu::CULL_PHASE_LATE && phase != gpu::CULL_PHASE_FROZEN_LATE)
+            culling.issued = issued;
+    }
+}
+
+// Before the scene pass (`before`): zero what the GPU counts this frame; a frozen list keeps
+// its counts, which are the draws' count buffer. After it: what the CPU knows.
+void Renderer::recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const {
+    const vk::Buffer& stats = draws_->cull->stats;
+    const bool mesh = draws_->meshlets != nullptr;
+    if (before) {
+        // The last frame's reads of the counters (indirect count, copies) are done, and what
+        // it wrote for this frame to read (visible parts, meshlet bits) is seen.
+        vk::memoryBarrier(cmd,
+                          VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT |
+                              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        const bool all = culling.plan.gpuLists && !culling.frozen;
+        const VkDeviceSize from = all ? 0 : offsetof(gpu::CullStats, meshlets);
+        vkCmdFillBuffer(cmd, stats.handle(), from, sizeof(gpu::CullStats) - from, 0);
+        vk::memoryBarrier(
+            cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+            VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT |
+                VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
+        return;
+    }
+    if (culling.plan.gpuLists) return; // the cull pass counted
+    gpu::CullStats known{};
+    const CullCounts totals = cullTotals();
+    known.draws[0] = uint32_t(culling.plan.on() ? culling.issued.draws : totals.draws);
+    known.triangles = uint32_t(culling.plan.on() ? culling.issued.triangles : totals.triangles);
+    // Without culling the mesh shaders draw every meshlet; with it the task shader counts.
+    known.meshlets = uint32_t(totals.meshlets);
+    known.meshletTriangles = uint32_t(totals.triangles);
+    const VkDeviceSize bytes = culling.plan.on() || !mesh ? offsetof(gpu::CullStats, meshlets)
+                                                          : offsetof(gpu::CullStats, unused);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdUpdateBuffer(cmd, stats.handle(), 0, bytes, &known);
+}
+
+// Edges and outlines (when on), and the frame's part set queries, into the slot's buffers.
+void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
+                              const FrameParams& params) const {
+    const EdgeSettings& e = settings_.edges;
+    gpu::EdgePush edges{};
+    edges.lineColor = glm::vec4(e.color, 1.0f);
+    edges.selectColor = glm::vec4(e.selectColor, 1.0f);
+    edges.hoverColor = glm::vec4(e.hoverColor, 1.0f);
+    edges.selectedAddress = selected_->address();
+    edges.pickAddress = pick_->address();
+    edges.extent = {targets.extent().width, targets.extent().height};
+    edges.width = std::clamp(e.width, edgeWidthRange.min, edgeWidthRange.max);
+    edges.flags = gpu::EDGE_LINES | gpu::EDGE_SELECTED | gpu::EDGE_HOVERED;
+    const uint32_t words = std::max(1u, (partCount_ + 31) / 32);
+    if (!params.partSets.empty()) {
+        const VkDeviceSize bytes =
+            (sizeof(gpu::PartSetResult) + VkDeviceSize(words) * 4) * params.partSets.size();
+        // The slot's fence has signalled, so its old buffers are free to go.
+        if (slot.partSets.size() < bytes) {
+            slot.partSets = vk::Buffer(
+                device_, bytes,
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                0, "part sets");
+            slot.partSetsReadback = vk::hostBuffer(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                   "part sets readback");
+        }
+        slot.partSetQueries = params.partSets;
+        slot.partSetWords = words;
+        slot.partSetParts = partCount_;
+    }
+    idPasses_->record(cmd, targets, e.on ? &edges : nullptr, params.partSets, words, slot.partSets,
+                      slot.partSetsReadback);
+}
+
+// The vertex and index buffers the draws read: the scene's, the part vertices, or none for
+// a mesh shader (it reads the scene's vertices by address).
+void Renderer::bindGeometry(VkCommandBuffer cmd) const {
+    if (draws_->meshlets) return;
+    const VkDeviceSize zero = 0;
+    const PartVertexBuffers* partVertices = draws_->partVertices.get();
+    const VkBuffer vertices =
+        partVertices ? partVertices->vertices.handle() : sceneGpu_->vertices().handle();
+    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &vertices, &zero);
+    if (const VkBuffer rows = draws_->drawIndices.handle())
+        vkCmdBindVertexBuffers(cmd, gpu::BINDING_DRAW_INDICES, 1, &rows, &zero);
+    vkCmdBindIndexBuffer(
+        cmd, partVertices ? partVertices->indices.handle() : sceneGpu_->indices().handle(), 0,
+        VK_INDEX_TYPE_UINT32);
+}
+
+// Before the pass: the previous frame's shaders and copies are done with the pick buffer
+// (write-after-read and write-after-write across frames on the one queue), then reset it.
+void Renderer::recordPickReset(VkCommandBuffer cmd) const {
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                          VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, pick_->handle(), offsetof(gpu::PickData, current), sizeof(uint64_t),
+                    0xFFFFFFFFu);
+}
+
+// After the pass: `current` becomes `last` for the next frame's highlight and goes to the
+// slot's host-visible readback, read when the slot's fence has signalled; so do the culling
+// counters.
+void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const {
+    // The edge pass reads `last`; the task shader and the cull pass write the counters.
+    vk::memoryBarrier(
+        cmd,
+        VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+            VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferCopy toLast{offsetof(gpu::PickData, current), offsetof(gpu::PickData, last),
+                        sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, pick_->handle(), pick_->handle(), 1, &toLast);
+    VkBufferCopy toHost{offsetof(gpu::PickData, current), 0, sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, pick_->handle(), slot.pickReadback.handle(), 1, &toHost);
+    const VkBufferCopy counters{0, 0, sizeof(gpu::CullStats)};
+    vkCmdCopyBuffer(cmd, draws_->cull->stats.handle(), slot.cullReadback.handle(), 1, &counters);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+}
+
+} // namespace render

@@ -1,0 +1,61 @@
+// bounds.cpp - part and meshlet boxes.
+#include "scene/bounds.h"
+
+#include <limits>
+
+namespace scene {
+
+Bounds emptyBounds() {
+    return {glm::vec3(std::numeric_limits<float>::max()),
+            glm::vec3(std::numeric_limits<float>::lowest())};
+}
+
+Bounds unite(const Bounds& a, const Bounds& b) {
+    return {glm::min(a.min, b.min), glm::max(a.max, b.max)};
+}
+
+bool isEmpty(const Bounds& b) {
+    return b.min.x > b.max.x || b.min.y > b.max.y || b.min.z > b.max.z;
+}
+
+std::vector<Bounds> partBounds(const Scene& scene) {
+    std::vector<Bounds> boxes(scene.parts.size(), emptyBounds());
+    for (const Geometry& g : scene.geometries)
+        for (uint32_t p = 0; p < g.partCount; ++p) {
+            const Part& part = scene.parts[g.firstPart + p];
+            Bounds& box = boxes[g.firstPart + p];
+            const uint32_t first = g.firstIndex + 3 * part.firstTriangle;
+            for (uint32_t i = first; i < first + 3 * part.triangleCount; ++i) {
+                const glm::vec3& position =
+                    scene.vertices[g.firstVertex + scene.indices[i]].position;
+                box.min = glm::min(box.min, position);
+                box.max = glm::max(box.max, position);
+            }
+        }
+    return boxes;
+}
+
+Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uint32_t g,
+                       uint32_t firstPart, uint32_t count) {
+    Bounds box = emptyBounds();
+    const uint32_t first = scene.geometries[g].firstPart + firstPart;
+    for (uint32_t p = first; p < first + count; ++p) box = unite(box, parts[p]);
+    return box;
+}
+
+std::vector<Bounds> meshletBounds(const Meshlets& meshlets, const std::vector<Vertex>& vertices) {
+    std::vector<Bounds> boxes;
+    boxes.reserve(meshlets.meshlets.size());
+    for (const Meshlet& m : meshlets.meshlets) {
+        Bounds box = emptyBounds();
+        for (uint32_t v = m.firstVertex; v < m.firstVertex + m.vertexCount; ++v) {
+            const glm::vec3& position = vertices[meshlets.vertices[v]].position;
+            box.min = glm::min(box.min, position);
+            box.max = glm::max(box.max, position);
+        }
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+} // namespace scene

@@ -1,0 +1,29 @@
+// bounds.h - boxes around pieces of a scene in their geometry's coordinates, for culling: each
+// part's triangles, a run of parts, each meshlet. Plain C++; the GPU transforms them by the
+// object's matrix every frame (shaders/cull.glsl).
+#pragma once
+
+#include <vector>
+
+#include "scene/meshlets.h"
+#include "scene/scene.h"
+
+namespace scene {
+
+// An empty box: min above max, so that unite() with anything gives that thing.
+Bounds emptyBounds();
+Bounds unite(const Bounds& a, const Bounds& b);
+bool isEmpty(const Bounds& b);
+
+// Per entry of Scene::parts: the box of the vertices its triangles use.
+std::vector<Bounds> partBounds(const Scene& scene);
+
+// The box of parts [firstPart, firstPart + count) of geometry `g`, from partBounds().
+Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uint32_t g,
+                       uint32_t firstPart, uint32_t count);
+
+// Per meshlet: the box of its vertices, `vertices` being the array the meshlets index
+// (Scene::vertices, or PartVertices::vertices).
+std::vector<Bounds> meshletBounds(const Meshlets& meshlets, const std::vector<Vertex>& vertices);
+
+} // namespace scene

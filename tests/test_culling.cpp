@@ -1,0 +1,164 @@
+// test_culling.cpp - culling leaves the images exactly as they are without it
+// (render/culling.h): every technique x mode of the registry, the floors included, at 1x and
+// 4x MSAA, on every frame of a dolly path over the default model and a CAD file, frustum and
+// occlusion culling draw the ID and colour images of culling off byte for byte. The
+// counters, hidden objects, freezing, and a pyramid test shrunk by one pixel are in
+// test_culling_edges.cpp.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+
+#include "app/headless.h"
+#include "app/scene_source.h"
+#include "render/culling.h"
+#include "render/technique.h"
+#include "test_support.h"
+
+namespace {
+
+// An IGES file from Debian's occt-misc: one object of 213 faces (one part each).
+const char* const kCadBearing = "/usr/share/opencascade/data/iges/bearing.iges";
+
+constexpr uint32_t W = 160, H = 90;
+// Frames along the dolly path: the fitted view, halfway in, the middle of the assembly and
+// halfway out again, so the frustum leaves out more and more and the last ID image is
+// always from another view.
+constexpr uint32_t kFrames = 4;
+
+// The default model's cases are split by pipeline (vertex or mesh shader), so ctest runs
+// them side by side.
+enum class Pipelines { Vertex, Mesh, All };
+
+struct PathCase {
+    const char* scene; // "default" or "cad"
+    uint32_t msaa;
+    Pipelines pipelines;
+};
+
+const char* pipelinesName(Pipelines p) {
+    return p == Pipelines::Vertex ? "vertex" : p == Pipelines::Mesh ? "mesh" : "all";
+}
+
+void PrintTo(const PathCase& c, std::ostream* os) {
+    *os << c.scene << " msaa " << c.msaa << " " << pipelinesName(c.pipelines);
+}
+
+// Where two images first differ, for the failure message.
+template <typename T>
+std::string firstDifference(const std::vector<T>& a, const std::vector<T>& b, uint32_t channels) {
+    if (a.size() != b.size()) return "sizes differ";
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i] != b[i]) {
+            const size_t pixel = i / channels;
+            return "first at pixel " + std::to_string(pixel % W) + "," + std::to_string(pixel / W) +
+                   ": " + std::to_string(a[i]) + " instead of " + std::to_string(b[i]);
+        }
+    return "";
+}
+
+class CullingExact : public ::testing::TestWithParam<PathCase> {};
+
+TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame) {
+    const PathCase& c = GetParam();
+    app::SceneSettings source;
+    if (std::string(c.scene) == "cad") {
+        if (!std::filesystem::exists(kCadBearing))
+            GTEST_SKIP() << kCadBearing << " missing (package occt-misc)";
+        source.model = kCadBearing;
+    }
+    const app::LoadedScene loaded = app::loadScene(source);
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+
+    // Per technique the reference without culling, then every mode with each culling mode.
+    std::vector<render::RenderSettings> configs;
+    std::map<size_t, size_t> referenceOf; // config -> its technique's reference config
+    for (const render::Technique& t : render::techniques()) {
+        if (c.pipelines != Pipelines::All && t.usesMeshShader() != (c.pipelines == Pipelines::Mesh))
+            continue;
+        const size_t reference = configs.size();
+        configs.push_back(testing_support::settingsFor(t, render::defaultDrawMode()));
+        configs.back().culling.mode = render::CullMode::Off;
+        for (const render::DrawMode& m : render::drawModes())
+            for (render::CullMode mode : {render::CullMode::Frustum, render::CullMode::Occlusion}) {
+                // Where occlusion gets nothing more than frustum culling (push mode's vertex
+                // pipelines), it draws the same lists: once is enough.
+                const render::CullPlan plan = render::cullPlan(t, m, mode);
+                if (mode == render::CullMode::Occlusion && !plan.twoPasses) continue;
+                referenceOf[configs.size()] = reference;
+                configs.push_back(testing_support::settingsFor(t, m));
+                configs.back().culling.mode = mode;
+            }
+    }
+    for (render::RenderSettings& s : configs) s.pipeline.msaa = c.msaa;
+    app::Options o = testing_support::headlessOptions(W, H, kFrames);
+    o.cameraPath = scene::CameraPath::Dolly;
+    o.keepEveryFrame = true;
+    const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    ASSERT_EQ(results.size(), configs.size());
+    EXPECT_EQ(results.front().validationMessages, 0u);
+
+    for (const auto& [culled, reference] : referenceOf) {
+        const render::RenderSettings& s = configs[culled];
+        const std::string name = std::string(s.pipeline.technique->name) + " + " +
+                                 s.pipeline.mode->name + ", culling " +
+                                 render::cullModeName(s.culling.mode);
+        const app::HeadlessResult& r = results[culled];
+        const app::HeadlessResult& ref = results[reference];
+        ASSERT_EQ(r.frames.size(), kFrames) << name;
+        ASSERT_EQ(ref.frames.size(), kFrames) << name;
+        for (uint32_t f = 0; f < kFrames; ++f) {
+            EXPECT_TRUE(r.frames[f].ids == ref.frames[f].ids)
+                << name << ", frame " << f << ": ID image "
+                << firstDifference(r.frames[f].ids, ref.frames[f].ids, 1);
+            EXPECT_TRUE(r.frames[f].color == ref.frames[f].color)
+                << name << ", frame " << f << ": colour image "
+                << firstDifference(r.frames[f].color, ref.frames[f].color, 4);
+        }
+        // The path goes inside the assembly, so every culling mode leaves something out
+        // (where there is more than the one object the CAD file is, or smaller draws, or
+        // meshlets), and never more than there is.
+        uint64_t drawn = 0, total = 0;
+        ASSERT_EQ(r.cullStats.size(), kFrames) << name;
+        for (const gpu::CullStats& stats : r.cullStats) {
+            const render::CullCounts counts =
+                render::countsOf(stats, s.pipeline.technique->usesMeshShader());
+            EXPECT_LE(counts.triangles, r.cullTotals.triangles) << name;
+            drawn += counts.triangles;
+            total += r.cullTotals.triangles;
+        }
+        // Where a draw is the one object of the CAD file (push mode culls whole objects,
+        // search batches span the ring), only meshlets and single parts can be left out.
+        const render::Technique& t = *s.pipeline.technique;
+        const bool partsCulled = s.pipeline.mode->indirect && t.split == render::DrawSplit::PerPart;
+        if (loaded.scene.objects.size() > 1 || partsCulled || t.usesMeshShader()) {
+            EXPECT_LT(drawn, total) << name << ": culling left nothing out along the path";
+        }
+    }
+    // Without culling every frame draws everything.
+    for (size_t i = 0; i < configs.size(); ++i) {
+        if (referenceOf.count(i)) continue;
+        const bool mesh = configs[i].pipeline.technique->usesMeshShader();
+        for (const gpu::CullStats& stats : results[i].cullStats) {
+            const render::CullCounts counts = render::countsOf(stats, mesh);
+            EXPECT_EQ(counts.draws, results[i].cullTotals.draws);
+            EXPECT_EQ(counts.triangles, results[i].cullTotals.triangles);
+            EXPECT_EQ(counts.meshlets, results[i].cullTotals.meshlets);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
+                         ::testing::Values(PathCase{"default", 1, Pipelines::Vertex},
+                                           PathCase{"default", 1, Pipelines::Mesh},
+                                           PathCase{"default", 4, Pipelines::Vertex},
+                                           PathCase{"default", 4, Pipelines::Mesh},
+                                           PathCase{"cad", 1, Pipelines::All},
+                                           PathCase{"cad", 4, Pipelines::All}),
+                         [](const ::testing::TestParamInfo<PathCase>& info) {
+                             return std::string(info.param.scene) + "_msaa" +
+                                    std::to_string(info.param.msaa) + "_" +
+                                    pipelinesName(info.param.pipelines);
+                         });
+
+} // namespace

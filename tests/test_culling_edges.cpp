@@ -1,0 +1,284 @@
+// test_culling_edges.cpp - the edges of culling (render/culling.h), on lavapipe with
+// validation on: a part hidden behind an occluder but for one pixel column is drawn by every
+// technique and mode that tests the depth pyramid, and a pyramid test whose rectangles are
+// shrunk by one pixel loses it; the counters agree with a count on the CPU; objects whose
+// parts are all hidden are never drawn; a frozen list keeps drawing while the camera moves.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "app/headless.h"
+#include "app/offscreen.h"
+#include "app/scene_source.h"
+#include "render/culling.h"
+#include "scene/camera_path.h"
+#include "scene/mesh_builder.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr uint32_t SW = 64, SH = 48; // the sliver scene's image
+constexpr glm::uvec2 kSliver{32, 21};
+
+// A flat square in clip space (the tests draw with an identity camera, so x and y map
+// straight to pixels: x = px / 32 - 1, y = py / 24 - 1) at depth z.
+uint32_t square(scene::Scene& s, float x0, float y0, float x1, float y1, float z,
+                const char* name) {
+    scene::MeshBuilder mb;
+    const glm::vec3 corners[] = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
+    mb.addFlatFace(corners);
+    return mb.finish(s, name);
+}
+
+float px(float pixel) {
+    return pixel / 32.0f - 1.0f;
+}
+float py(float pixel) {
+    return pixel / 24.0f - 1.0f;
+}
+
+// An occluder over pixels x < 32 at depth 0.3, and behind it at 0.6 a square over pixels
+// 29.2..32.6 x 20.2..22.6: past the occluder's edge only the pixel column x = 32 shows it.
+// Its screen rectangle, pixels 29..32, spans two level-1 texels of the pyramid, the second
+// of which (pixels 32..35) holds the background: one pixel less on each side leaves only
+// occluder in the rectangle.
+scene::Scene sliverScene() {
+    scene::Scene s;
+    const uint32_t grey = scene::addMaterial(s, "grey", {0.5f, 0.5f, 0.5f, 1});
+    const uint32_t occluder = square(s, -1.0f, -1.0f, px(32.0f), 1.0f, 0.3f, "occluder");
+    const uint32_t small =
+        square(s, px(29.2f), py(20.2f), px(32.6f), py(22.6f), 0.6f, "small part");
+    scene::addObject(s, occluder, grey, glm::mat4(1.0f), "occluder");
+    scene::addObject(s, small, grey, glm::mat4(1.0f), "small part");
+    scene::validate(s);
+    return s;
+}
+
+fs::path shaderCopy(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("idview-culling-" + name);
+    fs::remove_all(dir);
+    fs::copy(IDVIEW_SOURCE_SHADER_DIR, dir, fs::copy_options::recursive);
+    return dir;
+}
+
+void replaceInFile(const fs::path& path, const std::string& from, const std::string& to) {
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    std::string s = text.str();
+    const size_t at = s.find(from);
+    ASSERT_NE(at, std::string::npos) << from << " not in " << path;
+    s.replace(at, from.size(), to);
+    std::ofstream(path) << s;
+}
+
+// Frame A with the small part hidden (so the last ID image lacks it), frame B with it shown:
+// B's ID image, drawn with `settings` and the shaders in `shaderDir`.
+std::vector<uint32_t> sliverImage(const scene::Scene& s, const render::RenderSettings& settings,
+                                  const std::string& shaderDir, uint32_t& validationMessages) {
+    app::Options o = testing_support::headlessOptions(SW, SH);
+    o.shaderDir = shaderDir;
+    o.render = settings;
+    vk::Instance instance({true, {}, false});
+    std::vector<uint32_t> ids;
+    {
+        app::Offscreen rig(instance, o);
+        rig.renderer.setScene(s, settings);
+        scene::PartSet hidden(s.uniquePartCount());
+        hidden.insert(1);
+        rig.renderer.setHidden(hidden);
+        uint64_t frame = 0;
+        testing_support::renderIds(rig, frame);
+        rig.renderer.setHidden(scene::PartSet(s.uniquePartCount()));
+        ids = testing_support::renderIds(rig, frame);
+    }
+    validationMessages = instance.validationMessages();
+    return ids;
+}
+
+// Every part-ID technique and mode whose culling tests the depth pyramid.
+std::vector<render::RenderSettings> pyramidConfigs() {
+    std::vector<render::RenderSettings> configs;
+    for (const render::Technique* t : render::partIdTechniques())
+        for (const render::DrawMode& m : render::drawModes())
+            if (render::cullPlan(*t, m, render::CullMode::Occlusion).twoPasses) {
+                configs.push_back(testing_support::settingsFor(*t, m));
+                configs.back().culling.mode = render::CullMode::Occlusion;
+            }
+    return configs;
+}
+
+TEST(CullingSliver, APartShowingOnePixelColumnIsDrawnAndAShrunkTestLosesIt) {
+    const scene::Scene s = sliverScene();
+    const size_t sliver = size_t(kSliver.y) * SW + kSliver.x;
+    uint32_t messages = 0;
+    render::RenderSettings off;
+    off.culling.mode = render::CullMode::Off;
+    const auto reference = sliverImage(s, off, IDVIEW_SOURCE_SHADER_DIR, messages);
+    EXPECT_EQ(messages, 0u);
+    ASSERT_EQ(reference[sliver], 1u) << "the small part should show at the sliver";
+    ASSERT_EQ(reference[sliver - 1], 0u) << "the occluder should cover the pixel left of it";
+
+    const fs::path shrunk = shaderCopy("shrunk");
+    replaceInFile(shrunk / "cull.glsl", "#define IDV_CULL_SHRINK_PIXELS 0",
+                  "#define IDV_CULL_SHRINK_PIXELS 1");
+    const auto configs = pyramidConfigs();
+    ASSERT_GE(configs.size(), render::partIdTechniques().size()); // every technique, mdi
+    for (const render::RenderSettings& settings : configs) {
+        const std::string name =
+            std::string(settings.pipeline.technique->name) + " + " + settings.pipeline.mode->name;
+        EXPECT_EQ(sliverImage(s, settings, IDVIEW_SOURCE_SHADER_DIR, messages), reference) << name;
+        EXPECT_EQ(messages, 0u) << name;
+        const auto wrong = sliverImage(s, settings, shrunk.string(), messages);
+        EXPECT_NE(wrong[sliver], 1u) << name << ": a test one pixel short still drew the part";
+        EXPECT_EQ(messages, 0u) << name;
+    }
+    fs::remove_all(shrunk);
+}
+
+// A view from halfway into the default model, where the frustum and the occluders leave out
+// much of it.
+struct InsideView {
+    app::LoadedScene loaded;
+    scene::Camera camera;
+};
+
+const InsideView& insideView() {
+    static const InsideView view = [] {
+        InsideView v;
+        v.loaded = app::loadScene(app::SceneSettings{});
+        const scene::Camera start = app::initialCamera(v.loaded, 160.0f / 90.0f);
+        v.camera =
+            scene::cameraOnPath(scene::CameraPath::Dolly, start, v.loaded.scene.bounds(), 1, 4);
+        return v;
+    }();
+    return view;
+}
+
+render::RenderSettings culled(const char* technique, const char* mode, render::CullMode cull) {
+    render::RenderSettings s = testing_support::settingsFor(*render::findTechnique(technique),
+                                                            *render::findDrawMode(mode));
+    s.culling.mode = cull;
+    return s;
+}
+
+// Frustum culling lists exactly the objects the CPU's test keeps, on the GPU (mdi) and the
+// CPU (push); occlusion culling, once the view stands still, draws every object the ID image
+// shows and fewer than the frustum leaves.
+TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
+    const InsideView& v = insideView();
+    const scene::Scene& s = v.loaded.scene;
+    const glm::mat4 viewProj = v.camera.viewProjection(160.0f / 90.0f);
+    uint64_t inFrustum = 0;
+    for (const scene::Object& o : s.objects) {
+        scene::Bounds box{glm::vec3(1e30f), glm::vec3(-1e30f)};
+        const scene::Geometry& g = s.geometries[o.geometry];
+        for (uint32_t i = 0; i < 3 * g.triangleCount; ++i) {
+            const glm::vec3 p = s.vertices[g.firstVertex + s.indices[g.firstIndex + i]].position;
+            box.min = glm::min(box.min, p);
+            box.max = glm::max(box.max, p);
+        }
+        inFrustum += render::outsideFrustum(viewProj, o.world, v.camera.eye, box) ? 0 : 1;
+    }
+    ASSERT_LT(inFrustum, s.objects.size()) << "the view should leave objects out";
+    ASSERT_GT(inFrustum, 0u);
+
+    app::Options o = testing_support::headlessOptions(160, 90, 3);
+    const std::vector<render::RenderSettings> configs = {
+        culled("vertex-fs", "mdi-baseinstance", render::CullMode::Frustum),
+        culled("vertex-fs", "push", render::CullMode::Frustum),
+        culled("vertex-fs", "mdi-attribute", render::CullMode::Occlusion)};
+    const auto results = app::renderHeadlessSequence(o, s, v.camera, configs);
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    for (size_t c = 0; c < 2; ++c)
+        EXPECT_EQ(render::countsOf(results[c].cullStats.back(), false).draws, inFrustum)
+            << configs[c].pipeline.mode->name;
+
+    std::set<uint32_t> shown;
+    uint64_t shownTriangles = 0;
+    for (uint32_t id : results[2].ids)
+        if (id != gpu::BACKGROUND_ID && shown.insert(s.locate(id)->object).second)
+            shownTriangles += s.geometries[s.objects[s.locate(id)->object].geometry].triangleCount;
+    const render::CullCounts occluded = render::countsOf(results[2].cullStats.back(), false);
+    EXPECT_GE(occluded.draws, shown.size());
+    EXPECT_LT(occluded.draws, inFrustum) << "occlusion culling left nothing out";
+    EXPECT_GE(occluded.triangles, shownTriangles);
+}
+
+// Objects whose parts are all hidden are not drawn, by the GPU's lists and the CPU's.
+TEST(CullingCounts, ObjectsWithEveryPartHiddenAreNotDrawn) {
+    const InsideView& v = insideView();
+    const scene::Scene& s = v.loaded.scene;
+    app::Options o = testing_support::headlessOptions(160, 90, 2);
+    uint32_t hiddenObjects = 0;
+    for (size_t i = 0; i < s.objects.size(); i += 3, ++hiddenObjects)
+        for (uint32_t p = 0; p < s.geometries[s.objects[i].geometry].partCount; ++p)
+            o.hide.push_back(s.objects[i].uniquePartOffset + p);
+    // One part of another object: that object is still drawn.
+    o.hide.push_back(s.objects[1].uniquePartOffset);
+    const std::vector<render::RenderSettings> configs = {
+        culled("vertex-fs", "mdi-baseinstance", render::CullMode::Frustum),
+        culled("vertex-fs", "push", render::CullMode::Frustum)};
+    const scene::Camera fitted = app::initialCamera(v.loaded, 160.0f / 90.0f);
+    const auto results = app::renderHeadlessSequence(o, s, fitted, configs);
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    for (size_t c = 0; c < configs.size(); ++c)
+        EXPECT_EQ(render::countsOf(results[c].cullStats.back(), false).draws,
+                  s.objects.size() - hiddenObjects)
+            << configs[c].pipeline.mode->name;
+}
+
+// Frozen lists keep drawing what the fitted view chose while the camera flies inside: what
+// the occluders hid from the fitted view is missing there, and the counts stay.
+TEST(CullingFreeze, KeepsTheListsWhileTheCameraMoves) {
+    const InsideView& v = insideView();
+    const scene::Scene& s = v.loaded.scene;
+    const float aspect = 160.0f / 90.0f;
+    const scene::Camera fitted = app::initialCamera(v.loaded, aspect);
+    app::Options o = testing_support::headlessOptions(160, 90);
+    for (const char* technique : {"vertex-fs", "mesh-vertex-fs"}) {
+        render::RenderSettings live =
+            culled(technique, "mdi-baseinstance", render::CullMode::Occlusion);
+        vk::Instance instance({true, {}, false});
+        {
+            app::Offscreen rig(instance, o);
+            rig.renderer.setScene(s, live);
+            uint64_t frame = 0;
+            auto draw = [&](const scene::Camera& camera) {
+                const render::FrameParams params = app::cameraFrame(camera, rig.extent);
+                render::FrameSlot& slot = rig.slots.begin(frame++);
+                rig.renderer.record(slot, rig.targets, params);
+                const app::Readback readback(rig.device, rig.extent);
+                readback.record(slot.cmd, *rig.targets);
+                rig.slots.submit(slot);
+                rig.slots.finish();
+                return std::make_pair(readback.idValues(), rig.slots.cullStats().back());
+            };
+            for (int i = 0; i < 3; ++i) draw(fitted);
+            const auto [fittedIds, fittedStats] = draw(fitted);
+            render::RenderSettings frozen = live;
+            frozen.culling.freeze = true;
+            rig.renderer.configure(s, frozen);
+            const auto [frozenIds, frozenStats] = draw(v.camera);
+            render::RenderSettings off = live;
+            off.culling.mode = render::CullMode::Off;
+            rig.renderer.configure(s, off);
+            const auto [allIds, allStats] = draw(v.camera);
+            EXPECT_NE(frozenIds, allIds) << technique << ": the frozen lists drew everything";
+            EXPECT_EQ(render::countsOf(frozenStats, false).draws,
+                      render::countsOf(fittedStats, false).draws)
+                << technique;
+            // Back to live culling: exact again.
+            rig.renderer.configure(s, live);
+            draw(v.camera);
+            EXPECT_EQ(draw(v.camera).first, allIds) << technique;
+        }
+        EXPECT_EQ(instance.validationMessages(), 0u) << technique;
+    }
+}
+
+} // namespace
