@@ -32,6 +32,9 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Dr
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer StatsRef {
     CullStats stats;
 };
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer DispatchesRef {
+    CullDispatches dispatches;
+};
 
 shared uint counts[CULL_GROUP_SIZE];
 
@@ -69,7 +72,8 @@ uint decide(FrameData frame, uint i) {
         DrawData d = DrawsRef(cull.drawsAddress).draws[i];
         ObjectData object = ObjectsRef(frame.objectsAddress).objects[d.objectIndex];
         DrawCull box = DrawCullRef(cull.cullAddress).draws[i];
-        bool passed = !occluded(frame, viewBox(frame, object.world, box.boxMin, box.boxMax));
+        bool passed = !occluded(frame, viewBox(frame, object.world, box.boxMin, box.boxMax),
+                                CULL_DRAW_SPAN);
         if (passed && boundsHistory) bits |= CULL_PASSED;
         draw = passed && (!wasVisible || (cull.flags & CULL_MESH_DRAWS) != 0u);
     } else if (cull.phase == CULL_PHASE_LATE) {
@@ -96,6 +100,25 @@ void decideStep(uint lane, uint i) {
     counts[lane] = (bits & CULL_DRAW_NOW) != 0u ? 1u : 0u;
     reduce(lane, CULL_GROUP_SIZE);
     if (lane == 0u) CullWordsRef(cull.groupsAddress).words[gl_WorkGroupID.x] = counts[0];
+    if (cull.phase != CULL_PHASE_EARLY || cull.dispatchesAddress == 0ul) return;
+    // The draws the late pass will test: in view, and not drawn now, or tested again anyway.
+    barrier();
+    bool retest = (cull.flags & CULL_MESH_DRAWS) != 0u ||
+                  (FrameRef(cull.frameAddress).frame.flags & FRAME_BOUNDS_HISTORY) != 0u;
+    counts[lane] = (bits & CULL_IN_FRUSTUM) != 0u && ((bits & CULL_WAS_VISIBLE) == 0u || retest)
+                       ? 1u
+                       : 0u;
+    reduce(lane, CULL_GROUP_SIZE);
+    if (lane == 0u && counts[0] != 0u)
+        atomicAdd(DispatchesRef(cull.dispatchesAddress).dispatches.lateCandidates, counts[0]);
+}
+
+// After the early cull: nothing for the late pass to test leaves its dispatches empty.
+void skipLateIfIdle() {
+    DispatchesRef d = DispatchesRef(cull.dispatchesAddress);
+    if (d.dispatches.lateCandidates != 0u) return;
+    for (uint p = 0u; p < CULL_PYRAMID_PASSES; ++p) d.dispatches.pyramid[p].x = 0u;
+    d.dispatches.lateCull.x = 0u;
 }
 
 void compactStep(uint lane, uint i) {
@@ -142,16 +165,16 @@ void compactStep(uint lane, uint i) {
         if (triangles != 0u) atomicAdd(stats.stats.triangles, triangles);
         if (pass == 1u && counts[0] != 0u) atomicAdd(stats.stats.lateNew, counts[0]);
         // The last workgroup knows the total: the pass's indirect draw count.
-        if (gl_WorkGroupID.x + 1u == cull.groupCount)
+        if (gl_WorkGroupID.x + 1u == cull.groupCount) {
             stats.stats.draws[pass] = base + groupTotal;
+            if (cull.phase == CULL_PHASE_EARLY && cull.dispatchesAddress != 0ul) skipLateIfIdle();
+        }
     }
 }
 
 void main() {
     uint lane = gl_LocalInvocationID.x;
     uint i = gl_GlobalInvocationID.x;
-    if (cull.step == CULL_STEP_DECIDE)
-        decideStep(lane, i);
-    else
-        compactStep(lane, i);
+    if (cull.step != CULL_STEP_COMPACT) decideStep(lane, i);
+    if (cull.step != CULL_STEP_DECIDE) compactStep(lane, i);
 }

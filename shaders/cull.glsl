@@ -19,6 +19,10 @@ const float CULL_RELATIVE_MARGIN = 1.0 / 524288.0;
 const float CULL_PIXEL_MARGIN = 1.0 / 16.0;
 // Depth comparisons keep this much apart for the rasterizer's depth interpolation.
 const float CULL_DEPTH_MARGIN = 1.0 / 1048576.0;
+// Pyramid texels read per side of a screen rectangle: objects are few and large, so they
+// read up to 8 x 8 for a close fit; meshlets are many and small, 4 x 4 hugs them well.
+const int CULL_DRAW_SPAN = 8;
+const int CULL_MESHLET_SPAN = 4;
 
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer CullWordsRef {
     uint words[];
@@ -101,8 +105,10 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
     return view;
 }
 
-// Whether every sample the box may cover already holds a nearer depth in the pyramid.
-bool occluded(FrameData frame, BoxView view) {
+// Whether every sample the box may cover already holds a nearer depth in the pyramid, read
+// at the finest level where its rectangle spans at most `span` texels a side: finer levels
+// hug the rectangle closer (a coarse texel reaches past an occluder's edge), for more reads.
+bool occluded(FrameData frame, BoxView view, int span) {
     if (view.crossesNear || frame.pyramidAddress == 0ul) return false;
     vec2 last = vec2(frame.viewport) - 1.0;
     vec2 lo = clamp(floor(view.minPixel - CULL_PIXEL_MARGIN), vec2(0.0), last);
@@ -111,9 +117,9 @@ bool occluded(FrameData frame, BoxView view) {
     ivec2 end = max(ivec2(hi) - IDV_CULL_SHRINK_PIXELS, first);
     PyramidRef pyramid = PyramidRef(frame.pyramidAddress);
     uint levels = pyramid.header.levels;
-    // The finest level where the rectangle spans at most 2 x 2 texels.
     uint k = 0u;
-    while (k + 1u < levels && any(greaterThan((end >> (k + 1u)) - (first >> (k + 1u)), ivec2(1))))
+    while (k + 1u < levels &&
+           any(greaterThan((end >> (k + 1u)) - (first >> (k + 1u)), ivec2(span - 1))))
         ++k;
     PyramidLevel level = pyramid.header.level[k];
     ivec2 t0 = first >> (k + 1u);

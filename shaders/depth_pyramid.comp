@@ -1,8 +1,9 @@
 #version 460
-// depth_pyramid.comp - one level of the depth pyramid (shared.h PyramidHeader), a texel per
-// invocation: level 0 takes the farthest depth of every sample of its 2 x 2 pixels of the depth
-// attachment (IDV_PYRAMID_MSAA: a multisampled one), a higher level the farthest of 2 x 2
-// texels of the level below. Pixels and texels past the edge are left out, so a texel covers
+// depth_pyramid.comp - up to PYRAMID_LEVELS_PER_PASS levels of the depth pyramid (shared.h
+// PyramidHeader) in one dispatch, from the depth attachment (the first pass, level 0: the
+// farthest depth of every sample of 2 x 2 pixels; IDV_PYRAMID_MSAA: a multisampled one) or
+// from the last level of the pass before. Each workgroup reduces a tile of its first level
+// down to one texel in shared memory; texels past an edge are left out, so a texel covers
 // exactly its pixels and the occlusion test (cull.glsl) stays conservative.
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
@@ -26,38 +27,62 @@ layout(buffer_reference, std430, buffer_reference_align = 16) buffer PyramidRef 
     float depth[];
 };
 
-float farthestSample(ivec2 pixel) {
+// Level-by-level halves of the tile: PYRAMID_GROUP texels a side, then half of that, ...
+shared float tile[PYRAMID_GROUP][PYRAMID_GROUP];
+
+// The farthest depth at input position `p` (a pixel, or a texel of the level below the
+// pass's first), 0 past the edge: depths are 0 or more, so 0 never wins a max.
+float sourceDepth(PyramidRef p, ivec2 at) {
+    if (pyramid.level == 0u) {
+        if (any(greaterThanEqual(uvec2(at), pyramid.extent))) return 0.0;
 #if IDV_PYRAMID_MSAA
-    float farthest = 0.0;
-    for (int s = 0; s < int(pyramid.samples); ++s)
-        farthest = max(farthest, texelFetch(depthImage, pixel, s).r);
-    return farthest;
+        float farthest = 0.0;
+        for (int s = 0; s < int(pyramid.samples); ++s)
+            farthest = max(farthest, texelFetch(depthImage, at, s).r);
+        return farthest;
 #else
-    return texelFetch(depthImage, pixel, 0).r;
+        return texelFetch(depthImage, at, 0).r;
 #endif
+    }
+    PyramidLevel below = p.header.level[pyramid.level - 1u];
+    if (uint(at.x) >= below.width || uint(at.y) >= below.height) return 0.0;
+    return p.depth[below.offset + uint(at.y) * below.width + uint(at.x)];
+}
+
+void store(PyramidRef p, uint level, uvec2 texel, float value) {
+    PyramidLevel l = p.header.level[level];
+    if (texel.x < l.width && texel.y < l.height)
+        p.depth[l.offset + texel.y * l.width + texel.x] = value;
 }
 
 void main() {
     PyramidRef p = PyramidRef(pyramid.pyramidAddress);
-    PyramidLevel level = p.header.level[pyramid.level];
-    uvec2 texel = gl_GlobalInvocationID.xy;
-    if (texel.x >= level.width || texel.y >= level.height) return;
-    float farthest = 0.0;
-    if (pyramid.level == 0u) {
-        for (uint dy = 0u; dy < 2u; ++dy)
-            for (uint dx = 0u; dx < 2u; ++dx) {
-                uvec2 pixel = texel * 2u + uvec2(dx, dy);
-                if (all(lessThan(pixel, pyramid.extent)))
-                    farthest = max(farthest, farthestSample(ivec2(pixel)));
-            }
-    } else {
-        PyramidLevel below = p.header.level[pyramid.level - 1u];
-        for (uint dy = 0u; dy < 2u; ++dy)
-            for (uint dx = 0u; dx < 2u; ++dx) {
-                uvec2 t = texel * 2u + uvec2(dx, dy);
-                if (t.x < below.width && t.y < below.height)
-                    farthest = max(farthest, p.depth[below.offset + t.y * below.width + t.x]);
-            }
+    uint levels = p.header.levels;
+    uvec2 lane = gl_LocalInvocationID.xy;
+    // The first level: one texel per invocation, from 2 x 2 inputs.
+    uvec2 texel = gl_WorkGroupID.xy * PYRAMID_GROUP + lane;
+    ivec2 at = ivec2(texel * 2u);
+    float farthest = max(max(sourceDepth(p, at), sourceDepth(p, at + ivec2(1, 0))),
+                         max(sourceDepth(p, at + ivec2(0, 1)), sourceDepth(p, at + ivec2(1, 1))));
+    store(p, pyramid.level, texel, farthest);
+    tile[lane.y][lane.x] = farthest;
+    // The next levels within the tile: PYRAMID_GROUP / 2, / 4, ... texels a side. Texels
+    // past the level's edge hold 0 from the inputs past it, so they never win a max.
+    uint size = PYRAMID_GROUP;
+    for (uint level = pyramid.level + 1u; size > 1u; ++level) {
+        barrier();
+        size >>= 1;
+        float value = 0.0;
+        bool inLevel = all(lessThan(lane, uvec2(size)));
+        if (inLevel) {
+            uvec2 s = lane * 2u;
+            value = max(max(tile[s.y][s.x], tile[s.y][s.x + 1u]),
+                        max(tile[s.y + 1u][s.x], tile[s.y + 1u][s.x + 1u]));
+        }
+        barrier();
+        if (inLevel) {
+            tile[lane.y][lane.x] = value;
+            if (level < levels) store(p, level, gl_WorkGroupID.xy * size + lane, value);
+        }
     }
-    p.depth[level.offset + texel.y * level.width + texel.x] = farthest;
 }

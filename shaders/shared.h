@@ -92,7 +92,7 @@ struct FrameData {
     uint64_t partMaterialsAddress;
     // Culling (render/culling.h), 0 where it is off: the parts the last ID image showed
     // (uint[] bitset), the depth pyramid (PyramidHeader, then floats), each draw's DrawCull,
-    // each meshlet's MeshletBox, one bit per (draw, meshlet) that the last culled frame found
+    // each meshlet's CullBox, one bit per (draw, meshlet) that the last culled frame found
     // in view (and not occluded), and this frame's CullStats.
     uint64_t visibleAddress;
     uint64_t pyramidAddress;
@@ -197,7 +197,10 @@ IDV_CONST DRAW_PUSH_CULL_OFFSET = 40; // commandsAddress, cullPhase
 // test or lie in the view, so the images equal those drawn without culling.
 IDV_CONST CULL_GROUP_SIZE = 256; // cull.comp: draws per workgroup
 IDV_CONST TASK_GROUP_SIZE = 32;  // scene.task: meshlets per workgroup, one per invocation
-IDV_CONST PYRAMID_GROUP = 8;     // depth_pyramid.comp: 8x8 texels per workgroup
+// depth_pyramid.comp: a workgroup reduces 32 x 32 texels of a pass's first level to one,
+// so each dispatch writes 6 levels (two for a 2560 x 1440 image).
+IDV_CONST PYRAMID_GROUP = 32;
+IDV_CONST PYRAMID_LEVELS_PER_PASS = 6;
 IDV_CONST PYRAMID_MAX_LEVELS = 16;
 
 // What one culling pass lets through (DrawPush::cullPhase, CullPush::phase).
@@ -216,6 +219,7 @@ IDV_CONST CULL_PHASE_FROZEN_LATE = 5; // the late list: meshlets of draws the fi
 // then compact (each workgroup adds the counts before it, so draws keep their order).
 IDV_CONST CULL_STEP_DECIDE = 0;
 IDV_CONST CULL_STEP_COMPACT = 1;
+IDV_CONST CULL_STEP_BOTH = 2; // a list of one workgroup: both steps in one dispatch
 // Per-draw state bits (CullPush::stateAddress), from the first pass of a frame.
 IDV_CONST CULL_IN_FRUSTUM = 1u;  // may lie in the view frustum, and not all its parts hidden
 IDV_CONST CULL_WAS_VISIBLE = 2u; // one of its parts is in the last ID image
@@ -234,11 +238,27 @@ struct DrawCull {
     uint meshletCount;
 };
 // A meshlet's box, in its geometry's coordinates.
-struct MeshletBox {
+struct CullBox {
     vec3 boxMin;
     uint unused0;
     vec3 boxMax;
     uint unused1;
+};
+
+// The late phase's indirect dispatches (the depth pyramid's passes, the late cull's steps),
+// written whole before each frame's early cull. When the early cull leaves the late pass
+// nothing to test (every draw in view was in the last ID image: a still view of what all
+// shows), it zeroes them, so the GPU skips that work without the CPU knowing.
+IDV_CONST CULL_PYRAMID_PASSES = 4; // PYRAMID_MAX_LEVELS / PYRAMID_LEVELS_PER_PASS, rounded up
+struct CullDispatch {
+    uint x, y, z; // VkDispatchIndirectCommand
+    uint unused;
+};
+struct CullDispatches {
+    CullDispatch pyramid[CULL_PYRAMID_PASSES];
+    CullDispatch lateCull;
+    uint lateCandidates; // draws the late pass would test, counted by the early cull
+    uint unused[3];
 };
 
 // What the mesh techniques' culled indirect draws hold: task workgroups, then the draw.
@@ -291,10 +311,12 @@ struct CullPush {
     uint commandWords; // 5: VkDrawIndexedIndirectCommand, 4: MeshTaskCommand
     uint flags;
     uint groupCount;
-    uint unused[2];
+    // Indirect dispatches the late phase may leave out (CullDispatches), or 0.
+    uint64_t dispatchesAddress;
 };
 
-// depth_pyramid.comp: level `level` from the depth attachment (level 0) or the level below.
+// depth_pyramid.comp: PYRAMID_LEVELS_PER_PASS levels from `level` on, from the depth
+// attachment (level 0) or the level below.
 struct PyramidPush {
     uint64_t pyramidAddress;
     uvec2 extent; // pixels of the depth attachment
@@ -357,10 +379,13 @@ static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
 static_assert(sizeof(FrameData) == 272 && offsetof(FrameData, pickPixel) == 248);
-static_assert(sizeof(DrawCull) == 32 && sizeof(MeshletBox) == 32);
+static_assert(sizeof(DrawCull) == 32 && sizeof(CullBox) == 32);
 static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 32);
+static_assert(sizeof(CullDispatches) == 16 * (CULL_PYRAMID_PASSES + 2));
+static_assert(CULL_PYRAMID_PASSES * PYRAMID_LEVELS_PER_PASS >= PYRAMID_MAX_LEVELS);
 static_assert(sizeof(PyramidHeader) == 16 + 16 * PYRAMID_MAX_LEVELS);
-static_assert(sizeof(CullPush) == 96 && sizeof(PyramidPush) == 24);
+static_assert(sizeof(CullPush) == 96 && offsetof(CullPush, dispatchesAddress) == 88);
+static_assert(sizeof(PyramidPush) == 24);
 static_assert(offsetof(DrawPush, commandsAddress) == DRAW_PUSH_CULL_OFFSET);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(DrawData) == 32);

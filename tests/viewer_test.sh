@@ -278,8 +278,9 @@ expect_event 4 "selected: none"
 expect_event 5 "hidden: $(count "$after_add") parts"
 expect_event 6 "hidden: 0 parts"
 expect_event 7 "selected: $(count "$big") parts"
-partcount=$("$idview" --headless --size 8x8 --scene procedural:preset=small --frames 1 2>&1 |
-    sed -n 's/.*, \([0-9]*\) parts,.*/\1/p')
+partcount=$("$idview" --stats --scene procedural:preset=small 2>/dev/null |
+    sed -n 's/.*"parts":\([0-9]*\),.*/\1/p')
+[[ -n $partcount ]] || fail "--stats gave no part count"
 expect_event 8 "hidden: $((partcount - $(count "$big"))) parts"
 expect_event 9 "hidden: 0 parts"
 line=$(echo "$events" | sed -n 10p)

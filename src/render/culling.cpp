@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 
 #include "vk/barrier.h"
 #include "vk/check.h"
@@ -125,6 +126,10 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                        shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                        0, "cull counters");
+    dispatches =
+        vk::Buffer(device, sizeof(gpu::CullDispatches),
+                   shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   0, "late cull dispatches");
     // Zeros: no meshlet passed a test yet, so the first early pass draws none of them and
     // the late pass tests them all.
     if (meshletBitCount)
@@ -156,9 +161,23 @@ CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler) :
                                                {{"IDV_PYRAMID_MSAA", msaa ? "1" : "0"}});
 }
 
+gpu::CullDispatches CullPasses::fullDispatches(const SceneTargets& targets,
+                                               const CullBuffers& buffers) {
+    gpu::CullDispatches d{};
+    const gpu::PyramidHeader& header = targets.pyramidHeader();
+    for (uint32_t pass = 0; pass < gpu::CULL_PYRAMID_PASSES; ++pass) {
+        const uint32_t level = pass * gpu::PYRAMID_LEVELS_PER_PASS;
+        if (level >= header.levels) continue; // no such pass: never dispatched
+        d.pyramid[pass] = {groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
+                           groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1, 0};
+    }
+    d.lateCull = {buffers.groupCount, 1, 1, 0};
+    return d;
+}
+
 void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkDeviceAddress frame,
                             VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase,
-                            bool meshDraws) const {
+                            bool meshDraws, bool indirect) const {
     vk::CmdLabel label(device_.debug(), cmd,
                        phase == gpu::CULL_PHASE_LATE ? "cull draws (late)" : "cull draws");
     const bool late = phase == gpu::CULL_PHASE_LATE;
@@ -176,6 +195,7 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkD
     push.drawsAddress = draws;
     push.cullAddress = buffers.draws.address();
     push.sourceAddress = source;
+    push.dispatchesAddress = indirect ? buffers.dispatches.address() : 0;
     push.targetAddress = buffers.lists[late ? 1 : 0].address();
     push.stateAddress = buffers.state.address();
     push.groupsAddress = buffers.groups.address();
@@ -186,24 +206,35 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkD
     push.flags = meshDraws ? gpu::CULL_MESH_DRAWS : 0u;
     push.groupCount = buffers.groupCount;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
-    for (uint32_t step : {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT}) {
+    // A list of one workgroup needs no count of the workgroups before: one dispatch does it.
+    const std::vector<uint32_t> steps =
+        buffers.groupCount == 1
+            ? std::vector<uint32_t>{gpu::CULL_STEP_BOTH}
+            : std::vector<uint32_t>{gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT};
+    for (uint32_t step : steps) {
         push.step = step;
         vkCmdPushConstants(cmd, cull_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
                            &push);
-        if (buffers.groupCount) vkCmdDispatch(cmd, buffers.groupCount, 1, 1);
+        if (late && indirect)
+            vkCmdDispatchIndirect(cmd, buffers.dispatches.handle(),
+                                  offsetof(gpu::CullDispatches, lateCull));
+        else if (buffers.groupCount)
+            vkCmdDispatch(cmd, buffers.groupCount, 1, 1);
         if (step == gpu::CULL_STEP_DECIDE)
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     }
-    // The draws read the commands and the count; the task shader the state.
+    // The draws read the commands and the count, the late phase its dispatches; the task
+    // shader the state.
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT |
                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
 }
 
-void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const {
+void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
+                               const vk::Buffer* dispatches) const {
     vk::CmdLabel label(device_.debug(), cmd, "depth pyramid");
     const gpu::PyramidHeader& header = targets.pyramidHeader();
     // Earlier readers of the pyramid (the last frame's late pass, in the cull and the task
@@ -231,13 +262,20 @@ void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets)
     push.pyramidAddress = targets.pyramid().address();
     push.extent = {targets.extent().width, targets.extent().height};
     push.samples = uint32_t(targets.pass().samples());
-    for (uint32_t level = 0; level < header.levels; ++level) {
+    for (uint32_t level = 0; level < header.levels; level += gpu::PYRAMID_LEVELS_PER_PASS) {
         push.level = level;
         vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
                            &push);
-        vkCmdDispatch(cmd, groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
-                      groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1);
-        // The next level reads this one; after the last, the cull and task shaders do.
+        if (dispatches)
+            vkCmdDispatchIndirect(cmd, dispatches->handle(),
+                                  offsetof(gpu::CullDispatches, pyramid) +
+                                      level / gpu::PYRAMID_LEVELS_PER_PASS *
+                                          sizeof(gpu::CullDispatch));
+        else
+            vkCmdDispatch(cmd, groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
+                          groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1);
+        // The next pass reads this one's last level; after the last, the cull and task
+        // shaders read them all.
         vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
                           VK_ACCESS_SHADER_READ_BIT);

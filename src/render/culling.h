@@ -66,6 +66,7 @@ struct CullBuffers {
     vk::Buffer lists[2];    // the early (or only) and the late pass's commands
     vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts
     vk::Buffer meshletBits; // uint words, empty without meshlets
+    vk::Buffer dispatches;  // gpu::CullDispatches: the late phase's, which it may skip
     // CPU side, changed while recording: whether the lists were ever written (a frozen list
     // needs one culled frame first), and push mode's objects shown by the last culled frame.
     bool culled = false;
@@ -79,12 +80,19 @@ class CullPasses {
 
     // One pass of cull.comp over the whole list: decide, then compact into
     // buffers.lists[phase == LATE]. `draws` and `source` are the list's DrawData and commands.
+    // With `indirect`, the late pass dispatches by buffers.dispatches, which the early pass
+    // empties when it leaves the late pass nothing to test.
     void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkDeviceAddress frame,
-                    VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase,
-                    bool meshDraws) const;
+                    VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase, bool meshDraws,
+                    bool indirect) const;
     // The pyramid of `targets` from their depth, left in DEPTH_STENCIL_READ_ONLY_OPTIMAL by
-    // the first half of the pass; its header is written first.
-    void recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const;
+    // the first half of the pass; its header is written first. `dispatches`, if given, holds
+    // its passes' sizes (recordCull may have emptied them).
+    void recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
+                       const vk::Buffer* dispatches) const;
+    // What buffers.dispatches holds before the early cull, for these targets.
+    static gpu::CullDispatches fullDispatches(const SceneTargets& targets,
+                                              const CullBuffers& buffers);
 
   private:
     vk::Device& device_;

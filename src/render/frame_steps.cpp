@@ -53,7 +53,7 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.partColorWeight = shading.partWeight;
     frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
                   (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u) |
-                  (hiddenSet_.empty() ? 0u : gpu::FRAME_HIDING) |
+                  (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u) |
                   (draws_->key.technique->isFloor() ? gpu::FRAME_BOUNDS_HISTORY : 0u);
     frame.sampleZero = targets.pass().sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
@@ -126,7 +126,8 @@ void Renderer::drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t ph
 
 // Before the scene pass (`before`): zero what the GPU counts this frame; a frozen list keeps
 // its counts, which are the draws' count buffer. After it: what the CPU knows.
-void Renderer::recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const {
+void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
+                              const FrameCulling& culling, bool before) const {
     const vk::Buffer& stats = draws_->cull->stats;
     const bool mesh = draws_->meshlets != nullptr;
     if (before) {
@@ -140,6 +141,10 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, 
         const bool all = culling.plan.gpuLists && !culling.frozen;
         const VkDeviceSize from = all ? 0 : offsetof(gpu::CullStats, meshlets);
         vkCmdFillBuffer(cmd, stats.handle(), from, sizeof(gpu::CullStats) - from, 0);
+        if (all && culling.plan.twoPasses) {
+            const gpu::CullDispatches full = CullPasses::fullDispatches(targets, *draws_->cull);
+            vkCmdUpdateBuffer(cmd, draws_->cull->dispatches.handle(), 0, sizeof full, &full);
+        }
         vk::memoryBarrier(
             cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
             VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT,

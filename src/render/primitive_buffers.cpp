@@ -43,11 +43,11 @@ MeshletBuffers::MeshletBuffers(const scene::Scene& scene, vk::UploadBatch& uploa
         gpuMeshlets.push_back({m.firstVertex, cornersStart + m.firstTriangle,
                                m.vertexCount | m.triangleCount << 16, m.firstLocalTriangle});
     meshlets = upload.add(gpuMeshlets, shaderRead, "meshlets");
-    std::vector<gpu::MeshletBox> gpuBoxes;
+    std::vector<gpu::CullBox> gpuBoxes;
     gpuBoxes.reserve(cpu.meshlets.size());
     for (const scene::Bounds& box : scene::meshletBounds(cpu, partVertices.vertices))
         gpuBoxes.push_back({box.min, 0, box.max, 0});
-    boxes = upload.add(gpuBoxes.empty() ? std::vector<gpu::MeshletBox>(1) : gpuBoxes, shaderRead,
+    boxes = upload.add(gpuBoxes.empty() ? std::vector<gpu::CullBox>(1) : gpuBoxes, shaderRead,
                        "meshlet boxes");
     data = upload.add(words, shaderRead, "meshlet vertices and triangles");
     release(cpu.corners);

@@ -28,7 +28,7 @@ struct MeshletBuffers {
     vk::Buffer meshlets;              // gpu::Meshlet[]
     vk::Buffer data;                  // uint[]: meshlet vertices, then packed corners
     vk::Buffer vertices;              // the part vertices, read by address
-    vk::Buffer boxes;                 // gpu::MeshletBox[]: what the task shader culls by
+    vk::Buffer boxes;                 // gpu::CullBox[]: what the task shader culls by
     uint64_t bytes = 0;
 };
 

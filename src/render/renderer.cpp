@@ -264,25 +264,27 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
         vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), s);
     };
     stamp(StampStart);
-    recordCounters(cmd, culling, true);
+    recordCounters(cmd, targets, culling, true);
     const uint32_t firstPhase = culling.frozen   ? gpu::CULL_PHASE_FROZEN
                                 : !plan.on()     ? gpu::CULL_PHASE_NONE
                                 : plan.twoPasses ? gpu::CULL_PHASE_EARLY
                                                  : gpu::CULL_PHASE_FRUSTUM;
+    // The GPU lists' late phase dispatches by what the early cull left it.
+    const bool skippable = split && plan.gpuLists;
     if (cullOnGpu)
         culler_->recordCull(cmd, cull, frame, draws_->draws.address(), draws_->indirect.address(),
-                            firstPhase, mesh);
+                            firstPhase, mesh, skippable);
     stamp(StampEarlyCulled);
     beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame);
     drawPhase(cmd, culling, firstPhase);
     if (culling.frozen && plan.twoPasses) drawPhase(cmd, culling, gpu::CULL_PHASE_FROZEN_LATE);
     vkCmdEndRenderPass(cmd);
     stamp(StampEarlyDrawn);
-    if (split) culler_->recordPyramid(cmd, targets);
+    if (split) culler_->recordPyramid(cmd, targets, skippable ? &cull.dispatches : nullptr);
     stamp(StampPyramid);
-    if (split && plan.gpuLists)
+    if (skippable)
         culler_->recordCull(cmd, cull, frame, draws_->draws.address(), draws_->indirect.address(),
-                            gpu::CULL_PHASE_LATE, mesh);
+                            gpu::CULL_PHASE_LATE, mesh, true);
     stamp(StampLateCulled);
     if (split) {
         beginPass(cmd, targets, PassPart::Second, frame);
@@ -290,8 +292,9 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
         vkCmdEndRenderPass(cmd);
     }
     stamp(StampDrawn);
-    recordCounters(cmd, culling, false);
-    if (split)
+    recordCounters(cmd, targets, culling, false);
+    // The floors have no ID image to read: they keep a history of their own (cull.comp).
+    if (split && !draws_->key.technique->isFloor())
         idPasses_->recordVisible(cmd, targets, *visible_, std::max(1u, (partCount_ + 31) / 32));
     stamp(StampVisibility);
     cull.culled = cull.culled || plan.on();

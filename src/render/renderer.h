@@ -122,7 +122,8 @@ class Renderer {
                    VkDeviceAddress frame) const;
     void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
     void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
-    void recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const;
+    void recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
+                        const FrameCulling& culling, bool before) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
     void recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
