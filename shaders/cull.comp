@@ -3,7 +3,10 @@
 // their count (render/culling.h). Step "decide" flags each draw and counts per workgroup;
 // step "compact" adds up the counts of the workgroups before its own and writes its draws
 // there, so the commands keep the order of the whole list (where two surfaces share a depth,
-// the one drawn first wins, as without culling).
+// the one drawn first wins, as without culling). Between them, draws of several clusters
+// whose box passed are tested cluster by cluster (steps "clusters" and "count"): a box around
+// a whole object reaches past the occluders in front of it far more often than the boxes of
+// its runs of 64 triangles do.
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
 #extension GL_EXT_control_flow_attributes : require
@@ -35,6 +38,9 @@ layout(buffer_reference, std430, buffer_reference_align = 4) buffer StatsRef {
 layout(buffer_reference, std430, buffer_reference_align = 16) buffer DispatchesRef {
     CullDispatches dispatches;
 };
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer ClusterBoxesRef {
+    CullBox boxes[];
+};
 
 shared uint counts[CULL_GROUP_SIZE];
 
@@ -65,6 +71,10 @@ uint decide(FrameData frame, uint i) {
     bool wasVisible = (bits & CULL_WAS_VISIBLE) != 0u;
     bool draw = inFrustum;
     if (cull.phase == CULL_PHASE_EARLY) draw = inFrustum && wasVisible;
+    // What passed here is tested again cluster by cluster (steps "clusters" and "count").
+    bool byClusters =
+        cull.pairCount != 0u && DrawCullRef(cull.cullAddress).draws[i].clusterCount > 1u;
+    if (cull.phase == CULL_PHASE_FRUSTUM && draw && byClusters) bits |= CULL_NEEDS_CLUSTERS;
     // Mesh tasks go through again when they were drawn early (their meshlets not drawn then
     // are tested now, scene.task), and so do the floors' draws, whose test is the history.
     bool retest = (cull.flags & CULL_MESH_DRAWS) != 0u || boundsHistory;
@@ -75,6 +85,7 @@ uint decide(FrameData frame, uint i) {
         bool passed = !occluded(frame, viewBox(frame, object.world, box.boxMin, box.boxMax),
                                 CULL_DRAW_SPAN);
         if (passed && boundsHistory) bits |= CULL_PASSED;
+        if (passed && byClusters) bits |= CULL_NEEDS_CLUSTERS;
         draw = passed && (!wasVisible || (cull.flags & CULL_MESH_DRAWS) != 0u);
     } else if (cull.phase == CULL_PHASE_LATE) {
         draw = false;
@@ -119,6 +130,49 @@ void skipLateIfIdle() {
     if (d.dispatches.lateCandidates != 0u) return;
     for (uint p = 0u; p < CULL_PYRAMID_PASSES; ++p) d.dispatches.pyramid[p].x = 0u;
     d.dispatches.lateCull.x = 0u;
+    d.dispatches.lateClusters.x = 0u;
+}
+
+// One (draw, cluster) pair: the cluster's box, where its draw waits for its clusters, tested
+// as the draw's box was (the frustum; the pyramid too in the late phase). Clusters of hidden
+// parts are absent.
+void clustersStep(uint pair) {
+    if (pair >= cull.pairCount) return;
+    uint d = CullWordsRef(cull.pairsAddress).words[pair];
+    CullWordsRef state = CullWordsRef(cull.stateAddress);
+    uint bits = state.words[d];
+    if ((bits & CULL_NEEDS_CLUSTERS) == 0u || (bits & CULL_CLUSTER_PASSED) != 0u) return;
+    FrameData frame = FrameRef(cull.frameAddress).frame;
+    DrawCull drawCull = DrawCullRef(cull.cullAddress).draws[d];
+    CullBox box = ClusterBoxesRef(cull.clusterBoxesAddress)
+                      .boxes[drawCull.firstCluster + pair - drawCull.firstPair];
+    ObjectData object =
+        ObjectsRef(frame.objectsAddress).objects[DrawsRef(cull.drawsAddress).draws[d].objectIndex];
+    // unused0: the cluster's part in its geometry.
+    if ((frame.flags & FRAME_HIDING) != 0u &&
+        allBitsInRange(frame.hiddenAddress, object.uniquePartOffset + box.unused0, 1u))
+        return;
+    BoxView view = viewBox(frame, object.world, box.boxMin, box.boxMax);
+    bool passed = !view.outside &&
+                  (cull.phase != CULL_PHASE_LATE || !occluded(frame, view, CULL_DRAW_SPAN));
+    if (passed) atomicOr(state.words[d], CULL_CLUSTER_PASSED);
+}
+
+// After the clusters: a draw that waited for them is drawn (and passed) only if one passed;
+// each workgroup's draws are counted again for "compact".
+void countStep(uint lane, uint i) {
+    uint bits = 0u;
+    if (i < cull.drawCount) {
+        CullWordsRef state = CullWordsRef(cull.stateAddress);
+        bits = state.words[i];
+        if ((bits & (CULL_NEEDS_CLUSTERS | CULL_CLUSTER_PASSED)) == CULL_NEEDS_CLUSTERS) {
+            bits &= ~(CULL_DRAW_NOW | CULL_PASSED);
+            state.words[i] = bits;
+        }
+    }
+    counts[lane] = (bits & CULL_DRAW_NOW) != 0u ? 1u : 0u;
+    reduce(lane, CULL_GROUP_SIZE);
+    if (lane == 0u) CullWordsRef(cull.groupsAddress).words[gl_WorkGroupID.x] = counts[0];
 }
 
 void compactStep(uint lane, uint i) {
@@ -175,6 +229,12 @@ void compactStep(uint lane, uint i) {
 void main() {
     uint lane = gl_LocalInvocationID.x;
     uint i = gl_GlobalInvocationID.x;
-    if (cull.step != CULL_STEP_COMPACT) decideStep(lane, i);
-    if (cull.step != CULL_STEP_DECIDE) compactStep(lane, i);
+    if (cull.step == CULL_STEP_CLUSTERS) {
+        clustersStep(i);
+    } else if (cull.step == CULL_STEP_COUNT) {
+        countStep(lane, i);
+    } else {
+        if (cull.step != CULL_STEP_COMPACT) decideStep(lane, i);
+        if (cull.step != CULL_STEP_DECIDE) compactStep(lane, i);
+    }
 }

@@ -1,9 +1,13 @@
 #version 460
 // part_set.comp - the unique parts inside a pixel rectangle of the resolved ID image, as a
-// bitset plus their count: box selection and the visible parts. One invocation per pixel; a
-// bit already seen skips the atomic, so a part covering many pixels costs few atomics.
+// bitset plus their count: box selection and the visible parts. One invocation per pixel.
+// Neighbouring pixels mostly show the same part, so the invocations of a subgroup first agree
+// on their distinct parts (a loop that retires one part per turn) and one invocation per part
+// goes to memory: a bit already set skips the atomic, so a part covering many pixels costs
+// few atomics.
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
+#extension GL_KHR_shader_subgroup_ballot : require
 
 #include "shared.h"
 
@@ -22,13 +26,20 @@ layout(buffer_reference, std430, buffer_reference_align = 16) buffer Result {
 
 void main() {
     const uvec2 p = query.rectMin + gl_GlobalInvocationID.xy;
-    if (any(greaterThan(p, query.rectMax))) return;
-    const uint id = imageLoad(ids, ivec2(p)).r;
-    const uint word = id >> 5;
-    if (id == BACKGROUND_ID || word >= query.words) return;
-    const uint bit = 1u << (id & 31u);
-    Result result = Result(query.resultAddress);
-    if ((result.words[word] & bit) != 0u) return;
-    // Of all pixels of one part, exactly one sees the bit unset before its atomic: it counts.
-    if ((atomicOr(result.words[word], bit) & bit) == 0u) atomicAdd(result.head.count, 1u);
+    uint id = BACKGROUND_ID;
+    if (all(lessThanEqual(p, query.rectMax))) id = imageLoad(ids, ivec2(p)).r;
+    bool pending = id != BACKGROUND_ID && (id >> 5) < query.words;
+    while (pending) {
+        // The lowest pending invocation's part: every invocation showing it is done with it.
+        const uint part = subgroupBroadcastFirst(id);
+        if (id != part) continue;
+        pending = false;
+        if (!subgroupElect()) continue;
+        const uint bit = 1u << (part & 31u);
+        Result result = Result(query.resultAddress);
+        if ((result.words[part >> 5] & bit) != 0u) continue;
+        // Of all invocations that reach here for one part, exactly one sees the bit unset
+        // before its atomic: it counts.
+        if ((atomicOr(result.words[part >> 5], bit) & bit) == 0u) atomicAdd(result.head.count, 1u);
+    }
 }

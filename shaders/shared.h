@@ -220,24 +220,40 @@ IDV_CONST CULL_PHASE_FROZEN_LATE = 5; // the late list: meshlets of draws the fi
 IDV_CONST CULL_STEP_DECIDE = 0;
 IDV_CONST CULL_STEP_COMPACT = 1;
 IDV_CONST CULL_STEP_BOTH = 2; // a list of one workgroup: both steps in one dispatch
+// Draws of several clusters (scene/bounds.h: runs of up to CLUSTER_MAX_TRIANGLES triangles of
+// one part) whose box passes a test are tested again cluster by cluster in the frustum and
+// late phases, and drawn when one cluster's box passes: a dispatch over (draw, cluster)
+// pairs (step "clusters"), then one that counts each workgroup's draws anew ("count"),
+// before "compact".
+IDV_CONST CULL_STEP_CLUSTERS = 3;
+IDV_CONST CULL_STEP_COUNT = 4;
+IDV_CONST CLUSTER_MAX_TRIANGLES = 64;
 // Per-draw state bits (CullPush::stateAddress), from the first pass of a frame.
 IDV_CONST CULL_IN_FRUSTUM = 1u;  // may lie in the view frustum, and not all its parts hidden
 IDV_CONST CULL_WAS_VISIBLE = 2u; // one of its parts is in the last ID image
 IDV_CONST CULL_DRAW_NOW = 4u;    // drawn by the current pass (decide -> compact)
 IDV_CONST CULL_PASSED = 8u;      // FRAME_BOUNDS_HISTORY: passed the late pass's test
+IDV_CONST CULL_NEEDS_CLUSTERS = 16u;  // drawn (and passed) only if a cluster's box passes
+IDV_CONST CULL_CLUSTER_PASSED = 32u; // one did
 // CullPush::flags
 IDV_CONST CULL_MESH_DRAWS = 1u; // mesh tasks: the late pass lists every draw that may show,
                                 // the task shader then skips the meshlets drawn early
 
-// A draw's box for culling, in its geometry's coordinates, and for mesh techniques where
-// its meshlets' bits start (one bit per meshlet, each draw's run starting on a word).
+// A draw's box for culling, in its geometry's coordinates, for mesh techniques where its
+// meshlets' bits start (one bit per meshlet, each draw's run starting on a word), its
+// clusters (CullPush::clusterBoxesAddress) and, for draws of several, their first
+// (draw, cluster) pair (CullPush::pairsAddress).
 struct DrawCull {
     vec3 boxMin;
     uint meshletBit;
     vec3 boxMax;
     uint meshletCount;
+    uint firstCluster;
+    uint clusterCount;
+    uint firstPair;
+    uint unused;
 };
-// A meshlet's box, in its geometry's coordinates.
+// A meshlet's or a part's box, in its geometry's coordinates (min above max: no triangles).
 struct CullBox {
     vec3 boxMin;
     uint unused0;
@@ -256,7 +272,8 @@ struct CullDispatch {
 };
 struct CullDispatches {
     CullDispatch pyramid[CULL_PYRAMID_PASSES];
-    CullDispatch lateCull;
+    CullDispatch lateCull;  // decide, count and compact: a workgroup per CULL_GROUP_SIZE draws
+    CullDispatch lateClusters; // clusters: a workgroup per CULL_GROUP_SIZE pairs
     uint lateCandidates; // draws the late pass would test, counted by the early cull
     uint unused[3];
 };
@@ -313,6 +330,13 @@ struct CullPush {
     uint groupCount;
     // Indirect dispatches the late phase may leave out (CullDispatches), or 0.
     uint64_t dispatchesAddress;
+    // The draws of several clusters: per (draw, cluster) pair its draw (uint), the box of
+    // every cluster of the scene (CullBox, unused0 its part in its geometry), and the number
+    // of pairs.
+    uint64_t pairsAddress;
+    uint64_t clusterBoxesAddress;
+    uint pairCount;
+    uint unused;
 };
 
 // depth_pyramid.comp: PYRAMID_LEVELS_PER_PASS levels from `level` on, from the depth
@@ -379,12 +403,12 @@ static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
 static_assert(sizeof(FrameData) == 272 && offsetof(FrameData, pickPixel) == 248);
-static_assert(sizeof(DrawCull) == 32 && sizeof(CullBox) == 32);
+static_assert(sizeof(DrawCull) == 48 && sizeof(CullBox) == 32);
 static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 32);
-static_assert(sizeof(CullDispatches) == 16 * (CULL_PYRAMID_PASSES + 2));
+static_assert(sizeof(CullDispatches) == 16 * (CULL_PYRAMID_PASSES + 3));
 static_assert(CULL_PYRAMID_PASSES * PYRAMID_LEVELS_PER_PASS >= PYRAMID_MAX_LEVELS);
 static_assert(sizeof(PyramidHeader) == 16 + 16 * PYRAMID_MAX_LEVELS);
-static_assert(sizeof(CullPush) == 96 && offsetof(CullPush, dispatchesAddress) == 88);
+static_assert(sizeof(CullPush) == 120 && offsetof(CullPush, dispatchesAddress) == 88);
 static_assert(sizeof(PyramidPush) == 24);
 static_assert(offsetof(DrawPush, commandsAddress) == DRAW_PUSH_CULL_OFFSET);
 static_assert(sizeof(PickData) == 16);

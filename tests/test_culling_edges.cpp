@@ -166,26 +166,47 @@ render::RenderSettings culled(const char* technique, const char* mode, render::C
     return s;
 }
 
-// Frustum culling lists exactly the objects the CPU's test keeps, on the GPU (mdi) and the
-// CPU (push); occlusion culling, once the view stands still, draws every object the ID image
-// shows and fewer than the frustum leaves.
+// Frustum culling lists exactly the objects the CPU's test keeps: on the GPU (mdi) those
+// with a cluster (up to 64 triangles of one part) whose box may lie in the view, on the CPU
+// (push) those whose own box may; occlusion culling, once the view stands still, draws every
+// object the ID image shows and fewer than the frustum leaves.
 TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
     const InsideView& v = insideView();
     const scene::Scene& s = v.loaded.scene;
     const glm::mat4 viewProj = v.camera.viewProjection(160.0f / 90.0f);
-    uint64_t inFrustum = 0;
+    uint64_t inFrustum = 0, clusterInFrustum = 0;
     for (const scene::Object& o : s.objects) {
-        scene::Bounds box{glm::vec3(1e30f), glm::vec3(-1e30f)};
+        // Boxes of the vertices the triangles use, the object's and each cluster's, made here
+        // from the triangles rather than by scene/bounds.h.
         const scene::Geometry& g = s.geometries[o.geometry];
-        for (uint32_t i = 0; i < 3 * g.triangleCount; ++i) {
-            const glm::vec3 p = s.vertices[g.firstVertex + s.indices[g.firstIndex + i]].position;
-            box.min = glm::min(box.min, p);
-            box.max = glm::max(box.max, p);
+        scene::Bounds box{glm::vec3(1e30f), glm::vec3(-1e30f)};
+        bool clusterIn = false;
+        for (uint32_t p = 0; p < g.partCount; ++p) {
+            const scene::Part& part = s.parts[g.firstPart + p];
+            scene::Bounds cluster{};
+            for (uint32_t t = 0; t < part.triangleCount; ++t) {
+                if (t % gpu::CLUSTER_MAX_TRIANGLES == 0)
+                    cluster = {glm::vec3(1e30f), glm::vec3(-1e30f)};
+                for (uint32_t c = 0; c < 3; ++c) {
+                    const uint32_t i = g.firstIndex + 3 * (part.firstTriangle + t) + c;
+                    const glm::vec3 q = s.vertices[g.firstVertex + s.indices[i]].position;
+                    cluster.min = glm::min(cluster.min, q);
+                    cluster.max = glm::max(cluster.max, q);
+                }
+                box.min = glm::min(box.min, cluster.min);
+                box.max = glm::max(box.max, cluster.max);
+                const bool last =
+                    t + 1 == part.triangleCount || (t + 1) % gpu::CLUSTER_MAX_TRIANGLES == 0;
+                if (last && !render::outsideFrustum(viewProj, o.world, v.camera.eye, cluster))
+                    clusterIn = true;
+            }
         }
         inFrustum += render::outsideFrustum(viewProj, o.world, v.camera.eye, box) ? 0 : 1;
+        clusterInFrustum += clusterIn ? 1 : 0;
     }
     ASSERT_LT(inFrustum, s.objects.size()) << "the view should leave objects out";
-    ASSERT_GT(inFrustum, 0u);
+    ASSERT_GT(clusterInFrustum, 0u);
+    EXPECT_LT(clusterInFrustum, inFrustum) << "testing cluster by cluster should leave out more";
 
     app::Options o = testing_support::headlessOptions(160, 90, 3);
     const std::vector<render::RenderSettings> configs = {
@@ -194,9 +215,8 @@ TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
         culled("vertex-fs", "mdi-attribute", render::CullMode::Occlusion)};
     const auto results = app::renderHeadlessSequence(o, s, v.camera, configs);
     EXPECT_EQ(results.front().validationMessages, 0u);
-    for (size_t c = 0; c < 2; ++c)
-        EXPECT_EQ(render::countsOf(results[c].cullStats.back(), false).draws, inFrustum)
-            << configs[c].pipeline.mode->name;
+    EXPECT_EQ(render::countsOf(results[0].cullStats.back(), false).draws, clusterInFrustum);
+    EXPECT_EQ(render::countsOf(results[1].cullStats.back(), false).draws, inFrustum);
 
     std::set<uint32_t> shown;
     uint64_t shownTriangles = 0;
@@ -205,7 +225,7 @@ TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
             shownTriangles += s.geometries[s.objects[s.locate(id)->object].geometry].triangleCount;
     const render::CullCounts occluded = render::countsOf(results[2].cullStats.back(), false);
     EXPECT_GE(occluded.draws, shown.size());
-    EXPECT_LT(occluded.draws, inFrustum) << "occlusion culling left nothing out";
+    EXPECT_LT(occluded.draws, clusterInFrustum) << "occlusion culling left nothing out";
     EXPECT_GE(occluded.triangles, shownTriangles);
 }
 

@@ -178,11 +178,13 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const std::vector<double> gpuMs(all.end() - long(timed), all.end());
             const auto& passes = rig.slots.idPassMilliseconds();
             const std::vector<double> idPassMs(passes.end() - long(timed), passes.end());
-            std::vector<double> cullMs, pyramidMs;
+            std::vector<double> cullMs, pyramidMs, earlyMs, lateMs;
             for (auto t = rig.slots.frameTimes().end() - long(timed);
                  t != rig.slots.frameTimes().end(); ++t) {
                 cullMs.push_back(t->cullMs);
                 pyramidMs.push_back(t->pyramidMs);
+                earlyMs.push_back(t->earlyMs);
+                lateMs.push_back(t->lateMs);
             }
             const std::vector<gpu::CullStats> stats(rig.slots.cullStats().end() - long(timed),
                                                     rig.slots.cullStats().end());
@@ -196,6 +198,8 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
                 render::describeCulling(*key.mode, cull, key.technique->usesMeshShader());
             row.cullMsMedian = percentile(cullMs, 0.5);
             row.pyramidMsMedian = percentile(pyramidMs, 0.5);
+            row.earlyMsMedian = percentile(earlyMs, 0.5);
+            row.lateMsMedian = percentile(lateMs, 0.5);
             countDrawn(row, stats, key.technique->usesMeshShader());
             if (options.cameraPath != scene::CameraPath::None) row.gpuMsFrames = gpuMs;
             row.gpuMsMedian = percentile(gpuMs, 0.5);
@@ -263,6 +267,8 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << ",\"id_pass_ms_median\":" << fixed(row.idPassMsMedian, 4)
             << ",\"cull_ms_median\":" << fixed(row.cullMsMedian, 4)
             << ",\"pyramid_ms_median\":" << fixed(row.pyramidMsMedian, 4)
+            << ",\"early_draw_ms_median\":" << fixed(row.earlyMsMedian, 4)
+            << ",\"late_draw_ms_median\":" << fixed(row.lateMsMedian, 4)
             << ",\"draws\":" << row.draws << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1)
             << ",\"triangles\":" << row.triangles
             << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)

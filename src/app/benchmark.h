@@ -16,6 +16,7 @@ struct BenchmarkRow {
     std::string cullingApplied;           // what the technique and mode get of it (describeCulling)
     double gpuMsMedian = 0, gpuMsP90 = 0; // timestamps around the scene pass, culling included
     double cullMsMedian = 0, pyramidMsMedian = 0; // GPU: the cull passes, the depth pyramid
+    double earlyMsMedian = 0, lateMsMedian = 0;   // GPU: the scene pass's two halves' draws
     // Medians per frame of what was drawn (draws, meshlets, triangles); totals in `draws`,
     // `meshlets` and `triangles`.
     double drawsDrawn = 0, meshletsDrawn = 0, trianglesDrawn = 0;

@@ -105,15 +105,19 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
 }
 
 CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
-                         const std::vector<gpu::DrawCull>& cull, uint32_t meshletBitCount,
+                         const std::vector<gpu::DrawCull>& cull,
+                         const std::vector<uint32_t>& drawOfPair, uint32_t meshletBitCount,
                          uint32_t bytesPerCommand)
     : drawCount(static_cast<uint32_t>(cull.size())),
       groupCount(groupsOf(static_cast<uint32_t>(cull.size()), gpu::CULL_GROUP_SIZE)),
-      commandBytes(bytesPerCommand) {
+      commandBytes(bytesPerCommand), pairCount(static_cast<uint32_t>(drawOfPair.size())),
+      pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)) {
     const VkBufferUsageFlags shader =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     const VkDeviceSize drawsAtLeastOne = std::max<VkDeviceSize>(drawCount, 1);
     draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
+    pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, shader,
+                       "cull (draw, part) pairs");
     // Zeros: nothing passed a test yet (what the floors' early pass reads).
     state = upload.add(std::vector<uint32_t>(drawsAtLeastOne, 0u), shader, "cull state");
     groups = vk::Buffer(device, std::max<VkDeviceSize>(groupCount, 1) * 4, shader, 0,
@@ -172,12 +176,13 @@ gpu::CullDispatches CullPasses::fullDispatches(const SceneTargets& targets,
                            groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1, 0};
     }
     d.lateCull = {buffers.groupCount, 1, 1, 0};
+    d.lateClusters = {buffers.pairGroupCount, 1, 1, 0};
     return d;
 }
 
-void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkDeviceAddress frame,
-                            VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase,
-                            bool meshDraws, bool indirect) const {
+void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
+                            const CullInputs& inputs, uint32_t phase, bool meshDraws,
+                            bool indirect) const {
     vk::CmdLabel label(device_.debug(), cmd,
                        phase == gpu::CULL_PHASE_LATE ? "cull draws (late)" : "cull draws");
     const bool late = phase == gpu::CULL_PHASE_LATE;
@@ -191,10 +196,13 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkD
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     gpu::CullPush push{};
-    push.frameAddress = frame;
-    push.drawsAddress = draws;
+    push.frameAddress = inputs.frame;
+    push.drawsAddress = inputs.draws;
     push.cullAddress = buffers.draws.address();
-    push.sourceAddress = source;
+    push.sourceAddress = inputs.source;
+    push.pairsAddress = buffers.pairs.address();
+    push.clusterBoxesAddress = inputs.clusterBoxes;
+    push.pairCount = buffers.pairCount;
     push.dispatchesAddress = indirect ? buffers.dispatches.address() : 0;
     push.targetAddress = buffers.lists[late ? 1 : 0].address();
     push.stateAddress = buffers.state.address();
@@ -206,21 +214,28 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkD
     push.flags = meshDraws ? gpu::CULL_MESH_DRAWS : 0u;
     push.groupCount = buffers.groupCount;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
-    // A list of one workgroup needs no count of the workgroups before: one dispatch does it.
-    const std::vector<uint32_t> steps =
-        buffers.groupCount == 1
-            ? std::vector<uint32_t>{gpu::CULL_STEP_BOTH}
-            : std::vector<uint32_t>{gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT};
+    // Draws of several clusters are tested cluster by cluster where the frustum or the
+    // pyramid decides; a list of one workgroup needs no count of the workgroups before it.
+    const bool byClusters = buffers.pairCount != 0 && (phase == gpu::CULL_PHASE_FRUSTUM || late);
+    std::vector<uint32_t> steps{gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT};
+    if (byClusters)
+        steps = {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_CLUSTERS, gpu::CULL_STEP_COUNT,
+                 gpu::CULL_STEP_COMPACT};
+    else if (buffers.groupCount == 1)
+        steps = {gpu::CULL_STEP_BOTH};
     for (uint32_t step : steps) {
         push.step = step;
         vkCmdPushConstants(cmd, cull_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
                            &push);
+        const bool clusters = step == gpu::CULL_STEP_CLUSTERS;
         if (late && indirect)
             vkCmdDispatchIndirect(cmd, buffers.dispatches.handle(),
-                                  offsetof(gpu::CullDispatches, lateCull));
-        else if (buffers.groupCount)
-            vkCmdDispatch(cmd, buffers.groupCount, 1, 1);
-        if (step == gpu::CULL_STEP_DECIDE)
+                                  clusters ? offsetof(gpu::CullDispatches, lateClusters)
+                                           : offsetof(gpu::CullDispatches, lateCull));
+        else if (const uint32_t groups = clusters ? buffers.pairGroupCount : buffers.groupCount)
+            vkCmdDispatch(cmd, groups, 1, 1);
+        // Each step reads what the one before wrote.
+        if (step != steps.back())
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);

@@ -57,10 +57,12 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
 // the two passes' compacted commands, the counters, and the meshlet bits.
 struct CullBuffers {
     CullBuffers(vk::Device& device, vk::UploadBatch& upload,
-                const std::vector<gpu::DrawCull>& draws, uint32_t meshletBits,
-                uint32_t commandBytes);
+                const std::vector<gpu::DrawCull>& draws, const std::vector<uint32_t>& pairs,
+                uint32_t meshletBits, uint32_t commandBytes);
     uint32_t drawCount = 0, groupCount = 0, commandBytes = 0;
-    vk::Buffer draws;       // gpu::DrawCull[]
+    uint32_t pairCount = 0, pairGroupCount = 0; // (draw, cluster) pairs
+    vk::Buffer draws;                           // gpu::DrawCull[]
+    vk::Buffer pairs;       // uint per (draw, cluster) pair of draws of several clusters: the draw
     vk::Buffer state;       // uint per draw: CULL_* bits
     vk::Buffer groups;      // uint per cull.comp workgroup
     vk::Buffer lists[2];    // the early (or only) and the late pass's commands
@@ -78,13 +80,17 @@ class CullPasses {
   public:
     CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler);
 
-    // One pass of cull.comp over the whole list: decide, then compact into
-    // buffers.lists[phase == LATE]. `draws` and `source` are the list's DrawData and commands.
+    // One pass of cull.comp over the whole list: decide (then, in the frustum and late
+    // phases, test the draws of several clusters cluster by cluster and count again), then
+    // compact into buffers.lists[phase == LATE]. `draws` and `source` are the list's DrawData
+    // and commands, `clusterBoxes` the scene's (SceneGpu::clusterBoxesAddress).
     // With `indirect`, the late pass dispatches by buffers.dispatches, which the early pass
     // empties when it leaves the late pass nothing to test.
-    void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, VkDeviceAddress frame,
-                    VkDeviceAddress draws, VkDeviceAddress source, uint32_t phase, bool meshDraws,
-                    bool indirect) const;
+    struct CullInputs {
+        VkDeviceAddress frame, draws, source, clusterBoxes;
+    };
+    void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, const CullInputs& inputs,
+                    uint32_t phase, bool meshDraws, bool indirect) const;
     // The pyramid of `targets` from their depth, left in DEPTH_STENCIL_READ_ONLY_OPTIMAL by
     // the first half of the pass; its header is written first. `dispatches`, if given, holds
     // its passes' sizes (recordCull may have emptied them).

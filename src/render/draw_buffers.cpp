@@ -11,10 +11,11 @@
 namespace render {
 namespace {
 
-// Each draw's box and, for mesh tasks, where its meshlet bits start: on a word, so each task
-// workgroup's 32 meshlets have one word to themselves. Returns the bits needed.
+// Each draw's box; for mesh tasks where its meshlet bits start: on a word, so each task
+// workgroup's 32 meshlets have one word to themselves; for draws of several clusters, a
+// (draw, cluster) pair per cluster in `pairs`, holding the draw. Returns the bits needed.
 uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const DrawList& list,
-                   std::vector<gpu::DrawCull>& out) {
+                   std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
     uint32_t bits = 0;
     out.reserve(list.ranges.size());
     for (size_t i = 0; i < list.ranges.size(); ++i) {
@@ -26,6 +27,12 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         gpu::DrawCull cull{};
         cull.boxMin = box.min;
         cull.boxMax = box.max;
+        const uint32_t firstPart = scene.geometries[g].firstPart + d.firstPart;
+        cull.firstCluster = sceneGpu.clusterStart()[firstPart];
+        cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
+        cull.firstPair = static_cast<uint32_t>(pairs.size());
+        if (cull.clusterCount > 1)
+            pairs.insert(pairs.end(), cull.clusterCount, static_cast<uint32_t>(i));
         if (!list.meshletCounts.empty()) {
             cull.meshletBit = bits;
             cull.meshletCount = list.meshletCounts[i];
@@ -101,10 +108,13 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
 
     // Culling reads each draw's box on the GPU where a shader culls (mdi lists, mesh tasks).
     std::vector<gpu::DrawCull> boxes;
+    std::vector<uint32_t> pairs;
     const bool gpuCulling = indirect || key.taskCulling;
-    const uint32_t bits = gpuCulling ? cullBoxes(scene, sceneGpu, list, boxes) : 0;
-    b->cull =
-        std::make_shared<CullBuffers>(device, upload, boxes, bits, indirect ? b->commandBytes : 0);
+    const uint32_t bits = gpuCulling ? cullBoxes(scene, sceneGpu, list, boxes, pairs) : 0;
+    // Part by part only where cull.comp makes the lists.
+    if (!indirect) pairs.clear();
+    b->cull = std::make_shared<CullBuffers>(device, upload, boxes, pairs, bits,
+                                            indirect ? b->commandBytes : 0);
     if (!key.mode->indirect) {
         b->objectBoxes.reserve(scene.objects.size());
         for (const scene::Object& o : scene.objects)

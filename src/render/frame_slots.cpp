@@ -164,6 +164,8 @@ void FrameSlots::collect(FrameSlot& slot) {
     t.cullMs = ms(StampStart, StampEarlyCulled) + ms(StampPyramid, StampLateCulled) +
                ms(StampDrawn, StampVisibility);
     t.pyramidMs = ms(StampEarlyDrawn, StampPyramid);
+    t.earlyMs = ms(StampEarlyCulled, StampEarlyDrawn);
+    t.lateMs = ms(StampLateCulled, StampDrawn);
     t.idPassMs = ms(StampVisibility, StampIdPasses);
     gpu::CullStats stats;
     std::memcpy(&stats, slot.cullReadback.mapped(), sizeof stats);

@@ -38,6 +38,8 @@ struct FrameTimes {
     double sceneMs = 0.0;   // StampStart to StampVisibility: drawing, culling included
     double cullMs = 0.0;    // the cull passes and the visible-part pass culling needs
     double pyramidMs = 0.0; // building the depth pyramid
+    double earlyMs = 0.0;   // drawing the first (or whole) half of the scene pass
+    double lateMs = 0.0;    // drawing its second half (occlusion culling), or 0
     double idPassMs = 0.0;  // edges and part sets
 };
 

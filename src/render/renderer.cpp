@@ -271,9 +271,9 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
                                                  : gpu::CULL_PHASE_FRUSTUM;
     // The GPU lists' late phase dispatches by what the early cull left it.
     const bool skippable = split && plan.gpuLists;
-    if (cullOnGpu)
-        culler_->recordCull(cmd, cull, frame, draws_->draws.address(), draws_->indirect.address(),
-                            firstPhase, mesh, skippable);
+    const CullPasses::CullInputs inputs{frame, draws_->draws.address(), draws_->indirect.address(),
+                                        sceneGpu_->clusterBoxesAddress()};
+    if (cullOnGpu) culler_->recordCull(cmd, cull, inputs, firstPhase, mesh, skippable);
     stamp(StampEarlyCulled);
     beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame);
     drawPhase(cmd, culling, firstPhase);
@@ -282,9 +282,7 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     stamp(StampEarlyDrawn);
     if (split) culler_->recordPyramid(cmd, targets, skippable ? &cull.dispatches : nullptr);
     stamp(StampPyramid);
-    if (skippable)
-        culler_->recordCull(cmd, cull, frame, draws_->draws.address(), draws_->indirect.address(),
-                            gpu::CULL_PHASE_LATE, mesh, true);
+    if (skippable) culler_->recordCull(cmd, cull, inputs, gpu::CULL_PHASE_LATE, mesh, true);
     stamp(StampLateCulled);
     if (split) {
         beginPass(cmd, targets, PassPart::Second, frame);

@@ -45,6 +45,14 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     offsets_ = upload.add(explodeOffsets_, shaderRead, "animation offsets");
     restWorld_ = std::move(rest);
     partBounds_ = scene::partBounds(scene);
+    scene::Clusters clusters = scene::partClusters(scene, gpu::CLUSTER_MAX_TRIANGLES);
+    std::vector<gpu::CullBox> boxes;
+    boxes.reserve(clusters.boxes.size());
+    for (size_t c = 0; c < clusters.boxes.size(); ++c)
+        boxes.push_back({clusters.boxes[c].min, clusters.localPart[c], clusters.boxes[c].max, 0});
+    if (boxes.empty()) boxes.resize(1); // an address even without triangles
+    clusterBoxes_ = upload.add(boxes, shaderRead, "cluster boxes");
+    clusterStart_ = std::move(clusters.first);
     // Part materials only where some part has one: other scenes read none.
     std::vector<uint32_t> partMaterials;
     for (const scene::Geometry& g : scene.geometries)

@@ -35,12 +35,18 @@ class SceneGpu {
     // objects' world matrices at an explode value, as animate.comp writes them.
     const std::vector<scene::Bounds>& partBounds() const { return partBounds_; }
     glm::mat4 worldAt(uint32_t object, float explode) const;
+    // The parts' clusters (scene::partClusters): per entry of Scene::parts, and one more, the
+    // first cluster; their boxes on the GPU (gpu::CullBox[], `unused0` the cluster's part in
+    // its geometry), by which cull.comp tests the draws of several clusters one by one.
+    const std::vector<uint32_t>& clusterStart() const { return clusterStart_; }
+    VkDeviceAddress clusterBoxesAddress() const { return clusterBoxes_.address(); }
 
   private:
     std::vector<scene::Bounds> partBounds_;
+    std::vector<uint32_t> clusterStart_;
     std::vector<glm::mat4> restWorld_;
     std::vector<glm::vec4> explodeOffsets_;
-    vk::Buffer vertices_, indices_, objects_, materials_, rest_, offsets_;
+    vk::Buffer vertices_, indices_, objects_, materials_, rest_, offsets_, clusterBoxes_;
     vk::Buffer partMaterials_; // empty (address 0) unless a part has its own material
     uint32_t objectCount_ = 0;
 };

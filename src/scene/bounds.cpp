@@ -1,6 +1,7 @@
 // bounds.cpp - part and meshlet boxes.
 #include "scene/bounds.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace scene {
@@ -33,6 +34,35 @@ std::vector<Bounds> partBounds(const Scene& scene) {
             }
         }
     return boxes;
+}
+
+Clusters partClusters(const Scene& scene, uint32_t maxTriangles) {
+    // Numbered in Scene::parts order, so that the clusters of a run of parts are a run too.
+    Clusters c;
+    c.first.assign(scene.parts.size() + 1, 0);
+    for (size_t p = 0; p < scene.parts.size(); ++p)
+        c.first[p + 1] =
+            c.first[p] + (scene.parts[p].triangleCount + maxTriangles - 1) / maxTriangles;
+    c.boxes.assign(c.first.back(), emptyBounds());
+    c.localPart.assign(c.first.back(), 0);
+    for (const Geometry& g : scene.geometries)
+        for (uint32_t p = 0; p < g.partCount; ++p) {
+            const Part& part = scene.parts[g.firstPart + p];
+            uint32_t cluster = c.first[g.firstPart + p];
+            for (uint32_t t = 0; t < part.triangleCount; t += maxTriangles, ++cluster) {
+                Bounds& box = c.boxes[cluster];
+                c.localPart[cluster] = p;
+                const uint32_t first = g.firstIndex + 3 * (part.firstTriangle + t);
+                const uint32_t end = first + 3 * std::min(maxTriangles, part.triangleCount - t);
+                for (uint32_t i = first; i < end; ++i) {
+                    const glm::vec3& position =
+                        scene.vertices[g.firstVertex + scene.indices[i]].position;
+                    box.min = glm::min(box.min, position);
+                    box.max = glm::max(box.max, position);
+                }
+            }
+        }
+    return c;
 }
 
 Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uint32_t g,

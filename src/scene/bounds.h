@@ -22,6 +22,17 @@ std::vector<Bounds> partBounds(const Scene& scene);
 Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uint32_t g,
                        uint32_t firstPart, uint32_t count);
 
+// Each part's triangles in runs of at most `maxTriangles` in index order (clusters), each
+// run's box and part: what culling tests a draw by, cluster by cluster, where its own box
+// is not enough (shaders/cull.comp).
+struct Clusters {
+    std::vector<Bounds> boxes;       // per cluster
+    std::vector<uint32_t> localPart; // per cluster: its part's index in its geometry
+    // Per entry of Scene::parts its first cluster, and one more entry: the cluster count.
+    std::vector<uint32_t> first;
+};
+Clusters partClusters(const Scene& scene, uint32_t maxTriangles);
+
 // Per meshlet: the box of its vertices, `vertices` being the array the meshlets index
 // (Scene::vertices, or PartVertices::vertices).
 std::vector<Bounds> meshletBounds(const Meshlets& meshlets, const std::vector<Vertex>& vertices);
