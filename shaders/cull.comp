@@ -64,7 +64,7 @@ uint decide(FrameData frame, uint i) {
             bits |= CULL_IN_FRUSTUM;
         if (cull.phase == CULL_PHASE_EARLY &&
             (boundsHistory ? passedBefore
-                           : anyBitInRange(frame.visibleAddress, firstId, draw.partCount)))
+                           : anyBitInRange(frame.visibleAddress, firstId, box.partsToEnd)))
             bits |= CULL_WAS_VISIBLE;
     }
     bool inFrustum = (bits & CULL_IN_FRUSTUM) != 0u;

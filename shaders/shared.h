@@ -251,7 +251,10 @@ struct DrawCull {
     uint firstCluster;
     uint clusterCount;
     uint firstPair;
-    uint unused;
+    // The object's parts from the draw's first on: the draw goes first when the last ID image
+    // shows one of them, so that an object's draws are never drawn out of their order (a
+    // later part drawn first would win where two of its parts tie in depth).
+    uint partsToEnd;
 };
 // A meshlet's or a part's box, in its geometry's coordinates (min above max: no triangles).
 struct CullBox {

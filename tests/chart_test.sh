@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # chart_test.sh ROOT - scripts/benchmark_chart.py on the committed H100 runs (the full runs and
 # the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are the
-# JSON's ratio_to_floor for every technique it plots, a later file's row winning.
+# JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
+# scripts/path_chart.py on a committed camera-path run, likewise.
 set -uo pipefail
 root=$1
 runs=$root/docs/benchmarks/h100-2026-11-23-issue14/final
@@ -34,6 +35,33 @@ for line in open(table).read().splitlines()[1:]:
     got[name] = [float(one), float(four)]
 if got != want:
     sys.exit(f"table {got} != JSON {want}")
+PY
+# scripts/path_chart.py on the committed dolly run: a PNG, and a line per renderer and mode
+# whose medians and ratios are the JSON's rows (culling off, frustum, occlusion).
+dolly=$root/docs/benchmarks/h100-2026-11-25-culling/dolly-1x.json
+/usr/bin/python3 "$root/scripts/path_chart.py" "$dolly" -o "$work/path.png" \
+    --renderer vertex-fs,mesh-fs >"$work/path.txt" 2>"$work/err.txt" ||
+    fail "path chart script: $(cat "$work/err.txt")"
+[[ $(head -c 8 "$work/path.png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] ||
+    fail "no path PNG written"
+/usr/bin/python3 - "$work/path.txt" "$dolly" <<'PY' || fail "path table does not match the JSON"
+import json, sys
+table, path = sys.argv[1], sys.argv[2]
+by = {}
+for row in json.load(open(path))["results"]:
+    by.setdefault((row["renderer"], row["mode"]), {})[row["culling"]] = row["gpu_ms_median"]
+lines = open(table).read().splitlines()[1:]
+if len(lines) != len(by):
+    sys.exit(f"{len(lines)} lines for {len(by)} renderer x mode pairs")
+for line in lines:
+    name, mode, off, frustum, fx, occlusion, ox = line.split()
+    want = by[(name, mode)]
+    for got, key in ((off, "off"), (frustum, "frustum"), (occlusion, "occlusion")):
+        if abs(float(got) - want[key]) > 5.01e-4:
+            sys.exit(f"{name} {mode} {key}: {got} != {want[key]}")
+    for got, key in ((fx, "frustum"), (ox, "occlusion")):
+        if abs(float(got) - want[key] / want["off"]) > 5.01e-4:
+            sys.exit(f"{name} {mode} {key} ratio: {got}")
 PY
 echo "chart_test: $failures failed"
 exit $((failures > 0))

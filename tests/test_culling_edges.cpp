@@ -1,8 +1,9 @@
 // test_culling_edges.cpp - the edges of culling (render/culling.h), on lavapipe with
 // validation on: a part hidden behind an occluder but for one pixel column is drawn by every
 // technique and mode that tests the depth pyramid, and a pyramid test whose rectangles are
-// shrunk by one pixel loses it; the counters agree with a count on the CPU; objects whose
-// parts are all hidden are never drawn; a frozen list keeps drawing while the camera moves.
+// shrunk by one pixel loses it; two parts of one object that tie in depth keep their order;
+// the counters agree with a count on the CPU; objects whose parts are all hidden are never
+// drawn; a frozen list keeps drawing while the camera moves.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -76,10 +77,28 @@ void replaceInFile(const fs::path& path, const std::string& from, const std::str
     std::ofstream(path) << s;
 }
 
-// Frame A with the small part hidden (so the last ID image lacks it), frame B with it shown:
-// B's ID image, drawn with `settings` and the shaders in `shaderDir`.
-std::vector<uint32_t> sliverImage(const scene::Scene& s, const render::RenderSettings& settings,
-                                  const std::string& shaderDir, uint32_t& validationMessages) {
+// Two parts of one object in one plane: part 0 over pixels 8..40 x 8..40, part 1 over
+// 8..56 x 8..40. Where both lie their depths tie exactly, and part 0, drawn first, wins.
+scene::Scene tieScene() {
+    scene::Scene s;
+    const uint32_t grey = scene::addMaterial(s, "grey", {0.5f, 0.5f, 0.5f, 1});
+    scene::MeshBuilder mb;
+    const glm::vec3 first[] = {
+        {px(8), py(8), 0.5f}, {px(40), py(8), 0.5f}, {px(40), py(40), 0.5f}, {px(8), py(40), 0.5f}};
+    const glm::vec3 second[] = {
+        {px(8), py(8), 0.5f}, {px(56), py(8), 0.5f}, {px(56), py(40), 0.5f}, {px(8), py(40), 0.5f}};
+    mb.addFlatFace(first);
+    mb.addFlatFace(second);
+    scene::addObject(s, mb.finish(s, "two faces in one plane"), grey, glm::mat4(1.0f), "tie");
+    scene::validate(s);
+    return s;
+}
+
+// Frame A with part `hiddenFirst` hidden (so the last ID image lacks it), frame B with every
+// part shown: B's ID image, drawn with `settings` and the shaders in `shaderDir`.
+std::vector<uint32_t> twoFrameImage(const scene::Scene& s, const render::RenderSettings& settings,
+                                    const std::string& shaderDir, uint32_t hiddenFirst,
+                                    uint32_t& validationMessages) {
     app::Options o = testing_support::headlessOptions(SW, SH);
     o.shaderDir = shaderDir;
     o.render = settings;
@@ -89,7 +108,7 @@ std::vector<uint32_t> sliverImage(const scene::Scene& s, const render::RenderSet
         app::Offscreen rig(instance, o);
         rig.renderer.setScene(s, settings);
         scene::PartSet hidden(s.uniquePartCount());
-        hidden.insert(1);
+        hidden.insert(hiddenFirst);
         rig.renderer.setHidden(hidden);
         uint64_t frame = 0;
         testing_support::renderIds(rig, frame);
@@ -118,7 +137,7 @@ TEST(CullingSliver, APartShowingOnePixelColumnIsDrawnAndAShrunkTestLosesIt) {
     uint32_t messages = 0;
     render::RenderSettings off;
     off.culling.mode = render::CullMode::Off;
-    const auto reference = sliverImage(s, off, IDVIEW_SOURCE_SHADER_DIR, messages);
+    const auto reference = twoFrameImage(s, off, IDVIEW_SOURCE_SHADER_DIR, 1, messages);
     EXPECT_EQ(messages, 0u);
     ASSERT_EQ(reference[sliver], 1u) << "the small part should show at the sliver";
     ASSERT_EQ(reference[sliver - 1], 0u) << "the occluder should cover the pixel left of it";
@@ -131,13 +150,50 @@ TEST(CullingSliver, APartShowingOnePixelColumnIsDrawnAndAShrunkTestLosesIt) {
     for (const render::RenderSettings& settings : configs) {
         const std::string name =
             std::string(settings.pipeline.technique->name) + " + " + settings.pipeline.mode->name;
-        EXPECT_EQ(sliverImage(s, settings, IDVIEW_SOURCE_SHADER_DIR, messages), reference) << name;
+        EXPECT_EQ(twoFrameImage(s, settings, IDVIEW_SOURCE_SHADER_DIR, 1, messages), reference)
+            << name;
         EXPECT_EQ(messages, 0u) << name;
-        const auto wrong = sliverImage(s, settings, shrunk.string(), messages);
+        const auto wrong = twoFrameImage(s, settings, shrunk.string(), 1, messages);
         EXPECT_NE(wrong[sliver], 1u) << name << ": a test one pixel short still drew the part";
         EXPECT_EQ(messages, 0u) << name;
     }
     fs::remove_all(shrunk);
+}
+
+// Where two parts of one object tie in depth, the one first in the list wins with culling as
+// without: the draws of an object that the last ID image showed from a draw on go first, so
+// a part the last image lacked is not drawn after a later part of its object. Deciding by the
+// draw's own parts alone (what cull.comp and scene.task did before) loses the tie in the
+// modes that draw parts one by one.
+TEST(CullingOrder, PartsOfOneObjectThatTieInDepthKeepTheirOrder) {
+    const scene::Scene s = tieScene();
+    uint32_t messages = 0;
+    render::RenderSettings off;
+    off.culling.mode = render::CullMode::Off;
+    const auto reference = twoFrameImage(s, off, IDVIEW_SOURCE_SHADER_DIR, 0, messages);
+    EXPECT_EQ(messages, 0u);
+    const size_t tie = 20 * SW + 20, alone = 20 * SW + 48;
+    ASSERT_EQ(reference[tie], 0u) << "part 0, drawn first, should win the tie";
+    ASSERT_EQ(reference[alone], 1u);
+
+    const fs::path own = shaderCopy("own-parts");
+    replaceInFile(own / "cull.comp", "box.partsToEnd", "draw.partCount");
+    replaceInFile(own / "scene.task", "drawCull.partsToEnd", "draw.partCount");
+    size_t lost = 0;
+    for (const render::RenderSettings& settings : pyramidConfigs()) {
+        const std::string name =
+            std::string(settings.pipeline.technique->name) + " + " + settings.pipeline.mode->name;
+        EXPECT_EQ(twoFrameImage(s, settings, IDVIEW_SOURCE_SHADER_DIR, 0, messages), reference)
+            << name;
+        EXPECT_EQ(messages, 0u) << name;
+        const auto wrong = twoFrameImage(s, settings, own.string(), 0, messages);
+        if (wrong[tie] != 0u) {
+            ++lost;
+            EXPECT_EQ(settings.pipeline.technique->split, render::DrawSplit::PerPart) << name;
+        }
+    }
+    EXPECT_GE(lost, 2u) << "per-draw in both mdi modes should lose the tie by its own parts";
+    fs::remove_all(own);
 }
 
 // A view from halfway into the default model, where the frustum and the occluders leave out

@@ -6,8 +6,15 @@
 // culling is two-phase: the first half of the scene pass draws what the last ID image showed
 // (the visible-part pass over it names exactly those parts), a depth pyramid is built from
 // that depth (the farthest sample of every pixel), and the second half draws the rest that
-// the pyramid does not hide. Every test is conservative and the lists keep the draw order,
-// so the ID and colour images are byte for byte those drawn without culling.
+// the pyramid does not hide. Draws of several clusters (objects, search batches, large
+// parts) are tested cluster by cluster where their own box is not hidden. Every test is
+// conservative and each list keeps the draw order, so the ID and colour images are byte for
+// byte those drawn without culling, but for one case: where two surfaces tie exactly in
+// depth, the one drawn first wins, and the halves can change which that is. An object's
+// draws keep their order (every draw of an object up to the last one with a part the last
+// image showed goes first), so ties between parts of one object are safe; a tie
+// between two objects, or two meshlets of one draw, that one of them has just come into
+// view for can still go the other way (docs/benchmarks.md says how often it was seen).
 #pragma once
 
 #include <memory>

@@ -31,6 +31,7 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         cull.firstCluster = sceneGpu.clusterStart()[firstPart];
         cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
         cull.firstPair = static_cast<uint32_t>(pairs.size());
+        cull.partsToEnd = scene.geometries[g].partCount - d.firstPart;
         if (cull.clusterCount > 1)
             pairs.insert(pairs.end(), cull.clusterCount, static_cast<uint32_t>(i));
         if (!list.meshletCounts.empty()) {
