@@ -119,6 +119,11 @@ std::vector<uint32_t> twoFrameImage(const scene::Scene& s, const render::RenderS
     return ids;
 }
 
+// "technique + mode", for failure messages.
+std::string nameOf(const render::RenderSettings& settings) {
+    return std::string(settings.pipeline.technique->name) + " + " + settings.pipeline.mode->name;
+}
+
 // Every part-ID technique and mode whose culling tests the depth pyramid.
 std::vector<render::RenderSettings> pyramidConfigs() {
     std::vector<render::RenderSettings> configs;
@@ -148,8 +153,7 @@ TEST(CullingSliver, APartShowingOnePixelColumnIsDrawnAndAShrunkTestLosesIt) {
     const auto configs = pyramidConfigs();
     ASSERT_GE(configs.size(), render::partIdTechniques().size()); // every technique, mdi
     for (const render::RenderSettings& settings : configs) {
-        const std::string name =
-            std::string(settings.pipeline.technique->name) + " + " + settings.pipeline.mode->name;
+        const std::string name = nameOf(settings);
         EXPECT_EQ(twoFrameImage(s, settings, IDVIEW_SOURCE_SHADER_DIR, 1, messages), reference)
             << name;
         EXPECT_EQ(messages, 0u) << name;
@@ -181,8 +185,7 @@ TEST(CullingOrder, PartsOfOneObjectThatTieInDepthKeepTheirOrder) {
     replaceInFile(own / "scene.task", "drawCull.partsToEnd", "draw.partCount");
     size_t lost = 0;
     for (const render::RenderSettings& settings : pyramidConfigs()) {
-        const std::string name =
-            std::string(settings.pipeline.technique->name) + " + " + settings.pipeline.mode->name;
+        const std::string name = nameOf(settings);
         EXPECT_EQ(twoFrameImage(s, settings, IDVIEW_SOURCE_SHADER_DIR, 0, messages), reference)
             << name;
         EXPECT_EQ(messages, 0u) << name;

@@ -117,7 +117,7 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
     const VkDeviceSize drawsAtLeastOne = std::max<VkDeviceSize>(drawCount, 1);
     draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
     pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, shader,
-                       "cull (draw, part) pairs");
+                       "cull (draw, cluster) pairs");
     // Zeros: nothing passed a test yet (what the floors' early pass reads).
     state = upload.add(std::vector<uint32_t>(drawsAtLeastOne, 0u), shader, "cull state");
     groups = vk::Buffer(device, std::max<VkDeviceSize>(groupCount, 1) * 4, shader, 0,
