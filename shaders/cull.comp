@@ -71,10 +71,13 @@ uint decide(FrameData frame, uint i) {
     bool wasVisible = (bits & CULL_WAS_VISIBLE) != 0u;
     bool draw = inFrustum;
     if (cull.phase == CULL_PHASE_EARLY) draw = inFrustum && wasVisible;
-    // What passed here is tested again cluster by cluster (steps "clusters" and "count").
+    // What passed here is tested again cluster by cluster (steps "clusters" and "count"):
+    // mesh tasks meshlet by meshlet in the late phase (the task shader tests the others).
+    bool mesh = (cull.flags & CULL_MESH_DRAWS) != 0u;
     bool byClusters =
-        cull.pairCount != 0u && DrawCullRef(cull.cullAddress).draws[i].clusterCount > 1u;
-    if (cull.phase == CULL_PHASE_FRUSTUM && draw && byClusters) bits |= CULL_NEEDS_CLUSTERS;
+        cull.pairCount != 0u && (mesh || DrawCullRef(cull.cullAddress).draws[i].clusterCount > 1u);
+    if (cull.phase == CULL_PHASE_FRUSTUM && draw && byClusters && !mesh)
+        bits |= CULL_NEEDS_CLUSTERS;
     // Mesh tasks go through again when they were drawn early (their meshlets not drawn then
     // are tested now, scene.task), and so do the floors' draws, whose test is the history.
     bool retest = (cull.flags & CULL_MESH_DRAWS) != 0u || boundsHistory;
@@ -158,17 +161,75 @@ void clustersStep(uint pair) {
     if (passed) atomicOr(state.words[d], CULL_CLUSTER_PASSED);
 }
 
+// Mesh tasks, late phase: the (draw, meshlet) pairs, 32 to a word of meshlet bits, so each
+// word is one draw's. A meshlet of a draw whose box passed is tested against the frustum and
+// the pyramid, as the task shader would; the word's bits become what passed, and the late
+// bitset (FrameData::lateMeshletWord) what passed and the early pass did not draw, which is
+// all the late task shader draws. Testing here, a thread per meshlet, spares the task stage
+// a workgroup per 32 meshlets of every draw in view, nearly all of which would draw nothing.
+shared uint meshletFound[CULL_GROUP_SIZE / 32u];
+shared uint meshletNew[CULL_GROUP_SIZE / 32u];
+
+void meshletsStep(uint lane, uint pair) {
+    uint slot = lane >> 5;
+    uint bit = 1u << (lane & 31u);
+    if ((lane & 31u) == 0u) {
+        meshletFound[slot] = 0u;
+        meshletNew[slot] = 0u;
+    }
+    barrier();
+    FrameData frame = FrameRef(cull.frameAddress).frame;
+    CullWordsRef state = CullWordsRef(cull.stateAddress);
+    CullWordsRef meshletBits = CullWordsRef(frame.meshletBitsAddress);
+    uint d = 0u;
+    uint bits = 0u;
+    if (pair < cull.pairCount) {
+        d = CullWordsRef(cull.pairsAddress).words[pair];
+        bits = state.words[d];
+    }
+    bool tested = (bits & CULL_NEEDS_CLUSTERS) != 0u;
+    if (tested) {
+        DrawCull drawCull = DrawCullRef(cull.cullAddress).draws[d];
+        uint local = pair - drawCull.meshletBit;
+        if (local < drawCull.meshletCount) {
+            DrawData draw = DrawsRef(cull.drawsAddress).draws[d];
+            ObjectData object = ObjectsRef(frame.objectsAddress).objects[draw.objectIndex];
+            CullBox box =
+                ClusterBoxesRef(frame.meshletBoxesAddress).boxes[draw.firstElement + local];
+            BoxView view = viewBox(frame, object.world, box.boxMin, box.boxMax);
+            if (!view.outside && !occluded(frame, view, CULL_MESHLET_SPAN)) {
+                atomicOr(meshletFound[slot], bit);
+                bool drawnEarly = (bits & CULL_WAS_VISIBLE) != 0u &&
+                                  (meshletBits.words[pair >> 5] & bit) != 0u;
+                if (!drawnEarly) atomicOr(meshletNew[slot], bit);
+            }
+        }
+    }
+    barrier();
+    if (tested && (lane & 31u) == 0u) {
+        meshletBits.words[pair >> 5] = meshletFound[slot];
+        meshletBits.words[frame.lateMeshletWord + (pair >> 5)] = meshletNew[slot];
+        uint flags = (meshletFound[slot] != 0u ? CULL_CLUSTER_PASSED : 0u) |
+                     (meshletNew[slot] != 0u ? CULL_MESHLETS_NEW : 0u);
+        if (flags != 0u) atomicOr(state.words[d], flags);
+    }
+}
+
 // After the clusters: a draw that waited for them is drawn (and passed) only if one passed;
-// each workgroup's draws are counted again for "compact".
+// mesh tasks are drawn late only with a meshlet the early pass did not draw. Each
+// workgroup's draws are counted again for "compact".
 void countStep(uint lane, uint i) {
     uint bits = 0u;
     if (i < cull.drawCount) {
         CullWordsRef state = CullWordsRef(cull.stateAddress);
         bits = state.words[i];
-        if ((bits & (CULL_NEEDS_CLUSTERS | CULL_CLUSTER_PASSED)) == CULL_NEEDS_CLUSTERS) {
+        uint before = bits;
+        if ((bits & (CULL_NEEDS_CLUSTERS | CULL_CLUSTER_PASSED)) == CULL_NEEDS_CLUSTERS)
             bits &= ~(CULL_DRAW_NOW | CULL_PASSED);
-            state.words[i] = bits;
-        }
+        if ((cull.flags & CULL_MESH_DRAWS) != 0u &&
+            (bits & (CULL_NEEDS_CLUSTERS | CULL_MESHLETS_NEW)) == CULL_NEEDS_CLUSTERS)
+            bits &= ~CULL_DRAW_NOW;
+        if (bits != before) state.words[i] = bits;
     }
     counts[lane] = (bits & CULL_DRAW_NOW) != 0u ? 1u : 0u;
     reduce(lane, CULL_GROUP_SIZE);
@@ -229,7 +290,9 @@ void compactStep(uint lane, uint i) {
 void main() {
     uint lane = gl_LocalInvocationID.x;
     uint i = gl_GlobalInvocationID.x;
-    if (cull.step == CULL_STEP_CLUSTERS) {
+    if (cull.step == CULL_STEP_CLUSTERS && (cull.flags & CULL_MESH_DRAWS) != 0u) {
+        meshletsStep(lane, i);
+    } else if (cull.step == CULL_STEP_CLUSTERS) {
         clustersStep(i);
     } else if (cull.step == CULL_STEP_COUNT) {
         countStep(lane, i);

@@ -104,7 +104,9 @@ struct FrameData {
     uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
     float time;                // seconds, drives the blink of the hovered part
-    uint unused;               // keeps the size a multiple of 16
+    // mdi modes, occlusion, mesh techniques: the word of meshletBits where a second bitset
+    // starts, the meshlets cull.comp chose for the late pass (0: the task shader tests them)
+    uint lateMeshletWord;
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
@@ -229,15 +231,18 @@ IDV_CONST CULL_STEP_CLUSTERS = 3;
 IDV_CONST CULL_STEP_COUNT = 4;
 IDV_CONST CLUSTER_MAX_TRIANGLES = 64;
 // Per-draw state bits (CullPush::stateAddress), from the first pass of a frame.
-IDV_CONST CULL_IN_FRUSTUM = 1u;  // may lie in the view frustum, and not all its parts hidden
-IDV_CONST CULL_WAS_VISIBLE = 2u; // one of its parts is in the last ID image
-IDV_CONST CULL_DRAW_NOW = 4u;    // drawn by the current pass (decide -> compact)
-IDV_CONST CULL_PASSED = 8u;      // FRAME_BOUNDS_HISTORY: passed the late pass's test
-IDV_CONST CULL_NEEDS_CLUSTERS = 16u;  // drawn (and passed) only if a cluster's box passes
-IDV_CONST CULL_CLUSTER_PASSED = 32u; // one did
+IDV_CONST CULL_IN_FRUSTUM = 1u;      // may lie in the view frustum, and not all its parts hidden
+IDV_CONST CULL_WAS_VISIBLE = 2u;     // one of its parts is in the last ID image
+IDV_CONST CULL_DRAW_NOW = 4u;        // drawn by the current pass (decide -> compact)
+IDV_CONST CULL_PASSED = 8u;          // FRAME_BOUNDS_HISTORY: passed the late pass's test
+IDV_CONST CULL_NEEDS_CLUSTERS = 16u; // drawn (and passed) only if a cluster's box passes
+IDV_CONST CULL_CLUSTER_PASSED = 32u; // one did (mesh tasks: one of its meshlets)
+IDV_CONST CULL_MESHLETS_NEW = 64u;   // mesh tasks, late: a meshlet passed that was not drawn early
 // CullPush::flags
-IDV_CONST CULL_MESH_DRAWS = 1u; // mesh tasks: the late pass lists every draw that may show,
-                                // the task shader then skips the meshlets drawn early
+// Mesh tasks: in the late phase every meshlet of a draw whose box passed is tested here, one
+// (draw, meshlet) pair per meshlet bit; the late list holds the draws with a meshlet to draw
+// that the early pass did not, and the task shader draws just those (FrameData::lateMeshletWord).
+IDV_CONST CULL_MESH_DRAWS = 1u;
 
 // A draw's box for culling, in its geometry's coordinates, for mesh techniques where its
 // meshlets' bits start (one bit per meshlet, each draw's run starting on a word), its
@@ -275,9 +280,9 @@ struct CullDispatch {
 };
 struct CullDispatches {
     CullDispatch pyramid[CULL_PYRAMID_PASSES];
-    CullDispatch lateCull;  // decide, count and compact: a workgroup per CULL_GROUP_SIZE draws
+    CullDispatch lateCull;     // decide, count and compact: a workgroup per CULL_GROUP_SIZE draws
     CullDispatch lateClusters; // clusters: a workgroup per CULL_GROUP_SIZE pairs
-    uint lateCandidates; // draws the late pass would test, counted by the early cull
+    uint lateCandidates;       // draws the late pass would test, counted by the early cull
     uint unused[3];
 };
 
@@ -335,7 +340,7 @@ struct CullPush {
     uint64_t dispatchesAddress;
     // The draws of several clusters: per (draw, cluster) pair its draw (uint), the box of
     // every cluster of the scene (CullBox, unused0 its part in its geometry), and the number
-    // of pairs.
+    // of pairs. Mesh tasks have a pair per meshlet bit instead (CULL_MESH_DRAWS).
     uint64_t pairsAddress;
     uint64_t clusterBoxesAddress;
     uint pairCount;

@@ -36,11 +36,17 @@ for r in $floors $renderers; do
     for m in $modes; do for c in $cullings; do
         row=$(grep "\"renderer\":\"$r\",\"mode\":\"$m\",\"culling\":\"$c\"" "$work/b.json")
         [[ -n $row ]] || { fail "no row for $r + $m, culling $c"; continue; }
-        for key in gpu_ms_median gpu_ms_p90 cpu_ms_median cull_ms_median pyramid_ms_median draws \
+        for key in gpu_ms_median gpu_ms_p90 cpu_ms_median cpu_record_ms_median cull_ms_median \
+            pyramid_ms_median draws \
             draws_drawn triangles triangles_drawn meshlets_drawn id_bytes geometry_bytes \
             added_vertices added_vertex_bytes meshlets ratio_to_floor; do
             [[ $row =~ \"$key\":[0-9] ]] || fail "$r + $m + $c lacks $key: $row"
         done
+        # Recording is a part of recording and submitting.
+        rec=$(sed -E 's/.*"cpu_record_ms_median":([0-9.]+).*/\1/' <<<"$row")
+        all=$(sed -E 's/.*"cpu_ms_median":([0-9.]+).*/\1/' <<<"$row")
+        awk -v a="$rec" -v b="$all" 'BEGIN { exit !(a > 0 && a <= b) }' ||
+            fail "$r + $m + $c: recording took $rec ms of $all ms"
         [[ $row =~ \"culling_applied\":\"[a-zA-Z] ]] || fail "$r + $m + $c lacks culling_applied: $row"
         # Without culling everything is drawn; with it never more than there is.
         [[ $row =~ \"draws\":([0-9]+),\"draws_drawn\":([0-9]+)\.0, ]] || fail "draws: $row"

@@ -22,6 +22,7 @@ struct BenchmarkRow {
     double drawsDrawn = 0, meshletsDrawn = 0, trianglesDrawn = 0;
     std::vector<double> gpuMsFrames; // with --camera-path: every timed frame, in path order
     double cpuMsMedian = 0;          // recording and submitting one frame
+    double cpuRecordMsMedian = 0;    // recording its commands alone (Renderer::record)
     double idPassMsMedian = 0;       // the passes over the ID image after it (--edges), GPU
     size_t draws = 0;
     uint64_t triangles = 0;

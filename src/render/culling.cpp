@@ -73,7 +73,9 @@ std::string describeCulling(const DrawMode& mode, CullMode culling, bool meshTec
                             (occlusion ? " and two-phase occlusion" : "") + " per draw"
                       : std::string("CPU: frustum per object") +
                             (occlusion && !meshTechnique ? " (occlusion needs an mdi mode)" : "");
-    if (meshTechnique)
+    if (meshTechnique && occlusion && mode.indirect)
+        text += "; meshlets: task shader by frustum, then cull pass by frustum and depth pyramid";
+    else if (meshTechnique)
         text += std::string("; task shader: meshlets by frustum") +
                 (occlusion ? " and depth pyramid" : "");
     return text;
@@ -135,9 +137,10 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                    shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                    0, "late cull dispatches");
     // Zeros: no meshlet passed a test yet, so the first early pass draws none of them and
-    // the late pass tests them all.
+    // the late pass tests them all. The second half: what cull.comp chose for the late pass.
+    meshletWords = (meshletBitCount + 31) / 32;
     if (meshletBitCount)
-        meshletBits = upload.add(std::vector<uint32_t>((meshletBitCount + 31) / 32, 0u), shader,
+        meshletBits = upload.add(std::vector<uint32_t>(2 * meshletWords, 0u), shader,
                                  "meshlet visibility bits");
 }
 
@@ -216,7 +219,9 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
     // Draws of several clusters are tested cluster by cluster where the frustum or the
     // pyramid decides; a list of one workgroup needs no count of the workgroups before it.
-    const bool byClusters = buffers.pairCount != 0 && (phase == gpu::CULL_PHASE_FRUSTUM || late);
+    // Mesh tasks' pairs are their meshlets, tested here in the late phase only.
+    const bool byClusters =
+        buffers.pairCount != 0 && (late || (phase == gpu::CULL_PHASE_FRUSTUM && !meshDraws));
     std::vector<uint32_t> steps{gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT};
     if (byClusters)
         steps = {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_CLUSTERS, gpu::CULL_STEP_COUNT,

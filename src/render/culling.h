@@ -67,15 +67,16 @@ struct CullBuffers {
                 const std::vector<gpu::DrawCull>& draws, const std::vector<uint32_t>& pairs,
                 uint32_t meshletBits, uint32_t commandBytes);
     uint32_t drawCount = 0, groupCount = 0, commandBytes = 0;
-    uint32_t pairCount = 0, pairGroupCount = 0; // (draw, cluster) pairs
+    uint32_t pairCount = 0, pairGroupCount = 0; // (draw, cluster) or (draw, meshlet) pairs
     vk::Buffer draws;                           // gpu::DrawCull[]
     vk::Buffer pairs;       // uint per (draw, cluster) pair of draws of several clusters: the draw
     vk::Buffer state;       // uint per draw: CULL_* bits
     vk::Buffer groups;      // uint per cull.comp workgroup
     vk::Buffer lists[2];    // the early (or only) and the late pass's commands
     vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts
-    vk::Buffer meshletBits; // uint words, empty without meshlets
-    vk::Buffer dispatches;  // gpu::CullDispatches: the late phase's, which it may skip
+    vk::Buffer meshletBits; // uint words, empty without meshlets; then as many chosen late
+    uint32_t meshletWords = 0;
+    vk::Buffer dispatches; // gpu::CullDispatches: the late phase's, which it may skip
     // CPU side, changed while recording: whether the lists were ever written (a frozen list
     // needs one culled frame first), and push mode's objects shown by the last culled frame.
     bool culled = false;

@@ -13,7 +13,8 @@ namespace {
 
 // Each draw's box; for mesh tasks where its meshlet bits start: on a word, so each task
 // workgroup's 32 meshlets have one word to themselves; for draws of several clusters, a
-// (draw, cluster) pair per cluster in `pairs`, holding the draw. Returns the bits needed.
+// (draw, cluster) pair per cluster in `pairs`, holding the draw; for mesh tasks instead a
+// (draw, meshlet) pair per meshlet bit, padding included. Returns the bits needed.
 uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const DrawList& list,
                    std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
     uint32_t bits = 0;
@@ -32,12 +33,13 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
         cull.firstPair = static_cast<uint32_t>(pairs.size());
         cull.partsToEnd = scene.geometries[g].partCount - d.firstPart;
-        if (cull.clusterCount > 1)
-            pairs.insert(pairs.end(), cull.clusterCount, static_cast<uint32_t>(i));
         if (!list.meshletCounts.empty()) {
             cull.meshletBit = bits;
             cull.meshletCount = list.meshletCounts[i];
             bits += (cull.meshletCount + 31) / 32 * 32;
+            pairs.resize(bits, static_cast<uint32_t>(i));
+        } else if (cull.clusterCount > 1) {
+            pairs.insert(pairs.end(), cull.clusterCount, static_cast<uint32_t>(i));
         }
         out.push_back(cull);
     }

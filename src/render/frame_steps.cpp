@@ -78,6 +78,9 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.meshletBitsAddress = cull.meshletBits.address();
     frame.cullStatsAddress = cull.stats.address();
     if (culling.plan.gpuLists) frame.cullStateAddress = cull.state.address();
+    // cull.comp tests the late pass's meshlets where it makes the lists.
+    if (culling.plan.gpuLists && culling.plan.twoPasses && cull.pairCount != 0 && draws_->meshlets)
+        frame.lateMeshletWord = cull.meshletWords;
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.time = params.time;
     return frame;
