@@ -397,7 +397,7 @@ struct PartSetPush {
     uvec2 rectMin;          // inclusive, pixels
     uvec2 rectMax;          // inclusive
     uint words;             // bitset words: ceil(unique parts / 32)
-    uint unused;
+    uint samples;           // IDV_PART_SET_SAMPLES: samples per pixel of the image
 };
 struct PartSetResult {
     uint count;

@@ -3,7 +3,8 @@
 // technique and mode that tests the depth pyramid, and a pyramid test whose rectangles are
 // shrunk by one pixel loses it; two parts of one object that tie in depth keep their order;
 // the counters agree with a count on the CPU; objects whose parts are all hidden are never
-// drawn; a frozen list keeps drawing while the camera moves.
+// drawn; with MSAA a part that shows in a sample other than the resolved one is drawn first;
+// a frozen list keeps drawing while the camera moves.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -309,6 +310,58 @@ TEST(CullingCounts, ObjectsWithEveryPartHiddenAreNotDrawn) {
         EXPECT_EQ(render::countsOf(results[c].cullStats.back(), false).draws,
                   s.objects.size() - hiddenObjects)
             << configs[c].pipeline.mode->name;
+}
+
+// With MSAA the parts drawn first are those of every sample of the last image, not only of
+// the resolved sample 0: a speck over pixel (40, 30) that covers its samples 1 and 3 (the
+// standard 4x positions (0.875, 0.375) and (0.625, 0.875)) but not sample 0 at
+// (0.375, 0.125) is missing from the ID image, tints the colour, and is drawn in the first
+// half of the next frame, with the square the ID image shows.
+TEST(CullingSamples, APartShowingOnlyInLaterSamplesIsDrawnFirst) {
+    scene::Scene s;
+    const uint32_t grey = scene::addMaterial(s, "grey", {0.5f, 0.5f, 0.5f, 1});
+    const uint32_t big = square(s, px(4), py(4), px(20), py(20), 0.5f, "square");
+    const uint32_t speck = square(s, px(40.5f), py(30.3f), px(40.95f), py(30.95f), 0.5f, "speck");
+    scene::addObject(s, big, grey, glm::mat4(1.0f), "square");
+    scene::addObject(s, speck, grey, glm::mat4(1.0f), "speck");
+    scene::validate(s);
+    const size_t pixel = size_t(30) * SW + 40;
+
+    for (const char* mode : {"mdi-baseinstance", "mdi-attribute"}) {
+        app::Options o = testing_support::headlessOptions(SW, SH);
+        o.render = culled("vertex-fs", mode, render::CullMode::Occlusion);
+        o.render.pipeline.msaa = 4;
+        vk::Instance instance({true, {}, false});
+        std::vector<uint32_t> ids;
+        std::vector<uint8_t> color, background;
+        gpu::CullStats stats{};
+        {
+            app::Offscreen rig(instance, o);
+            rig.renderer.setScene(s, o.render);
+            const app::Readback readback(rig.device, rig.extent);
+            render::FrameParams params;
+            params.viewProj = glm::mat4(1.0f);
+            for (uint64_t frame = 0; frame < 2; ++frame) {
+                render::FrameSlot& slot = rig.slots.begin(frame);
+                rig.renderer.record(slot, rig.targets, params);
+                readback.record(slot.cmd, *rig.targets);
+                rig.slots.submit(slot);
+                rig.slots.finish();
+            }
+            ids = readback.idValues();
+            color = readback.colorBytes();
+            stats = rig.slots.cullStats().back();
+        }
+        EXPECT_EQ(instance.validationMessages(), 0u) << mode;
+        ASSERT_EQ(ids[pixel], gpu::BACKGROUND_ID) << mode << ": the speck should miss sample 0";
+        ASSERT_EQ(ids[size_t(10) * SW + 10], 0u) << mode;
+        const auto rgba = [&](size_t i) {
+            return std::vector<uint8_t>(&color[4 * i], &color[4 * i + 4]);
+        };
+        ASSERT_NE(rgba(pixel), rgba(pixel + 4)) << mode << ": the speck should tint its pixel";
+        EXPECT_EQ(stats.draws[0], 2u) << mode << ": the first half should draw both objects";
+        EXPECT_EQ(stats.draws[1], 0u) << mode << ": nothing should be left for the second half";
+    }
 }
 
 // Frozen lists keep drawing what the fitted view chose while the camera flies inside: what

@@ -258,26 +258,16 @@ void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
     vk::CmdLabel label(device_.debug(), cmd, "depth pyramid");
     const gpu::PyramidHeader& header = targets.pyramidHeader();
     // Earlier readers of the pyramid (the last frame's late pass, in the cull and the task
-    // shader) are done before it is rewritten.
-    vk::memoryBarrier(
-        cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
-        VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    vkCmdUpdateBuffer(cmd, targets.pyramid().handle(), 0, sizeof header, &header);
-    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+    // shader) are done before it is rewritten. Its header was written with the targets.
+    vk::memoryBarrier(cmd,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                      VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     const bool msaa = targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT;
     const ComputePipeline& pass = pyramid_[msaa ? 1 : 0];
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
-    VkDescriptorImageInfo image{sampler_.get(), targets.depth().view(),
-                                VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
-    auto write = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &image;
-    device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
-                                &write);
+    bindWithImage(
+        device_, cmd, pass, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+        {sampler_.get(), targets.depth().view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL});
     gpu::PyramidPush push{};
     push.pyramidAddress = targets.pyramid().address();
     push.extent = {targets.extent().width, targets.extent().height};

@@ -4,7 +4,8 @@
 // their count from every draw's box; the mesh techniques' task shader (shaders/scene.task)
 // culls meshlets; in push mode the CPU skips objects outside the view frustum. Occlusion
 // culling is two-phase: the first half of the scene pass draws what the last ID image showed
-// (the visible-part pass over it names exactly those parts), a depth pyramid is built from
+// (the visible-part pass over it names exactly those parts; with MSAA those of every sample,
+// not only of the resolved sample 0), a depth pyramid is built from
 // that depth (the farthest sample of every pixel), and the second half draws the rest that
 // the pyramid does not hide. Draws of several clusters (objects, search batches, large
 // parts) are tested cluster by cluster where their own box is not hidden. Every test is
@@ -100,7 +101,7 @@ class CullPasses {
     void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, const CullInputs& inputs,
                     uint32_t phase, bool meshDraws, bool indirect) const;
     // The pyramid of `targets` from their depth, left in DEPTH_STENCIL_READ_ONLY_OPTIMAL by
-    // the first half of the pass; its header is written first. `dispatches`, if given, holds
+    // the first half of the pass (its header is the targets'). `dispatches`, if given, holds
     // its passes' sizes (recordCull may have emptied them).
     void recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
                        const vk::Buffer* dispatches) const;

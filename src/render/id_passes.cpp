@@ -31,6 +31,19 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : dev
                                    images_.get(), "part edges");
     partSet_ = createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
                                      images_.get(), "part sets");
+    VkDescriptorSetLayoutBinding samples{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1,
+                                         VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    info.bindingCount = 1;
+    info.pBindings = &samples;
+    samples_ = vk::make(device, vkCreateDescriptorSetLayout, info, "multisampled IDs");
+    // Culling's: the parts without their count, of the resolved IDs or of every sample.
+    visibleParts_[0] =
+        createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
+                              images_.get(), "visible parts", {{"IDV_PART_SET_COUNT", "0"}});
+    visibleParts_[1] =
+        createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
+                              samples_.get(), "visible parts, every sample",
+                              {{"IDV_PART_SET_COUNT", "0"}, {"IDV_PART_SET_SAMPLES", "1"}});
 }
 
 void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
@@ -85,16 +98,16 @@ void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
 }
 
 void IdPasses::dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
-                               const PartSetQuery& query, VkDeviceAddress result,
-                               uint32_t words) const {
+                               const PartSetQuery& query, VkDeviceAddress result, uint32_t words,
+                               const ComputePipeline& pass) const {
     const glm::uvec2 last(targets.extent().width - 1, targets.extent().height - 1);
     gpu::PartSetPush push{};
     push.resultAddress = result;
     push.rectMin = glm::min(query.min, last);
     push.rectMax = glm::min(query.max, last);
     push.words = words;
-    vkCmdPushConstants(cmd, partSet_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
-                       &push);
+    push.samples = uint32_t(targets.pass().samples());
+    vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     const glm::uvec2 size = push.rectMax - push.rectMin + 1u;
     vkCmdDispatch(cmd, groups(size.x), groups(size.y), 1);
 }
@@ -110,10 +123,19 @@ void IdPasses::recordVisible(VkCommandBuffer cmd, const SceneTargets& targets,
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    transition(cmd, targets, true);
-    bindImages(cmd, targets, partSet_);
     const VkExtent2D e = targets.extent();
-    dispatchPartSet(cmd, targets, {{0, 0}, {e.width - 1, e.height - 1}}, visible.address(), words);
+    const PartSetQuery all{{0, 0}, {e.width - 1, e.height - 1}};
+    if (targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT) {
+        // The second half of the pass left every sample's ID for shaders to read.
+        bindWithImage(device_, cmd, visibleParts_[1], VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
+                      {VK_NULL_HANDLE, targets.multisampledIds().view(),
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[1]);
+        return;
+    }
+    transition(cmd, targets, true);
+    bindImages(cmd, targets, visibleParts_[0]);
+    dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[0]);
     transition(cmd, targets, false);
 }
 
@@ -144,7 +166,7 @@ void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets, const gp
     }
     if (!queries.empty()) bindImages(cmd, targets, partSet_);
     for (size_t i = 0; i < queries.size(); ++i)
-        dispatchPartSet(cmd, targets, queries[i], results.address() + stride * i, words);
+        dispatchPartSet(cmd, targets, queries[i], results.address() + stride * i, words, partSet_);
     transition(cmd, targets, false);
     if (queries.empty()) return;
     auto written = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);

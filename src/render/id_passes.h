@@ -2,7 +2,7 @@
 // it: part edges and outlines written into the colour image (edges.comp), and the set of
 // unique parts inside pixel rectangles (part_set.comp: box selection, the visible parts),
 // copied to the frame slot's readback like the pick. With MSAA they see the resolved IDs,
-// sample 0 of each pixel, as the pick does.
+// sample 0 of each pixel, as the pick does; only culling's visible parts read every sample.
 #pragma once
 
 #include <vector>
@@ -25,22 +25,26 @@ class IdPasses {
                 const std::vector<PartSetQuery>& queries, uint32_t words, const vk::Buffer& results,
                 const vk::Buffer& readback) const;
 
-    // Culling's visible-part pass: every unique part of the resolved ID image into
-    // `visible` (a gpu::PartSetResult, then `words` words), cleared first. The next frame's
-    // culling reads it: what the last ID image showed is drawn first.
+    // Culling's visible-part pass: every unique part of the ID image into `visible` (a
+    // gpu::PartSetResult, then `words` words), cleared first; with MSAA, of every sample of
+    // the multisampled IDs that the second half of a split pass keeps. The next frame's
+    // culling reads it: what the last image showed is drawn first.
     void recordVisible(VkCommandBuffer cmd, const SceneTargets& targets, const vk::Buffer& visible,
                        uint32_t words) const;
 
   private:
     void dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
-                         const PartSetQuery& query, VkDeviceAddress result, uint32_t words) const;
+                         const PartSetQuery& query, VkDeviceAddress result, uint32_t words,
+                         const ComputePipeline& pass) const;
     void bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
                     const ComputePipeline& pass) const;
     void transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const;
 
     vk::Device& device_;
-    vk::Handle<VkDescriptorSetLayout> images_; // pushed per frame: IDs, colour
+    vk::Handle<VkDescriptorSetLayout> images_;  // pushed per frame: IDs, colour
+    vk::Handle<VkDescriptorSetLayout> samples_; // pushed per frame: the multisampled IDs
     ComputePipeline edges_, partSet_;
+    ComputePipeline visibleParts_[2]; // culling's: of the resolved IDs, of every sample
 };
 
 } // namespace render

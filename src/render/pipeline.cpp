@@ -173,4 +173,16 @@ vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipeli
     return owned;
 }
 
+void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
+                   VkDescriptorType type, const VkDescriptorImageInfo& image) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+    auto write = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+    write.dstBinding = 0;
+    write.descriptorCount = 1;
+    write.descriptorType = type;
+    write.pImageInfo = &image;
+    device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
+                               &write);
+}
+
 } // namespace render

@@ -44,6 +44,9 @@ ComputePipeline
 createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler, const char* file,
                       uint32_t pushBytes, VkDescriptorSetLayout set, const std::string& name,
                       const std::vector<std::pair<std::string, std::string>>& defines = {});
+// Binds `pass` and pushes `image` as its binding 0 (a push descriptor set of one image).
+void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
+                   VkDescriptorType type, const VkDescriptorImageInfo& image);
 
 vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& info,
                                            const std::vector<ShaderStage>& stages,

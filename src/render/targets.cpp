@@ -2,10 +2,13 @@
 #include "render/targets.h"
 
 #include <array>
+#include <cstddef>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "vk/check.h"
+#include "vk/upload.h"
 
 namespace render {
 
@@ -96,10 +99,16 @@ vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part) co
         VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
         VkAttachmentReference{4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
     if (msaa && !first) {
-        // The multisampled contents are not kept past the resolve.
+        // The multisampled contents are not kept past the resolve, but for the IDs after the
+        // second half of a split pass: culling's visible-part pass reads every sample, so
+        // that a part showing in any sample of a pixel is drawn first in the next frame.
         for (uint32_t i : {0u, 1u}) {
             attachments[i].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
             attachments[i].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        }
+        if (second) {
+            attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+            attachments[1].finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
         }
         for (VkFormat format : {colorFormat, idFormat}) {
             attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT));
@@ -189,12 +198,12 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
                        VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
     std::vector<VkImageView> views = {color_.view(), ids_.view(), depth_.view()};
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
-        // Only ever rendered to and resolved within the pass.
+        // Rendered to and resolved within the pass; culling also reads every sample's ID.
         const VkImageUsageFlags inPass = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
         msColor_ = vk::Image(device, extent, ScenePass::colorFormat, inPass,
                              VK_IMAGE_ASPECT_COLOR_BIT, "scene colour (MSAA)", samples);
-        msIds_ = vk::Image(device, extent, ScenePass::idFormat, inPass, VK_IMAGE_ASPECT_COLOR_BIT,
-                           "scene part IDs (MSAA)", samples);
+        msIds_ = vk::Image(device, extent, ScenePass::idFormat, inPass | VK_IMAGE_USAGE_SAMPLED_BIT,
+                           VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs (MSAA)", samples);
         views = {msColor_.view(), msIds_.view(), depth_.view(), color_.view(), ids_.view()};
     }
     auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
@@ -211,11 +220,17 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
     firstFramebuffer_ =
         vk::make(device, vkCreateFramebuffer, info, "scene framebuffer, first half");
 
+    // The header is written once here: it depends on the extent alone.
     pyramidHeader_ = pyramidLevels(extent);
-    pyramid_ = vk::Buffer(device, pyramidBytes(pyramidHeader_),
-                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                              VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                          0, "depth pyramid");
+    std::vector<std::byte> pyramid(pyramidBytes(pyramidHeader_));
+    std::memcpy(pyramid.data(), &pyramidHeader_, sizeof pyramidHeader_);
+    vk::UploadBatch upload(device);
+    pyramid_ = std::make_shared<vk::Buffer>(
+        upload.add(pyramid.data(), pyramid.size(),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                   "depth pyramid"));
+    upload.keep(pyramid_);
+    upload.submit();
 }
 
 gpu::PyramidHeader pyramidLevels(VkExtent2D extent) {

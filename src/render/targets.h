@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 
 #include <glm/glm.hpp>
 
@@ -65,12 +66,15 @@ class SceneTargets {
     }
     const vk::Image& color() const { return color_; }
     const vk::Image& ids() const { return ids_; }
+    // With MSAA, the multisampled IDs: the second half of a split pass keeps them, in
+    // SHADER_READ_ONLY_OPTIMAL, for culling's visible-part pass to read every sample.
+    const vk::Image& multisampledIds() const { return msIds_; }
     // Sampled by the depth pyramid between the two halves of the pass (layout
     // DEPTH_STENCIL_READ_ONLY_OPTIMAL then).
     const vk::Image& depth() const { return depth_; }
-    // The depth pyramid of these targets (gpu::PyramidHeader, then the levels' floats),
-    // built by render/culling.h; `pyramidHeader` is what its header holds.
-    const vk::Buffer& pyramid() const { return pyramid_; }
+    // The depth pyramid of these targets (gpu::PyramidHeader, written when they are made,
+    // then the levels' floats), built by render/culling.h; `pyramidHeader` is its header.
+    const vk::Buffer& pyramid() const { return *pyramid_; }
     const gpu::PyramidHeader& pyramidHeader() const { return pyramidHeader_; }
 
   private:
@@ -80,7 +84,8 @@ class SceneTargets {
     vk::Image msColor_, msIds_; // multisampled attachments, resolved into color_ and ids_
     vk::Handle<VkFramebuffer> framebuffer_, firstFramebuffer_;
     gpu::PyramidHeader pyramidHeader_{};
-    vk::Buffer pyramid_;
+    // Shared with its upload, which may still be writing it when the targets go.
+    std::shared_ptr<vk::Buffer> pyramid_;
 };
 
 // The levels of the depth pyramid over `extent` (shared.h PyramidHeader), and its size in
