@@ -333,7 +333,7 @@ TEST(CullingSamples, APartShowingOnlyInLaterSamplesIsDrawnFirst) {
         o.render.pipeline.msaa = 4;
         vk::Instance instance({true, {}, false});
         std::vector<uint32_t> ids;
-        std::vector<uint8_t> color, background;
+        std::vector<uint8_t> color;
         gpu::CullStats stats{};
         {
             app::Offscreen rig(instance, o);
