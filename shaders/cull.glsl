@@ -63,6 +63,7 @@ bool allBitsInRange(uint64_t address, uint first, uint count) {
 // nearest depth, unless it reaches behind the near plane (then it cannot be occluded).
 struct BoxView {
     bool outside;
+    bool inside; // every corner inside every plane: so is all the box holds
     bool crossesNear;
     vec2 minPixel, maxPixel;
     float minDepth;
@@ -80,6 +81,7 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
     vec4 c = mvp * vec4(center, 1.0);
     vec4 ex = mvp[0] * halfSize.x, ey = mvp[1] * halfSize.y, ez = mvp[2] * halfSize.z;
     uint outsideAll = 63u; // planes every corner is outside of: -x +x -y +y near far
+    uint outsideAny = 0u;  // planes some corner is outside of
     BoxView view;
     view.crossesNear = false;
     view.minPixel = vec2(1e30);
@@ -92,6 +94,7 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
                        (p.y < -p.w ? 4u : 0u) | (p.y > p.w ? 8u : 0u) |
                        (p.z < 0.0 ? 16u : 0u) | (p.z > p.w ? 32u : 0u);
         outsideAll &= outside;
+        outsideAny |= outside;
         if (p.w <= 0.0 || p.z < 0.0) {
             view.crossesNear = true;
             continue;
@@ -103,6 +106,7 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
         view.minDepth = min(view.minDepth, ndc.z);
     }
     view.outside = outsideAll != 0u;
+    view.inside = outsideAny == 0u;
     return view;
 }
 
@@ -125,9 +129,12 @@ bool occluded(FrameData frame, BoxView view, int span) {
     PyramidLevel level = pyramid.header.level[k];
     ivec2 t0 = first >> (k + 1u);
     ivec2 t1 = min(end >> (k + 1u), ivec2(level.width, level.height) - 1);
-    float farthest = 0.0;
+    // Hidden where every texel holds a depth no farther than the box's nearest, less the
+    // margin: the first texel that does not decides (boxes in view, the most tested, stop soon).
+    float nearest = view.minDepth - CULL_DEPTH_MARGIN;
     for (int y = t0.y; y <= t1.y; ++y)
         for (int x = t0.x; x <= t1.x; ++x)
-            farthest = max(farthest, pyramid.depth[level.offset + uint(y) * level.width + uint(x)]);
-    return view.minDepth - CULL_DEPTH_MARGIN >= farthest;
+            if (pyramid.depth[level.offset + uint(y) * level.width + uint(x)] > nearest)
+                return false;
+    return true;
 }

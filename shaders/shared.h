@@ -229,20 +229,40 @@ IDV_CONST CULL_STEP_BOTH = 2; // a list of one workgroup: both steps in one disp
 // before "compact".
 IDV_CONST CULL_STEP_CLUSTERS = 3;
 IDV_CONST CULL_STEP_COUNT = 4;
+// Cluster runs (CULL_CLUSTER_RUNS): the pass's commands are runs of a draw's clusters, not
+// whole draws. After "clusters" has marked the (draw, cluster) pairs to draw, "runs count"
+// counts each workgroup's runs (a marked pair whose pair before it, of the same draw, is not)
+// and "runs compact" writes one command per run, in list order.
+IDV_CONST CULL_STEP_RUNS_COUNT = 5;
+IDV_CONST CULL_STEP_RUNS_COMPACT = 6;
 IDV_CONST CLUSTER_MAX_TRIANGLES = 64;
 // Per-draw state bits (CullPush::stateAddress), from the first pass of a frame.
-IDV_CONST CULL_IN_FRUSTUM = 1u;      // may lie in the view frustum, and not all its parts hidden
-IDV_CONST CULL_WAS_VISIBLE = 2u;     // one of its parts is in the last ID image
-IDV_CONST CULL_DRAW_NOW = 4u;        // drawn by the current pass (decide -> compact)
-IDV_CONST CULL_PASSED = 8u;          // FRAME_BOUNDS_HISTORY: passed the late pass's test
-IDV_CONST CULL_NEEDS_CLUSTERS = 16u; // drawn (and passed) only if a cluster's box passes
-IDV_CONST CULL_CLUSTER_PASSED = 32u; // one did (mesh tasks: one of its meshlets)
-IDV_CONST CULL_MESHLETS_NEW = 64u;   // mesh tasks, late: a meshlet passed that was not drawn early
+IDV_CONST CULL_IN_FRUSTUM = 1u;       // may lie in the view frustum, and not all its parts hidden
+IDV_CONST CULL_WAS_VISIBLE = 2u;      // one of its parts is in the last ID image
+IDV_CONST CULL_DRAW_NOW = 4u;         // drawn by the current pass (decide -> compact)
+IDV_CONST CULL_PASSED = 8u;           // FRAME_BOUNDS_HISTORY: passed the late pass's test
+IDV_CONST CULL_NEEDS_CLUSTERS = 16u;  // drawn (and passed) only if a cluster's box passes
+IDV_CONST CULL_CLUSTER_PASSED = 32u;  // one did (mesh tasks: one of its meshlets)
+IDV_CONST CULL_MESHLETS_NEW = 64u;    // mesh tasks, late: a meshlet passed that was not drawn early
+IDV_CONST CULL_LISTED = 128u;         // cluster runs: the current pass lists one of its clusters
+IDV_CONST CULL_LISTED_EARLY = 256u;   // cluster runs: the early pass listed one
+IDV_CONST CULL_INSIDE_FRUSTUM = 512u; // its box lies wholly inside the view frustum
+// Cluster runs: after the draws' words in the state buffer, a word of CULL_PAIR_* bits per
+// pair, then per object one more than the last of its pairs that passed the last late test.
+IDV_CONST CULL_PAIR_HISTORY = 1u; // passed the last late (or frustum) test
+IDV_CONST CULL_PAIR_EARLY = 2u;   // drawn by this frame's early pass
+IDV_CONST CULL_PAIR_NOW = 4u;     // listed by the current pass
 // CullPush::flags
 // Mesh tasks: in the late phase every meshlet of a draw whose box passed is tested here, one
 // (draw, meshlet) pair per meshlet bit; the late list holds the draws with a meshlet to draw
 // that the early pass did not, and the task shader draws just those (FrameData::lateMeshletWord).
 IDV_CONST CULL_MESH_DRAWS = 1u;
+// Cluster runs: techniques whose part IDs do not depend on where a draw starts (nothing
+// reads gl_PrimitiveID) draw runs of clusters. Every draw of the list has a (draw, cluster)
+// pair per cluster. An object's clusters are drawn early up to the last that passed the last
+// late test, in the draws the last ID image has drawn early; late where they pass the
+// pyramid and were not drawn early; so a draw half behind others draws half.
+IDV_CONST CULL_CLUSTER_RUNS = 2u;
 
 // A draw's box for culling, in its geometry's coordinates, for mesh techniques where its
 // meshlets' bits start (one bit per meshlet, each draw's run starting on a word), its
@@ -266,7 +286,9 @@ struct CullBox {
     vec3 boxMin;
     uint unused0;
     vec3 boxMax;
-    uint unused1;
+    // Clusters (not meshlets): the first triangle in its geometry, times 64, plus its
+    // triangle count less one (CLUSTER_MAX_TRIANGLES is 64).
+    uint triangles;
 };
 
 // The late phase's indirect dispatches (the depth pyramid's passes, the late cull's steps),
@@ -282,7 +304,9 @@ struct CullDispatches {
     CullDispatch pyramid[CULL_PYRAMID_PASSES];
     CullDispatch lateCull;     // decide, count and compact: a workgroup per CULL_GROUP_SIZE draws
     CullDispatch lateClusters; // clusters: a workgroup per CULL_GROUP_SIZE pairs
-    uint lateCandidates;       // draws the late pass would test, counted by the early cull
+    // What the late pass would test, counted by the early cull: draws (or, for cluster runs,
+    // clusters).
+    uint lateCandidates;
     uint unused[3];
 };
 
@@ -301,9 +325,10 @@ struct CullStats {
     uint draws[2];
     uint lateNew;
     uint triangles;
+    uint listed; // draws of the early (or only) list; with cluster runs, draws with a run in it
     uint meshlets;
     uint meshletTriangles;
-    uint unused[2];
+    uint unused;
 };
 
 // The depth pyramid (render/culling.h): level 0 holds, per 2x2 pixels, the farthest depth of

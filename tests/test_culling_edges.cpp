@@ -198,6 +198,24 @@ TEST(CullingOrder, PartsOfOneObjectThatTieInDepthKeepTheirOrder) {
     }
     EXPECT_GE(lost, 2u) << "per-draw in both mdi modes should lose the tie by its own parts";
     fs::remove_all(own);
+
+    // Cluster runs: an object's early clusters are its first ones, up to the last that passed
+    // the last late test. Choosing them by their own history instead draws part 1's cluster
+    // early and part 0's late, and the tie goes to part 1.
+    const fs::path history = shaderCopy("cluster-history");
+    replaceInFile(history / "cull.comp", "pair < state.words[historyEndWord(objectIndex)]",
+                  "(before & CULL_PAIR_HISTORY) != 0u");
+    size_t lostByRuns = 0;
+    for (const render::RenderSettings& settings : pyramidConfigs()) {
+        const auto wrong = twoFrameImage(s, settings, history.string(), 0, messages);
+        EXPECT_EQ(messages, 0u) << nameOf(settings);
+        if (wrong[tie] != 0u) {
+            ++lostByRuns;
+            EXPECT_TRUE(settings.pipeline.technique->drawsClusterRuns()) << nameOf(settings);
+        }
+    }
+    EXPECT_GE(lostByRuns, 4u) << "per-draw and vertex-fs in both mdi modes should lose the tie";
+    fs::remove_all(history);
 }
 
 // A view from halfway into the default model, where the frustum and the occluders leave out
@@ -227,14 +245,16 @@ render::RenderSettings culled(const char* technique, const char* mode, render::C
 }
 
 // Frustum culling lists exactly the objects the CPU's test keeps: on the GPU (mdi) those
-// with a cluster (up to 64 triangles of one part) whose box may lie in the view, on the CPU
-// (push) those whose own box may; occlusion culling, once the view stands still, draws every
-// object the ID image shows and fewer than the frustum leaves.
+// with a cluster (up to 64 triangles of one part) whose box may lie in the view, and with
+// cluster runs (vertex-fs) just those clusters' triangles; on the CPU (push) those whose own
+// box may. Occlusion culling, once the view stands still, draws every object the ID image
+// shows and fewer than the frustum leaves; whole draws (tri-fs) draw all their triangles,
+// cluster runs fewer, but a triangle of every part that shows.
 TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
     const InsideView& v = insideView();
     const scene::Scene& s = v.loaded.scene;
     const glm::mat4 viewProj = v.camera.viewProjection(160.0f / 90.0f);
-    uint64_t inFrustum = 0, clusterInFrustum = 0;
+    uint64_t inFrustum = 0, clusterInFrustum = 0, trianglesInFrustum = 0;
     for (const scene::Object& o : s.objects) {
         // Boxes of the vertices the triangles use, the object's and each cluster's, made here
         // from the triangles rather than by scene/bounds.h.
@@ -257,8 +277,10 @@ TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
                 box.max = glm::max(box.max, cluster.max);
                 const bool last =
                     t + 1 == part.triangleCount || (t + 1) % gpu::CLUSTER_MAX_TRIANGLES == 0;
-                if (last && !render::outsideFrustum(viewProj, o.world, v.camera.eye, cluster))
+                if (last && !render::outsideFrustum(viewProj, o.world, v.camera.eye, cluster)) {
                     clusterIn = true;
+                    trianglesInFrustum += t % gpu::CLUSTER_MAX_TRIANGLES + 1;
+                }
             }
         }
         inFrustum += render::outsideFrustum(viewProj, o.world, v.camera.eye, box) ? 0 : 1;
@@ -272,21 +294,33 @@ TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
     const std::vector<render::RenderSettings> configs = {
         culled("vertex-fs", "mdi-baseinstance", render::CullMode::Frustum),
         culled("vertex-fs", "push", render::CullMode::Frustum),
+        culled("tri-fs", "mdi-attribute", render::CullMode::Occlusion),
         culled("vertex-fs", "mdi-attribute", render::CullMode::Occlusion)};
     const auto results = app::renderHeadlessSequence(o, s, v.camera, configs);
     EXPECT_EQ(results.front().validationMessages, 0u);
-    EXPECT_EQ(render::countsOf(results[0].cullStats.back(), false).draws, clusterInFrustum);
+    const render::CullCounts frustum = render::countsOf(results[0].cullStats.back(), false);
+    EXPECT_EQ(frustum.draws, clusterInFrustum);
+    EXPECT_EQ(frustum.triangles, trianglesInFrustum);
     EXPECT_EQ(render::countsOf(results[1].cullStats.back(), false).draws, inFrustum);
 
-    std::set<uint32_t> shown;
+    std::set<uint32_t> shown, shownParts;
     uint64_t shownTriangles = 0;
-    for (uint32_t id : results[2].ids)
-        if (id != gpu::BACKGROUND_ID && shown.insert(s.locate(id)->object).second)
+    for (uint32_t id : results[2].ids) {
+        if (id == gpu::BACKGROUND_ID) continue;
+        shownParts.insert(id);
+        if (shown.insert(s.locate(id)->object).second)
             shownTriangles += s.geometries[s.objects[s.locate(id)->object].geometry].triangleCount;
-    const render::CullCounts occluded = render::countsOf(results[2].cullStats.back(), false);
-    EXPECT_GE(occluded.draws, shown.size());
-    EXPECT_LT(occluded.draws, clusterInFrustum) << "occlusion culling left nothing out";
-    EXPECT_GE(occluded.triangles, shownTriangles);
+    }
+    EXPECT_TRUE(results[3].ids == results[2].ids);
+    const render::CullCounts whole = render::countsOf(results[2].cullStats.back(), false);
+    EXPECT_GE(whole.draws, shown.size());
+    EXPECT_LT(whole.draws, clusterInFrustum) << "occlusion culling left nothing out";
+    EXPECT_GE(whole.triangles, shownTriangles);
+    const render::CullCounts runs = render::countsOf(results[3].cullStats.back(), false);
+    EXPECT_GE(runs.draws, shown.size());
+    EXPECT_LE(runs.draws, whole.draws);
+    EXPECT_GE(runs.triangles, shownParts.size());
+    EXPECT_LT(runs.triangles, whole.triangles) << "cluster runs drew whole objects";
 }
 
 // Objects whose parts are all hidden are not drawn, by the GPU's lists and the CPU's.

@@ -198,8 +198,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             row.mode = key.mode->name;
             const render::CullMode cull = list[i].culling.mode;
             row.culling = render::cullModeName(cull);
-            row.cullingApplied =
-                render::describeCulling(*key.mode, cull, key.technique->usesMeshShader());
+            row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
             row.cullMsMedian = percentile(cullMs, 0.5);
             row.pyramidMsMedian = percentile(pyramidMs, 0.5);
             row.earlyMsMedian = percentile(earlyMs, 0.5);

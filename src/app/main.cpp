@@ -1,6 +1,10 @@
 // main.cpp - idview's entry point: parses the command line and runs the requested path.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "app/benchmark.h"
 #include "app/cli.h"
@@ -32,13 +36,24 @@ int listRenderers() {
     std::printf("culling modes (--culling, default %s):\n",
                 render::cullModeName(render::CullSettings{}.mode));
     for (const auto& c : render::cullModes()) std::printf("  %-15s %s\n", c.name, c.description);
-    std::printf("what each per-draw mode gets of them (vertex pipelines | mesh techniques):\n");
+    std::printf("what each per-draw mode and renderer gets of them:\n");
     for (const auto& m : render::drawModes())
-        for (const auto& c : render::cullModes())
-            if (c.mode != render::CullMode::Off)
-                std::printf("  %-17s %-10s %s | %s\n", m.name, c.name,
-                            render::describeCulling(m, c.mode, false).c_str(),
-                            render::describeCulling(m, c.mode, true).c_str());
+        for (const auto& c : render::cullModes()) {
+            if (c.mode == render::CullMode::Off) continue;
+            // The renderers that get the same, in registry order, under one line.
+            std::vector<std::pair<std::string, std::string>> lines; // text, renderers
+            for (const render::Technique& t : render::techniques()) {
+                const std::string text = render::describeCulling(t, m, c.mode);
+                auto same = std::find_if(lines.begin(), lines.end(),
+                                         [&](const auto& l) { return l.first == text; });
+                if (same == lines.end())
+                    lines.push_back({text, t.name});
+                else
+                    same->second += std::string(", ") + t.name;
+            }
+            for (const auto& [text, names] : lines)
+                std::printf("  %-17s %-10s %s (%s)\n", m.name, c.name, text.c_str(), names.c_str());
+        }
     return 0;
 }
 

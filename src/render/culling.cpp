@@ -65,14 +65,19 @@ CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode cul
     return plan;
 }
 
-std::string describeCulling(const DrawMode& mode, CullMode culling, bool meshTechnique) {
+std::string describeCulling(const Technique& technique, const DrawMode& mode, CullMode culling) {
     if (culling == CullMode::Off) return "none";
     const bool occlusion = culling == CullMode::Occlusion;
+    const bool meshTechnique = technique.usesMeshShader();
+    const std::string tests =
+        std::string("frustum") + (occlusion ? " and two-phase occlusion" : "") + " per draw";
     std::string text =
-        mode.indirect ? std::string("GPU-built draw lists: frustum") +
-                            (occlusion ? " and two-phase occlusion" : "") + " per draw"
-                      : std::string("CPU: frustum per object") +
-                            (occlusion && !meshTechnique ? " (occlusion needs an mdi mode)" : "");
+        !mode.indirect ? std::string("CPU: frustum per object") +
+                             (occlusion && !meshTechnique ? " (occlusion needs an mdi mode)" : "")
+        : technique.drawsClusterRuns()
+            ? "GPU-built lists of cluster runs: " + tests + ", then per cluster of up to " +
+                  std::to_string(gpu::CLUSTER_MAX_TRIANGLES) + " triangles of one part"
+            : "GPU-built draw lists: " + tests;
     if (meshTechnique && occlusion && mode.indirect)
         text += "; meshlets: task shader by frustum, then cull pass by frustum and depth pyramid";
     else if (meshTechnique)
@@ -109,25 +114,31 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
 CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                          const std::vector<gpu::DrawCull>& cull,
                          const std::vector<uint32_t>& drawOfPair, uint32_t meshletBitCount,
-                         uint32_t bytesPerCommand)
+                         uint32_t bytesPerCommand, bool runs, uint32_t objectCount)
     : drawCount(static_cast<uint32_t>(cull.size())),
       groupCount(groupsOf(static_cast<uint32_t>(cull.size()), gpu::CULL_GROUP_SIZE)),
       commandBytes(bytesPerCommand), pairCount(static_cast<uint32_t>(drawOfPair.size())),
-      pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)) {
+      pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)), clusterRuns(runs),
+      listCapacity(runs ? std::max(drawCount, pairCount) : drawCount) {
     const VkBufferUsageFlags shader =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     const VkDeviceSize drawsAtLeastOne = std::max<VkDeviceSize>(drawCount, 1);
     draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
     pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, shader,
                        "cull (draw, cluster) pairs");
-    // Zeros: nothing passed a test yet (what the floors' early pass reads).
-    state = upload.add(std::vector<uint32_t>(drawsAtLeastOne, 0u), shader, "cull state");
-    groups = vk::Buffer(device, std::max<VkDeviceSize>(groupCount, 1) * 4, shader, 0,
-                        "cull workgroup counts");
+    // Zeros: nothing passed a test yet (what the floors' early pass and the early pass's
+    // clusters read).
+    state = upload.add(
+        std::vector<uint32_t>(drawsAtLeastOne + (runs ? pairCount + objectCount : 0), 0u), shader,
+        "cull state");
+    groups = vk::Buffer(
+        device, std::max<VkDeviceSize>(std::max(groupCount, runs ? pairGroupCount : 0), 1) * 4,
+        shader, 0, "cull workgroup counts");
     const char* names[2] = {"culled draws (early or only pass)", "culled draws (late pass)"};
     for (int i = 0; i < 2; ++i)
-        lists[i] = vk::Buffer(device, drawsAtLeastOne * std::max(commandBytes, 4u),
-                              shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, 0, names[i]);
+        lists[i] =
+            vk::Buffer(device, std::max<VkDeviceSize>(listCapacity, 1) * std::max(commandBytes, 4u),
+                       shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, 0, names[i]);
     stats = vk::Buffer(device, sizeof(gpu::CullStats),
                        shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -214,7 +225,8 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     push.drawCount = buffers.drawCount;
     push.phase = phase;
     push.commandWords = buffers.commandBytes / 4;
-    push.flags = meshDraws ? gpu::CULL_MESH_DRAWS : 0u;
+    push.flags = (meshDraws ? gpu::CULL_MESH_DRAWS : 0u) |
+                 (buffers.clusterRuns ? gpu::CULL_CLUSTER_RUNS : 0u);
     push.groupCount = buffers.groupCount;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
     // Draws of several clusters are tested cluster by cluster where the frustum or the
@@ -223,7 +235,11 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     const bool byClusters =
         buffers.pairCount != 0 && (late || (phase == gpu::CULL_PHASE_FRUSTUM && !meshDraws));
     std::vector<uint32_t> steps{gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT};
-    if (byClusters)
+    // Cluster runs: every pass marks clusters, then lists their runs.
+    if (buffers.clusterRuns && buffers.pairCount != 0)
+        steps = {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_CLUSTERS, gpu::CULL_STEP_RUNS_COUNT,
+                 gpu::CULL_STEP_RUNS_COMPACT};
+    else if (byClusters)
         steps = {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_CLUSTERS, gpu::CULL_STEP_COUNT,
                  gpu::CULL_STEP_COMPACT};
     else if (buffers.groupCount == 1)
@@ -232,7 +248,9 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
         push.step = step;
         vkCmdPushConstants(cmd, cull_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
                            &push);
-        const bool clusters = step == gpu::CULL_STEP_CLUSTERS;
+        const bool clusters = step == gpu::CULL_STEP_CLUSTERS ||
+                              step == gpu::CULL_STEP_RUNS_COUNT ||
+                              step == gpu::CULL_STEP_RUNS_COMPACT;
         if (late && indirect)
             vkCmdDispatchIndirect(cmd, buffers.dispatches.handle(),
                                   clusters ? offsetof(gpu::CullDispatches, lateClusters)

@@ -51,9 +51,9 @@ struct CullPlan {
     bool on() const { return gpuLists || cpuFrustum; }
 };
 CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode culling);
-// One line on what `mode` gets with `culling`, for --list-renderers, the panel and the
-// benchmark ("GPU lists: frustum and two-phase occlusion per draw, ...").
-std::string describeCulling(const DrawMode& mode, CullMode culling, bool meshTechnique);
+// One line on what `technique` in `mode` gets with `culling`, for --list-renderers, the panel
+// and the benchmark ("GPU-built draw lists: frustum and two-phase occlusion per draw, ...").
+std::string describeCulling(const Technique& technique, const DrawMode& mode, CullMode culling);
 
 // The CPU's frustum test of push mode: whether `box` (in the coordinates `world` places)
 // lies outside the view frustum with the margins cull.glsl uses.
@@ -66,12 +66,19 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
 struct CullBuffers {
     CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                 const std::vector<gpu::DrawCull>& draws, const std::vector<uint32_t>& pairs,
-                uint32_t meshletBits, uint32_t commandBytes);
+                uint32_t meshletBits, uint32_t commandBytes, bool clusterRuns,
+                uint32_t objectCount);
     uint32_t drawCount = 0, groupCount = 0, commandBytes = 0;
     uint32_t pairCount = 0, pairGroupCount = 0; // (draw, cluster) or (draw, meshlet) pairs
-    vk::Buffer draws;                           // gpu::DrawCull[]
-    vk::Buffer pairs;       // uint per (draw, cluster) pair of draws of several clusters: the draw
-    vk::Buffer state;       // uint per draw: CULL_* bits
+    // The lists are runs of clusters (CULL_CLUSTER_RUNS): every draw has its pairs, and a
+    // list holds up to a command per pair.
+    bool clusterRuns = false;
+    uint32_t listCapacity = 0; // commands a list can hold
+    vk::Buffer draws;          // gpu::DrawCull[]
+    vk::Buffer pairs; // uint per (draw, cluster) pair of draws of several clusters: the draw
+    // uint per draw: CULL_* bits; with cluster runs then per pair CULL_PAIR_* bits and per
+    // object where its history ends (cull.comp)
+    vk::Buffer state;
     vk::Buffer groups;      // uint per cull.comp workgroup
     vk::Buffer lists[2];    // the early (or only) and the late pass's commands
     vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts

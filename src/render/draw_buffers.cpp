@@ -16,7 +16,7 @@ namespace {
 // (draw, cluster) pair per cluster in `pairs`, holding the draw; for mesh tasks instead a
 // (draw, meshlet) pair per meshlet bit, padding included. Returns the bits needed.
 uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const DrawList& list,
-                   std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
+                   bool runs, std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
     uint32_t bits = 0;
     out.reserve(list.ranges.size());
     for (size_t i = 0; i < list.ranges.size(); ++i) {
@@ -38,7 +38,7 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
             cull.meshletCount = list.meshletCounts[i];
             bits += (cull.meshletCount + 31) / 32 * 32;
             pairs.resize(bits, static_cast<uint32_t>(i));
-        } else if (cull.clusterCount > 1) {
+        } else if (cull.clusterCount > 1 || runs) {
             pairs.insert(pairs.end(), cull.clusterCount, static_cast<uint32_t>(i));
         }
         out.push_back(cull);
@@ -113,11 +113,13 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
     std::vector<gpu::DrawCull> boxes;
     std::vector<uint32_t> pairs;
     const bool gpuCulling = indirect || key.taskCulling;
-    const uint32_t bits = gpuCulling ? cullBoxes(scene, sceneGpu, list, boxes, pairs) : 0;
+    const bool runs = indirect && key.technique->drawsClusterRuns();
+    const uint32_t bits = gpuCulling ? cullBoxes(scene, sceneGpu, list, runs, boxes, pairs) : 0;
     // Part by part only where cull.comp makes the lists.
     if (!indirect) pairs.clear();
     b->cull = std::make_shared<CullBuffers>(device, upload, boxes, pairs, bits,
-                                            indirect ? b->commandBytes : 0);
+                                            indirect ? b->commandBytes : 0, runs,
+                                            static_cast<uint32_t>(scene.objects.size()));
     if (!key.mode->indirect) {
         b->objectBoxes.reserve(scene.objects.size());
         for (const scene::Object& o : scene.objects)
@@ -208,7 +210,7 @@ Issued recordPushDraws(const DrawContext& c, const std::vector<uint8_t>& objectS
 void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase) {
     const DrawBuffers& b = c.buffers;
     const CullBuffers& cull = *b.cull;
-    const uint32_t maxDraws = static_cast<uint32_t>(b.list.ranges.size());
+    const uint32_t maxDraws = cull.listCapacity;
     if (maxDraws == 0) return; // nothing to draw (--visible 0): no commands either
     const VkDeviceSize countOffset = offsetof(gpu::CullStats, draws) + which * sizeof(uint32_t);
     if (b.meshlets) {

@@ -13,9 +13,10 @@ namespace render {
 
 CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     CullCounts counts;
-    // The late list of the vertex pipelines holds only draws the early one had not; the mesh
-    // tasks' holds every draw that may show, so only the new ones count.
-    counts.draws = uint64_t(stats.draws[0]) + stats.lateNew;
+    // The draws with something in the early (or only) list, and those of the late list that
+    // the early one had not: the draws' count buffer counts commands, which for cluster runs
+    // are runs, and the mesh tasks' late list holds every draw that may show.
+    counts.draws = uint64_t(stats.listed) + stats.lateNew;
     counts.meshlets = stats.meshlets;
     counts.triangles = meshTechnique ? stats.meshletTriangles : stats.triangles;
     return counts;
@@ -161,6 +162,7 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
     gpu::CullStats known{};
     const CullCounts totals = cullTotals();
     known.draws[0] = uint32_t(culling.plan.on() ? culling.issued.draws : totals.draws);
+    known.listed = known.draws[0];
     known.triangles = uint32_t(culling.plan.on() ? culling.issued.triangles : totals.triangles);
     // Without culling the mesh shaders draw every meshlet; with it the task shader counts.
     known.meshlets = uint32_t(totals.meshlets);

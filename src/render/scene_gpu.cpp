@@ -2,6 +2,7 @@
 #include "render/scene_gpu.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <vector>
 
 #include "scene/bounds.h"
@@ -48,8 +49,16 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     scene::Clusters clusters = scene::partClusters(scene, gpu::CLUSTER_MAX_TRIANGLES);
     std::vector<gpu::CullBox> boxes;
     boxes.reserve(clusters.boxes.size());
-    for (size_t c = 0; c < clusters.boxes.size(); ++c)
-        boxes.push_back({clusters.boxes[c].min, clusters.localPart[c], clusters.boxes[c].max, 0});
+    static_assert(gpu::CLUSTER_MAX_TRIANGLES == 64, "CullBox::triangles packs the count in 6 bits");
+    for (size_t c = 0; c < clusters.boxes.size(); ++c) {
+        // Cluster runs (cull.comp) need the first triangle in 26 bits.
+        if (clusters.firstTriangle[c] >= (1u << 26))
+            throw std::runtime_error("a geometry of more than 67 million triangles cannot be "
+                                     "culled cluster by cluster; split it into objects");
+        const uint32_t triangles = clusters.firstTriangle[c] << 6 | (clusters.triangleCount[c] - 1);
+        boxes.push_back(
+            {clusters.boxes[c].min, clusters.localPart[c], clusters.boxes[c].max, triangles});
+    }
     if (boxes.empty()) boxes.resize(1); // an address even without triangles
     clusterBoxes_ = upload.add(boxes, shaderRead, "cluster boxes");
     clusterStart_ = std::move(clusters.first);

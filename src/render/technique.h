@@ -71,6 +71,11 @@ struct Technique {
     bool readsSearchBatch() const { return ids == IdBuffer::PartTriangleCounts; }
     bool usesMeshShader() const { return primitives == Primitives::Meshlets; }
     bool usesPartVertices() const { return primitives != Primitives::SceneIndices; }
+    // Its part IDs do not depend on where a draw starts (no stage reads gl_PrimitiveID), so
+    // culling may draw any run of a draw's clusters on its own (shared.h, CULL_CLUSTER_RUNS).
+    bool drawsClusterRuns() const {
+        return !usesMeshShader() && (ids == IdBuffer::None || stage == LookupStage::Vertex);
+    }
 };
 
 // How per-draw parameters reach the shaders.

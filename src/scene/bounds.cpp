@@ -45,6 +45,8 @@ Clusters partClusters(const Scene& scene, uint32_t maxTriangles) {
             c.first[p] + (scene.parts[p].triangleCount + maxTriangles - 1) / maxTriangles;
     c.boxes.assign(c.first.back(), emptyBounds());
     c.localPart.assign(c.first.back(), 0);
+    c.firstTriangle.assign(c.first.back(), 0);
+    c.triangleCount.assign(c.first.back(), 0);
     for (const Geometry& g : scene.geometries)
         for (uint32_t p = 0; p < g.partCount; ++p) {
             const Part& part = scene.parts[g.firstPart + p];
@@ -52,8 +54,10 @@ Clusters partClusters(const Scene& scene, uint32_t maxTriangles) {
             for (uint32_t t = 0; t < part.triangleCount; t += maxTriangles, ++cluster) {
                 Bounds& box = c.boxes[cluster];
                 c.localPart[cluster] = p;
+                c.firstTriangle[cluster] = part.firstTriangle + t;
+                c.triangleCount[cluster] = std::min(maxTriangles, part.triangleCount - t);
                 const uint32_t first = g.firstIndex + 3 * (part.firstTriangle + t);
-                const uint32_t end = first + 3 * std::min(maxTriangles, part.triangleCount - t);
+                const uint32_t end = first + 3 * c.triangleCount[cluster];
                 for (uint32_t i = first; i < end; ++i) {
                     const glm::vec3& position =
                         scene.vertices[g.firstVertex + scene.indices[i]].position;

@@ -28,6 +28,9 @@ Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uin
 struct Clusters {
     std::vector<Bounds> boxes;       // per cluster
     std::vector<uint32_t> localPart; // per cluster: its part's index in its geometry
+    // Per cluster its first triangle in its geometry and its triangle count: a draw's
+    // clusters are consecutive triangles, so any run of them is one indexed draw.
+    std::vector<uint32_t> firstTriangle, triangleCount;
     // Per entry of Scene::parts its first cluster, and one more entry: the cluster count.
     std::vector<uint32_t> first;
 };

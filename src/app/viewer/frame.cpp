@@ -200,8 +200,8 @@ PanelInfo Viewer::panelInfo() const {
     info.idPassMs = mean(slots_.idPassMilliseconds(), 30);
     const render::Renderer& renderer = scene_.renderer();
     const render::PipelineKey& key = renderer.settings().pipeline;
-    info.cullingApplied = render::describeCulling(*key.mode, renderer.settings().culling.mode,
-                                                  key.technique->usesMeshShader());
+    info.cullingApplied =
+        render::describeCulling(*key.technique, *key.mode, renderer.settings().culling.mode);
     info.totals = renderer.cullTotals();
     if (!slots_.cullStats().empty())
         info.drawn = render::countsOf(slots_.cullStats().back(), key.technique->usesMeshShader());
