@@ -8,7 +8,9 @@
 // not only of the resolved sample 0), a depth pyramid is built from
 // that depth (the farthest sample of every pixel), and the second half draws the rest that
 // the pyramid does not hide. Draws of several clusters (objects, search batches, large
-// parts) are tested cluster by cluster where their own box is not hidden. Every test is
+// parts) are tested cluster by cluster where their own box is not hidden; where no shader
+// reads gl_PrimitiveID (Technique::drawsClusterRuns) the lists hold just the runs of
+// clusters that passed, an object's first clusters first (CULL_CLUSTER_RUNS). Every test is
 // conservative and each list keeps the draw order, so the ID and colour images are byte for
 // byte those drawn without culling, but for one case: where two surfaces tie exactly in
 // depth, the one drawn first wins, and the halves can change which that is. An object's
