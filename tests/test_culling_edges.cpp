@@ -203,7 +203,7 @@ TEST(CullingOrder, PartsOfOneObjectThatTieInDepthKeepTheirOrder) {
     // the last late test. Choosing them by their own history instead draws part 1's cluster
     // early and part 0's late, and the tie goes to part 1.
     const fs::path history = shaderCopy("cluster-history");
-    replaceInFile(history / "cull.comp", "pair < state.words[historyEndWord(objectIndex)]",
+    replaceInFile(history / "cull_runs.glsl", "pair < state.words[historyEndWord(objectIndex)]",
                   "(before & CULL_PAIR_HISTORY) != 0u");
     size_t lostByRuns = 0;
     for (const render::RenderSettings& settings : pyramidConfigs()) {
