@@ -50,6 +50,11 @@ uint historyEndWord(uint object) {
     return cull.drawCount + cull.pairCount + object;
 }
 
+// Cluster runs: the word that says whether the last frame's late pass ran.
+uint lateRanWord() {
+    return cull.drawCount + cull.pairCount + cull.objectCount;
+}
+
 // The state bits of draw `i` for this pass: the first pass of a frame finds them, the late
 // pass reads them back.
 uint decide(FrameData frame, uint i) {
@@ -57,8 +62,10 @@ uint decide(FrameData frame, uint i) {
     bool boundsHistory = (frame.flags & FRAME_BOUNDS_HISTORY) != 0u;
     uint bits = 0u;
     // Cluster runs: the late pass finds anew where each object's clusters that passed end.
-    if (cull.phase == CULL_PHASE_LATE && (cull.flags & CULL_CLUSTER_RUNS) != 0u)
+    if (cull.phase == CULL_PHASE_LATE && (cull.flags & CULL_CLUSTER_RUNS) != 0u) {
         state.words[historyEndWord(DrawsRef(cull.drawsAddress).draws[i].objectIndex)] = 0u;
+        if (i == 0u) state.words[lateRanWord()] = 1u;
+    }
     if (cull.phase == CULL_PHASE_LATE) {
         bits = state.words[i] &
                (CULL_IN_FRUSTUM | CULL_INSIDE_FRUSTUM | CULL_WAS_VISIBLE | CULL_LISTED_EARLY);

@@ -16,6 +16,12 @@ uint pairState(uint pair) {
 // Every pass tests the cluster's own box against the frustum (the late one against the
 // pyramid too, for every cluster in view, so that the history follows the view) and leaves
 // out clusters of hidden parts. No atomics here: the draws' words are left to "runs count".
+// stillHistory: in a still view (FRAME_VIEW_UNCHANGED), after a frame whose late pass ran,
+// each cluster that passed that test goes first by itself, and the images stay those of
+// culling off. A cluster that did not pass lay wholly behind that frame's early depth, so
+// behind its final depth, which a still view draws again: drawn late, it writes no sample
+// and ties none. A cluster that wins a tie without culling showed in the last image, so it
+// passed, and its draw goes early by that image.
 // Returns whether the late pass has the cluster to test: in a draw in view, not drawn early
 // nor found outside the view or hidden now. Where no cluster is left to it, the late pass is
 // skipped (the view shows all it holds), and the history stays as it is. The floors test
@@ -28,10 +34,16 @@ bool runClustersStep(uint pair) {
     uint before = state.words[cull.drawCount + pair];
     bool late = cull.phase == CULL_PHASE_LATE;
     uint objectIndex = DrawsRef(cull.drawsAddress).draws[d].objectIndex;
+    // In a still view whose last frame tested every cluster in view, the clusters that
+    // passed that test go first, each by itself (see stillHistory below).
+    bool still = cull.phase == CULL_PHASE_EARLY &&
+                 (FrameRef(cull.frameAddress).frame.flags & FRAME_VIEW_UNCHANGED) != 0u &&
+                 state.words[lateRanWord()] != 0u;
+    bool early = still ? (before & CULL_PAIR_HISTORY) != 0u
+                       : pair < state.words[historyEndWord(objectIndex)];
     bool candidate = late ? (bits & CULL_NEEDS_CLUSTERS) != 0u
                           : (bits & CULL_DRAW_NOW) != 0u &&
-                                (cull.phase != CULL_PHASE_EARLY ||
-                                 pair < state.words[historyEndWord(objectIndex)]);
+                                (cull.phase != CULL_PHASE_EARLY || early);
     bool passed = false;
     // Clusters of a draw whose box lies inside the frustum do too; without hiding, nothing
     // else is left to test before the late pass.
@@ -192,6 +204,9 @@ void runsCompactStep(uint lane, uint pair) {
         if (gl_WorkGroupID.x + 1u == (cull.pairCount + CULL_GROUP_SIZE - 1u) / CULL_GROUP_SIZE) {
             stats.stats.draws[pass] = base + groupTotal;
             if (cull.phase == CULL_PHASE_EARLY && cull.dispatchesAddress != 0ul) skipLateIfIdle();
+            // Read by this pass's clusters; the late pass, if it runs, sets it again.
+            if (cull.phase != CULL_PHASE_LATE)
+                CullWordsRef(cull.stateAddress).words[lateRanWord()] = 0u;
         }
     }
 }

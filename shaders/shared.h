@@ -51,6 +51,10 @@ IDV_CONST FRAME_HIDING = 4u;           // some part is hidden: culling skips dra
 // The floors write no ID image, so their culling remembers what passed the last frame's
 // occlusion test instead of what the ID image showed (CULL_PASSED, and the meshlet bits).
 IDV_CONST FRAME_BOUNDS_HISTORY = 8u;
+// The view, the objects' placement and the hidden parts are those of the last culled frame:
+// cluster runs then draw early just the clusters that passed its late test where that test
+// ran (cull_runs.glsl says why the images stay those of culling off).
+IDV_CONST FRAME_VIEW_UNCHANGED = 16u;
 // The one material of FRAME_IGNORE_MATERIALS (linear RGB): a mid grey, so that only part
 // colours (--part-weight) tint the image.
 #ifdef __cplusplus
@@ -248,7 +252,8 @@ IDV_CONST CULL_LISTED = 128u;         // cluster runs: the current pass lists on
 IDV_CONST CULL_LISTED_EARLY = 256u;   // cluster runs: the early pass listed one
 IDV_CONST CULL_INSIDE_FRUSTUM = 512u; // its box lies wholly inside the view frustum
 // Cluster runs: after the draws' words in the state buffer, a word of CULL_PAIR_* bits per
-// pair, then per object one more than the last of its pairs that passed the last late test.
+// pair, then per object one more than the last of its pairs that passed the last late test,
+// then one word: whether the last frame's late pass ran (its CULL_PAIR_HISTORY is fresh).
 IDV_CONST CULL_PAIR_HISTORY = 1u; // passed the last late (or frustum) test
 IDV_CONST CULL_PAIR_EARLY = 2u;   // drawn by this frame's early pass
 IDV_CONST CULL_PAIR_NOW = 4u;     // listed by the current pass
@@ -369,7 +374,7 @@ struct CullPush {
     uint64_t pairsAddress;
     uint64_t clusterBoxesAddress;
     uint pairCount;
-    uint unused;
+    uint objectCount; // cluster runs: the objects, whose words end the state buffer
 };
 
 // depth_pyramid.comp: PYRAMID_LEVELS_PER_PASS levels from `level` on, from the depth

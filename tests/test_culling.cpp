@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 #include "app/headless.h"
 #include "app/scene_source.h"
@@ -34,6 +36,10 @@ struct PathCase {
     const char* scene; // "default" or "cad"
     uint32_t msaa;
     Pipelines pipelines;
+    // The camera stands still instead of flying the dolly path: from the second frame on,
+    // cluster runs draw first the clusters that passed the last frame's test, each by itself
+    // (FRAME_VIEW_UNCHANGED).
+    bool still = false;
 };
 
 const char* pipelinesName(Pipelines p) {
@@ -41,7 +47,8 @@ const char* pipelinesName(Pipelines p) {
 }
 
 void PrintTo(const PathCase& c, std::ostream* os) {
-    *os << c.scene << " msaa " << c.msaa << " " << pipelinesName(c.pipelines);
+    *os << c.scene << " msaa " << c.msaa << " " << pipelinesName(c.pipelines)
+        << (c.still ? " still" : "");
 }
 
 // Where two images first differ, for the failure message.
@@ -92,7 +99,7 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
     }
     for (render::RenderSettings& s : configs) s.pipeline.msaa = c.msaa;
     app::Options o = testing_support::headlessOptions(W, H, kFrames);
-    o.cameraPath = scene::CameraPath::Dolly;
+    o.cameraPath = c.still ? scene::CameraPath::None : scene::CameraPath::Dolly;
     o.keepEveryFrame = true;
     const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
     ASSERT_EQ(results.size(), configs.size());
@@ -131,7 +138,7 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
         // search batches span the ring), only meshlets and single parts can be left out.
         const render::Technique& t = *s.pipeline.technique;
         const bool partsCulled = s.pipeline.mode->indirect && t.split == render::DrawSplit::PerPart;
-        if (loaded.scene.objects.size() > 1 || partsCulled || t.usesMeshShader()) {
+        if (!c.still && (loaded.scene.objects.size() > 1 || partsCulled || t.usesMeshShader())) {
             EXPECT_LT(drawn, total) << name << ": culling left nothing out along the path";
         }
     }
@@ -154,11 +161,57 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
                                            PathCase{"default", 4, Pipelines::Vertex},
                                            PathCase{"default", 4, Pipelines::Mesh},
                                            PathCase{"cad", 1, Pipelines::All},
-                                           PathCase{"cad", 4, Pipelines::All}),
+                                           PathCase{"cad", 4, Pipelines::All},
+                                           PathCase{"default", 4, Pipelines::Vertex, true},
+                                           PathCase{"cad", 1, Pipelines::All, true}),
                          [](const ::testing::TestParamInfo<PathCase>& info) {
                              return std::string(info.param.scene) + "_msaa" +
                                     std::to_string(info.param.msaa) + "_" +
-                                    pipelinesName(info.param.pipelines);
+                                    pipelinesName(info.param.pipelines) +
+                                    (info.param.still ? "_still" : "");
                          });
+
+// In a still view cluster runs draw first just the clusters that passed the last frame's
+// test: fewer triangles than an object's first clusters up to the last that passed (what a
+// moving view draws first), with the images of culling off either way.
+TEST(CullingStill, ClusterRunsDrawFewerTrianglesOnceTheViewStandsStill) {
+    const app::LoadedScene loaded = app::loadScene(app::SceneSettings{});
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    const std::filesystem::path moving =
+        std::filesystem::temp_directory_path() / "idview-culling-still-as-moving";
+    std::filesystem::remove_all(moving);
+    std::filesystem::copy(IDVIEW_SOURCE_SHADER_DIR, moving,
+                          std::filesystem::copy_options::recursive);
+    {
+        std::stringstream text;
+        text << std::ifstream(moving / "cull_runs.glsl").rdbuf();
+        std::string source = text.str();
+        const std::string flag = "FRAME_VIEW_UNCHANGED) != 0u";
+        const size_t at = source.find(flag);
+        ASSERT_NE(at, std::string::npos);
+        source.replace(at, flag.size(), "FRAME_VIEW_UNCHANGED) == 17u");
+        std::ofstream(moving / "cull_runs.glsl") << source;
+    }
+    std::vector<render::RenderSettings> configs;
+    for (render::CullMode mode : {render::CullMode::Off, render::CullMode::Occlusion}) {
+        configs.push_back(testing_support::settingsFor(*render::findTechnique("vertex-fs"),
+                                                       *render::findDrawMode("mdi-baseinstance")));
+        configs.back().culling.mode = mode;
+    }
+    app::Options o = testing_support::headlessOptions(W, H, kFrames);
+    const auto still = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    o.shaderDir = moving.string();
+    const auto asMoving = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    std::filesystem::remove_all(moving);
+    ASSERT_EQ(still.size(), 2u);
+    ASSERT_EQ(asMoving.size(), 2u);
+    EXPECT_EQ(still.front().validationMessages, 0u);
+    EXPECT_TRUE(still[1].ids == still[0].ids);
+    EXPECT_TRUE(still[1].color == still[0].color);
+    EXPECT_TRUE(asMoving[1].ids == still[0].ids);
+    const uint64_t drawn = render::countsOf(still[1].cullStats.back(), false).triangles;
+    const uint64_t drawnAsMoving = render::countsOf(asMoving[1].cullStats.back(), false).triangles;
+    EXPECT_LT(drawn, drawnAsMoving);
+}
 
 } // namespace

@@ -114,12 +114,13 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
 CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                          const std::vector<gpu::DrawCull>& cull,
                          const std::vector<uint32_t>& drawOfPair, uint32_t meshletBitCount,
-                         uint32_t bytesPerCommand, bool runs, uint32_t objectCount)
+                         uint32_t bytesPerCommand, bool runs, uint32_t objects)
     : drawCount(static_cast<uint32_t>(cull.size())),
       groupCount(groupsOf(static_cast<uint32_t>(cull.size()), gpu::CULL_GROUP_SIZE)),
       commandBytes(bytesPerCommand), pairCount(static_cast<uint32_t>(drawOfPair.size())),
       pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)), clusterRuns(runs),
-      listCapacity(runs ? std::max(drawCount, pairCount) : drawCount) {
+      listCapacity(runs ? std::max(drawCount, pairCount) : drawCount),
+      objectCount(runs ? objects : 0) {
     const VkBufferUsageFlags shader =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     const VkDeviceSize drawsAtLeastOne = std::max<VkDeviceSize>(drawCount, 1);
@@ -128,8 +129,9 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                        "cull (draw, cluster) pairs");
     // Zeros: nothing passed a test yet (what the floors' early pass and the early pass's
     // clusters read).
+    // Cluster runs: then the pairs' bits, the objects' ends of history and one more word.
     state = upload.add(
-        std::vector<uint32_t>(drawsAtLeastOne + (runs ? pairCount + objectCount : 0), 0u), shader,
+        std::vector<uint32_t>(drawsAtLeastOne + (runs ? pairCount + objects + 1 : 0), 0u), shader,
         "cull state");
     groups = vk::Buffer(
         device, std::max<VkDeviceSize>(std::max(groupCount, runs ? pairGroupCount : 0), 1) * 4,
@@ -217,6 +219,7 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     push.pairsAddress = buffers.pairs.address();
     push.clusterBoxesAddress = inputs.clusterBoxes;
     push.pairCount = buffers.pairCount;
+    push.objectCount = buffers.objectCount;
     push.dispatchesAddress = indirect ? buffers.dispatches.address() : 0;
     push.targetAddress = buffers.lists[late ? 1 : 0].address();
     push.stateAddress = buffers.state.address();

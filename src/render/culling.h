@@ -21,6 +21,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,9 +89,19 @@ struct CullBuffers {
     uint32_t meshletWords = 0;
     vk::Buffer dispatches; // gpu::CullDispatches: the late phase's, which it may skip
     // CPU side, changed while recording: whether the lists were ever written (a frozen list
-    // needs one culled frame first), and push mode's objects shown by the last culled frame.
+    // needs one culled frame first), push mode's objects shown by the last culled frame, and
+    // what placed the last frame culled in two passes (FRAME_VIEW_UNCHANGED when it recurs).
     bool culled = false;
     std::vector<uint8_t> frozenObjects;
+    struct View {
+        glm::mat4 viewProj;
+        float explode;
+        uint64_t hiddenVersion;
+        uint32_t width, height, samples; // of the targets
+        bool operator==(const View&) const = default;
+    };
+    std::optional<View> lastView;
+    uint32_t objectCount = 0; // cluster runs: the objects the state buffer has a word for
 };
 
 // The compute pipelines: the cull and the depth pyramid.

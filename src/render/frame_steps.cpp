@@ -22,12 +22,21 @@ CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     return counts;
 }
 
-Renderer::FrameCulling Renderer::planFrame(const FrameParams& params) const {
+Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
+                                           const SceneTargets& targets) const {
     FrameCulling c;
     c.plan = cullingPlan();
     CullBuffers& cull = *draws_->cull;
     // A frozen frame draws the lists of the last culled one; until there is one, it culls.
     c.frozen = settings_.culling.freeze && c.plan.on() && cull.culled;
+    // Whether this frame is placed as the last one culled in two passes was.
+    std::optional<CullBuffers::View> view;
+    if (c.plan.gpuLists && c.plan.twoPasses && !c.frozen)
+        view = CullBuffers::View{params.viewProj,         params.explode,
+                                 hiddenVersion_,          targets.extent().width,
+                                 targets.extent().height, uint32_t(targets.pass().samples())};
+    c.viewUnchanged = view && cull.lastView == view;
+    cull.lastView = view;
     if (!c.plan.cpuFrustum) return c;
     if (c.frozen) {
         c.objectShown = cull.frozenObjects;
@@ -55,7 +64,8 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
                   (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u) |
                   (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u) |
-                  (draws_->key.technique->isFloor() ? gpu::FRAME_BOUNDS_HISTORY : 0u);
+                  (draws_->key.technique->isFloor() ? gpu::FRAME_BOUNDS_HISTORY : 0u) |
+                  (culling.viewUnchanged ? gpu::FRAME_VIEW_UNCHANGED : 0u);
     frame.sampleZero = targets.pass().sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();

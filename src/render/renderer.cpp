@@ -169,6 +169,7 @@ void Renderer::setSelection(const scene::PartSet& selected) {
 void Renderer::setHidden(const scene::PartSet& hidden) {
     if (!sceneGpu_ || hidden.partCount() != partCount_)
         throw vk::Error("Renderer::setHidden: not a set over the current scene's parts");
+    ++hiddenVersion_;
     auto pipeline = pipeline_;
     if (hidden.empty() != hiddenSet_.empty()) {
         PipelineKey key = pipeline_->key;
@@ -229,7 +230,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
         slot.keep(used);
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
-    FrameCulling culling = planFrame(params);
+    FrameCulling culling = planFrame(params, targets);
     const gpu::FrameData frame = frameData(targets, params, culling);
     vkCmdUpdateBuffer(cmd, slot.frameData.handle(), 0, sizeof frame, &frame);
     slot.pickPixel = params.pickPixel;

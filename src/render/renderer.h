@@ -109,6 +109,7 @@ class Renderer {
     struct FrameCulling {
         CullPlan plan;
         bool frozen = false;              // drawing the lists of the last culled frame
+        bool viewUnchanged = false;       // FRAME_VIEW_UNCHANGED
         std::vector<uint8_t> objectShown; // push mode: the CPU's frustum test per object
         Issued issued;                    // push mode: the first pass's draws
     };
@@ -117,7 +118,7 @@ class Renderer {
     bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const;
     gpu::FrameData frameData(const SceneTargets& targets, const FrameParams& params,
                              const FrameCulling& culling) const;
-    FrameCulling planFrame(const FrameParams& params) const;
+    FrameCulling planFrame(const FrameParams& params, const SceneTargets& targets) const;
     void beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
                    VkDeviceAddress frame) const;
     void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
@@ -153,7 +154,8 @@ class Renderer {
     // occlusion culling draws first.
     std::shared_ptr<const vk::Buffer> selected_, hidden_, visible_;
     scene::PartSet hiddenSet_;
-    std::vector<uint8_t> objectHidden_;                      // per object: all its parts are hidden
+    uint64_t hiddenVersion_ = 0;        // counts setHidden() calls: culling asks whether it changed
+    std::vector<uint8_t> objectHidden_; // per object: all its parts are hidden
     std::vector<std::pair<uint32_t, uint32_t>> objectParts_; // per object: first ID, count
     uint32_t partCount_ = 0;
     RenderStats stats_;
