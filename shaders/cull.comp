@@ -77,9 +77,11 @@ uint decide(FrameData frame, uint i) {
         bool hidden = (frame.flags & FRAME_HIDING) != 0u &&
                       allBitsInRange(frame.hiddenAddress, firstId, draw.partCount);
         DrawCull box = DrawCullRef(cull.cullAddress).draws[i];
-        BoxView view = viewBox(frame, object.world, box.boxMin, box.boxMax);
-        if (!hidden && !view.outside) bits |= CULL_IN_FRUSTUM;
-        if (!hidden && view.inside) bits |= CULL_INSIDE_FRUSTUM;
+        if (!hidden) {
+            BoxView view = viewBox(frame, object.world, box.boxMin, box.boxMax);
+            if (!view.outside) bits |= CULL_IN_FRUSTUM;
+            if (view.inside) bits |= CULL_INSIDE_FRUSTUM;
+        }
         if (cull.phase == CULL_PHASE_EARLY &&
             (boundsHistory ? passedBefore
                            : anyBitInRange(frame.visibleAddress, firstId, box.partsToEnd)))
@@ -259,19 +261,23 @@ void countStep(uint lane, uint i) {
     if (lane == 0u) CullWordsRef(cull.groupsAddress).words[gl_WorkGroupID.x] = counts[0];
 }
 
-void compactStep(uint lane, uint i) {
+// What the workgroups before this one counted ("count" or "runs count"): where this
+// workgroup's commands start.
+uint countedBefore(uint lane) {
     CullWordsRef groups = CullWordsRef(cull.groupsAddress);
-    // The draws of the workgroups before this one.
     uint before = 0u;
     for (uint g = lane; g < gl_WorkGroupID.x; g += CULL_GROUP_SIZE) before += groups.words[g];
     counts[lane] = before;
     reduce(lane, CULL_GROUP_SIZE);
     uint base = counts[0];
     barrier();
-    uint bits = i < cull.drawCount ? CullWordsRef(cull.stateAddress).words[i] : 0u;
-    bool drawn = (bits & CULL_DRAW_NOW) != 0u;
-    // Inclusive prefix of the flags within the workgroup (Hillis-Steele).
-    counts[lane] = drawn ? 1u : 0u;
+    return base;
+}
+
+// Inclusive prefix of the flags over the workgroup (Hillis-Steele), left in counts[]; the
+// workgroup's total is counts[CULL_GROUP_SIZE - 1].
+void inclusivePrefix(uint lane, bool flag) {
+    counts[lane] = flag ? 1u : 0u;
     barrier();
     for (uint stride = 1u; stride < CULL_GROUP_SIZE; stride <<= 1) {
         uint add = lane >= stride ? counts[lane - stride] : 0u;
@@ -279,6 +285,13 @@ void compactStep(uint lane, uint i) {
         counts[lane] += add;
         barrier();
     }
+}
+
+void compactStep(uint lane, uint i) {
+    uint base = countedBefore(lane);
+    uint bits = i < cull.drawCount ? CullWordsRef(cull.stateAddress).words[i] : 0u;
+    bool drawn = (bits & CULL_DRAW_NOW) != 0u;
+    inclusivePrefix(lane, drawn);
     uint groupTotal = counts[CULL_GROUP_SIZE - 1u];
     StatsRef stats = StatsRef(cull.statsAddress);
     if (drawn) {

@@ -141,13 +141,7 @@ void runsCountStep(uint lane, uint pair) {
 
 // One indexed command per run, in list order: its draw's command over the run's triangles.
 void runsCompactStep(uint lane, uint pair) {
-    CullWordsRef groups = CullWordsRef(cull.groupsAddress);
-    uint before = 0u;
-    for (uint g = lane; g < gl_WorkGroupID.x; g += CULL_GROUP_SIZE) before += groups.words[g];
-    counts[lane] = before;
-    reduce(lane, CULL_GROUP_SIZE);
-    uint base = counts[0];
-    barrier();
+    uint base = countedBefore(lane);
     bool start = false;
     uint d = 0u;
     if (pair < cull.pairCount) {
@@ -161,14 +155,7 @@ void runsCompactStep(uint lane, uint pair) {
             (state.words[d] & (failed | CULL_CLUSTER_PASSED)) == failed)
             state.words[d] &= ~CULL_PASSED;
     }
-    counts[lane] = start ? 1u : 0u;
-    barrier();
-    for (uint stride = 1u; stride < CULL_GROUP_SIZE; stride <<= 1) {
-        uint add = lane >= stride ? counts[lane - stride] : 0u;
-        barrier();
-        counts[lane] += add;
-        barrier();
-    }
+    inclusivePrefix(lane, start);
     uint groupTotal = counts[CULL_GROUP_SIZE - 1u];
     uint triangles = 0u;
     if (start) {

@@ -7,14 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "render/culling.h"
 #include "render/technique.h"
+#include "shader_copy.h"
 #include "test_support.h"
 
 namespace {
@@ -177,21 +176,9 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
 TEST(CullingStill, ClusterRunsDrawFewerTrianglesOnceTheViewStandsStill) {
     const app::LoadedScene loaded = app::loadScene(app::SceneSettings{});
     const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
-    const std::filesystem::path moving =
-        std::filesystem::temp_directory_path() / "idview-culling-still-as-moving";
-    std::filesystem::remove_all(moving);
-    std::filesystem::copy(IDVIEW_SOURCE_SHADER_DIR, moving,
-                          std::filesystem::copy_options::recursive);
-    {
-        std::stringstream text;
-        text << std::ifstream(moving / "cull_runs.glsl").rdbuf();
-        std::string source = text.str();
-        const std::string flag = "FRAME_VIEW_UNCHANGED) != 0u";
-        const size_t at = source.find(flag);
-        ASSERT_NE(at, std::string::npos);
-        source.replace(at, flag.size(), "FRAME_VIEW_UNCHANGED) == 17u");
-        std::ofstream(moving / "cull_runs.glsl") << source;
-    }
+    const std::filesystem::path moving = testing_support::shaderCopy("still-as-moving");
+    testing_support::replaceInFile(moving / "cull_runs.glsl", "FRAME_VIEW_UNCHANGED) != 0u",
+                                   "FRAME_VIEW_UNCHANGED) == 17u");
     std::vector<render::RenderSettings> configs;
     for (render::CullMode mode : {render::CullMode::Off, render::CullMode::Occlusion}) {
         configs.push_back(testing_support::settingsFor(*render::findTechnique("vertex-fs"),

@@ -8,9 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "app/headless.h"
 #include "app/offscreen.h"
@@ -18,11 +16,15 @@
 #include "render/culling.h"
 #include "scene/camera_path.h"
 #include "scene/mesh_builder.h"
+#include "shader_copy.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using testing_support::replaceInFile;
+using testing_support::shaderCopy;
 
 constexpr uint32_t SW = 64, SH = 48; // the sliver scene's image
 constexpr glm::uvec2 kSliver{32, 21};
@@ -59,23 +61,6 @@ scene::Scene sliverScene() {
     scene::addObject(s, small, grey, glm::mat4(1.0f), "small part");
     scene::validate(s);
     return s;
-}
-
-fs::path shaderCopy(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("idview-culling-" + name);
-    fs::remove_all(dir);
-    fs::copy(IDVIEW_SOURCE_SHADER_DIR, dir, fs::copy_options::recursive);
-    return dir;
-}
-
-void replaceInFile(const fs::path& path, const std::string& from, const std::string& to) {
-    std::stringstream text;
-    text << std::ifstream(path).rdbuf();
-    std::string s = text.str();
-    const size_t at = s.find(from);
-    ASSERT_NE(at, std::string::npos) << from << " not in " << path;
-    s.replace(at, from.size(), to);
-    std::ofstream(path) << s;
 }
 
 // Two parts of one object in one plane: part 0 over pixels 8..40 x 8..40, part 1 over

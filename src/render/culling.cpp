@@ -127,9 +127,9 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
     draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
     pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, shader,
                        "cull (draw, cluster) pairs");
-    // Zeros: nothing passed a test yet (what the floors' early pass and the early pass's
-    // clusters read).
-    // Cluster runs: then the pairs' bits, the objects' ends of history and one more word.
+    // Zeros: nothing passed a test yet (what the floors' early pass and, for cluster runs,
+    // the early pass's clusters read); cluster runs add the pairs' bits, the objects' ends of
+    // history and whether the last late pass ran.
     state = upload.add(
         std::vector<uint32_t>(drawsAtLeastOne + (runs ? pairCount + objects + 1 : 0), 0u), shader,
         "cull state");

@@ -12,9 +12,10 @@ namespace render {
 namespace {
 
 // Each draw's box; for mesh tasks where its meshlet bits start: on a word, so each task
-// workgroup's 32 meshlets have one word to themselves; for draws of several clusters, a
-// (draw, cluster) pair per cluster in `pairs`, holding the draw; for mesh tasks instead a
-// (draw, meshlet) pair per meshlet bit, padding included. Returns the bits needed.
+// workgroup's 32 meshlets have one word to themselves; for draws of several clusters (every
+// draw, for cluster runs), a (draw, cluster) pair per cluster in `pairs`, holding the draw; for
+// mesh tasks instead a (draw, meshlet) pair per meshlet bit, padding included. Returns the bits
+// needed.
 uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const DrawList& list,
                    bool runs, std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
     uint32_t bits = 0;
