@@ -78,6 +78,10 @@ bool runClustersStep(uint pair) {
     return (bits & CULL_IN_FRUSTUM) != 0u && (!candidate || boundsHistory);
 }
 
+layout(buffer_reference, std430, buffer_reference_align = 4) writeonly buffer RunCommandsRef {
+    RunCommand commands[];
+};
+
 // Runs end where pairs' indices cross a multiple of this: "runs compact" finds the end of a
 // run by walking it, which an object's thousand clusters in one run made the longest part
 // of the cull (measured on the H100); the commands it adds are a few thousand.
@@ -172,14 +176,15 @@ void runsCompactStep(uint lane, uint pair) {
             triangles += (boxes.boxes[cluster].triangles & 63u) + 1u;
         uint slot = base + counts[lane] - 1u;
         CullWordsRef source = CullWordsRef(cull.sourceAddress);
-        CullWordsRef target = CullWordsRef(cull.targetAddress);
-        // VkDrawIndexedIndirectCommand: indexCount, instanceCount, firstIndex, vertexOffset,
-        // firstInstance (the draw's index, which names its DrawData).
-        target.words[slot * 5u] = 3u * triangles;
-        target.words[slot * 5u + 1u] = source.words[d * 5u + 1u];
-        target.words[slot * 5u + 2u] = source.words[d * 5u + 2u] + 3u * (runFirst - drawFirst);
-        target.words[slot * 5u + 3u] = source.words[d * 5u + 3u];
-        target.words[slot * 5u + 4u] = source.words[d * 5u + 4u];
+        // The whole draw's VkDrawIndexedIndirectCommand, narrowed to the run.
+        RunCommand command;
+        command.indexCount = 3u * triangles;
+        command.instanceCount = source.words[d * 5u + 1u];
+        command.firstIndex = source.words[d * 5u + 2u] + 3u * (runFirst - drawFirst);
+        command.vertexOffset = int(source.words[d * 5u + 3u]);
+        command.firstInstance = source.words[d * 5u + 4u];
+        command.runOffset = runFirst - drawFirst;
+        RunCommandsRef(cull.targetAddress).commands[slot] = command;
     }
     barrier();
     counts[lane] = triangles;

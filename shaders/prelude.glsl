@@ -24,6 +24,10 @@ layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer Uin
     uint values[];
 };
 
+layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer RunCommandsRef {
+    RunCommand commands[];
+};
+
 // Written only by the fragment at the pick pixel; `last` is read by every fragment.
 layout(buffer_reference, std430, buffer_reference_align = 8) buffer PickRef {
     PickData pick;

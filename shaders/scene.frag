@@ -32,6 +32,10 @@ layout(location = VARYING_PART_INDEX) perprimitiveEXT flat in uint inPartIndex;
 layout(location = VARYING_PART_INDEX) flat in uint inPartIndex;
 #endif
 
+#if IDV_RUN_OFFSET && !IDV_PART_FROM_EARLIER_STAGE
+layout(location = VARYING_RUN_OFFSET) flat in uint inRunOffset;
+#endif
+
 layout(location = OUT_COLOR) out vec4 outColor;
 #if !IDV_NO_ID
 layout(location = OUT_PART_ID) out uint outPartId; // no-id masks the attachment off
@@ -64,7 +68,11 @@ void main() {
 #if IDV_PART_FROM_EARLIER_STAGE
     uint localPart = inPartIndex;
 #else
+#if IDV_RUN_OFFSET
+    uint localPart = lookupLocalPart(frame, draw, inRunOffset + uint(gl_PrimitiveID));
+#else
     uint localPart = lookupLocalPart(frame, draw, uint(gl_PrimitiveID));
+#endif
 #endif
     uint uniquePartId = object.uniquePartOffset + localPart;
     if (frame.partMaterialsAddress != 0ul && (frame.flags & FRAME_IGNORE_MATERIALS) == 0u &&

@@ -12,6 +12,14 @@
 
 layout(triangles) in;
 
+// The triangle's place in its draw: a culled list of cluster runs (IDV_RUN_OFFSET) starts
+// gl_PrimitiveIDIn at each run's first triangle.
+#if IDV_RUN_OFFSET
+#define primitiveInDraw(runOffset) ((runOffset) + uint(gl_PrimitiveIDIn))
+#else
+#define primitiveInDraw(runOffset) uint(gl_PrimitiveIDIn)
+#endif
+
 #if IDV_GS_PASSTHROUGH
 layout(passthrough) in gl_PerVertex {
     vec4 gl_Position;
@@ -20,19 +28,25 @@ layout(location = VARYING_WORLD_POS, passthrough) in Varyings {
     vec3 worldPos;
     vec3 worldNormal;
     flat uint drawIndex;
+#if IDV_RUN_OFFSET
+    layout(location = VARYING_RUN_OFFSET) flat uint runOffset;
+#endif
 } inVertices[];
 layout(location = VARYING_PART_INDEX) flat out uint outPartIndex;
 
 void main() {
     FrameData frame = loadFrame();
     DrawData draw = loadDraw(frame, inVertices[0].drawIndex);
-    outPartIndex = lookupLocalPart(frame, draw, uint(gl_PrimitiveIDIn));
+    outPartIndex = lookupLocalPart(frame, draw, primitiveInDraw(inVertices[0].runOffset));
 }
 #else
 layout(triangle_strip, max_vertices = 3) out;
 layout(location = VARYING_WORLD_POS) in vec3 inWorldPos[];
 layout(location = VARYING_WORLD_NORMAL) in vec3 inWorldNormal[];
 layout(location = VARYING_DRAW_INDEX) flat in uint inDrawIndex[];
+#if IDV_RUN_OFFSET
+layout(location = VARYING_RUN_OFFSET) flat in uint inRunOffset[];
+#endif
 layout(location = VARYING_WORLD_POS) out vec3 outWorldPos;
 layout(location = VARYING_WORLD_NORMAL) out vec3 outWorldNormal;
 layout(location = VARYING_DRAW_INDEX) flat out uint outDrawIndex;
@@ -41,7 +55,7 @@ layout(location = VARYING_PART_INDEX) flat out uint outPartIndex;
 void main() {
     FrameData frame = loadFrame();
     DrawData draw = loadDraw(frame, inDrawIndex[0]);
-    uint part = lookupLocalPart(frame, draw, uint(gl_PrimitiveIDIn));
+    uint part = lookupLocalPart(frame, draw, primitiveInDraw(inRunOffset[0]));
 #if IDV_HIDE_PARTS
     // A hidden part's triangle is not emitted: the fragment shader keeps its early tests.
     uint offset = loadObject(frame.objectsAddress, draw.objectIndex).uniquePartOffset;

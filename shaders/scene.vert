@@ -19,6 +19,9 @@ layout(location = VARYING_DRAW_INDEX) flat out uint outDrawIndex;
 #if IDV_LOOKUP_IN_VS
 layout(location = VARYING_PART_INDEX) flat out uint outPartIndex;
 #endif
+#if IDV_RUN_OFFSET
+layout(location = VARYING_RUN_OFFSET) flat out uint outRunOffset;
+#endif
 
 uint currentDrawIndex() {
 #if IDV_MODE_MDI_ATTRIBUTE
@@ -42,6 +45,11 @@ void main() {
 #if IDV_LOOKUP_IN_VS
     // gl_VertexIndex includes the draw's vertexOffset: firstElement makes it geometry-local.
     outPartIndex = lookupLocalPart(frame, draw, uint(gl_VertexIndex) - draw.firstElement);
+#endif
+#if IDV_RUN_OFFSET
+    // A culled list of cluster runs (shared.h, RunCommand): gl_PrimitiveID counts from the
+    // run's first triangle, the lookup from the draw's.
+    outRunOffset = RunCommandsRef(push.commandsAddress).commands[gl_DrawID].runOffset;
 #endif
     gl_Position = frame.viewProj * world;
 }

@@ -36,6 +36,9 @@ IDV_CONST VARYING_DRAW_INDEX = 2;
 // The local part found before the fragment shader: by a geometry shader (per triangle), the
 // vertex shader (flat, from the provoking vertex) or a mesh shader (per primitive).
 IDV_CONST VARYING_PART_INDEX = 3;
+// Culled lists of cluster runs (IDV_RUN_OFFSET): the run's first triangle in its draw, which
+// the techniques that read gl_PrimitiveID add to it (it restarts at 0 in every command).
+IDV_CONST VARYING_RUN_OFFSET = 4;
 
 // Fragment outputs, matching the colour attachments of the scene render pass.
 IDV_CONST OUT_COLOR = 0;
@@ -189,8 +192,10 @@ struct Material {
 struct DrawPush {
     uint64_t frameAddress; // FrameData
     DrawData draw;
-    uint64_t commandsAddress; // mesh techniques, mdi modes with culling: MeshTaskCommand[]
-    uint cullPhase;           // CULL_PHASE_*: what the task shader lets through
+    // mdi modes with culling: the list drawn, MeshTaskCommand[] for the mesh techniques and
+    // RunCommand[] for lists of cluster runs
+    uint64_t commandsAddress;
+    uint cullPhase; // CULL_PHASE_*: what the task shader lets through
     uint unused;
 };
 IDV_CONST DRAW_PUSH_DRAW_OFFSET = 8;
@@ -262,8 +267,8 @@ IDV_CONST CULL_PAIR_NOW = 4u;     // listed by the current pass
 // (draw, meshlet) pair per meshlet bit; the late list holds the draws with a meshlet to draw
 // that the early pass did not, and the task shader draws just those (FrameData::lateMeshletWord).
 IDV_CONST CULL_MESH_DRAWS = 1u;
-// Cluster runs: techniques whose part IDs do not depend on where a draw starts (nothing
-// reads gl_PrimitiveID) draw runs of clusters. Every draw of the list has a (draw, cluster)
+// Cluster runs: the vertex pipelines draw runs of clusters (RunCommand; the techniques that
+// read gl_PrimitiveID add the run's offset to it). Every draw of the list has a (draw, cluster)
 // pair per cluster. An object's clusters are drawn early up to the last that passed the last
 // late test, in the draws the last ID image has drawn early; late where they pass the
 // pyramid and were not drawn early; so a draw half behind others draws half.
@@ -313,6 +318,18 @@ struct CullDispatches {
     // clusters).
     uint lateCandidates;
     uint unused[3];
+};
+
+// A command of a list of cluster runs: an indexed draw over the run's triangles, then the
+// run's first triangle in its draw, which the vertex shader hands on (VARYING_RUN_OFFSET)
+// to the techniques that read gl_PrimitiveID. The draws are made with this stride.
+struct RunCommand {
+    uint indexCount; // VkDrawIndexedIndirectCommand
+    uint instanceCount;
+    uint firstIndex;
+    int vertexOffset;
+    uint firstInstance; // the draw's index, which names its DrawData
+    uint runOffset;     // triangles of the draw before the run
 };
 
 // What the mesh techniques' culled indirect draws hold: task workgroups, then the draw.

@@ -201,4 +201,32 @@ TEST(CullingStill, ClusterRunsDrawFewerTrianglesOnceTheViewStandsStill) {
     EXPECT_LT(drawn, drawnAsMoving);
 }
 
+// The per-frame histories (counters, GPU times) are in frame order, whichever frame slot
+// the run ends on: the counters of a run along the dolly path equal those of the same run
+// that waits for every frame before it records the next.
+TEST(CullingCounters, StayInFrameOrderAtTheEndOfARun) {
+    const app::LoadedScene loaded = app::loadScene(app::SceneSettings{});
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    render::RenderSettings s = testing_support::settingsFor(
+        *render::findTechnique("vertex-fs"), *render::findDrawMode("mdi-baseinstance"));
+    s.culling.mode = render::CullMode::Occlusion;
+    // An odd count: the last frame is in the first slot, the one before it in the second.
+    app::Options o = testing_support::headlessOptions(W, H, 3);
+    o.cameraPath = scene::CameraPath::Dolly;
+    const auto overlapped = app::renderHeadlessSequence(o, loaded.scene, camera, {s});
+    o.keepEveryFrame = true;
+    const auto oneByOne = app::renderHeadlessSequence(o, loaded.scene, camera, {s});
+    auto triangles = [](const app::HeadlessResult& r) {
+        std::vector<uint64_t> t;
+        for (const gpu::CullStats& stats : r.cullStats)
+            t.push_back(render::countsOf(stats, false).triangles);
+        return t;
+    };
+    const std::vector<uint64_t> expected = triangles(oneByOne.front());
+    ASSERT_EQ(expected.size(), 3u);
+    ASSERT_NE(expected[1], expected[2]) << "the path should draw other triangles each frame";
+    EXPECT_EQ(triangles(overlapped.front()), expected);
+    EXPECT_EQ(overlapped.front().validationMessages, 0u);
+}
+
 } // namespace

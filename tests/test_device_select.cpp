@@ -16,7 +16,7 @@ vk::DeviceInfo capable(uint32_t index, const char* name, VkPhysicalDeviceType ty
     d.bufferDeviceAddress = d.shaderInt64 = d.shaderBufferInt64Atomics = d.geometryShader = true;
     d.multiDrawIndirect = d.drawIndirectFirstInstance = d.fragmentStoresAndAtomics =
         d.independentBlend = true;
-    d.pushDescriptor = d.drawIndirectCount = true;
+    d.pushDescriptor = d.drawIndirectCount = d.shaderDrawParameters = true;
     d.graphicsQueueFamily = 0;
     return d;
 }
@@ -43,17 +43,19 @@ TEST(DeviceSelect, NamesEveryMissingRequirement) {
     d.shaderInt64 = false;
     d.geometryShader = false;
     d.drawIndirectCount = false;
+    d.shaderDrawParameters = false;
     d.graphicsQueueFamily = UINT32_MAX;
     auto missing = vk::missingRequirements(d);
-    ASSERT_EQ(missing.size(), 5u);
+    ASSERT_EQ(missing.size(), 6u);
     EXPECT_EQ(missing[0], "Vulkan 1.2");
     EXPECT_EQ(missing[1], "shaderInt64");
     EXPECT_EQ(missing[2], "geometryShader");
     EXPECT_EQ(missing[3], "drawIndirectCount");
-    EXPECT_EQ(missing[4], "a graphics queue with timestamps");
+    EXPECT_EQ(missing[4], "shaderDrawParameters");
+    EXPECT_EQ(missing[5], "a graphics queue with timestamps");
 
     vk::DeviceInfo none;
-    EXPECT_EQ(vk::missingRequirements(none).size(), 12u);
+    EXPECT_EQ(vk::missingRequirements(none).size(), 13u);
 }
 
 TEST(DeviceSelect, PrefersDiscreteThenIntegratedThenCpu) {

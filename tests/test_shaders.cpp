@@ -72,10 +72,11 @@ TEST(Shaders, VariantKeysCoverEveryChoice) {
                                                << " passthrough " << passthrough;
                         ++expected;
                     }
-            // The culling variant (a task shader) of the mesh techniques and their floor.
+            // The culling variant: a task shader for the mesh techniques and their floor, run
+            // offsets for the techniques that read gl_PrimitiveID in the mdi modes.
             render::PipelineKey culling{&t, &m};
-            culling.taskCulling = true;
-            if (t.usesMeshShader()) {
+            culling.taskCulling = culling.runOffsets = true;
+            if (t.usesMeshShader() || (t.readsPrimitiveId() && m.indirect)) {
                 EXPECT_EQ(has(culling.effective(true)), 1)
                     << t.name << " + " << m.name << " culling";
                 ++expected;

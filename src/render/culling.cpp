@@ -118,7 +118,10 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
     : drawCount(static_cast<uint32_t>(cull.size())),
       groupCount(groupsOf(static_cast<uint32_t>(cull.size()), gpu::CULL_GROUP_SIZE)),
       commandBytes(bytesPerCommand), pairCount(static_cast<uint32_t>(drawOfPair.size())),
-      pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)), clusterRuns(runs),
+      pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)),
+      // Without a cluster (no triangles) the lists are whole draws, of nothing.
+      clusterRuns(runs && pairCount != 0),
+      listCommandBytes(clusterRuns ? uint32_t(sizeof(gpu::RunCommand)) : bytesPerCommand),
       listCapacity(runs ? std::max(drawCount, pairCount) : drawCount),
       objectCount(runs ? objects : 0) {
     const VkBufferUsageFlags shader =
@@ -138,9 +141,9 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
         shader, 0, "cull workgroup counts");
     const char* names[2] = {"culled draws (early or only pass)", "culled draws (late pass)"};
     for (int i = 0; i < 2; ++i)
-        lists[i] =
-            vk::Buffer(device, std::max<VkDeviceSize>(listCapacity, 1) * std::max(commandBytes, 4u),
-                       shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, 0, names[i]);
+        lists[i] = vk::Buffer(
+            device, std::max<VkDeviceSize>(listCapacity, 1) * std::max(listCommandBytes, 4u),
+            shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, 0, names[i]);
     stats = vk::Buffer(device, sizeof(gpu::CullStats),
                        shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,

@@ -7,12 +7,13 @@
 // (the visible-part pass over it names exactly those parts; with MSAA those of every sample,
 // not only of the resolved sample 0), a depth pyramid is built from
 // that depth (the farthest sample of every pixel), and the second half draws the rest that
-// the pyramid does not hide. Draws of several clusters (objects, search batches, large
-// parts) are tested cluster by cluster where their own box is not hidden; where no shader
-// reads gl_PrimitiveID (Technique::drawsClusterRuns) the lists hold just the runs of
-// clusters that passed, an object's first clusters first (CULL_CLUSTER_RUNS). Every test is
-// conservative and each list keeps the draw order, so the ID and colour images are byte for
-// byte those drawn without culling, but for one case: where two surfaces tie exactly in
+// the pyramid does not hide. The vertex pipelines' lists (Technique::drawsClusterRuns) hold
+// just the runs of clusters (up to 64 triangles of one part) that passed, an object's first
+// clusters first (CULL_CLUSTER_RUNS); a technique that reads gl_PrimitiveID adds the run's
+// offset in its draw (PipelineKey::runOffsets). The mesh techniques' lists are whole draws,
+// and their task shader culls meshlets. Every test is conservative and each list keeps the
+// draw order, so the ID and colour images are byte for byte those drawn without culling,
+// but for one case: where two surfaces tie exactly in
 // depth, the one drawn first wins, and the halves can change which that is. An object's
 // draws keep their order (every draw of an object up to the last one with a part the last
 // image showed goes first), so ties between parts of one object are safe; a tie
@@ -76,8 +77,9 @@ struct CullBuffers {
     // The lists are runs of clusters (CULL_CLUSTER_RUNS): every draw has its pairs, and a
     // list holds up to a command per pair.
     bool clusterRuns = false;
-    uint32_t listCapacity = 0; // commands a list can hold
-    vk::Buffer draws;          // gpu::DrawCull[]
+    uint32_t listCommandBytes = 0; // commandBytes, or gpu::RunCommand's for cluster runs
+    uint32_t listCapacity = 0;     // commands a list can hold
+    vk::Buffer draws;              // gpu::DrawCull[]
     vk::Buffer pairs; // uint per (draw, cluster) pair of draws of several clusters: the draw
     // uint per draw: CULL_* bits; with cluster runs then per pair CULL_PAIR_* bits and per
     // object where its history ends (cull.comp)

@@ -222,10 +222,13 @@ void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase) {
         pushPhase(c, cull.lists[which].address(), phase);
         c.device.meshCommands().drawIndirectCount(c.cmd, cull.lists[which].handle(), 0,
                                                   cull.stats.handle(), countOffset, maxDraws,
-                                                  b.commandBytes);
+                                                  cull.listCommandBytes);
     } else {
+        // gl_DrawID indexes the list: the techniques that read gl_PrimitiveID find where
+        // their run starts (RunCommand::runOffset).
+        if (cull.clusterRuns) pushPhase(c, cull.lists[which].address(), phase);
         vkCmdDrawIndexedIndirectCount(c.cmd, cull.lists[which].handle(), 0, cull.stats.handle(),
-                                      countOffset, maxDraws, b.commandBytes);
+                                      countOffset, maxDraws, cull.listCommandBytes);
     }
 }
 

@@ -1,6 +1,8 @@
 // frame_slots.cpp - fences, command buffers and timestamp reads of the frames in flight.
 #include "render/frame_slots.h"
 
+#include <algorithm>
+#include <array>
 #include <cstring>
 #include <string>
 
@@ -106,9 +108,15 @@ void FrameSlots::submit(FrameSlot& slot, const std::vector<VkSemaphore>& wait,
 }
 
 void FrameSlots::finish() {
-    for (FrameSlot& slot : slots_) {
-        waitForFrame(device_, slot.done.get());
-        collect(slot);
+    // Oldest frame first, so the histories stay in frame order.
+    std::array<FrameSlot*, count> order;
+    for (size_t i = 0; i < count; ++i) order[i] = &slots_[i];
+    std::sort(order.begin(), order.end(), [](const FrameSlot* a, const FrameSlot* b) {
+        return a->frameNumber < b->frameNumber;
+    });
+    for (FrameSlot* slot : order) {
+        waitForFrame(device_, slot->done.get());
+        collect(*slot);
     }
 }
 

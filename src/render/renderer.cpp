@@ -77,6 +77,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     PipelineKey wanted = settings.pipeline;
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
     wanted.taskCulling = settings.culling.mode != CullMode::Off;
+    wanted.runOffsets = settings.culling.mode != CullMode::Off;
     const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
     const Technique& technique = *key.technique;
     if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())

@@ -12,6 +12,7 @@ PipelineKey PipelineKey::effective(bool devicePassthrough) const {
         technique->stage == LookupStage::Geometry && gsPassthrough && devicePassthrough;
     if (technique->isFloor()) key.hiding = false; // no part IDs: nothing to hide by
     key.taskCulling = key.taskCulling && technique->usesMeshShader();
+    key.runOffsets = key.runOffsets && technique->readsPrimitiveId() && mode->indirect;
     return key;
 }
 

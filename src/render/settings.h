@@ -41,6 +41,10 @@ struct PipelineKey {
     // Nor this: set from CullSettings for the mesh techniques, whose culling pipeline has a
     // task shader that culls meshlets (shaders/scene.task).
     bool taskCulling = false;
+    // Nor this: set with culling on, for the techniques that read gl_PrimitiveID in the mdi
+    // modes, whose culled lists are cluster runs: the vertex shader hands on each run's
+    // offset in its draw (IDV_RUN_OFFSET), and culling off keeps the technique's own shaders.
+    bool runOffsets = false;
 
     // The same key with what the technique ignores set to defaults, and passthrough only
     // where the technique has a geometry stage and the device offers it.

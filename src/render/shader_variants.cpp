@@ -27,6 +27,7 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     defines.push_back({"IDV_HIDE_IN_FRAGMENT", key.hiding && !dropEarlier ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
     defines.push_back({"IDV_TASK_CULLING", key.taskCulling ? "1" : "0"});
+    defines.push_back({"IDV_RUN_OFFSET", key.runOffsets ? "1" : "0"});
     // An effective key holds defaults where the technique reads nothing, so the source of
     // other techniques never varies with these.
     defines.push_back({"IDV_SEARCH_COUNT",
@@ -84,11 +85,12 @@ std::vector<PipelineKey> allPipelineKeys() {
             hiding.hiding = true;
             hiding = hiding.effective(true);
             if (hiding.hiding) keys.push_back(hiding);
-            // The culling variant adds a task shader to the mesh techniques.
+            // The culling variant, as the renderer asks for it: a task shader for the mesh
+            // techniques, run offsets for those that read gl_PrimitiveID in the mdi modes.
             PipelineKey culling{&technique, &mode};
-            culling.taskCulling = true;
+            culling.taskCulling = culling.runOffsets = true;
             culling = culling.effective(true);
-            if (culling.taskCulling) keys.push_back(culling);
+            if (culling.taskCulling || culling.runOffsets) keys.push_back(culling);
         }
     return keys;
 }

@@ -71,11 +71,14 @@ struct Technique {
     bool readsSearchBatch() const { return ids == IdBuffer::PartTriangleCounts; }
     bool usesMeshShader() const { return primitives == Primitives::Meshlets; }
     bool usesPartVertices() const { return primitives != Primitives::SceneIndices; }
-    // Its part IDs do not depend on where a draw starts (no stage reads gl_PrimitiveID), so
-    // culling may draw any run of a draw's clusters on its own (shared.h, CULL_CLUSTER_RUNS).
-    bool drawsClusterRuns() const {
-        return !usesMeshShader() && (ids == IdBuffer::None || stage == LookupStage::Vertex);
+    // A stage finds the part from gl_PrimitiveID, which counts from the start of a draw
+    // command: drawn by cluster runs, it adds the run's offset (PipelineKey::runOffsets).
+    bool readsPrimitiveId() const {
+        return !usesMeshShader() && ids != IdBuffer::None && stage != LookupStage::Vertex;
     }
+    // Culling draws any run of a draw's clusters on its own (shared.h, CULL_CLUSTER_RUNS);
+    // the mesh techniques cull meshlets instead.
+    bool drawsClusterRuns() const { return !usesMeshShader(); }
 };
 
 // How per-draw parameters reach the shaders.

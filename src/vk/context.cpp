@@ -147,10 +147,10 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
 
-    // gl_DrawID in the mesh shader (the mdi modes of mesh-*) needs shaderDrawParameters.
+    // gl_DrawID: the mdi modes of mesh-*, and culled lists of cluster runs.
     auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-    f11.shaderDrawParameters = info.meshShader ? VK_TRUE : VK_FALSE;
+    f11.shaderDrawParameters = VK_TRUE;
     auto f12 = vk::init<VkPhysicalDeviceVulkan12Features>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
     f12.pNext = &f11;

@@ -48,28 +48,28 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
         info.driverName = driver.driverName;
         info.driverInfo = driver.driverInfo;
 
+        auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
+            VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
         auto f12 = vk::init<VkPhysicalDeviceVulkan12Features>(
             VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
+        f12.pNext = &f11;
         auto f2 = vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
         f2.pNext = &f12;
         vkGetPhysicalDeviceFeatures2(device, &f2);
         info.bufferDeviceAddress = f12.bufferDeviceAddress;
         info.shaderBufferInt64Atomics = f12.shaderBufferInt64Atomics;
         info.drawIndirectCount = f12.drawIndirectCount;
+        info.shaderDrawParameters = f11.shaderDrawParameters;
 
         if (hasDeviceExtension(device, VK_EXT_MESH_SHADER_EXTENSION_NAME)) {
             auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
                 VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);
-            auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
-                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-            f11.pNext = &mesh;
             auto meshFeatures =
                 vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-            meshFeatures.pNext = &f11;
+            meshFeatures.pNext = &mesh;
             vkGetPhysicalDeviceFeatures2(device, &meshFeatures);
-            // The mdi modes read gl_DrawID in the mesh shader: shaderDrawParameters; culling
-            // their meshlets needs task shaders.
-            info.meshShader = mesh.meshShader && mesh.taskShader && f11.shaderDrawParameters;
+            // Culling their meshlets needs task shaders.
+            info.meshShader = mesh.meshShader && mesh.taskShader;
         }
     }
     VkPhysicalDeviceFeatures features;
@@ -108,6 +108,7 @@ std::vector<std::string> missingRequirements(const DeviceInfo& info) {
     if (!info.independentBlend) missing.push_back("independentBlend");
     if (!info.pushDescriptor) missing.push_back("VK_KHR_push_descriptor");
     if (!info.drawIndirectCount) missing.push_back("drawIndirectCount");
+    if (!info.shaderDrawParameters) missing.push_back("shaderDrawParameters");
     if (info.graphicsQueueFamily == UINT32_MAX)
         missing.push_back("a graphics queue with timestamps");
     return missing;

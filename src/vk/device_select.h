@@ -32,14 +32,15 @@ struct DeviceInfo {
     bool independentBlend = false;  // no-id pipelines mask the ID attachment
     bool pushDescriptor = false;    // VK_KHR_push_descriptor: the passes over the ID image
     bool drawIndirectCount = false; // culled draw lists draw by a count the GPU wrote
+    // gl_DrawID: culled lists of cluster runs, and the mesh techniques' mdi modes
+    bool shaderDrawParameters = false;
     // A queue family with graphics and timestamps; UINT32_MAX if there is none.
     uint32_t graphicsQueueFamily = UINT32_MAX;
     float timestampPeriodNs = 0.0f;
 
     // Optional, used when present.
     bool geometryShaderPassthrough = false; // VK_NV_geometry_shader_passthrough
-    // VK_EXT_mesh_shader with its meshShader and taskShader features, and
-    // shaderDrawParameters (mesh-*)
+    // VK_EXT_mesh_shader with its meshShader and taskShader features (mesh-*)
     bool meshShader = false;
     uint32_t maxDrawIndirectCount = 1;
 };
