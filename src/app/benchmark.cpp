@@ -154,7 +154,9 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
                 rig.renderer.configure(scene, list[i]);
             std::vector<double> cpuMs, recordMs;
             const uint32_t total = warmup + options.frames;
+            uint64_t reusedBefore = 0;
             for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
+                if (f == warmup) reusedBefore = rig.renderer.reusedFrames();
                 render::FrameSlot& slot = rig.slots.begin(frameNumber);
                 // --animate: objects move while being timed, the compute pass included.
                 params.explode = explodeAt(options.animation, frameNumber);
@@ -199,6 +201,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             const render::CullMode cull = list[i].culling.mode;
             row.culling = render::cullModeName(cull);
             row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
+            row.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
             row.cullMsMedian = percentile(cullMs, 0.5);
             row.pyramidMsMedian = percentile(pyramidMs, 0.5);
             row.earlyMsMedian = percentile(earlyMs, 0.5);
@@ -274,8 +277,8 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << ",\"pyramid_ms_median\":" << fixed(row.pyramidMsMedian, 4)
             << ",\"early_draw_ms_median\":" << fixed(row.earlyMsMedian, 4)
             << ",\"late_draw_ms_median\":" << fixed(row.lateMsMedian, 4)
-            << ",\"draws\":" << row.draws << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1)
-            << ",\"triangles\":" << row.triangles
+            << ",\"reused_frames\":" << row.reusedFrames << ",\"draws\":" << row.draws
+            << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1) << ",\"triangles\":" << row.triangles
             << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)
             << ",\"meshlets_drawn\":" << fixed(row.meshletsDrawn, 1)
             << ",\"id_bytes\":" << row.idBytes << ",\"geometry_bytes\":" << row.geometryBytes

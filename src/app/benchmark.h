@@ -34,6 +34,8 @@ struct BenchmarkRow {
     // gpuMsMedian / the floor's gpuMsMedian in the same mode and culling mode
     double ratioToFloor = 0;
     uint32_t frames = 0; // timed frames (after warm-up)
+    // Timed frames that drew the last culled frame's lists again, the view standing still.
+    uint64_t reusedFrames = 0;
     // FNV-1a of the last frame's ID and colour images: every part-ID row of one run must
     // show the same ID image, and the colour shows that the shading settings took effect.
     uint64_t idImageHash = 0, colorImageHash = 0;

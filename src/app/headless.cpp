@@ -149,6 +149,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 params.pickPixel = result.picks.back().pixel;
             }
             const uint64_t timedBefore = slots.timedFrames();
+            const uint64_t reusedBefore = renderer.reusedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
                 params.explode = explodeAt(options.animation, frameNumber);
@@ -183,6 +184,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                                      slots.frameTimes().end());
             result.cullStats.assign(slots.cullStats().end() - long(timed), slots.cullStats().end());
             result.cullTotals = renderer.cullTotals();
+            result.reusedFrames = renderer.reusedFrames() - reusedBefore;
             result.color = readback.colorBytes();
             result.ids = readback.idValues();
         }

@@ -39,6 +39,7 @@ struct HeadlessResult {
     std::vector<render::FrameTimes> frameTimes;
     std::vector<gpu::CullStats> cullStats;
     render::CullCounts cullTotals;
+    uint64_t reusedFrames = 0; // timed frames that drew the last culled lists again (still view)
     std::string deviceName;
     render::RenderStats stats;
     uint32_t validationMessages = 0; // counted until the device is destroyed

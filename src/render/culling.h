@@ -103,6 +103,10 @@ struct CullBuffers {
         bool operator==(const View&) const = default;
     };
     std::optional<View> lastView;
+    // Frames culled in a row with FRAME_VIEW_UNCHANGED, and how many frames have drawn the
+    // lists of the last of them again since these buffers were made (Renderer::planFrame).
+    uint32_t stillCulls = 0;
+    uint64_t reusedFrames = 0;
     uint32_t objectCount = 0; // cluster runs: the objects the state buffer has a word for
 };
 

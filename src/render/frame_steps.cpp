@@ -28,15 +28,28 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     c.plan = cullingPlan();
     CullBuffers& cull = *draws_->cull;
     // A frozen frame draws the lists of the last culled one; until there is one, it culls.
-    c.frozen = settings_.culling.freeze && c.plan.on() && cull.culled;
+    const bool freeze = settings_.culling.freeze && c.plan.on() && cull.culled;
     // Whether this frame is placed as the last one culled in two passes was.
     std::optional<CullBuffers::View> view;
-    if (c.plan.gpuLists && c.plan.twoPasses && !c.frozen)
+    if (c.plan.gpuLists && c.plan.twoPasses && !freeze)
         view = CullBuffers::View{params.viewProj,         params.explode,
                                  hiddenVersion_,          targets.extent().width,
                                  targets.extent().height, uint32_t(targets.pass().samples())};
     c.viewUnchanged = view && cull.lastView == view;
-    cull.lastView = view;
+    // A still view, culled still twice in a row: the second time, the first half drew just
+    // what passed a test against the whole depth of the view (the first time, against the
+    // depth of what the frame before had drawn first, nothing at all after a move). Those
+    // lists, drawn again as they are in one pass, draw that frame's image, which is culling
+    // off's, so nothing is culled again while the view stands. Only lists of cluster runs:
+    // the task shader would choose meshlets anew by bits that the frame changed.
+    c.reused = c.viewUnchanged && cull.stillCulls >= 2 && !draws_->meshlets;
+    c.frozen = freeze || c.reused;
+    if (c.reused) {
+        ++cull.reusedFrames;
+    } else {
+        cull.lastView = view;
+        cull.stillCulls = c.viewUnchanged ? cull.stillCulls + 1 : 0;
+    }
     if (!c.plan.cpuFrustum) return c;
     if (c.frozen) {
         c.objectShown = cull.frozenObjects;

@@ -103,12 +103,16 @@ class Renderer {
     CullPlan cullingPlan() const;
     // The totals the culling counters are measured against: draws, meshlets, triangles.
     CullCounts cullTotals() const;
+    // Frames that drew the lists of the last culled frame again, in a still view, since the
+    // draw lists were built (FrameCulling::reused).
+    uint64_t reusedFrames() const { return draws_ ? draws_->cull->reusedFrames : 0; }
 
   private:
     // One frame's culling as recorded (frame.cpp's steps read it).
     struct FrameCulling {
         CullPlan plan;
         bool frozen = false;              // drawing the lists of the last culled frame
+        bool reused = false;              // frozen because the view stands still
         bool viewUnchanged = false;       // FRAME_VIEW_UNCHANGED
         std::vector<uint8_t> objectShown; // push mode: the CPU's frustum test per object
         Issued issued;                    // push mode: the first pass's draws
