@@ -112,8 +112,12 @@ struct FrameData {
     vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
     float time;                // seconds, drives the blink of the hovered part
     // mdi modes, occlusion, mesh techniques: the word of meshletBits where a second bitset
-    // starts, the meshlets cull.comp chose for the late pass (0: the task shader tests them)
+    // starts, the meshlets cull.comp chose for the late pass (0: the task shader tests them),
+    // and where a third starts, the meshlets the early pass drew (a still view draws both
+    // again: CULL_PHASE_REUSED)
     uint lateMeshletWord;
+    uint earlyMeshletWord;
+    uint unused; // the size a multiple of 8 bytes, as both languages pad it
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
@@ -225,6 +229,10 @@ IDV_CONST CULL_PHASE_LATE = 3;
 // bits that frame left.
 IDV_CONST CULL_PHASE_FROZEN = 4;      // the first (or only) list
 IDV_CONST CULL_PHASE_FROZEN_LATE = 5; // the late list: meshlets of draws the first had not
+// A still view (Renderer::planFrame) draws the early list of the last frame culled in two
+// passes with just the meshlets that frame's early pass drew, then its late list with the
+// meshlets cull.comp chose (CULL_PHASE_LATE): the same meshlets in the same order.
+IDV_CONST CULL_PHASE_REUSED = 6;
 
 // cull.comp runs each phase in two steps: decide (a flag per draw, a count per workgroup),
 // then compact (each workgroup adds the counts before it, so draws keep their order).
@@ -457,7 +465,7 @@ static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 4
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 272 && offsetof(FrameData, pickPixel) == 248);
+static_assert(sizeof(FrameData) == 280 && offsetof(FrameData, pickPixel) == 248);
 static_assert(sizeof(DrawCull) == 48 && sizeof(CullBox) == 32);
 static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 32);
 static_assert(sizeof(CullDispatches) == 16 * (CULL_PYRAMID_PASSES + 3));

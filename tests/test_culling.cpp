@@ -122,13 +122,23 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
                 << firstDifference(r.frames[f].color, ref.frames[f].color, 4);
         }
         // A still view draws the lists of its third frame (the second culled as still) again
-        // from the fourth on, where they are runs of clusters drawn in two phases; a moving
-        // one culls every frame.
+        // from the fourth on, where they are GPU-built and drawn in two phases; a moving one
+        // culls every frame. A reused frame draws what that frame drew: the task shader
+        // counts the meshlets again, and finds the same ones.
         const render::CullPlan plan =
             render::cullPlan(*s.pipeline.technique, *s.pipeline.mode, s.culling.mode);
-        const bool reuses =
-            c.still && plan.gpuLists && plan.twoPasses && s.pipeline.technique->drawsClusterRuns();
+        const bool reuses = c.still && plan.gpuLists && plan.twoPasses;
         EXPECT_EQ(r.reusedFrames, reuses ? kFrames - 3 : 0u) << name;
+        if (reuses && r.cullStats.size() == kFrames) {
+            const bool mesh = s.pipeline.technique->usesMeshShader();
+            const render::CullCounts last = render::countsOf(r.cullStats[2], mesh);
+            for (uint32_t f = 3; f < kFrames; ++f) {
+                const render::CullCounts again = render::countsOf(r.cullStats[f], mesh);
+                EXPECT_EQ(again.draws, last.draws) << name << ", frame " << f;
+                EXPECT_EQ(again.meshlets, last.meshlets) << name << ", frame " << f;
+                EXPECT_EQ(again.triangles, last.triangles) << name << ", frame " << f;
+            }
+        }
         // The path goes inside the assembly, so every culling mode leaves something out
         // (where there is more than the one object the CAD file is, or smaller draws, or
         // meshlets), and never more than there is.
@@ -170,6 +180,7 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
                                            PathCase{"cad", 1, Pipelines::All},
                                            PathCase{"cad", 4, Pipelines::All},
                                            PathCase{"default", 4, Pipelines::Vertex, true},
+                                           PathCase{"default", 4, Pipelines::Mesh, true},
                                            PathCase{"cad", 1, Pipelines::All, true}),
                          [](const ::testing::TestParamInfo<PathCase>& info) {
                              return std::string(info.param.scene) + "_msaa" +

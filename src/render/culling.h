@@ -87,7 +87,7 @@ struct CullBuffers {
     vk::Buffer groups;      // uint per cull.comp workgroup
     vk::Buffer lists[2];    // the early (or only) and the late pass's commands
     vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts
-    vk::Buffer meshletBits; // uint words, empty without meshlets; then as many chosen late
+    vk::Buffer meshletBits; // uint words, empty without meshlets; as many chosen late, drawn early
     uint32_t meshletWords = 0;
     vk::Buffer dispatches; // gpu::CullDispatches: the late phase's, which it may skip
     // CPU side, changed while recording: whether the lists were ever written (a frozen list
@@ -103,10 +103,12 @@ struct CullBuffers {
         bool operator==(const View&) const = default;
     };
     std::optional<View> lastView;
-    // Frames culled in a row with FRAME_VIEW_UNCHANGED, and how many frames have drawn the
-    // lists of the last of them again since these buffers were made (Renderer::planFrame).
+    // Frames culled in a row with FRAME_VIEW_UNCHANGED, how many frames have drawn the lists
+    // of the last of them again since these buffers were made, and whether the last frame
+    // did (Renderer::planFrame).
     uint32_t stillCulls = 0;
     uint64_t reusedFrames = 0;
+    bool lastReused = false;
     uint32_t objectCount = 0; // cluster runs: the objects the state buffer has a word for
 };
 

@@ -40,10 +40,13 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     // what passed a test against the whole depth of the view (the first time, against the
     // depth of what the frame before had drawn first, nothing at all after a move). Those
     // lists, drawn again as they are in one pass, draw that frame's image, which is culling
-    // off's, so nothing is culled again while the view stands. Only lists of cluster runs:
-    // the task shader would choose meshlets anew by bits that the frame changed.
-    c.reused = c.viewUnchanged && cull.stillCulls >= 2 && !draws_->meshlets;
+    // off's, so nothing is culled again while the view stands. The task shader draws the
+    // meshlets that frame's passes drew (CULL_PHASE_REUSED), where cull.comp chose the late
+    // ones (FrameData::lateMeshletWord).
+    c.reused =
+        c.viewUnchanged && cull.stillCulls >= 2 && (!draws_->meshlets || cull.pairCount != 0);
     c.frozen = freeze || c.reused;
+    cull.lastReused = c.reused;
     if (c.reused) {
         ++cull.reusedFrames;
     } else {
@@ -103,8 +106,11 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.cullStatsAddress = cull.stats.address();
     if (culling.plan.gpuLists) frame.cullStateAddress = cull.state.address();
     // cull.comp tests the late pass's meshlets where it makes the lists.
-    if (culling.plan.gpuLists && culling.plan.twoPasses && cull.pairCount != 0 && draws_->meshlets)
+    if (culling.plan.gpuLists && culling.plan.twoPasses && cull.pairCount != 0 &&
+        draws_->meshlets) {
         frame.lateMeshletWord = cull.meshletWords;
+        frame.earlyMeshletWord = 2 * cull.meshletWords;
+    }
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.time = params.time;
     return frame;

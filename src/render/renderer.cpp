@@ -267,7 +267,8 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     };
     stamp(StampStart);
     recordCounters(cmd, targets, culling, true);
-    const uint32_t firstPhase = culling.frozen   ? gpu::CULL_PHASE_FROZEN
+    const uint32_t firstPhase = culling.reused   ? gpu::CULL_PHASE_REUSED
+                                : culling.frozen ? gpu::CULL_PHASE_FROZEN
                                 : !plan.on()     ? gpu::CULL_PHASE_NONE
                                 : plan.twoPasses ? gpu::CULL_PHASE_EARLY
                                                  : gpu::CULL_PHASE_FRUSTUM;
@@ -279,7 +280,10 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     stamp(StampEarlyCulled);
     beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame);
     drawPhase(cmd, culling, firstPhase);
-    if (culling.frozen && plan.twoPasses) drawPhase(cmd, culling, gpu::CULL_PHASE_FROZEN_LATE);
+    // A reused late list draws the meshlets cull.comp chose for it, as it did then.
+    if (culling.frozen && plan.twoPasses)
+        drawPhase(cmd, culling,
+                  culling.reused ? gpu::CULL_PHASE_LATE : gpu::CULL_PHASE_FROZEN_LATE);
     vkCmdEndRenderPass(cmd);
     stamp(StampEarlyDrawn);
     if (split) culler_->recordPyramid(cmd, targets, skippable ? &cull.dispatches : nullptr);

@@ -106,6 +106,8 @@ class Renderer {
     // Frames that drew the lists of the last culled frame again, in a still view, since the
     // draw lists were built (FrameCulling::reused).
     uint64_t reusedFrames() const { return draws_ ? draws_->cull->reusedFrames : 0; }
+    // Whether the last frame recorded was one of them.
+    bool lastFrameReused() const { return draws_ && draws_->cull->lastReused; }
 
   private:
     // One frame's culling as recorded (frame.cpp's steps read it).

@@ -202,6 +202,7 @@ PanelInfo Viewer::panelInfo() const {
     const render::PipelineKey& key = renderer.settings().pipeline;
     info.cullingApplied =
         render::describeCulling(*key.technique, *key.mode, renderer.settings().culling.mode);
+    info.listsReused = renderer.lastFrameReused();
     info.totals = renderer.cullTotals();
     if (!slots_.cullStats().empty())
         info.drawn = render::countsOf(slots_.cullStats().back(), key.technique->usesMeshShader());
