@@ -111,13 +111,14 @@ struct FrameData {
     uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
     float time;                // seconds, drives the blink of the hovered part
-    // mdi modes, occlusion, mesh techniques: the word of meshletBits where a second bitset
-    // starts, the meshlets cull.comp chose for the late pass (0: the task shader tests them),
-    // and where a third starts, the meshlets the early pass drew (a still view draws both
-    // again: CULL_PHASE_REUSED)
+    // Occlusion, mesh techniques: the word of meshletBits where a second bitset starts, the
+    // meshlets the late pass draws (mdi modes: lateMeshletWord, chosen by cull.comp; push
+    // mode: lateDrawnWord, written by the task shader, which tests them itself), and where a
+    // third starts, the meshlets the early pass drew (a still view draws both again:
+    // CULL_PHASE_REUSED, CULL_PHASE_REUSED_LATE); 0 where unused
     uint lateMeshletWord;
+    uint lateDrawnWord;
     uint earlyMeshletWord;
-    uint unused; // the size a multiple of 8 bytes, as both languages pad it
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
@@ -230,9 +231,10 @@ IDV_CONST CULL_PHASE_LATE = 3;
 IDV_CONST CULL_PHASE_FROZEN = 4;      // the first (or only) list
 IDV_CONST CULL_PHASE_FROZEN_LATE = 5; // the late list: meshlets of draws the first had not
 // A still view (Renderer::planFrame) draws the early list of the last frame culled in two
-// passes with just the meshlets that frame's early pass drew, then its late list with the
-// meshlets cull.comp chose (CULL_PHASE_LATE): the same meshlets in the same order.
+// passes with just the meshlets that frame's early pass drew, then its late list with just
+// those its late pass drew: the same meshlets in the same order.
 IDV_CONST CULL_PHASE_REUSED = 6;
+IDV_CONST CULL_PHASE_REUSED_LATE = 7;
 
 // cull.comp runs each phase in two steps: decide (a flag per draw, a count per workgroup),
 // then compact (each workgroup adds the counts before it, so draws keep their order).

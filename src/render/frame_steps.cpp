@@ -29,9 +29,10 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     CullBuffers& cull = *draws_->cull;
     // A frozen frame draws the lists of the last culled one; until there is one, it culls.
     const bool freeze = settings_.culling.freeze && c.plan.on() && cull.culled;
-    // Whether this frame is placed as the last one culled in two passes was.
+    // Whether this frame is placed as the last one culled in two passes was (the GPU's lists,
+    // or push mode's task shader).
     std::optional<CullBuffers::View> view;
-    if (c.plan.gpuLists && c.plan.twoPasses && !freeze)
+    if (c.plan.twoPasses && !freeze)
         view = CullBuffers::View{params.viewProj,         params.explode,
                                  hiddenVersion_,          targets.extent().width,
                                  targets.extent().height, uint32_t(targets.pass().samples())};
@@ -41,10 +42,9 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     // depth of what the frame before had drawn first, nothing at all after a move). Those
     // lists, drawn again as they are in one pass, draw that frame's image, which is culling
     // off's, so nothing is culled again while the view stands. The task shader draws the
-    // meshlets that frame's passes drew (CULL_PHASE_REUSED), where cull.comp chose the late
-    // ones (FrameData::lateMeshletWord).
-    c.reused =
-        c.viewUnchanged && cull.stillCulls >= 2 && (!draws_->meshlets || cull.pairCount != 0);
+    // meshlets that frame's passes drew (CULL_PHASE_REUSED*), which it recorded, or in the
+    // mdi modes cull.comp for the late pass (FrameData::lateMeshletWord).
+    c.reused = c.viewUnchanged && cull.stillCulls >= 2 && reusableMeshlets(c.plan);
     c.frozen = freeze || c.reused;
     cull.lastReused = c.reused;
     if (c.reused) {
@@ -67,6 +67,12 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
                             params.eye, draws_->objectBoxes[o]);
     cull.frozenObjects = c.objectShown;
     return c;
+}
+
+bool Renderer::reusableMeshlets(const CullPlan& plan) const {
+    if (!draws_->meshlets) return true;
+    const CullBuffers& cull = *draws_->cull;
+    return plan.twoPasses && cull.meshletWords != 0 && (!plan.gpuLists || cull.pairCount != 0);
 }
 
 gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParams& params,
@@ -105,10 +111,11 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.meshletBitsAddress = cull.meshletBits.address();
     frame.cullStatsAddress = cull.stats.address();
     if (culling.plan.gpuLists) frame.cullStateAddress = cull.state.address();
-    // cull.comp tests the late pass's meshlets where it makes the lists.
-    if (culling.plan.gpuLists && culling.plan.twoPasses && cull.pairCount != 0 &&
-        draws_->meshlets) {
-        frame.lateMeshletWord = cull.meshletWords;
+    // cull.comp tests the late pass's meshlets where it makes the lists; in push mode the
+    // task shader tests them and records what it drew. Either way a still view draws them
+    // again, with those the early pass recorded.
+    if (reusableMeshlets(culling.plan) && draws_->meshlets) {
+        (culling.plan.gpuLists ? frame.lateMeshletWord : frame.lateDrawnWord) = cull.meshletWords;
         frame.earlyMeshletWord = 2 * cull.meshletWords;
     }
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
@@ -145,15 +152,15 @@ void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassP
 // The draws of one phase: the whole list, the GPU's culled list, or push mode's shown objects.
 void Renderer::drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const {
     const DrawContext context{cmd, device_, pipelines_.layout(), pushStages_, *draws_};
+    const bool late = phase == gpu::CULL_PHASE_LATE || phase == gpu::CULL_PHASE_FROZEN_LATE ||
+                      phase == gpu::CULL_PHASE_REUSED_LATE;
     if (!culling.plan.on()) {
         recordAllDraws(context);
     } else if (culling.plan.gpuLists) {
-        const bool late = phase == gpu::CULL_PHASE_LATE || phase == gpu::CULL_PHASE_FROZEN_LATE;
         recordCulledDraws(context, late ? 1 : 0, phase);
     } else {
         const Issued issued = recordPushDraws(context, culling.objectShown, phase);
-        if (phase != gpu::CULL_PHASE_LATE && phase != gpu::CULL_PHASE_FROZEN_LATE)
-            culling.issued = issued;
+        if (!late) culling.issued = issued;
     }
 }
 

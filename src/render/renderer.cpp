@@ -280,10 +280,9 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     stamp(StampEarlyCulled);
     beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame);
     drawPhase(cmd, culling, firstPhase);
-    // A reused late list draws the meshlets cull.comp chose for it, as it did then.
     if (culling.frozen && plan.twoPasses)
         drawPhase(cmd, culling,
-                  culling.reused ? gpu::CULL_PHASE_LATE : gpu::CULL_PHASE_FROZEN_LATE);
+                  culling.reused ? gpu::CULL_PHASE_REUSED_LATE : gpu::CULL_PHASE_FROZEN_LATE);
     vkCmdEndRenderPass(cmd);
     stamp(StampEarlyDrawn);
     if (split) culler_->recordPyramid(cmd, targets, skippable ? &cull.dispatches : nullptr);

@@ -125,6 +125,9 @@ class Renderer {
     gpu::FrameData frameData(const SceneTargets& targets, const FrameParams& params,
                              const FrameCulling& culling) const;
     FrameCulling planFrame(const FrameParams& params, const SceneTargets& targets) const;
+    // Whether a still view can draw the meshlets of its last culled frame again: there are
+    // none, or they are culled in two passes with room for the bits of what each pass drew.
+    bool reusableMeshlets(const CullPlan& plan) const;
     void beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
                    VkDeviceAddress frame) const;
     void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
