@@ -85,4 +85,47 @@ TEST(ShaderReload, EditsTakeEffectAndBrokenShadersKeepTheLastGoodPipeline) {
     fs::remove_all(dir);
 }
 
+// A still view draws the lists of its last culled frame again without culling; a reload
+// must cull again, or an edit of the culling shaders would show only once the camera moves.
+TEST(ShaderReload, CullingEditsTakeEffectInAStillView) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("idview-reload-cull-" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::copy(IDVIEW_SOURCE_SHADER_DIR, dir, fs::copy_options::recursive);
+
+    app::Options o;
+    o.scene.builtin = "tiles";
+    o.width = 64;
+    o.height = 48;
+    o.shaderDir = dir.string();
+    const app::LoadedScene loaded = app::loadScene(o.scene);
+    vk::Instance instance({true, {}});
+    {
+        app::Offscreen rig(instance, o);
+        const render::Technique* vertexFs = render::findTechnique("vertex-fs");
+        ASSERT_NE(vertexFs, nullptr);
+        render::RenderSettings settings =
+            testing_support::settingsFor(*vertexFs, render::drawModes().back());
+        settings.culling.mode = render::CullMode::Occlusion;
+        rig.renderer.setScene(loaded.scene, settings);
+        uint64_t frame = 0;
+        std::vector<uint32_t> ids;
+        for (int i = 0; i < 4; ++i) ids = renderIds(rig, frame);
+        ASSERT_GT(rig.renderer.reusedFrames(), 0u) << "the still view never reused its lists";
+        size_t covered = 0;
+        for (uint32_t id : ids) covered += id != gpu::BACKGROUND_ID;
+        ASSERT_GT(covered, 0u);
+
+        // Every box outside the frustum: once culled again, nothing is drawn.
+        replaceInFile(dir / "cull.glsl", "view.outside = outsideAll != 0u;",
+                      "view.outside = true;");
+        rig.renderer.reloadShaders();
+        const uint64_t reused = rig.renderer.reusedFrames();
+        for (uint32_t id : renderIds(rig, frame)) ASSERT_EQ(id, gpu::BACKGROUND_ID);
+        EXPECT_EQ(rig.renderer.reusedFrames(), reused);
+    }
+    EXPECT_EQ(instance.validationMessages(), 0u);
+    fs::remove_all(dir);
+}
+
 } // namespace

@@ -156,6 +156,11 @@ void Renderer::reloadShaders() {
     animator_ = std::move(animator);
     idPasses_ = std::move(idPasses);
     culler_ = std::move(culler);
+    // A still view would go on drawing what the old shaders culled (planFrame): cull anew.
+    if (draws_) {
+        draws_->cull->lastView.reset();
+        draws_->cull->stillCulls = 0;
+    }
 }
 
 void Renderer::setSelection(const scene::PartSet& selected) {
