@@ -37,8 +37,13 @@ struct PathCase {
     Pipelines pipelines;
     // The camera stands still instead of flying the dolly path: from the second frame on,
     // cluster runs draw first the clusters that passed the last frame's test, each by itself
-    // (FRAME_VIEW_UNCHANGED).
+    // (FRAME_VIEW_UNCHANGED), and from the fourth on every two-pass culling draws its last
+    // lists again. Only occlusion culling does either, so a still case leaves frustum out.
     bool still = false;
+    // Frustum culling decides by boxes against the view, whatever the sample count: over the
+    // default model it is tested at 1x (on the CAD file at both), which keeps the suite's
+    // heaviest rendering to what can differ.
+    bool frustum() const { return !still && (msaa == 1 || std::string(scene) == "cad"); }
 };
 
 const char* pipelinesName(Pipelines p) {
@@ -87,10 +92,12 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
         configs.back().culling.mode = render::CullMode::Off;
         for (const render::DrawMode& m : render::drawModes())
             for (render::CullMode mode : {render::CullMode::Frustum, render::CullMode::Occlusion}) {
+                if (mode == render::CullMode::Frustum && !c.frustum()) continue;
                 // Where occlusion gets nothing more than frustum culling (push mode's vertex
-                // pipelines), it draws the same lists: once is enough.
+                // pipelines), it draws the same lists: once is enough, whichever of the two
+                // the case tests.
                 const render::CullPlan plan = render::cullPlan(t, m, mode);
-                if (mode == render::CullMode::Occlusion && !plan.twoPasses) continue;
+                if (mode == render::CullMode::Occlusion && !plan.twoPasses && c.frustum()) continue;
                 referenceOf[configs.size()] = reference;
                 configs.push_back(testing_support::settingsFor(t, m));
                 configs.back().culling.mode = mode;
@@ -123,8 +130,8 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
         }
         // A still view draws the lists of its third frame (the second culled as still) again
         // from the fourth on, where they are drawn in two phases (GPU-built lists, and push
-        // mode's meshlets); a moving one culls every frame. A reused frame draws what that frame drew: the task shader
-        // counts the meshlets again, and finds the same ones.
+        // mode's meshlets); a moving one culls every frame. A reused frame draws what that frame
+        // drew: the task shader counts the meshlets again, and finds the same ones.
         const render::CullPlan plan =
             render::cullPlan(*s.pipeline.technique, *s.pipeline.mode, s.culling.mode);
         const bool reuses = c.still && plan.twoPasses;
@@ -179,9 +186,9 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
                                            PathCase{"default", 4, Pipelines::Mesh},
                                            PathCase{"cad", 1, Pipelines::All},
                                            PathCase{"cad", 4, Pipelines::All},
-                                           PathCase{"default", 4, Pipelines::Vertex, true},
-                                           PathCase{"default", 4, Pipelines::Mesh, true},
-                                           PathCase{"cad", 1, Pipelines::All, true}),
+                                           PathCase{"default", 1, Pipelines::Vertex, true},
+                                           PathCase{"cad", 1, Pipelines::All, true},
+                                           PathCase{"cad", 4, Pipelines::All, true}),
                          [](const ::testing::TestParamInfo<PathCase>& info) {
                              return std::string(info.param.scene) + "_msaa" +
                                     std::to_string(info.param.msaa) + "_" +

@@ -153,8 +153,9 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                    shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                    0, "late cull dispatches");
     // Zeros: no meshlet passed a test yet, so the first early pass draws none of them and
-    // the late pass tests them all. The second third: what cull.comp chose for the late pass;
-    // the last: what the early pass drew (FrameData::lateMeshletWord, earlyMeshletWord).
+    // the late pass tests them all. The second third: what the late pass draws (chosen by
+    // cull.comp in the mdi modes, recorded by the task shader in push mode); the last: what
+    // the early pass drew (FrameData::lateMeshletWord or lateDrawnWord, earlyMeshletWord).
     meshletWords = (meshletBitCount + 31) / 32;
     if (meshletBitCount)
         meshletBits = upload.add(std::vector<uint32_t>(3 * meshletWords, 0u), shader,

@@ -87,7 +87,7 @@ struct CullBuffers {
     vk::Buffer groups;      // uint per cull.comp workgroup
     vk::Buffer lists[2];    // the early (or only) and the late pass's commands
     vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts
-    vk::Buffer meshletBits; // uint words, empty without meshlets; as many chosen late, drawn early
+    vk::Buffer meshletBits; // uint words, empty without meshlets; as many drawn late, drawn early
     uint32_t meshletWords = 0;
     vk::Buffer dispatches; // gpu::CullDispatches: the late phase's, which it may skip
     // CPU side, changed while recording: whether the lists were ever written (a frozen list
