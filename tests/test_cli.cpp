@@ -109,6 +109,10 @@ TEST(Cli, RefusesBadCommandLines) {
         {"--copies", "0"},
         {"--search-batch", "33"},
         {"--stats=1"},
+        {"--lod-levels", "0"},
+        {"--lod-levels", "5"},
+        {"--lod-level", "1"},
+        {"--lod-levels", "2", "--lod-level", "2"},
     };
     for (const auto& args : bad) {
         std::string joined;
@@ -153,6 +157,15 @@ TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
                  app::UsageError); // lists only with --benchmark
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--renderer", "all"}), app::UsageError);
     EXPECT_THROW(app::techniqueList(std::string(ids[0]->name) + ","), app::UsageError);
+}
+
+TEST(Cli, LevelsOfDetail) {
+    const Options o = parseArgs({"--lod-levels", "4", "--lod-level", "3"});
+    EXPECT_EQ(o.scene.lodLevels, 4u);
+    EXPECT_EQ(o.scene.lodLevel, 3u);
+    const Options none = parseArgs({});
+    EXPECT_EQ(none.scene.lodLevels, 1u);
+    EXPECT_EQ(none.scene.lodLevel, 0u);
 }
 
 TEST(Cli, PickAndMsaaFlags) {

@@ -2,7 +2,8 @@
 // on, an ID image identical pixel for pixel to per-draw + push, with the draw count its
 // formula predicts; on the procedural small preset with 2 copies, on 2CylinderEngine with
 // components as parts, on a glTF whose parts share vertices (tests/shared_vertex_gltf.h), and
-// on an IGES file (one part per B-rep face) where occt-misc is installed.
+// on an IGES file (one part per B-rep face) where occt-misc is installed; and on the engine
+// with every object forced to its second coarser level of detail.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "render/technique.h"
+#include "scene/lod.h"
 #include "shared_vertex_gltf.h"
 #include "test_support.h"
 
@@ -51,6 +53,9 @@ size_t expectedDraws(const render::Technique& t, const scene::Scene& s, uint32_t
     return 0;
 }
 
+const char* const kEngine =
+    "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+
 // An IGES file from Debian's occt-misc: 213 faces, over 100 of them in view.
 const char* const kCadBearing = "/usr/share/opencascade/data/iges/bearing.iges";
 
@@ -62,6 +67,12 @@ Reference& reference(const std::string& name) {
     if (name == "small-x2") {
         source.builtin = "procedural:preset=small,seed=1";
         source.copies = 2;
+    } else if (name == "engine-level-2") {
+        // Every object at its second coarser level of detail (scene/lod.h), or its coarsest.
+        source.model = kEngine;
+        source.parts = scene::PartMode::Components;
+        source.lodLevels = scene::maxLevels;
+        source.lodLevel = 2;
     } else if (name == "cad-bearing") {
         source.model = kCadBearing; // one part per B-rep face
     } else if (name == "shared-vertices") {
@@ -69,8 +80,7 @@ Reference& reference(const std::string& name) {
                            std::filesystem::temp_directory_path() / "idview-techniques")
                            .string();
     } else {
-        source.model =
-            "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+        source.model = kEngine;
         source.parts = scene::PartMode::Components;
     }
     Reference ref;
@@ -121,7 +131,8 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
 
 std::vector<Combination> combinations() {
     std::vector<Combination> all;
-    std::vector<std::string> scenes = {"small-x2", "engine-components", "shared-vertices"};
+    std::vector<std::string> scenes = {"small-x2", "engine-components", "engine-level-2",
+                                       "shared-vertices"};
     if (std::filesystem::exists(kCadBearing)) scenes.push_back("cad-bearing");
     for (const std::string& scene : scenes)
         for (const render::Technique* t : render::partIdTechniques())
@@ -135,6 +146,31 @@ std::string nameOf(const ::testing::TestParamInfo<Combination>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Lavapipe, AllTechniques, ::testing::ValuesIn(combinations()), nameOf);
+
+// The level the technique tests force is what is drawn: its triangles, a different image of
+// the same parts, and no part lost where full detail shows it large.
+TEST(Levels, AForcedLevelIsWhatIsDrawn) {
+    const Reference& full = reference("engine-components");
+    const Reference& coarse = reference("engine-level-2");
+    ASSERT_EQ(coarse.image.validationMessages, 0u);
+    const std::vector<scene::LevelStats> levels = scene::levelStats(coarse.loaded.scene);
+    ASSERT_GE(levels.size(), 3u);
+    EXPECT_EQ(coarse.image.stats.triangles, levels[2].drawnTriangles);
+    EXPECT_LT(coarse.image.stats.triangles, full.image.stats.triangles * 2 / 3);
+    size_t differing = 0;
+    std::map<uint32_t, size_t> fullPixels, coarsePixels;
+    for (size_t i = 0; i < full.image.ids.size(); ++i) {
+        differing += full.image.ids[i] != coarse.image.ids[i];
+        ++fullPixels[full.image.ids[i]];
+        ++coarsePixels[coarse.image.ids[i]];
+    }
+    EXPECT_GT(differing, 0u) << "the coarse level drew full detail's image";
+    EXPECT_LT(differing, full.image.ids.size() / 10);
+    for (const auto& [id, pixels] : fullPixels)
+        if (pixels >= 50) {
+            EXPECT_TRUE(coarsePixels.count(id)) << "part " << id << " vanished";
+        }
+}
 
 // One renderer switched at run time between search batch sizes, techniques and modes
 // rebuilds batches and pipelines and still agrees with the reference; draws follow

@@ -114,6 +114,8 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     report.size = std::to_string(options.width) + "x" + std::to_string(options.height);
     report.scene = loaded.source;
     report.copies = loaded.settings.copies;
+    report.lodLevels = loaded.settings.lodLevels;
+    report.lodLevel = loaded.settings.lodLevel;
     report.frames = options.frames;
     report.settings = options.render;
     report.cameraPath = scene::cameraPathName(options.cameraPath);
@@ -253,6 +255,7 @@ std::string benchmarkJson(const BenchmarkReport& r) {
         << ",\"driver\":" << jsonString(r.driver) << ",\"api\":" << jsonString(r.api) << "},\n"
         << " \"settings\":{\"size\":" << jsonString(r.size) << ",\"msaa\":" << s.pipeline.msaa
         << ",\"scene\":" << jsonString(r.scene) << ",\"copies\":" << r.copies
+        << ",\"lod_levels\":" << r.lodLevels << ",\"lod_level\":" << r.lodLevel
         << ",\"search_batch\":" << s.pipeline.searchBatch << ",\"frames\":" << r.frames
         << ",\"visible\":" << fixed(s.draws.visible, 3)
         << ",\"sort_draws\":" << (s.draws.sortDraws ? "true" : "false")

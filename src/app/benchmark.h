@@ -48,10 +48,11 @@ struct BenchmarkReport {
     std::string deviceName, driver, api;
     std::string size, scene;
     uint32_t copies = 1, frames = 0;
-    render::RenderSettings settings; // every row's, but for technique, mode and culling
-    std::string cameraPath;          // --camera-path, "none" when the camera stands still
-    uint32_t hiddenParts = 0;        // --hide / --isolate
-    std::vector<BenchmarkRow> rows;  // floor rows first, then renderer-major order
+    uint32_t lodLevels = 1, lodLevel = 0; // built at load, and forced for every object
+    render::RenderSettings settings;      // every row's, but for technique, mode and culling
+    std::string cameraPath;               // --camera-path, "none" when the camera stands still
+    uint32_t hiddenParts = 0;             // --hide / --isolate
+    std::vector<BenchmarkRow> rows;       // floor rows first, then renderer-major order
     // Techniques left out because the device cannot run them, each with the reason.
     std::vector<std::pair<std::string, std::string>> skipped;
     uint32_t validationMessages = 0;

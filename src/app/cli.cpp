@@ -102,6 +102,10 @@ Options parseArgs(const std::vector<std::string>& args) {
         options.benchmarkModes.clear();
         options.benchmarkCulling.clear();
     }
+    if (options.scene.lodLevel >= options.scene.lodLevels)
+        throw UsageError("--lod-level " + std::to_string(options.scene.lodLevel) +
+                         " needs --lod-levels " + std::to_string(options.scene.lodLevel + 1) +
+                         " or more");
     if (options.animation.time && !options.animation.animate)
         throw UsageError("--time needs --animate");
     auto outside = [&](const Options::Pixel& p) {

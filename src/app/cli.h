@@ -28,6 +28,10 @@ struct SceneSettings {
     scene::CadOptions cad;                               // STEP, IGES, BREP: the tessellation
     uint32_t copies = 1;
     uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans
+    // Levels of detail built at load, full detail included (scene/lod.h; 1 builds none), and
+    // the level every object is drawn at (0, full detail, unless forced for the whole scene).
+    uint32_t lodLevels = 1;
+    uint32_t lodLevel = 0;
     bool operator==(const SceneSettings&) const = default;
 };
 

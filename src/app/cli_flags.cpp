@@ -12,6 +12,7 @@
 #include "render/technique.h"
 #include "scene/camera_path.h"
 #include "scene/copies.h"
+#include "scene/lod.h"
 
 namespace app {
 
@@ -252,6 +253,20 @@ const std::vector<Flag>& flags() {
                  } catch (const std::invalid_argument& e) {
                      throw UsageError(std::string("--copy-axes: ") + e.what());
                  }
+             }},
+            {"--lod-levels", "N",
+             "levels of detail to build when the scene loads, full detail included, 1 (none) "
+             "to " +
+                 std::to_string(scene::maxLevels) + byDefault(d.scene.lodLevels),
+             [](Options& o, auto& v) {
+                 o.scene.lodLevels = parseCount("--lod-levels", v, 1, scene::maxLevels);
+             }},
+            {"--lod-level", "N",
+             "draw every object at level of detail N (0 is full detail; an object with fewer "
+             "levels takes its coarsest); needs --lod-levels above N" +
+                 byDefault(d.scene.lodLevel),
+             [](Options& o, auto& v) {
+                 o.scene.lodLevel = parseCount("--lod-level", v, 0, scene::maxLevels - 1);
              }},
             rangeFlag("--search-batch", "parts per draw of the search techniques",
                       render::searchBatchRange, key.searchBatch,

@@ -19,6 +19,7 @@
 #include "scene/copies.h"
 #include "scene/generator.h"
 #include "scene/gltf_loader.h"
+#include "scene/lod.h"
 #include "scene/part_data.h"
 #include "scene/procedural.h"
 
@@ -144,10 +145,21 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
             loaded.scene = scene::makeScene(spec.builtin);
         loaded.tilesLayout = spec.builtin == "tiles" && settings.copies == 1;
     }
+    if (settings.lodLevels > 1) {
+        // Before the copies, which share their geometries.
+        const auto lodStart = std::chrono::steady_clock::now();
+        scene::buildLevels(loaded.scene, {.levels = settings.lodLevels}, [&](double fraction) {
+            if (progress) progress->set("levels of detail", fraction);
+        });
+        loaded.lodMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lodStart)
+                .count();
+    }
     if (settings.copies > 1) {
         checkCopiesFit(loaded.scene, settings.copies);
         loaded.scene = scene::replicate(loaded.scene, settings.copies, settings.copyAxes);
     }
+    if (settings.lodLevel > 0) scene::retargetToLevel(loaded.scene, settings.lodLevel);
     loaded.loadMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return loaded;
@@ -182,7 +194,19 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
-         << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets;
+         << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets
+         << ",\"lod_ms\":" << loaded.lodMs << ",\"lod_level\":" << loaded.settings.lodLevel
+         << ",\"lod_levels\":[";
+    const std::vector<scene::LevelStats> levels = scene::levelStats(s);
+    for (size_t l = 0; l < levels.size(); ++l) {
+        const scene::LevelStats& v = levels[l];
+        json << (l ? "," : "") << "{\"level\":" << l << ",\"geometries\":" << v.geometries
+             << ",\"unique_triangles\":" << v.uniqueTriangles << ",\"vertices\":" << v.vertices
+             << ",\"bytes\":" << v.bytes << ",\"triangles\":" << v.drawnTriangles
+             << ",\"max_error\":" << std::defaultfloat << std::setprecision(6) << v.maxError
+             << std::fixed << std::setprecision(3) << "}";
+    }
+    json << "]";
     // What the chosen renderer and mode would draw and upload, derived geometry included.
     const render::DerivedGeometry geometry = render::buildDerivedGeometry(s, *key.technique);
     const render::DerivedPrimitives derived = geometry.view();

@@ -28,7 +28,8 @@ struct LoadedScene {
     scene::Scene scene;
     SceneSettings settings; // what it was loaded as (copies included)
     std::string source;     // file path or scene spec, for messages and stats
-    double loadMs = 0.0;    // loading or generating, copies included
+    double loadMs = 0.0;    // loading or generating, copies and levels of detail included
+    double lodMs = 0.0;     // building the levels of detail
     // CAD files (STEP, IGES, BREP): what the load took and did; zeros for other sources.
     bool cad = false;
     double readMs = 0.0;         // the reader, before tessellation

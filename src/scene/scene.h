@@ -38,6 +38,12 @@ struct Geometry {
     // A material per part, or gpu::OBJECT_MATERIAL where the object's applies (CAD faces
     // with colours of their own); empty when every part takes its object's.
     std::vector<uint32_t> partMaterials;
+    // Levels of detail (scene/lod.h): a full-detail geometry lists its coarser levels, finest
+    // first; a level records which it is and its geometric error in model units (the largest
+    // distance its surface may lie from full detail's, as meshoptimizer measures it).
+    std::vector<uint32_t> levels;
+    uint32_t level = 0;
+    float lodError = 0.0f;
 };
 
 struct Material {

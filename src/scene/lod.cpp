@@ -1,0 +1,244 @@
+// lod.cpp - levels of detail by meshoptimizer's simplifier, part by part with borders locked.
+#include "scene/lod.h"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <unordered_map>
+
+namespace scene {
+namespace {
+
+// One part's triangles at one level, as indices into the full-detail geometry's vertices.
+struct PartLevel {
+    std::vector<uint32_t> indices;
+    float error = 0.0f; // model units
+};
+
+// A full-detail geometry's coarser levels, before they join the scene.
+struct Levels {
+    std::vector<std::vector<PartLevel>> byLevel; // [level - 1][part]
+};
+
+// Simplifies one part on its own vertices, so that the simplifier's work and memory scale
+// with the part, not with its geometry, and its border is the part's own outline.
+PartLevel simplifyPart(const Scene& scene, const Geometry& g, const Part& part,
+                       size_t targetTriangles) {
+    const uint32_t* source = scene.indices.data() + g.firstIndex + 3 * part.firstTriangle;
+    const size_t count = 3 * size_t(part.triangleCount);
+    std::unordered_map<uint32_t, uint32_t> local;
+    std::vector<uint32_t> globalOf, indices(count);
+    std::vector<glm::vec3> positions;
+    for (size_t i = 0; i < count; ++i) {
+        auto [it, added] = local.try_emplace(source[i], uint32_t(globalOf.size()));
+        if (added) {
+            globalOf.push_back(source[i]);
+            positions.push_back(scene.vertices[g.firstVertex + source[i]].position);
+        }
+        indices[i] = it->second;
+    }
+    PartLevel out;
+    std::vector<uint32_t> reduced(count);
+    float relative = 0.0f;
+    // The error bound is left wide open: the level's size sets how far it goes, and the error
+    // it reaches decides where it may be drawn.
+    const size_t kept = meshopt_simplify(
+        reduced.data(), indices.data(), count, &positions[0].x, positions.size(), sizeof(glm::vec3),
+        std::max<size_t>(3, 3 * targetTriangles), 1.0f, meshopt_SimplifyLockBorder, &relative);
+    if (kept == 0 || kept >= count) { // nothing to gain, or the part would vanish
+        out.indices.assign(source, source + count);
+        return out;
+    }
+    out.indices.resize(kept);
+    for (size_t i = 0; i < kept; ++i) out.indices[i] = globalOf[reduced[i]];
+    out.error =
+        relative * meshopt_simplifyScale(&positions[0].x, positions.size(), sizeof(glm::vec3));
+    return out;
+}
+
+// Simplifies the geometry as a whole, every part on vertices of its own: where parts meet,
+// meshoptimizer sees a seam, which it simplifies on both sides alike, so a part's outline may
+// move (within the level's error) but never opens a crack; where three parts meet, the vertex
+// stays. Every triangle keeps the part of its corners. Empty when a part would vanish.
+std::vector<PartLevel> simplifyWhole(const Scene& scene, const Geometry& g, double share) {
+    std::vector<uint32_t> indices, originOf, partOf;
+    std::vector<glm::vec3> positions;
+    indices.reserve(3 * size_t(g.triangleCount));
+    for (uint32_t p = 0; p < g.partCount; ++p) {
+        const Part& part = scene.parts[g.firstPart + p];
+        std::unordered_map<uint32_t, uint32_t> local;
+        for (uint32_t i = 3 * part.firstTriangle; i < 3 * (part.firstTriangle + part.triangleCount);
+             ++i) {
+            const uint32_t v = scene.indices[g.firstIndex + i];
+            auto [it, added] = local.try_emplace(v, uint32_t(originOf.size()));
+            if (added) {
+                originOf.push_back(v);
+                partOf.push_back(p);
+                positions.push_back(scene.vertices[g.firstVertex + v].position);
+            }
+            indices.push_back(it->second);
+        }
+    }
+    std::vector<uint32_t> reduced(indices.size());
+    float relative = 0.0f;
+    const size_t target = std::max<size_t>(3, 3 * size_t(double(g.triangleCount) * share + 0.5));
+    // The error bound is left wide open: the level's size sets how far it goes, and the error
+    // it reaches decides where it may be drawn.
+    const size_t kept = meshopt_simplify(reduced.data(), indices.data(), indices.size(),
+                                         &positions[0].x, positions.size(), sizeof(glm::vec3),
+                                         target, 1.0f, meshopt_SimplifyLockBorder, &relative);
+    const float error =
+        relative * meshopt_simplifyScale(&positions[0].x, positions.size(), sizeof(glm::vec3));
+    std::vector<PartLevel> parts(g.partCount);
+    for (size_t t = 0; t < kept; t += 3) {
+        const uint32_t p = partOf[reduced[t]];
+        if (partOf[reduced[t + 1]] != p || partOf[reduced[t + 2]] != p)
+            throw std::logic_error("levels of detail: a triangle spans two parts");
+        for (int k = 0; k < 3; ++k) parts[p].indices.push_back(originOf[reduced[t + k]]);
+    }
+    for (PartLevel& part : parts) {
+        if (part.indices.empty()) return {};
+        part.error = error;
+    }
+    return parts;
+}
+
+Levels levelsOf(const Scene& scene, const Geometry& g, const LodOptions& options) {
+    Levels levels;
+    size_t previous = g.triangleCount;
+    double share = 1.0;
+    for (uint32_t level = 1; level < options.levels; ++level) {
+        share *= options.reduction;
+        // Where the level's share would make a part vanish, a milder one may not: the first
+        // that keeps every part, up to what the level may keep at most.
+        std::vector<PartLevel> parts;
+        const double most = double(options.keepAtMost) * double(previous) / g.triangleCount;
+        for (double tried = share; parts.empty() && tried <= most; tried *= 1.4)
+            parts = simplifyWhole(scene, g, tried);
+        if (parts.empty())
+            for (uint32_t p = 0; p < g.partCount; ++p) {
+                const Part& part = scene.parts[g.firstPart + p];
+                const size_t target = size_t(double(part.triangleCount) * share + 0.5);
+                parts.push_back(simplifyPart(scene, g, part, target));
+            }
+        size_t triangles = 0;
+        for (const PartLevel& part : parts) triangles += part.indices.size() / 3;
+        if (double(triangles) > double(options.keepAtMost) * double(previous)) break;
+        previous = triangles;
+        levels.byLevel.push_back(std::move(parts));
+    }
+    return levels;
+}
+
+// Appends one level as a geometry of its own, with just the vertices it uses.
+uint32_t addLevel(Scene& scene, uint32_t base, uint32_t level, std::vector<PartLevel>& parts) {
+    const Geometry& g = scene.geometries[base];
+    Geometry out;
+    out.name = g.name + " (level " + std::to_string(level) + ")";
+    out.partFaces = g.partFaces;
+    out.partMaterials = g.partMaterials;
+    out.level = level;
+    out.firstVertex = uint32_t(scene.vertices.size());
+    out.firstIndex = uint32_t(scene.indices.size());
+    out.firstPart = uint32_t(scene.parts.size());
+    out.partCount = g.partCount;
+    std::vector<uint32_t> remap(g.vertexCount, UINT32_MAX);
+    for (PartLevel& part : parts) {
+        out.lodError = std::max(out.lodError, part.error);
+        const uint32_t first = out.triangleCount;
+        for (uint32_t index : part.indices) {
+            if (remap[index] == UINT32_MAX) {
+                remap[index] = out.vertexCount++;
+                const Vertex vertex = scene.vertices[g.firstVertex + index];
+                scene.vertices.push_back(vertex);
+            }
+            scene.indices.push_back(remap[index]);
+        }
+        out.triangleCount += uint32_t(part.indices.size() / 3);
+        scene.parts.push_back({first, out.triangleCount - first});
+        part.indices = {};
+    }
+    // A coarser level is never said to be closer than a finer one.
+    const Geometry& finer = g.levels.empty() ? g : scene.geometries[g.levels.back()];
+    out.lodError = std::max(out.lodError, finer.lodError);
+    scene.geometries.push_back(std::move(out));
+    const uint32_t index = uint32_t(scene.geometries.size() - 1);
+    scene.geometries[base].levels.push_back(index);
+    return index;
+}
+
+} // namespace
+
+void buildLevels(Scene& scene, const LodOptions& options, const LodProgress& progress) {
+    if (options.levels < 1 || options.levels > maxLevels)
+        throw std::invalid_argument("levels of detail: 1 to " + std::to_string(maxLevels));
+    std::vector<uint32_t> todo;
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g)
+        if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty()) todo.push_back(g);
+    std::vector<Levels> results(todo.size());
+    std::atomic<size_t> next{0}, done{0};
+    auto work = [&] {
+        for (size_t i; (i = next.fetch_add(1)) < todo.size(); ++done)
+            results[i] = levelsOf(scene, scene.geometries[todo[i]], options);
+    };
+    const unsigned threads = std::max(
+        1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(todo.size())));
+    std::vector<std::jthread> workers;
+    for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work);
+    if (progress && !workers.empty()) {
+        // The calling thread reports while the others work, then joins in.
+        while (done.load() < todo.size() && next.load() < todo.size()) {
+            progress(double(done.load()) / double(todo.size()));
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    work();
+    workers.clear(); // joins
+    // Appended in geometry order, so the scene does not depend on the threads' timing.
+    for (size_t i = 0; i < todo.size(); ++i)
+        for (size_t l = 0; l < results[i].byLevel.size(); ++l)
+            addLevel(scene, todo[i], uint32_t(l + 1), results[i].byLevel[l]);
+    if (progress) progress(1.0);
+}
+
+uint32_t geometryAtLevel(const Scene& scene, uint32_t geometry, uint32_t level) {
+    const Geometry& g = scene.geometries[geometry];
+    if (level == 0 || g.levels.empty()) return geometry;
+    return g.levels[std::min<size_t>(level, g.levels.size()) - 1];
+}
+
+std::vector<LevelStats> levelStats(const Scene& scene) {
+    std::vector<uint32_t> fullDetail(scene.geometries.size());
+    size_t levels = 1;
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g) {
+        fullDetail[g] = g;
+        levels = std::max(levels, scene.geometries[g].levels.size() + 1);
+    }
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g)
+        for (uint32_t l : scene.geometries[g].levels) fullDetail[l] = g;
+    std::vector<LevelStats> stats(levels);
+    for (const Geometry& g : scene.geometries) {
+        LevelStats& s = stats[g.level];
+        ++s.geometries;
+        s.uniqueTriangles += g.triangleCount;
+        s.vertices += g.vertexCount;
+        s.bytes += uint64_t(g.vertexCount) * sizeof(Vertex) + 12ull * g.triangleCount +
+                   uint64_t(g.partCount) * sizeof(Part);
+        s.maxError = std::max(s.maxError, g.lodError);
+    }
+    for (const Object& o : scene.objects)
+        for (uint32_t l = 0; l < levels; ++l)
+            stats[l].drawnTriangles +=
+                scene.geometries[geometryAtLevel(scene, fullDetail[o.geometry], l)].triangleCount;
+    return stats;
+}
+
+void retargetToLevel(Scene& scene, uint32_t level) {
+    for (Object& o : scene.objects) o.geometry = geometryAtLevel(scene, o.geometry, level);
+}
+
+} // namespace scene

@@ -1,0 +1,62 @@
+// lod.h - coarser levels of detail of a scene's geometries, part by part, so that every
+// triangle of a level belongs to one part of the full-detail geometry and part IDs do not
+// depend on the level. Plain C++, built once per scene.
+//
+// A level is a geometry of its own in Scene::geometries, with the same parts in the same
+// order (the same partFaces and partMaterials), so every technique's ID data is built for it
+// as for any geometry. The full-detail geometry lists its levels (Geometry::levels) and each
+// level its error in model units (Geometry::lodError).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace scene {
+
+// Levels 0 (full detail) to maxLevels - 1.
+constexpr uint32_t maxLevels = 4;
+
+struct LodOptions {
+    uint32_t levels = maxLevels; // including full detail: 1 builds none
+    // Each level aims at this share of the triangles of full detail times the level before.
+    float reduction = 0.25f;
+    // A level that keeps more than this share of the level before's triangles is not worth
+    // its memory: it and every coarser level are left out.
+    float keepAtMost = 0.8f;
+};
+
+// Called with the share of geometries done, 0..1, from the calling thread.
+using LodProgress = std::function<void(double fraction)>;
+
+// Adds the levels of every full-detail geometry that has none yet. meshoptimizer's simplifier
+// reduces each part's triangles on its own with the part's border locked, so the outlines
+// between parts (and open edges) stay exactly where they are and no crack opens between
+// parts; the error recorded is the largest of the parts'. Runs over the geometries on every
+// hardware thread; the result does not depend on their number.
+void buildLevels(Scene& scene, const LodOptions& options = {}, const LodProgress& progress = {});
+
+// The geometry `object` draws at `level`: its own at 0, else its coarsest level up to
+// `level` (geometries with fewer levels stop at their last).
+uint32_t geometryAtLevel(const Scene& scene, uint32_t geometry, uint32_t level);
+
+// What one level holds over the whole scene, for --stats and the benchmark.
+struct LevelStats {
+    uint32_t geometries = 0;      // full-detail geometries that have this level
+    uint64_t uniqueTriangles = 0; // in those geometries
+    uint64_t vertices = 0;
+    uint64_t bytes = 0;          // vertices, indices and part ranges
+    uint64_t drawnTriangles = 0; // every object drawn at this level (geometryAtLevel)
+    float maxError = 0.0f;       // model units
+};
+// Levels 0 to the most any geometry has; objects retargeted by retargetToLevel count from
+// their full-detail geometry.
+std::vector<LevelStats> levelStats(const Scene& scene);
+
+// Every object drawn at `level` (geometryAtLevel): what forcing one level for the whole scene
+// draws. Part IDs, names and placements are those of `scene`.
+void retargetToLevel(Scene& scene, uint32_t level);
+
+} // namespace scene

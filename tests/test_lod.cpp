@@ -1,0 +1,162 @@
+// test_lod.cpp - levels of detail (scene/lod.h) checked against the full-detail geometry they
+// come from: every level triangle lies on full-detail vertices of its own part, no part is
+// lost, no crack opens between parts, levels shrink and their errors grow, and a forced level
+// keeps every part ID.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "scene/lod.h"
+#include "scene/procedural.h"
+
+using namespace scene;
+
+namespace {
+
+using Point = std::tuple<float, float, float>;
+using Edge = std::pair<Point, Point>;
+
+Point pointOf(const Scene& s, const Geometry& g, uint32_t index) {
+    const glm::vec3 p = s.vertices[g.firstVertex + index].position;
+    return {p.x, p.y, p.z};
+}
+
+// The corners of part `p`'s triangles, by position (vertices split for normals count once).
+std::vector<std::array<Point, 3>> trianglesOf(const Scene& s, const Geometry& g, uint32_t p) {
+    const Part& part = s.parts[g.firstPart + p];
+    std::vector<std::array<Point, 3>> out;
+    for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t) {
+        const uint32_t* i = &s.indices[g.firstIndex + 3 * t];
+        out.push_back({pointOf(s, g, i[0]), pointOf(s, g, i[1]), pointOf(s, g, i[2])});
+    }
+    return out;
+}
+
+// The part's outline: the edges only one of its triangles has.
+std::set<Edge> outlineOf(const std::vector<std::array<Point, 3>>& triangles) {
+    std::map<Edge, int> uses;
+    for (const auto& t : triangles)
+        for (int k = 0; k < 3; ++k) {
+            Point a = t[k], b = t[(k + 1) % 3];
+            if (b < a) std::swap(a, b);
+            ++uses[{a, b}];
+        }
+    std::set<Edge> outline;
+    for (const auto& [edge, count] : uses)
+        if (count == 1) outline.insert(edge);
+    return outline;
+}
+
+// The car-like preset: 20 geometries, 131 k distinct triangles, parts of a few dozen each.
+Scene sceneWithLevels() {
+    Scene s = makeProcedural({"car-like", 1});
+    buildLevels(s);
+    validate(s);
+    return s;
+}
+
+} // namespace
+
+TEST(Levels, EveryTriangleKeepsItsPartAndNoCrackOpens) {
+    const Scene s = sceneWithLevels();
+    size_t levels = 0, outlineEdges = 0;
+    for (const Geometry& g : s.geometries) {
+        if (g.level != 0) continue;
+        std::vector<std::array<Point, 3>> whole;
+        for (uint32_t p = 0; p < g.partCount; ++p)
+            for (const auto& t : trianglesOf(s, g, p)) whole.push_back(t);
+        const std::set<Edge> openEdges = outlineOf(whole);
+        for (uint32_t l : g.levels) {
+            const Geometry& coarse = s.geometries[l];
+            ++levels;
+            ASSERT_EQ(coarse.partCount, g.partCount);
+            EXPECT_EQ(coarse.partFaces, g.partFaces);
+            EXPECT_EQ(coarse.partMaterials, g.partMaterials);
+            std::vector<std::array<Point, 3>> coarseWhole;
+            for (uint32_t p = 0; p < g.partCount; ++p) {
+                const auto full = trianglesOf(s, g, p);
+                const auto reduced = trianglesOf(s, coarse, p);
+                ASSERT_FALSE(reduced.empty()) << coarse.name << " lost part " << p;
+                std::set<Point> own, ownOutline;
+                for (const auto& t : full) own.insert(t.begin(), t.end());
+                const std::set<Edge> outline = outlineOf(full);
+                outlineEdges += outline.size();
+                for (const Edge& e : outline) ownOutline.insert({e.first, e.second});
+                for (const auto& t : reduced) {
+                    coarseWhole.push_back(t);
+                    for (const Point& corner : t)
+                        ASSERT_TRUE(own.count(corner))
+                            << coarse.name << " part " << p << " has a corner off its part";
+                }
+                // The outline may lose points, within the level's error, but takes no new one.
+                for (const Edge& e : outlineOf(reduced))
+                    ASSERT_TRUE(ownOutline.count(e.first) && ownOutline.count(e.second))
+                        << coarse.name << " part " << p << " has an outline off its own";
+            }
+            // Where two parts meet, both sides of the outline moved alike: the only edges with
+            // one triangle are the geometry's open edges of full detail, all still there.
+            ASSERT_EQ(outlineOf(coarseWhole), openEdges) << coarse.name << " opened a crack";
+        }
+    }
+    EXPECT_GE(levels, 20u) << "too few levels to say anything";
+    EXPECT_GT(outlineEdges, 1000u);
+}
+
+TEST(Levels, ShrinkAsTheirErrorsGrow) {
+    const Scene s = sceneWithLevels();
+    const LodOptions options;
+    for (uint32_t gi = 0; gi < s.geometries.size(); ++gi) {
+        const Geometry& g = s.geometries[gi];
+        if (g.level != 0) continue;
+        EXPECT_EQ(g.lodError, 0.0f);
+        ASSERT_LT(g.levels.size(), maxLevels);
+        const Geometry* finer = &g;
+        for (size_t k = 0; k < g.levels.size(); ++k) {
+            const Geometry& coarse = s.geometries[g.levels[k]];
+            EXPECT_EQ(coarse.level, k + 1);
+            EXPECT_TRUE(coarse.levels.empty());
+            EXPECT_LE(double(coarse.triangleCount),
+                      double(options.keepAtMost) * double(finer->triangleCount));
+            EXPECT_GE(coarse.lodError, finer->lodError);
+            EXPECT_GT(coarse.lodError, 0.0f);
+            EXPECT_EQ(geometryAtLevel(s, gi, uint32_t(k + 1)), g.levels[k]);
+            finer = &coarse;
+        }
+        // Past its coarsest level a geometry stays there.
+        EXPECT_EQ(geometryAtLevel(s, gi, maxLevels - 1), g.levels.empty() ? gi : g.levels.back());
+        EXPECT_EQ(geometryAtLevel(s, gi, 0), gi);
+    }
+}
+
+TEST(Levels, SameScenesGiveTheSameLevels) {
+    const Scene a = sceneWithLevels(), b = sceneWithLevels();
+    EXPECT_EQ(a.indices, b.indices);
+    ASSERT_EQ(a.geometries.size(), b.geometries.size());
+    for (size_t g = 0; g < a.geometries.size(); ++g)
+        EXPECT_EQ(a.geometries[g].lodError, b.geometries[g].lodError);
+}
+
+TEST(Levels, AForcedLevelKeepsEveryPartId) {
+    const Scene s = sceneWithLevels();
+    const std::vector<LevelStats> stats = levelStats(s);
+    ASSERT_EQ(stats.size(), maxLevels);
+    EXPECT_EQ(stats[0].drawnTriangles, s.drawnTriangleCount());
+    for (uint32_t level = 1; level < maxLevels; ++level) {
+        Scene forced = s;
+        retargetToLevel(forced, level);
+        validate(forced);
+        EXPECT_EQ(forced.uniquePartCount(), s.uniquePartCount());
+        for (size_t o = 0; o < s.objects.size(); ++o) {
+            EXPECT_EQ(forced.objects[o].uniquePartOffset, s.objects[o].uniquePartOffset);
+            EXPECT_EQ(forced.geometries[forced.objects[o].geometry].partCount,
+                      s.geometries[s.objects[o].geometry].partCount);
+        }
+        EXPECT_EQ(forced.drawnTriangleCount(), stats[level].drawnTriangles);
+        EXPECT_LT(stats[level].drawnTriangles, stats[level - 1].drawnTriangles);
+        // The stats of a retargeted scene still count from full detail.
+        EXPECT_EQ(levelStats(forced)[0].drawnTriangles, stats[0].drawnTriangles);
+    }
+}
