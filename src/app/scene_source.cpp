@@ -115,12 +115,13 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
         if (scene::isCadPath(loaded.source)) {
             const scene::CadProgress onStderr = stderrProgress(loaded.source);
-            scene::CadLoadResult result = scene::loadCad(loaded.source, settings.cad,
-                                                         [&](const char* stage, double fraction) {
-                                                             onStderr(stage, fraction);
-                                                             if (progress)
-                                                                 progress->set(stage, fraction);
-                                                         });
+            scene::CadLoadResult result = scene::loadCad(
+                loaded.source, settings.cad,
+                [&](const char* stage, double fraction) {
+                    onStderr(stage, fraction);
+                    if (progress) progress->set(stage, fraction);
+                },
+                settings.lodLevels);
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
             if (settings.parts != scene::PartMode::Primitives)
@@ -131,6 +132,7 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
             loaded.tessellationMs = result.tessellationMs;
             loaded.deflection = result.deflection;
             loaded.facesFailed = result.facesFailed;
+            loaded.lodMs = result.levelsMs;
         } else {
             scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
             loaded.scene = std::move(result.scene);
@@ -145,8 +147,8 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
             loaded.scene = scene::makeScene(spec.builtin);
         loaded.tilesLayout = spec.builtin == "tiles" && settings.copies == 1;
     }
-    if (settings.lodLevels > 1) {
-        // Before the copies, which share their geometries.
+    if (settings.lodLevels > 1 && !loaded.cad) {
+        // Before the copies, which share their geometries. CAD files tessellate theirs.
         const auto lodStart = std::chrono::steady_clock::now();
         scene::buildLevels(loaded.scene, {.levels = settings.lodLevels}, [&](double fraction) {
             if (progress) progress->set("levels of detail", fraction);

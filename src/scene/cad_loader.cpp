@@ -2,6 +2,7 @@
 // assembly tree walked down to its leaf instances; every distinct shape tessellated once (in
 // parallel) and turned into a geometry with one part per triangulated face.
 #include "scene/cad_loader.h"
+#include "scene/cad_mesh.h"
 
 #include <algorithm>
 #include <cctype>
@@ -29,8 +30,6 @@
 #include <Message_PrinterOStream.hxx>
 #include <Message_ProgressIndicator.hxx>
 #include <Message_ProgressScope.hxx>
-#include <Poly.hxx>
-#include <Poly_Triangulation.hxx>
 #include <Quantity_ColorRGBA.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <Standard_Failure.hxx>
@@ -377,52 +376,14 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
     return {std::move(leaf)};
 }
 
-// Appends the triangles of `face` (one part) to the scene; false when it has none.
-bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex) {
-    TopLoc_Location location;
-    const Handle(Poly_Triangulation)& triangulation = BRep_Tool::Triangulation(face, location);
-    if (triangulation.IsNull() || triangulation->NbTriangles() == 0) return false;
-    if (!triangulation->HasNormals()) Poly::ComputeNormals(triangulation);
-    const bool reversed = face.Orientation() == TopAbs_REVERSED;
-    const gp_Trsf& trsf = location.Transformation();
-    const bool moved = !location.IsIdentity();
-    const Standard_Integer nodes = triangulation->NbNodes();
-    const uint32_t base = uint32_t(scene.vertices.size()) - geometryFirstVertex;
-    const size_t firstIndex = scene.indices.size();
-    for (Standard_Integer t = 1; t <= triangulation->NbTriangles(); ++t) {
-        Standard_Integer a = 0, b = 0, c = 0;
-        triangulation->Triangle(t).Get(a, b, c);
-        if (std::min({a, b, c}) < 1 || std::max({a, b, c}) > nodes) continue;
-        if (reversed) std::swap(b, c);
-        for (Standard_Integer n : {a, b, c}) scene.indices.push_back(base + uint32_t(n - 1));
-    }
-    if (scene.indices.size() == firstIndex) return false;
-    for (Standard_Integer n = 1; n <= nodes; ++n) {
-        gp_Pnt p = triangulation->Node(n);
-        gp_Dir d = triangulation->Normal(n);
-        if (moved) {
-            p.Transform(trsf);
-            d.Transform(trsf);
-        }
-        if (reversed) d.Reverse();
-        scene.vertices.push_back({glm::vec3(float(p.X()), float(p.Y()), float(p.Z())),
-                                  glm::vec3(float(d.X()), float(d.Y()), float(d.Z()))});
-    }
-    const uint32_t triangles = uint32_t(scene.indices.size() - firstIndex) / 3;
-    const Geometry& g = scene.geometries.back();
-    scene.parts.push_back({g.triangleCount, triangles});
-    scene.geometries.back().triangleCount += triangles;
-    return true;
-}
-
 std::string hex(const Rgba& color) {
     char text[16];
     std::snprintf(text, sizeof text, "#%08x", packed(color));
     return text;
 }
 
-CadLoadResult load(const std::string& path, const CadOptions& options,
-                   const CadProgress& progress) {
+CadLoadResult load(const std::string& path, const CadOptions& options, const CadProgress& progress,
+                   uint32_t levels) {
     const Format format = formatOf(path);
     if (format == Format::None) throw Bad("not a STEP, IGES or BREP file name");
     if (!(options.deflection >= 0.0) || !std::isfinite(options.deflection))
@@ -576,6 +537,17 @@ CadLoadResult load(const std::string& path, const CadOptions& options,
         }
         d.geometry = int64_t(scene.geometries.size() - 1);
     }
+    if (levels > 1) {
+        start = Clock::now();
+        std::vector<CadShapeFaces> shapes;
+        for (const Distinct& d : distinct)
+            if (d.geometry >= 0) shapes.push_back({&d.faces, uint32_t(d.geometry)});
+        addCadLevels(scene, all, shapes, deflection, options.angularDeflection, levels,
+                     kLevelKeepsAtMost, [&](double fraction) {
+                         if (progress) progress("levels of detail", fraction);
+                     });
+        result.levelsMs = msSince(start);
+    }
     if (result.facesFailed)
         result.warnings.push_back(std::to_string(result.facesFailed) + " of " +
                                   std::to_string(result.faces) +
@@ -612,9 +584,9 @@ bool isCadPath(const std::string& path) {
 }
 
 CadLoadResult loadCad(const std::string& path, const CadOptions& options,
-                      const CadProgress& progress) {
+                      const CadProgress& progress, uint32_t levels) {
     try {
-        return load(path, options, progress);
+        return load(path, options, progress, levels);
     } catch (const Bad& e) {
         throw ModelError(path + ": " + e.what());
     } catch (const Standard_Failure& e) {

@@ -39,14 +39,15 @@ struct CadLoadResult {
     std::vector<std::string> warnings;
     double readMs = 0.0;         // parsing the file and building the shapes
     double tessellationMs = 0.0; // BRepMesh_IncrementalMesh over every distinct shape
+    double levelsMs = 0.0;       // the coarser tessellations of the levels of detail
     double deflection = 0.0;     // the linear deflection used
     uint32_t faces = 0;          // faces over all distinct shapes
     uint32_t facesFailed = 0;    // of those, the ones without triangles (left out)
 };
 
 // How far a load is: `stage` is "reading", "translating" (the file's entities into shapes),
-// "tessellating" or "building" (the scene), `fraction` 0..1 within it. Calls may come from
-// Open CASCADE's worker threads, one at a time.
+// "tessellating", "building" (the scene) or "levels of detail", `fraction` 0..1 within it. Calls
+// may come from Open CASCADE's worker threads, one at a time.
 using CadProgress = std::function<void(const char* stage, double fraction)>;
 
 // While one lives, LeakSanitizer does not track this thread's new allocations (in ASan
@@ -63,9 +64,16 @@ struct OcctLeaksIgnored {
 // True for .step/.stp/.iges/.igs/.brep in any case.
 bool isCadPath(const std::string& path);
 
+// A level of detail that keeps more than this share of the level before's triangles is left
+// out, with the coarser ones.
+constexpr float kLevelKeepsAtMost = 0.8f;
+
 // Loads the whole model. The result passes scene::validate(). Throws ModelError with one
-// line "<path>: <reason>"; never returns a half-built scene.
+// line "<path>: <reason>"; never returns a half-built scene. With `levels` above 1, each shape
+// also gets up to levels - 1 levels of detail (scene/lod.h): its faces tessellated again at 4,
+// 16 and 64 times the deflection, which is each level's error; progress then reports a
+// "levels of detail" stage.
 CadLoadResult loadCad(const std::string& path, const CadOptions& options = {},
-                      const CadProgress& progress = {});
+                      const CadProgress& progress = {}, uint32_t levels = 1);
 
 } // namespace scene

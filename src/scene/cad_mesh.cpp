@@ -1,0 +1,180 @@
+// cad_mesh.cpp - Open CASCADE triangulations into scene geometry, at full detail and coarser.
+#include "scene/cad_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Poly.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TopoDS.hxx>
+
+namespace scene {
+
+bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation)& triangulation = BRep_Tool::Triangulation(face, location);
+    if (triangulation.IsNull() || triangulation->NbTriangles() == 0) return false;
+    if (!triangulation->HasNormals()) Poly::ComputeNormals(triangulation);
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    const gp_Trsf& trsf = location.Transformation();
+    const bool moved = !location.IsIdentity();
+    const Standard_Integer nodes = triangulation->NbNodes();
+    const uint32_t base = uint32_t(scene.vertices.size()) - geometryFirstVertex;
+    const size_t firstIndex = scene.indices.size();
+    for (Standard_Integer t = 1; t <= triangulation->NbTriangles(); ++t) {
+        Standard_Integer a = 0, b = 0, c = 0;
+        triangulation->Triangle(t).Get(a, b, c);
+        if (std::min({a, b, c}) < 1 || std::max({a, b, c}) > nodes) continue;
+        if (reversed) std::swap(b, c);
+        for (Standard_Integer n : {a, b, c}) scene.indices.push_back(base + uint32_t(n - 1));
+    }
+    if (scene.indices.size() == firstIndex) return false;
+    for (Standard_Integer n = 1; n <= nodes; ++n) {
+        gp_Pnt p = triangulation->Node(n);
+        gp_Dir d = triangulation->Normal(n);
+        if (moved) {
+            p.Transform(trsf);
+            d.Transform(trsf);
+        }
+        if (reversed) d.Reverse();
+        scene.vertices.push_back({glm::vec3(float(p.X()), float(p.Y()), float(p.Z())),
+                                  glm::vec3(float(d.X()), float(d.Y()), float(d.Z()))});
+    }
+    const uint32_t triangles = uint32_t(scene.indices.size() - firstIndex) / 3;
+    const Geometry& g = scene.geometries.back();
+    scene.parts.push_back({g.triangleCount, triangles});
+    scene.geometries.back().triangleCount += triangles;
+    return true;
+}
+
+namespace {
+
+// The closest point of triangle a, b, c to p, by the triangle's Voronoi regions.
+glm::vec3 closestOnTriangle(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+    const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
+    const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    const glm::vec3 bp = p - b;
+    const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    const float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+    const glm::vec3 cp = p - c;
+    const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    const float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+    const float va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    const float sum = va + vb + vc;
+    if (!(sum > 0)) return a; // degenerate: its corners are as close as it gets
+    return a + ab * (vb / sum) + ac * (vc / sum);
+}
+
+// How far full detail's vertices (which lie on the surface) are from `level`'s triangles of
+// the same face, the largest over the faces: the mesher bounds its deflection only where it
+// samples, and coarse levels of unsewn faces (IGES) stray further. Faces too large to compare
+// every vertex with every triangle compare every n-th vertex.
+float measuredDistance(const Scene& scene, const Geometry& full, const Geometry& level) {
+    constexpr uint64_t budget = uint64_t(1) << 22; // distance tests per face
+    float worst = 0.0f;
+    for (uint32_t p = 0; p < full.partCount; ++p) {
+        const Part& fp = scene.parts[full.firstPart + p];
+        const Part& lp = scene.parts[level.firstPart + p];
+        const uint64_t tests = 3ull * fp.triangleCount * lp.triangleCount;
+        const uint32_t stride = uint32_t(std::max<uint64_t>(1, tests / budget));
+        for (uint32_t i = 3 * fp.firstTriangle; i < 3 * (fp.firstTriangle + fp.triangleCount);
+             i += stride) {
+            const glm::vec3 v =
+                scene.vertices[full.firstVertex + scene.indices[full.firstIndex + i]].position;
+            float nearest = INFINITY;
+            for (uint32_t t = lp.firstTriangle; t < lp.firstTriangle + lp.triangleCount; ++t) {
+                const uint32_t* c = &scene.indices[level.firstIndex + 3 * t];
+                const glm::vec3 q =
+                    closestOnTriangle(v, scene.vertices[level.firstVertex + c[0]].position,
+                                      scene.vertices[level.firstVertex + c[1]].position,
+                                      scene.vertices[level.firstVertex + c[2]].position);
+                nearest = std::min(nearest, glm::length(v - q));
+            }
+            worst = std::max(worst, nearest);
+        }
+    }
+    return worst;
+}
+
+// Builds `shape`'s faces at the current triangulation as the level after `finer`'s; false
+// (and the scene as it was) when a face has no triangles or the level saves too little.
+bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t level, float error,
+              float fullDeflection, float keepAtMost) {
+    const size_t vertices = scene.vertices.size(), indices = scene.indices.size(),
+                 parts = scene.parts.size();
+    const Geometry& full = scene.geometries[shape.geometry];
+    Geometry next;
+    next.name = full.name + " (level " + std::to_string(level) + ")";
+    next.partFaces = full.partFaces;
+    next.partMaterials = full.partMaterials;
+    next.level = level;
+    next.lodError = error;
+    next.firstVertex = uint32_t(vertices);
+    next.firstIndex = uint32_t(indices);
+    next.firstPart = uint32_t(parts);
+    next.partCount = full.partCount;
+    scene.geometries.push_back(std::move(next));
+    bool whole = true;
+    for (uint32_t face : scene.geometries[shape.geometry].partFaces)
+        if (!(whole = appendFace(scene, TopoDS::Face((*shape.faces)(int(face) + 1)),
+                                 uint32_t(vertices))))
+            break;
+    Geometry& built = scene.geometries.back();
+    built.vertexCount = uint32_t(scene.vertices.size() - vertices);
+    const double before = scene.geometries[finer].triangleCount;
+    if (!whole || double(built.triangleCount) > double(keepAtMost) * before) {
+        scene.geometries.pop_back();
+        scene.vertices.resize(vertices);
+        scene.indices.resize(indices);
+        scene.parts.resize(parts);
+        return false;
+    }
+    // The error: what the mesher was asked for, or what it measurably missed by, with full
+    // detail's own deflection on top (its vertices lie on the surface, its triangles not).
+    const Geometry& fullDetail = scene.geometries[shape.geometry];
+    built.lodError = std::max(error, measuredDistance(scene, fullDetail, built) + fullDeflection);
+    built.lodError = std::max(built.lodError, scene.geometries[finer].lodError);
+    scene.geometries[shape.geometry].levels.push_back(uint32_t(scene.geometries.size() - 1));
+    return true;
+}
+
+} // namespace
+
+void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
+                  double deflection, double angularDeflection, uint32_t levels, float keepAtMost,
+                  const std::function<void(double)>& progress) {
+    for (uint32_t level = 1; level < levels; ++level) {
+        if (progress) progress(double(level - 1) / double(levels - 1));
+        const double scale = std::pow(4.0, double(level));
+        IMeshTools_Parameters parameters;
+        parameters.Deflection = deflection * scale;
+        parameters.Angle =
+            std::min(angularDeflection * std::pow(2.0, double(level)), std::numbers::pi / 2);
+        parameters.Relative = false;
+        parameters.InParallel = true;
+        BRepTools::Clean(all); // so that the mesher starts over instead of keeping finer ones
+        BRepMesh_IncrementalMesh mesher(all, parameters);
+        for (const CadShapeFaces& shape : shapes) {
+            const Geometry& full = scene.geometries[shape.geometry];
+            // Only shapes that have every level so far go on.
+            if (full.levels.size() != level - 1) continue;
+            const uint32_t finer = level == 1 ? shape.geometry : full.levels.back();
+            addLevel(scene, shape, finer, level, float(parameters.Deflection), float(deflection),
+                     keepAtMost);
+        }
+    }
+    if (progress) progress(1.0);
+}
+
+} // namespace scene
