@@ -43,6 +43,17 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Cl
 };
 
 shared uint counts[CULL_GROUP_SIZE];
+shared uint levelCounts[LOD_MAX_LEVELS];
+
+// Adds each lane's `triangles`, of a draw at `level`, to the frame's count of that level.
+void countLevels(uint lane, uint level, uint triangles) {
+    if (lane < LOD_MAX_LEVELS) levelCounts[lane] = 0u;
+    barrier();
+    if (triangles != 0u) atomicAdd(levelCounts[min(level, LOD_MAX_LEVELS - 1u)], triangles);
+    barrier();
+    if (lane < LOD_MAX_LEVELS && levelCounts[lane] != 0u)
+        atomicAdd(StatsRef(cull.statsAddress).stats.levelTriangles[lane], levelCounts[lane]);
+}
 
 // Cluster runs: where in the state buffer an object's end of history lies: one more than its
 // last pair that passed the last late test (its pairs are consecutive, its draws being so).
@@ -77,6 +88,9 @@ uint decide(FrameData frame, uint i) {
         bool hidden = (frame.flags & FRAME_HIDING) != 0u &&
                       allBitsInRange(frame.hiddenAddress, firstId, draw.partCount);
         DrawCull box = DrawCullRef(cull.cullAddress).draws[i];
+        // Another level of the object's is drawn: this draw is as good as hidden, and leaves
+        // no history of its own.
+        if (!lodChosen(frame, object.world, box)) return 0u;
         if (!hidden) {
             BoxView view = viewBox(frame, object.world, box.boxMin, box.boxMax);
             if (!view.outside) bits |= CULL_IN_FRUSTUM;
@@ -303,11 +317,12 @@ void compactStep(uint lane, uint i) {
     }
     // Triangles (indexed draws: indexCount / 3) and late draws the early pass did not list.
     barrier();
-    counts[lane] = drawn && cull.commandWords == 5u
-                       ? CullWordsRef(cull.sourceAddress).words[i * 5u] / 3u
-                       : 0u;
+    uint drawTriangles =
+        drawn && cull.commandWords == 5u ? CullWordsRef(cull.sourceAddress).words[i * 5u] / 3u : 0u;
+    counts[lane] = drawTriangles;
     reduce(lane, CULL_GROUP_SIZE);
     uint triangles = counts[0];
+    countLevels(lane, drawn ? DrawsRef(cull.drawsAddress).draws[i].lodLevel : 0u, drawTriangles);
     barrier();
     counts[lane] = drawn && (bits & CULL_WAS_VISIBLE) == 0u ? 1u : 0u;
     reduce(lane, CULL_GROUP_SIZE);

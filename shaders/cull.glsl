@@ -138,3 +138,28 @@ bool occluded(FrameData frame, BoxView view, int span) {
                 return false;
     return true;
 }
+
+// Levels of detail: whether the draw `c` culls is of the level its object draws this frame.
+// Where the list holds levels (frame.lodErrorPixels above 0), an object draws its coarsest
+// level whose error, seen at the nearest depth of the sphere around it, spans under that many
+// pixels: its finest where none does, or where the sphere reaches the camera's plane. All of
+// an object's draws hold the same sphere and the errors grow level by level, so exactly one
+// level is chosen, by the same arithmetic in every draw. Elsewhere the list holds one level
+// of each object, which is drawn.
+bool lodChosen(FrameData frame, mat4 world, DrawCull c) {
+    if (frame.lodErrorPixels <= 0.0) return true;
+    // Pixels per model unit at depth 1: the projection's vertical scale (the length of the
+    // view-projection's y row, over a rigid view) times half the viewport's height.
+    vec3 yRow = vec3(frame.viewProj[0][1], frame.viewProj[1][1], frame.viewProj[2][1]);
+    float wScale = length(vec3(frame.viewProj[0][3], frame.viewProj[1][3], frame.viewProj[2][3]));
+    float pixelsAtUnitDepth = length(yRow) / max(wScale, 1e-30) * 0.5 * float(frame.viewport.y);
+    float scale = max(length(world[0].xyz), max(length(world[1].xyz), length(world[2].xyz)));
+    vec4 center = frame.viewProj * (world * vec4(c.lodCenter, 1.0));
+    float depth = center.w / max(wScale, 1e-30) - c.lodRadius * scale;
+    if (!(depth > 0.0)) return c.lodFinest != 0u;
+    // The largest error in model units that stays under the pixels asked at that depth.
+    float budget = frame.lodErrorPixels * depth / (pixelsAtUnitDepth * scale);
+    bool fits = c.lodFinest != 0u || c.lodError < budget;
+    bool nextFits = c.lodNextError < budget;
+    return fits && !nextFits;
+}

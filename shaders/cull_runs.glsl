@@ -162,7 +162,9 @@ void runsCompactStep(uint lane, uint pair) {
     inclusivePrefix(lane, start);
     uint groupTotal = counts[CULL_GROUP_SIZE - 1u];
     uint triangles = 0u;
+    uint level = 0u;
     if (start) {
+        level = DrawsRef(cull.drawsAddress).draws[d].lodLevel;
         DrawCull drawCull = DrawCullRef(cull.cullAddress).draws[d];
         ClusterBoxesRef boxes = ClusterBoxesRef(cull.clusterBoxesAddress);
         uint cluster = drawCull.firstCluster + pair - drawCull.firstPair;
@@ -189,6 +191,7 @@ void runsCompactStep(uint lane, uint pair) {
     barrier();
     counts[lane] = triangles;
     reduce(lane, CULL_GROUP_SIZE);
+    countLevels(lane, level, triangles);
     if (lane == 0u) {
         StatsRef stats = StatsRef(cull.statsAddress);
         if (counts[0] != 0u) atomicAdd(stats.stats.triangles, counts[0]);

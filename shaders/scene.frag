@@ -61,6 +61,7 @@ void main() {
     vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
     if ((frame.flags & FRAME_IGNORE_MATERIALS) != 0u) base = vec3(NEUTRAL_MATERIAL);
     if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(draw.drawIndex ^ 0x9e3779b9u);
+    if ((frame.flags & FRAME_TINT_LEVELS) != 0u) base = levelTint(draw.lodLevel);
 #if IDV_NO_ID
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.
     outColor = vec4(headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz), 1.0);
@@ -76,7 +77,7 @@ void main() {
 #endif
     uint uniquePartId = object.uniquePartOffset + localPart;
     if (frame.partMaterialsAddress != 0ul && (frame.flags & FRAME_IGNORE_MATERIALS) == 0u &&
-        (frame.flags & FRAME_COLORIZE_DRAWS) == 0u) {
+        (frame.flags & (FRAME_COLORIZE_DRAWS | FRAME_TINT_LEVELS)) == 0u) {
         // A face with a colour of its own (CAD files) shows it instead of its object's.
         uint own = UintsRef(frame.partMaterialsAddress).values[object.firstPart + localPart];
         if (own != OBJECT_MATERIAL) base = MaterialsRef(frame.materialsAddress).materials[own].color.rgb;

@@ -58,6 +58,8 @@ IDV_CONST FRAME_BOUNDS_HISTORY = 8u;
 // cluster runs then draw early just the clusters that passed its late test where that test
 // ran (cull_runs.glsl says why the images stay those of culling off).
 IDV_CONST FRAME_VIEW_UNCHANGED = 16u;
+// Shade each object in the colour of the level of detail it is drawn at (shading.glsl).
+IDV_CONST FRAME_TINT_LEVELS = 32u;
 // The one material of FRAME_IGNORE_MATERIALS (linear RGB): a mid grey, so that only part
 // colours (--part-weight) tint the image.
 #ifdef __cplusplus
@@ -72,8 +74,7 @@ IDV_CONST NO_PICK = 0xFFFFFFFFu;
 // One vertex of the shared vertex buffer. Procedural CAD faces have vertices of their own, so
 // normals are per face and edges stay hard; glTF parts share vertices where the file does.
 struct Vertex {
-    vec3 position;
-    vec3 normal;
+    vec3 position, normal;
 };
 
 // Per-frame constants, in a device-local buffer per frame slot.
@@ -116,9 +117,11 @@ struct FrameData {
     // mode: lateDrawnWord, written by the task shader, which tests them itself), and where a
     // third starts, the meshlets the early pass drew (a still view draws both again:
     // CULL_PHASE_REUSED, CULL_PHASE_REUSED_LATE); 0 where unused
-    uint lateMeshletWord;
-    uint lateDrawnWord;
-    uint earlyMeshletWord;
+    uint lateMeshletWord, lateDrawnWord, earlyMeshletWord;
+    // Where the lists hold levels of detail (cull.glsl's lodChosen), the pixels an object's
+    // level may be off by; 0 elsewhere.
+    float lodErrorPixels;
+    uint lodUnused;
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
@@ -162,7 +165,7 @@ struct DrawData {
     uint firstPart; // local index of the draw's first part in the object's geometry
     uint partCount; // parts the draw covers
     uint drawIndex; // position in the draw list, for colorize drawcalls
-    uint unused;    // keeps the size a multiple of 8 for the push block
+    uint lodLevel;  // the level of detail the draw's geometry is (0: full detail)
 };
 
 // One meshlet of a geometry (scene/meshlets.h): up to MESHLET_MAX_VERTICES vertices and
@@ -300,6 +303,13 @@ struct DrawCull {
     // shows one of them, so that an object's draws are never drawn out of their order (a
     // later part drawn first would win where two of its parts tie in depth).
     uint partsToEnd;
+    // Levels of detail (cull.glsl's lodChosen): the sphere around the object's own geometry,
+    // the same in all its draws; the errors of the draw's level and of the next coarser one
+    // (FLT_MAX: none), in model units; and whether it is the object's own geometry.
+    vec3 lodCenter;
+    float lodRadius;
+    float lodError, lodNextError;
+    uint lodFinest, lodUnused;
 };
 // A meshlet's or a part's box, in its geometry's coordinates (min above max: no triangles).
 struct CullBox {
@@ -350,16 +360,20 @@ struct MeshTaskCommand {
     uint drawIndex;
 };
 
+IDV_CONST LOD_MAX_LEVELS = 4; // levels of detail, full detail included (scene::maxLevels)
+
 // Counters of one frame: the indirect draw counts of the two passes (the vertex draws' count
 // buffer), draws of the late list that the early list did not have, triangles of the listed
-// draws (vertex pipelines), and meshlets and their triangles the task shader let through.
+// draws (vertex pipelines), and meshlets and their triangles the task shader let through;
+// the triangles per level of detail too. cull.comp's counts come first: they stay with its
+// lists while a frame draws them again, and the task shader counts every frame.
 struct CullStats {
     uint draws[2];
-    uint lateNew;
-    uint triangles;
+    uint lateNew, triangles;
     uint listed; // draws of the early (or only) list; with cluster runs, draws with a run in it
-    uint meshlets;
-    uint meshletTriangles;
+    uint levelTriangles[LOD_MAX_LEVELS];
+    uint meshlets, meshletTriangles;
+    uint levelMeshletTriangles[LOD_MAX_LEVELS];
     uint unused;
 };
 
@@ -368,8 +382,7 @@ struct CullStats {
 // covers pixels [x, x + 1) * 2^(k + 1) exactly, edges clipped to the image.
 struct PyramidLevel {
     uint offset; // first float of the level, after the header
-    uint width;
-    uint height;
+    uint width, height;
     uint unused;
 };
 struct PyramidHeader {
@@ -467,20 +480,17 @@ static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 4
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 280 && offsetof(FrameData, pickPixel) == 248);
-static_assert(sizeof(DrawCull) == 48 && sizeof(CullBox) == 32);
-static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 32);
+static_assert(sizeof(FrameData) == 288 && offsetof(FrameData, pickPixel) == 248);
+static_assert(sizeof(DrawCull) == 80 && sizeof(CullBox) == 32);
+static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 64);
 static_assert(sizeof(CullDispatches) == 16 * (CULL_PYRAMID_PASSES + 3));
 static_assert(CULL_PYRAMID_PASSES * PYRAMID_LEVELS_PER_PASS >= PYRAMID_MAX_LEVELS);
 static_assert(sizeof(PyramidHeader) == 16 + 16 * PYRAMID_MAX_LEVELS);
 static_assert(sizeof(CullPush) == 120 && offsetof(CullPush, dispatchesAddress) == 88);
 static_assert(sizeof(PyramidPush) == 24);
 static_assert(offsetof(DrawPush, commandsAddress) == DRAW_PUSH_CULL_OFFSET);
-static_assert(sizeof(PickData) == 16);
-static_assert(sizeof(DrawData) == 32);
-static_assert(sizeof(Meshlet) == 16);
-static_assert(sizeof(ObjectData) == 144);
-static_assert(sizeof(Material) == 16);
+static_assert(sizeof(PickData) == 16 && sizeof(DrawData) == 32 && sizeof(Meshlet) == 16);
+static_assert(sizeof(ObjectData) == 144 && sizeof(Material) == 16);
 static_assert(sizeof(DrawPush) == 56 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
 static_assert(sizeof(AnimationPush) == 32 && offsetof(AnimationPush, explode) == 28);
 } // namespace gpu

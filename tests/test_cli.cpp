@@ -6,6 +6,7 @@
 #include "app/headless.h"
 #include "app/json.h"
 #include "render/technique.h"
+#include "scene/lod.h"
 #include "scene/mesh_builder.h"
 
 using app::Options;
@@ -113,6 +114,12 @@ TEST(Cli, RefusesBadCommandLines) {
         {"--lod-levels", "5"},
         {"--lod-level", "1"},
         {"--lod-levels", "2", "--lod-level", "2"},
+        {"--lod-error", "-1"},
+        {"--lod-error", "x"},
+        {"--lod-error", "1,"},
+        {"--lod-error", "0,1"}, // a list only with --benchmark
+        {"--lod-levels", "1", "--lod-error", "1"},
+        {"--lod-levels", "4", "--lod-level", "1", "--lod-error", "1"},
     };
     for (const auto& args : bad) {
         std::string joined;
@@ -166,6 +173,17 @@ TEST(Cli, LevelsOfDetail) {
     const Options none = parseArgs({});
     EXPECT_EQ(none.scene.lodLevels, 1u);
     EXPECT_EQ(none.scene.lodLevel, 0u);
+    EXPECT_EQ(none.render.lod.errorPixels, 0.0f);
+    // An error builds every level unless told how many.
+    const Options chosen = parseArgs({"--lod-error", "1.5"});
+    EXPECT_EQ(chosen.render.lod.errorPixels, 1.5f);
+    EXPECT_EQ(chosen.scene.lodLevels, scene::maxLevels);
+    EXPECT_EQ(parseArgs({"--lod-error", "2", "--lod-levels", "2"}).scene.lodLevels, 2u);
+    // The benchmark takes a list: its rows, and the largest for the levels built.
+    const Options bench = parseArgs({"--benchmark", "--lod-error", "0,1,0.5"});
+    EXPECT_EQ(bench.benchmarkLodErrors, (std::vector<float>{0.0f, 1.0f, 0.5f}));
+    EXPECT_EQ(bench.render.lod.errorPixels, 1.0f);
+    EXPECT_EQ(parseArgs({"--benchmark"}).benchmarkLodErrors, std::vector<float>{0.0f});
 }
 
 TEST(Cli, PickAndMsaaFlags) {

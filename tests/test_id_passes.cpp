@@ -2,15 +2,18 @@
 // lists, on lavapipe with validation on: part edges and outlines against the same rule
 // applied on the CPU to the ID image; box selection and the visible parts against the IDs
 // in the ID image; hidden and isolated parts against the unhidden image and a CPU ray cast
-// (hidden parts never reach the ID image, picks go through them).
+// (hidden parts never reach the ID image, picks go through them); at full detail and with
+// every object at its coarsest level of detail.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "render/technique.h"
+#include "scene/lod.h"
 #include "scene/raycast.h"
 #include "test_support.h"
 
@@ -25,20 +28,33 @@ struct Fixture {
     std::vector<uint32_t> ids; // per-draw + push, nothing hidden
 };
 
-Fixture& fixture() {
-    static Fixture f = [] {
-        Fixture fx;
-        app::SceneSettings source;
-        source.builtin = "procedural:preset=small,seed=1";
-        source.copies = 2;
-        fx.loaded = app::loadScene(source);
-        fx.camera = app::initialCamera(fx.loaded, float(W) / float(H));
-        fx.ids =
-            app::renderHeadless(testing_support::headlessOptions(W, H), fx.loaded.scene, fx.camera)
-                .ids;
-        return fx;
-    }();
-    return f;
+// The scene at full detail, or with every object at its coarsest level of detail
+// (scene/lod.h), whose geometry the ray cast then follows too.
+enum class Detail { Full, Coarsest };
+
+Fixture& fixture(Detail detail) {
+    static std::map<Detail, Fixture> fixtures;
+    auto [it, added] = fixtures.try_emplace(detail);
+    Fixture& fx = it->second;
+    if (!added) return fx;
+    app::SceneSettings source;
+    source.builtin = "procedural:preset=small,seed=1";
+    source.copies = 2;
+    if (detail == Detail::Coarsest) {
+        source.lodLevels = scene::maxLevels;
+        source.lodLevel = scene::maxLevels - 1;
+    }
+    fx.loaded = app::loadScene(source);
+    fx.camera = app::initialCamera(fx.loaded, float(W) / float(H));
+    fx.ids =
+        app::renderHeadless(testing_support::headlessOptions(W, H), fx.loaded.scene, fx.camera).ids;
+    return fx;
+}
+
+class IdPasses : public ::testing::TestWithParam<Detail> {};
+
+std::string detailName(const ::testing::TestParamInfo<Detail>& info) {
+    return info.param == Detail::Full ? "FullDetail" : "CoarsestLevel";
 }
 
 // Every part-ID technique in push mode, then every mode of the default technique and two
@@ -136,8 +152,8 @@ glm::u8vec3 bytes(glm::vec3 color) {
 // With edges on, exactly the pixels the CPU rule marks change, each to its line's colour;
 // everything else is the image without edges, byte for byte. A box selection makes the
 // selected outline and the last pick the hovered one; the widths take turns.
-TEST(Edges, FollowTheRuleOnTheIdImageForEveryTechnique) {
-    Fixture& f = fixture();
+TEST_P(IdPasses, EdgesFollowTheRuleOnTheIdImageForEveryTechnique) {
+    Fixture& f = fixture(GetParam());
     const auto plainConfigs = configurations();
     std::vector<render::RenderSettings> edgeConfigs = plainConfigs;
     for (size_t i = 0; i < edgeConfigs.size(); ++i) {
@@ -186,8 +202,8 @@ TEST(Edges, FollowTheRuleOnTheIdImageForEveryTechnique) {
 
 // --select-rect and --visible-parts: the parts are exactly the IDs in that rectangle, or
 // the whole image, of the ID image; the GPU's count agrees with its bitset.
-TEST(PartSets, EqualTheIdsInTheRectangleForEveryTechnique) {
-    Fixture& f = fixture();
+TEST_P(IdPasses, PartSetsEqualTheIdsInTheRectangleForEveryTechnique) {
+    Fixture& f = fixture(GetParam());
     const uint32_t partCount = f.loaded.scene.uniquePartCount();
     const auto configs = configurations();
     for (const render::PartSetQuery& rect :
@@ -218,8 +234,8 @@ TEST(PartSets, EqualTheIdsInTheRectangleForEveryTechnique) {
 // other pixel keeps its part, the hidden pixels show what a CPU ray cast that skips them
 // hits, and picks there find it. Isolating keeps only the isolated parts. Every technique
 // draws the same images.
-TEST(Hide, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
-    Fixture& f = fixture();
+TEST_P(IdPasses, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
+    Fixture& f = fixture(GetParam());
     const scene::Scene& scene = f.loaded.scene;
     const uint32_t partCount = scene.uniquePartCount();
     const scene::PartSet middle = idsIn(f.ids, partCount, 90, 50, 150, 100);
@@ -311,8 +327,20 @@ TEST(Hide, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
 
 // Showing everything again (an empty hidden set) goes back to the pipeline without the
 // hiding variant and to the unhidden image.
+// Picks, box selection, edges and hiding, at full detail and at the coarsest level of detail.
+INSTANTIATE_TEST_SUITE_P(Lavapipe, IdPasses, ::testing::Values(Detail::Full, Detail::Coarsest),
+                         detailName);
+
+// The coarsest level draws another image than full detail: the cases above test another
+// geometry, not the same one twice.
+TEST(IdPassesLevels, TheCoarsestLevelIsAnotherImage) {
+    EXPECT_NE(fixture(Detail::Full).ids, fixture(Detail::Coarsest).ids);
+    EXPECT_LT(fixture(Detail::Coarsest).loaded.scene.drawnTriangleCount(),
+              fixture(Detail::Full).loaded.scene.drawnTriangleCount());
+}
+
 TEST(Hide, ShowingAllRestoresTheImage) {
-    Fixture& f = fixture();
+    Fixture& f = fixture(Detail::Full);
     app::Options o = testing_support::headlessOptions(W, H);
     app::Offscreen rig(*new vk::Instance({true, {}, false}), o); // the instance lives on
     rig.renderer.setScene(f.loaded.scene, o.render);

@@ -47,37 +47,56 @@ rows(const Options& options, const vk::DeviceInfo& device,
     if (culling.empty()) culling.push_back(options.render.culling.mode);
     std::vector<render::RenderSettings> list;
     auto add = [&](const render::Technique& technique, const render::DrawMode& mode,
-                   render::CullMode cull) {
+                   render::CullMode cull, float lodError) {
         render::RenderSettings settings = options.render;
         settings.pipeline.technique = &technique;
         settings.pipeline.mode = &mode;
         settings.culling.mode = cull;
+        settings.lod.errorPixels = lodError;
+        // Levels of detail are chosen by the cull pass alone: where there is none, a row
+        // with an error would time full detail again.
+        if (lodError > 0.0f && !render::cullPlan(technique, mode, cull).gpuLists) return;
         list.push_back(settings);
     };
-    for (render::CullMode cull : culling)
-        for (const render::DrawMode* mode : options.benchmarkModes)
-            for (const render::Technique* floor : floors) add(*floor, *mode, cull);
-    // Each technique's culling modes side by side.
+    for (float lodError : options.benchmarkLodErrors)
+        for (render::CullMode cull : culling)
+            for (const render::DrawMode* mode : options.benchmarkModes)
+                for (const render::Technique* floor : floors) add(*floor, *mode, cull, lodError);
+    // Each technique's culling modes and levels of detail side by side.
     for (const render::Technique* technique : techniques) {
         if (technique->isFloor()) continue;
         for (const render::DrawMode* mode : options.benchmarkModes)
-            for (render::CullMode cull : culling) add(*technique, *mode, cull);
+            for (render::CullMode cull : culling)
+                for (float lodError : options.benchmarkLodErrors)
+                    add(*technique, *mode, cull, lodError);
     }
     return list;
+}
+
+// Whether the row's levels of detail were chosen (else it drew full detail).
+bool lodApplied(const render::RenderSettings& settings) {
+    return settings.lod.errorPixels > 0.0f &&
+           render::cullPlan(*settings.pipeline.technique, *settings.pipeline.mode,
+                            settings.culling.mode)
+               .gpuLists;
 }
 
 // Median over the frames of what the culling let through.
 void countDrawn(BenchmarkRow& row, const std::vector<gpu::CullStats>& stats, bool mesh) {
     std::vector<double> draws, meshlets, triangles;
+    std::array<std::vector<double>, gpu::LOD_MAX_LEVELS> levels;
     for (const gpu::CullStats& s : stats) {
         const render::CullCounts c = render::countsOf(s, mesh);
         draws.push_back(double(c.draws));
         meshlets.push_back(double(c.meshlets));
         triangles.push_back(double(c.triangles));
+        for (size_t l = 0; l < levels.size(); ++l) levels[l].push_back(double(c.levelTriangles[l]));
     }
     row.drawsDrawn = percentile(draws, 0.5);
     row.meshletsDrawn = percentile(meshlets, 0.5);
     row.trianglesDrawn = percentile(triangles, 0.5);
+    for (size_t l = 0; l < levels.size(); ++l)
+        row.levelTrianglesDrawn[l] = percentile(levels[l], 0.5);
 }
 
 std::string hex(uint64_t value) {
@@ -116,6 +135,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     report.copies = loaded.settings.copies;
     report.lodLevels = loaded.settings.lodLevels;
     report.lodLevel = loaded.settings.lodLevel;
+    if (report.lodLevels > 1) report.levels = scene::levelStats(scene);
     report.frames = options.frames;
     report.settings = options.render;
     report.cameraPath = scene::cameraPathName(options.cameraPath);
@@ -144,7 +164,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         // --visible-parts: every frame counts the parts it shows, as the viewer's panel does.
         if (options.visibleParts)
             params.partSets = {{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}}};
-        std::map<std::tuple<std::string, std::string, render::CullMode>, double> floorMs;
+        std::map<std::tuple<std::string, std::string, render::CullMode, float>, double> floorMs;
         uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
             const render::PipelineKey& key = list[i].pipeline;
@@ -202,6 +222,8 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             row.mode = key.mode->name;
             const render::CullMode cull = list[i].culling.mode;
             row.culling = render::cullModeName(cull);
+            row.lodError = list[i].lod.errorPixels;
+            row.lodApplied = lodApplied(list[i]);
             row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
             row.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
             row.cullMsMedian = percentile(cullMs, 0.5);
@@ -231,17 +253,19 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
             row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
             row.colorImageHash = imageHash(color.data(), color.size());
             row.floor = render::floorOf(*key.technique).name;
-            if (key.technique->isFloor()) floorMs[{row.floor, row.mode, cull}] = row.gpuMsMedian;
-            const double floor = floorMs[{row.floor, row.mode, cull}];
+            const auto floorKey = std::tuple(row.floor, row.mode, cull, row.lodError);
+            if (key.technique->isFloor()) floorMs[floorKey] = row.gpuMsMedian;
+            const double floor = floorMs[floorKey];
             row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
             report.rows.push_back(row);
             std::fprintf(stderr,
-                         "benchmark: [%zu/%zu] %s + %s, culling %s: GPU %.3f ms (cull %.3f, "
-                         "pyramid %.3f; + %.3f ID passes), CPU %.3f ms, %.0f of %zu draws\n",
+                         "benchmark: [%zu/%zu] %s + %s, culling %s, LOD error %g: GPU %.3f ms "
+                         "(cull %.3f, pyramid %.3f; + %.3f ID passes), CPU %.3f ms, %.0f of "
+                         "%zu draws\n",
                          i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(),
-                         row.culling.c_str(), row.gpuMsMedian, row.cullMsMedian,
-                         row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian, row.drawsDrawn,
-                         row.draws);
+                         row.culling.c_str(), double(row.lodError), row.gpuMsMedian,
+                         row.cullMsMedian, row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian,
+                         row.drawsDrawn, row.draws);
         }
     }
     report.validationMessages = instance.validationMessages();
@@ -256,11 +280,13 @@ std::string benchmarkJson(const BenchmarkReport& r) {
         << " \"settings\":{\"size\":" << jsonString(r.size) << ",\"msaa\":" << s.pipeline.msaa
         << ",\"scene\":" << jsonString(r.scene) << ",\"copies\":" << r.copies
         << ",\"lod_levels\":" << r.lodLevels << ",\"lod_level\":" << r.lodLevel
+        << ",\"levels\":" << levelStatsJson(r.levels)
         << ",\"search_batch\":" << s.pipeline.searchBatch << ",\"frames\":" << r.frames
         << ",\"visible\":" << fixed(s.draws.visible, 3)
         << ",\"sort_draws\":" << (s.draws.sortDraws ? "true" : "false")
         << ",\"part_weight\":" << fixed(s.shading.partWeight, 3)
         << ",\"colorize_draws\":" << (s.shading.colorizeDraws ? "true" : "false")
+        << ",\"tint_levels\":" << (s.shading.tintLevels ? "true" : "false")
         << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false")
         << ",\"edges\":" << (s.edges.on ? "true" : "false") << ",\"edge_width\":" << s.edges.width
         << ",\"hidden_parts\":" << r.hiddenParts << ",\"camera_path\":" << jsonString(r.cameraPath)
@@ -271,6 +297,8 @@ std::string benchmarkJson(const BenchmarkReport& r) {
         out << (i ? ",\n  " : "\n  ") << "{\"renderer\":" << jsonString(row.renderer)
             << ",\"mode\":" << jsonString(row.mode) << ",\"culling\":" << jsonString(row.culling)
             << ",\"culling_applied\":" << jsonString(row.cullingApplied)
+            << ",\"lod_error\":" << fixed(row.lodError, 3)
+            << ",\"lod_applied\":" << (row.lodApplied ? "true" : "false")
             << ",\"gpu_ms_median\":" << fixed(row.gpuMsMedian, 4)
             << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
             << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4)
@@ -284,6 +312,10 @@ std::string benchmarkJson(const BenchmarkReport& r) {
             << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1) << ",\"triangles\":" << row.triangles
             << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)
             << ",\"meshlets_drawn\":" << fixed(row.meshletsDrawn, 1)
+            << ",\"triangles_drawn_by_level\":[";
+        for (size_t l = 0; l < row.levelTrianglesDrawn.size(); ++l)
+            out << (l ? "," : "") << fixed(row.levelTrianglesDrawn[l], 1);
+        out << "]"
             << ",\"id_bytes\":" << row.idBytes << ",\"geometry_bytes\":" << row.geometryBytes
             << ",\"added_vertices\":" << row.addedVertices
             << ",\"added_vertex_bytes\":" << row.addedVertexBytes
@@ -361,15 +393,17 @@ int benchmarkCommand(const Options& options) {
                  static_cast<unsigned long long>(loaded.scene.drawnTriangleCount()));
     const BenchmarkReport report = runBenchmark(options, loaded);
     std::printf("%s", benchmarkTable(report).c_str());
-    // Every technique must have drawn the same parts; say so when one did not.
-    const BenchmarkRow* first = nullptr;
+    // Every technique must have drawn the same parts at the same levels of detail; say so
+    // when one did not.
+    std::map<float, const BenchmarkRow*> first; // by the error the levels were chosen by
     for (const BenchmarkRow& row : report.rows) {
         if (row.renderer == row.floor) continue;
-        if (!first) first = &row;
-        if (row.idImageHash != first->idImageHash)
+        const BenchmarkRow*& same = first[row.lodApplied ? row.lodError : 0.0f];
+        if (!same) same = &row;
+        if (row.idImageHash != same->idImageHash)
             std::fprintf(stderr, "benchmark: warning: %s + %s drew another ID image than %s + %s\n",
-                         row.renderer.c_str(), row.mode.c_str(), first->renderer.c_str(),
-                         first->mode.c_str());
+                         row.renderer.c_str(), row.mode.c_str(), same->renderer.c_str(),
+                         same->mode.c_str());
     }
     if (!options.benchmarkOut.empty()) {
         const std::string& path = options.benchmarkOut;

@@ -2,6 +2,7 @@
 // floor in each mode, timed on one device with the same scene, camera and settings.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,15 @@ struct BenchmarkRow {
     std::string renderer, mode;
     std::string culling;                  // the culling mode asked for (render::cullModeName)
     std::string cullingApplied;           // what the technique and mode get of it (describeCulling)
+    float lodError = 0.0f;                // --lod-error asked, in pixels
+    bool lodApplied = false;              // and whether the cull pass chose levels by it
     double gpuMsMedian = 0, gpuMsP90 = 0; // timestamps around the scene pass, culling included
     double cullMsMedian = 0, pyramidMsMedian = 0; // GPU: the cull passes, the depth pyramid
     double earlyMsMedian = 0, lateMsMedian = 0;   // GPU: the scene pass's two halves' draws
     // Medians per frame of what was drawn (draws, meshlets, triangles); totals in `draws`,
     // `meshlets` and `triangles`.
     double drawsDrawn = 0, meshletsDrawn = 0, trianglesDrawn = 0;
+    std::array<double, gpu::LOD_MAX_LEVELS> levelTrianglesDrawn{}; // of which at each level
     std::vector<double> gpuMsFrames; // with --camera-path: every timed frame, in path order
     double cpuMsMedian = 0;          // recording and submitting one frame
     double cpuRecordMsMedian = 0;    // recording its commands alone (Renderer::record)
@@ -48,11 +52,12 @@ struct BenchmarkReport {
     std::string deviceName, driver, api;
     std::string size, scene;
     uint32_t copies = 1, frames = 0;
-    uint32_t lodLevels = 1, lodLevel = 0; // built at load, and forced for every object
-    render::RenderSettings settings;      // every row's, but for technique, mode and culling
-    std::string cameraPath;               // --camera-path, "none" when the camera stands still
-    uint32_t hiddenParts = 0;             // --hide / --isolate
-    std::vector<BenchmarkRow> rows;       // floor rows first, then renderer-major order
+    uint32_t lodLevels = 1, lodLevel = 0;  // built at load, and forced for every object
+    std::vector<scene::LevelStats> levels; // what each level holds (--lod-levels above 1)
+    render::RenderSettings settings;       // every row's, but for technique, mode and culling
+    std::string cameraPath;                // --camera-path, "none" when the camera stands still
+    uint32_t hiddenParts = 0;              // --hide / --isolate
+    std::vector<BenchmarkRow> rows;        // floor rows first, then renderer-major order
     // Techniques left out because the device cannot run them, each with the reason.
     std::vector<std::pair<std::string, std::string>> skipped;
     uint32_t validationMessages = 0;

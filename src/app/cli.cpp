@@ -10,6 +10,7 @@
 #include "app/cli_flags.h"
 #include "render/culling.h"
 #include "render/technique.h"
+#include "scene/lod.h"
 
 namespace app {
 namespace {
@@ -90,6 +91,7 @@ Options parseArgs(const std::vector<std::string>& args) {
         if (!given("--renderer")) options.benchmarkTechniques = techniqueList("all");
         if (!given("--mode")) options.benchmarkModes = modeList("all");
         if (!given("--culling")) options.benchmarkCulling = cullingList("all");
+        if (!given("--lod-error")) options.benchmarkLodErrors = {options.render.lod.errorPixels};
     } else {
         // One name each: the lists (and "all") are the benchmark's.
         const bool oneEach = (!given("--renderer") || options.benchmarkTechniques.size() == 1) &&
@@ -98,14 +100,25 @@ Options parseArgs(const std::vector<std::string>& args) {
         if (!oneEach)
             throw UsageError("--renderer, --mode and --culling take one name each unless "
                              "--benchmark is given");
+        if (options.benchmarkLodErrors.size() > 1)
+            throw UsageError("--lod-error takes one value unless --benchmark is given");
         options.benchmarkTechniques.clear();
         options.benchmarkModes.clear();
         options.benchmarkCulling.clear();
+        options.benchmarkLodErrors.clear();
     }
     if (options.scene.lodLevel >= options.scene.lodLevels)
         throw UsageError("--lod-level " + std::to_string(options.scene.lodLevel) +
                          " needs --lod-levels " + std::to_string(options.scene.lodLevel + 1) +
                          " or more");
+    // Levels to choose from: all of them unless the levels built are given.
+    if (options.render.lod.errorPixels > 0.0f && !given("--lod-levels"))
+        options.scene.lodLevels = scene::maxLevels;
+    if (options.render.lod.errorPixels > 0.0f && options.scene.lodLevels < 2)
+        throw UsageError("--lod-error needs --lod-levels 2 or more");
+    if (options.render.lod.errorPixels > 0.0f && options.scene.lodLevel > 0)
+        throw UsageError("--lod-error and --lod-level cannot be combined: --lod-level draws one "
+                         "level everywhere");
     if (options.animation.time && !options.animation.animate)
         throw UsageError("--time needs --animate");
     auto outside = [&](const Options::Pixel& p) {

@@ -59,6 +59,7 @@ struct Options {
     std::vector<const render::Technique*> benchmarkTechniques;
     std::vector<const render::DrawMode*> benchmarkModes;
     std::vector<const render::CullModeEntry*> benchmarkCulling; // --culling (default: all)
+    std::vector<float> benchmarkLodErrors; // --lod-error (default: render.lod's one value)
 
     // The device and how it is driven.
     std::string device; // index or name substring; empty: best device

@@ -268,6 +268,22 @@ const std::vector<Flag>& flags() {
              [](Options& o, auto& v) {
                  o.scene.lodLevel = parseCount("--lod-level", v, 0, scene::maxLevels - 1);
              }},
+            {"--lod-error", "PX",
+             "draw each object at its coarsest level of detail whose error stays under PX "
+             "pixels, chosen on the GPU by the cull pass (culling on, mdi modes; elsewhere full "
+             "detail); 0 is full detail; builds every level unless --lod-levels says otherwise" +
+                 byDefault(d.render.lod.errorPixels) + "; with --benchmark a comma list",
+             [](Options& o, auto& v) {
+                 o.benchmarkLodErrors.clear();
+                 for (size_t start = 0; start <= v.size();) {
+                     const size_t end = std::min(v.find(',', start), v.size());
+                     o.benchmarkLodErrors.push_back(
+                         parseNumber("--lod-error", v.substr(start, end - start), 1e6f, "pixels"));
+                     start = end + 1;
+                 }
+                 o.render.lod.errorPixels =
+                     *std::max_element(o.benchmarkLodErrors.begin(), o.benchmarkLodErrors.end());
+             }},
             rangeFlag("--search-batch", "parts per draw of the search techniques",
                       render::searchBatchRange, key.searchBatch,
                       [](Options& o) -> uint32_t& { return o.render.pipeline.searchBatch; }),
@@ -348,6 +364,10 @@ const std::vector<Flag>& flags() {
              }},
             {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
              [](Options& o, auto&) { o.render.shading.colorizeDraws = true; }},
+            {"--tint-levels", nullptr,
+             "replace material colours by a colour per level of detail drawn: grey full "
+             "detail, then blue, yellow and red",
+             [](Options& o, auto&) { o.render.shading.tintLevels = true; }},
             {"--no-sort-draws", nullptr,
              "keep draws in scene order instead of by geometry and material",
              [](Options& o, auto&) { o.render.draws.sortDraws = false; }},

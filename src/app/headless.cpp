@@ -230,16 +230,23 @@ int runHeadless(const Options& options) {
     if (result.cullTotals.meshlets)
         meshlets = std::to_string(drawn.meshlets) + " of " +
                    std::to_string(result.cullTotals.meshlets) + " meshlets, ";
+    // With levels of detail chosen, the triangles of each level.
+    std::string levels;
+    if (options.render.lod.errorPixels > 0.0f) {
+        levels = " (by level of detail:";
+        for (uint64_t t : drawn.levelTriangles) levels.append(" ").append(std::to_string(t));
+        levels += ")";
+    }
     std::fprintf(json ? stderr : stdout,
                  "idview: %u frames of %ux%u on %s, %s%s + %s, culling %s: %zu draws, %llu "
-                 "triangles, %u parts; the last frame drew %llu draws, %s%llu triangles; scene "
-                 "pass GPU median %.3f ms\n",
+                 "triangles, %u parts; the last frame drew %llu draws, %s%llu triangles%s; "
+                 "scene pass GPU median %.3f ms\n",
                  options.frames, result.width, result.height, result.deviceName.c_str(),
                  key.technique->name, result.stats.gsPassthrough ? " (passthrough)" : "",
                  key.mode->name, render::cullModeName(options.render.culling.mode),
                  result.stats.draws, static_cast<unsigned long long>(scene.drawnTriangleCount()),
                  scene.uniquePartCount(), static_cast<unsigned long long>(drawn.draws),
-                 meshlets.c_str(), static_cast<unsigned long long>(drawn.triangles),
+                 meshlets.c_str(), static_cast<unsigned long long>(drawn.triangles), levels.c_str(),
                  median(result.gpuMs));
     return exitCode(result.validationMessages);
 }

@@ -177,6 +177,20 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect) {
     return scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
 }
 
+std::string levelStatsJson(const std::vector<scene::LevelStats>& levels) {
+    std::ostringstream json;
+    json << "[";
+    for (size_t l = 0; l < levels.size(); ++l) {
+        const scene::LevelStats& v = levels[l];
+        json << (l ? "," : "") << "{\"level\":" << l << ",\"geometries\":" << v.geometries
+             << ",\"unique_triangles\":" << v.uniqueTriangles << ",\"vertices\":" << v.vertices
+             << ",\"bytes\":" << v.bytes << ",\"triangles\":" << v.drawnTriangles
+             << ",\"max_error\":" << std::setprecision(6) << v.maxError << "}";
+    }
+    json << "]";
+    return json.str();
+}
+
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings) {
     const scene::Scene& s = loaded.scene;
     const render::PipelineKey& key = settings.pipeline;
@@ -198,17 +212,7 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
          << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets
          << ",\"lod_ms\":" << loaded.lodMs << ",\"lod_level\":" << loaded.settings.lodLevel
-         << ",\"lod_levels\":[";
-    const std::vector<scene::LevelStats> levels = scene::levelStats(s);
-    for (size_t l = 0; l < levels.size(); ++l) {
-        const scene::LevelStats& v = levels[l];
-        json << (l ? "," : "") << "{\"level\":" << l << ",\"geometries\":" << v.geometries
-             << ",\"unique_triangles\":" << v.uniqueTriangles << ",\"vertices\":" << v.vertices
-             << ",\"bytes\":" << v.bytes << ",\"triangles\":" << v.drawnTriangles
-             << ",\"max_error\":" << std::defaultfloat << std::setprecision(6) << v.maxError
-             << std::fixed << std::setprecision(3) << "}";
-    }
-    json << "]";
+         << ",\"lod_levels\":" << levelStatsJson(scene::levelStats(s));
     // What the chosen renderer and mode would draw and upload, derived geometry included.
     const render::DerivedGeometry geometry = render::buildDerivedGeometry(s, *key.technique);
     const render::DerivedPrimitives derived = geometry.view();

@@ -11,6 +11,7 @@
 
 #include "app/cli.h"
 #include "scene/camera.h"
+#include "scene/lod.h"
 #include "scene/scene.h"
 
 namespace app {
@@ -80,5 +81,8 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
 // tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), ... and what
 // the renderer `settings` choose would draw and upload.
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings);
+// What each level of detail holds (scene::levelStats), as a JSON array for --stats and the
+// benchmark.
+std::string levelStatsJson(const std::vector<scene::LevelStats>& levels);
 
 } // namespace app

@@ -83,6 +83,7 @@ std::string describeCulling(const Technique& technique, const DrawMode& mode, Cu
     else if (meshTechnique)
         text += std::string("; task shader: meshlets by frustum") +
                 (occlusion ? " and depth pyramid" : "");
+    if (mode.indirect) text += "; levels of detail chosen per object (--lod-error)";
     return text;
 }
 

@@ -100,6 +100,7 @@ struct CullBuffers {
         float explode;
         uint64_t hiddenVersion;
         uint32_t width, height, samples; // of the targets
+        float lodErrorPixels;            // which levels of detail are drawn
         bool operator==(const View&) const = default;
     };
     std::optional<View> lastView;

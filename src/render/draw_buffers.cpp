@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <limits>
+#include <optional>
 
 #include "scene/bounds.h"
+#include "scene/lod.h"
 #include "vk/check.h"
 
 namespace render {
@@ -20,9 +23,17 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
                    bool runs, std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
     uint32_t bits = 0;
     out.reserve(list.ranges.size());
+    // The box around each object's full detail, whose sphere all its draws choose levels by.
+    std::vector<std::optional<scene::Bounds>> wholeBoxes(scene.geometries.size());
+    auto whole = [&](uint32_t g) {
+        if (!wholeBoxes[g])
+            wholeBoxes[g] = scene::partRangeBounds(scene, sceneGpu.partBounds(), g, 0,
+                                                   scene.geometries[g].partCount);
+        return *wholeBoxes[g];
+    };
     for (size_t i = 0; i < list.ranges.size(); ++i) {
         const DrawItem& d = list.ranges[i];
-        const uint32_t g = scene.objects[d.object].geometry;
+        const uint32_t g = d.geometry;
         scene::Bounds box =
             scene::partRangeBounds(scene, sceneGpu.partBounds(), g, d.firstPart, d.partCount);
         if (scene::isEmpty(box)) box = {}; // no triangles: nothing to draw anyway
@@ -34,6 +45,15 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
         cull.firstPair = static_cast<uint32_t>(pairs.size());
         cull.partsToEnd = scene.geometries[g].partCount - d.firstPart;
+        // The sphere around the object's full detail, and the errors the level choice weighs.
+        const uint32_t full = scene.objects[d.object].geometry;
+        cull.lodCenter = whole(full).center();
+        cull.lodRadius = whole(full).radius();
+        cull.lodFinest = g == full ? 1u : 0u;
+        cull.lodError = g == full ? 0.0f : scene.geometries[g].lodError;
+        const uint32_t next = scene::geometryAtLevel(scene, full, d.level + 1);
+        cull.lodNextError =
+            next == g ? std::numeric_limits<float>::max() : scene.geometries[next].lodError;
         if (!list.meshletCounts.empty()) {
             cull.meshletBit = bits;
             cull.meshletCount = list.meshletCounts[i];
@@ -58,17 +78,19 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
                                               const DrawSettings& draws,
                                               std::shared_ptr<const PartVertexBuffers> partVertices,
                                               std::shared_ptr<const MeshletBuffers> meshlets,
-                                              vk::UploadBatch& upload) {
+                                              bool levels, vk::UploadBatch& upload) {
     auto b = std::make_shared<DrawBuffers>();
     // Only what this technique draws is held (and counted in its stats).
     if (key.technique->primitives == Primitives::PartVertices) b->partVertices = partVertices;
     if (key.technique->usesMeshShader()) b->meshlets = meshlets;
     b->list = buildDrawList(scene, key, draws,
-                            derivedPrimitives(b->partVertices.get(), b->meshlets.get()));
+                            derivedPrimitives(b->partVertices.get(), b->meshlets.get()), levels);
     b->key = key;
     b->inputs = draws;
+    b->levels = levels;
     const DrawList& list = b->list;
-    for (uint32_t count : list.meshletCounts) b->meshletTotal += count;
+    for (size_t i = 0; i < list.fullDetailDraws && i < list.meshletCounts.size(); ++i)
+        b->meshletTotal += list.meshletCounts[i];
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     if (!list.idBytes.empty()) b->ids = upload.add(list.idBytes, shaderRead, "technique ID data");
@@ -140,7 +162,8 @@ static Issued pushDraws(const DrawContext& c, const std::vector<uint8_t>* shown)
     const bool mesh = c.buffers.meshlets != nullptr;
     const bool task = c.buffers.key.taskCulling;
     Issued issued;
-    for (size_t i = 0; i < list.ranges.size(); ++i) {
+    // Full detail only: without the cull pass no level is chosen.
+    for (size_t i = 0; i < list.fullDetailDraws; ++i) {
         const DrawItem& d = list.ranges[i];
         if (shown && !(*shown)[d.object]) continue;
         std::array<uint32_t, fieldCount> now;
@@ -182,7 +205,8 @@ void recordAllDraws(const DrawContext& c) {
         pushDraws(c, nullptr);
         return;
     }
-    const uint32_t total = static_cast<uint32_t>(b.list.ranges.size());
+    // Full detail only: without the cull pass no level is chosen.
+    const uint32_t total = static_cast<uint32_t>(b.list.fullDetailDraws);
     const uint32_t limit = std::max(1u, c.device.info().maxDrawIndirectCount);
     for (uint32_t first = 0; first < total; first += limit) {
         const uint32_t count = std::min(limit, total - first);

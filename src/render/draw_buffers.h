@@ -24,6 +24,7 @@ struct DrawBuffers {
     std::shared_ptr<const MeshletBuffers> meshlets;
     PipelineKey key;     // effective key it was built for (technique, mode, batch)
     DrawSettings inputs; // and the draw settings
+    bool levels = false; // and whether the list holds every level of detail (DrawList)
     // Culling: the GPU state (shared by the frames in flight, mutable while recording), the
     // bytes of one indirect command, and the meshlets all draws launch.
     std::shared_ptr<CullBuffers> cull;
@@ -33,14 +34,15 @@ struct DrawBuffers {
     std::vector<scene::Bounds> objectBoxes;
 };
 
-// The draws of `key` under `draws` over the scene on the GPU; `partVertices` and `meshlets`
-// are the derived geometry, built by the caller when the technique draws it.
+// The draws of `key` under `draws` over the scene on the GPU, every level of detail included
+// where `levels`; `partVertices` and `meshlets` are the derived geometry, built by the
+// caller when the technique draws it.
 std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::Scene& scene,
                                               const SceneGpu& sceneGpu, const PipelineKey& key,
                                               const DrawSettings& draws,
                                               std::shared_ptr<const PartVertexBuffers> partVertices,
                                               std::shared_ptr<const MeshletBuffers> meshlets,
-                                              vk::UploadBatch& upload);
+                                              bool levels, vk::UploadBatch& upload);
 
 // What one frame draws of a list, and how, for draw_recording.cpp.
 struct DrawContext {

@@ -7,19 +7,21 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "scene/lod.h"
 #include "vk/check.h"
 
 namespace render {
 namespace {
 
-std::vector<DrawItem> splitDraws(const scene::Scene& scene, DrawSplit split, uint32_t batch) {
+std::vector<DrawItem> splitDraws(const scene::Scene& scene, DrawSplit split, uint32_t batch,
+                                 uint32_t level) {
     switch (split) {
     case DrawSplit::PerPart:
-        return scene::drawsPerPart(scene);
+        return scene::drawsPerPart(scene, level);
     case DrawSplit::PerObject:
-        return scene::drawsPerObject(scene);
+        return scene::drawsPerObject(scene, level);
     case DrawSplit::PerBatch:
-        return scene::drawsPerBatch(scene, batch);
+        return scene::drawsPerBatch(scene, batch, level);
     }
     return {};
 }
@@ -69,14 +71,15 @@ DerivedGeometry buildDerivedGeometry(const scene::Scene& scene, const Technique&
 
 RenderStats statsFor(const DrawList& list, const DrawMode& mode, const DerivedPrimitives& derived) {
     RenderStats stats;
-    stats.draws = list.ranges.size();
+    stats.draws = list.fullDetailDraws;
     if (derived.partVertices) {
         stats.addedVertices = derived.partVertices->addedVertices;
         stats.addedVertexBytes = stats.addedVertices * sizeof(gpu::Vertex);
     }
     if (derived.meshlets) stats.meshlets = derived.meshlets->meshlets.size();
     stats.geometryBytes = derived.bytes;
-    for (const DrawItem& d : list.ranges) stats.triangles += d.indexCount / 3;
+    for (size_t i = 0; i < list.fullDetailDraws; ++i)
+        stats.triangles += list.ranges[i].indexCount / 3;
     stats.pipelines = 1;
     stats.idBufferBytes = list.idBytes.size();
     if (mode.indirect) {
@@ -90,7 +93,7 @@ RenderStats statsFor(const DrawList& list, const DrawMode& mode, const DerivedPr
 }
 
 DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
-                       const DerivedPrimitives& derived) {
+                       const DerivedPrimitives& derived, bool levels) {
     const Technique& technique = *key.technique;
     const scene::PartVertices* partVertices = derived.partVertices;
     const scene::Meshlets* meshlets = derived.meshlets;
@@ -99,17 +102,22 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const 
         throw std::invalid_argument(std::string(technique.name) +
                                     ": its derived geometry was not given");
     DrawList list;
-    list.ranges = splitDraws(scene, technique.split, key.searchBatch);
-    // Before sorting, so "first" means scene order; draws come in object order.
+    // Full detail first, then each coarser level's draws: the same order within each.
     const size_t visible = visibleObjectCount(draws.visible, scene.objects.size());
-    std::erase_if(list.ranges, [&](const DrawItem& d) { return d.object >= visible; });
-    if (draws.sortDraws) {
-        auto key = [&](const DrawItem& d) {
-            const scene::Object& o = scene.objects[d.object];
-            return std::tuple(o.geometry, o.material, d.object, d.firstPart);
-        };
-        std::stable_sort(list.ranges.begin(), list.ranges.end(),
-                         [&](const DrawItem& a, const DrawItem& b) { return key(a) < key(b); });
+    for (uint32_t level = 0; level < (levels ? scene::maxLevels : 1u); ++level) {
+        std::vector<DrawItem> ranges = splitDraws(scene, technique.split, key.searchBatch, level);
+        // Before sorting, so "first" means scene order; draws come in object order.
+        std::erase_if(ranges, [&](const DrawItem& d) { return d.object >= visible; });
+        if (draws.sortDraws) {
+            auto key = [&](const DrawItem& d) {
+                const scene::Object& o = scene.objects[d.object];
+                return std::tuple(o.geometry, o.material, d.object, d.firstPart);
+            };
+            std::stable_sort(ranges.begin(), ranges.end(),
+                             [&](const DrawItem& a, const DrawItem& b) { return key(a) < key(b); });
+        }
+        list.ranges.insert(list.ranges.end(), ranges.begin(), ranges.end());
+        if (level == 0) list.fullDetailDraws = list.ranges.size();
     }
 
     // Where each geometry's data starts in the ID buffer, and how wide its elements are.
@@ -170,7 +178,7 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const 
     list.data.reserve(list.ranges.size());
     for (uint32_t i = 0; i < list.ranges.size(); ++i) {
         const DrawItem& d = list.ranges[i];
-        const uint32_t g = scene.objects[d.object].geometry;
+        const uint32_t g = d.geometry;
         gpu::DrawData data{};
         data.objectIndex = d.object;
         data.firstPart = d.firstPart;
@@ -182,6 +190,7 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const 
         if (technique.ids == IdBuffer::MeshletVertexPartIds) // see DrawData::idsOffset
             data.idsOffset -= meshlets->geometryFirstVertex[g] * data.idsWidth;
         data.drawIndex = i;
+        data.lodLevel = d.level;
         if (partVertices && !meshlets) {
             data.firstElement = partVertices->firstVertex[g];
             list.ranges[i].vertexOffset = static_cast<int32_t>(partVertices->firstVertex[g]);

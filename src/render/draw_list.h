@@ -22,7 +22,11 @@ using DrawItem = scene::DrawRange;
 size_t visibleObjectCount(float fraction, size_t objects);
 
 struct DrawList {
+    // Full detail's draws, then, where the list has levels of detail, those of each coarser
+    // level in turn (DrawItem::level): the cull pass draws one level of each object, and
+    // whatever draws without it (culling off, push mode) the first fullDetailDraws.
     std::vector<DrawItem> ranges;
+    size_t fullDetailDraws = 0;
     std::vector<gpu::DrawData> data; // data[i].drawIndex == i
     std::vector<uint8_t> idBytes;    // the technique's ID buffer; empty for IdBuffer::None
     // Primitives::Meshlets: mesh workgroups of each draw (its geometry's meshlet count).
@@ -69,9 +73,10 @@ DerivedGeometry buildDerivedGeometry(const scene::Scene& scene, const Technique&
 RenderStats statsFor(const DrawList& list, const DrawMode& mode,
                      const DerivedPrimitives& derived = {});
 
-// The draws of `key`'s technique (and search batch) under `draws`. `derived` must hold what
-// the technique's Primitives need (std::invalid_argument otherwise).
+// The draws of `key`'s technique (and search batch) under `draws`, with every level of detail
+// the scene has where `levels`. `derived` must hold what the technique's Primitives need
+// (std::invalid_argument otherwise).
 DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
-                       const DerivedPrimitives& derived = {});
+                       const DerivedPrimitives& derived = {}, bool levels = false);
 
 } // namespace render

@@ -19,6 +19,9 @@ CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     counts.draws = uint64_t(stats.listed) + stats.lateNew;
     counts.meshlets = stats.meshlets;
     counts.triangles = meshTechnique ? stats.meshletTriangles : stats.triangles;
+    for (uint32_t l = 0; l < gpu::LOD_MAX_LEVELS; ++l)
+        counts.levelTriangles[l] =
+            meshTechnique ? stats.levelMeshletTriangles[l] : stats.levelTriangles[l];
     return counts;
 }
 
@@ -33,9 +36,10 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     // or push mode's task shader).
     std::optional<CullBuffers::View> view;
     if (c.plan.twoPasses && !freeze)
-        view = CullBuffers::View{params.viewProj,         params.explode,
-                                 hiddenVersion_,          targets.extent().width,
-                                 targets.extent().height, uint32_t(targets.pass().samples())};
+        view = CullBuffers::View{params.viewProj,          params.explode,
+                                 hiddenVersion_,           targets.extent().width,
+                                 targets.extent().height,  uint32_t(targets.pass().samples()),
+                                 settings_.lod.errorPixels};
     c.viewUnchanged = view && cull.lastView == view;
     // A still view, culled still twice in a row: the second time, the first half drew just
     // what passed a test against the whole depth of the view (the first time, against the
@@ -84,6 +88,7 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.viewport = {targets.extent().width, targets.extent().height};
     frame.partColorWeight = shading.partWeight;
     frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
+                  (shading.tintLevels ? gpu::FRAME_TINT_LEVELS : 0u) |
                   (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u) |
                   (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u) |
                   (draws_->key.technique->isFloor() ? gpu::FRAME_BOUNDS_HISTORY : 0u) |
@@ -118,6 +123,8 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
         (culling.plan.gpuLists ? frame.lateMeshletWord : frame.lateDrawnWord) = cull.meshletWords;
         frame.earlyMeshletWord = 2 * cull.meshletWords;
     }
+    // Levels are chosen where cull.comp makes the lists; elsewhere full detail is drawn.
+    if (draws_->levels && culling.plan.gpuLists) frame.lodErrorPixels = settings_.lod.errorPixels;
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.time = params.time;
     return frame;
@@ -203,6 +210,9 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
     // Without culling the mesh shaders draw every meshlet; with it the task shader counts.
     known.meshlets = uint32_t(totals.meshlets);
     known.meshletTriangles = uint32_t(totals.triangles);
+    // Only the cull pass chooses levels: everything else is full detail.
+    known.levelTriangles[0] = known.triangles;
+    known.levelMeshletTriangles[0] = known.meshletTriangles;
     const VkDeviceSize bytes = culling.plan.on() || !mesh ? offsetof(gpu::CullStats, meshlets)
                                                           : offsetof(gpu::CullStats, unused);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_WRITE_BIT,

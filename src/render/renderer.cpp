@@ -92,7 +92,8 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
                         ": use --culling off or push mode");
     bool cached = false;
     auto pipeline = pipelines_.get(key, pass(key.msaa), cached);
-    const bool keepDraws = !newScene && drawsStillRight(key, settings.draws);
+    const bool levels = settings.lod.errorPixels > 0.0f;
+    const bool keepDraws = !newScene && drawsStillRight(key, settings.draws, levels);
     vk::UploadBatch upload(device_);
     auto sceneGpu = newScene ? std::make_shared<SceneGpu>(scene, upload) : sceneGpu_;
     auto partVertices = newScene ? nullptr : partVertices_;
@@ -103,7 +104,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
         meshlets = std::make_shared<MeshletBuffers>(scene, upload);
     auto draws = keepDraws ? draws_
                            : buildDrawBuffers(device_, scene, *sceneGpu, key, settings.draws,
-                                              partVertices, meshlets, upload);
+                                              partVertices, meshlets, levels, upload);
     upload.keep(sceneGpu);
     upload.keep(partVertices);
     upload.keep(meshlets);
@@ -200,15 +201,18 @@ void Renderer::setHidden(const scene::PartSet& hidden) {
 }
 
 // The draw list depends on the technique's split and ID data, the search batch it reads, the
-// mode's buffers and the draw settings; a switch that changes none of them keeps it.
-bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const {
+// mode's buffers, the draw settings and whether levels of detail are on; a switch that changes
+// none of them keeps it.
+bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws,
+                               bool levels) const {
     if (!draws_) return false;
     const PipelineKey& built = draws_->key;
     return built.technique->split == key.technique->split &&
            built.technique->ids == key.technique->ids &&
            built.technique->primitives == key.technique->primitives &&
            built.searchBatch == key.searchBatch && built.mode == key.mode &&
-           built.taskCulling == key.taskCulling && draws_->inputs == draws;
+           built.taskCulling == key.taskCulling && draws_->inputs == draws &&
+           draws_->levels == levels;
 }
 
 CullPlan Renderer::cullingPlan() const {

@@ -4,6 +4,7 @@
 // for the GPU: what frames in flight still use stays alive in their slots.
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -45,6 +46,8 @@ struct CullCounts {
     uint64_t draws = 0;     // draws drawn (objects; parts for per-draw, batches for search)
     uint64_t meshlets = 0;  // meshlets drawn (mesh techniques)
     uint64_t triangles = 0; // triangles drawn
+    // of which at each level of detail (full detail first)
+    std::array<uint64_t, gpu::LOD_MAX_LEVELS> levelTriangles{};
 };
 CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique);
 
@@ -121,7 +124,7 @@ class Renderer {
     };
     void apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
     void bindGeometry(VkCommandBuffer cmd) const;
-    bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws) const;
+    bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws, bool levels) const;
     gpu::FrameData frameData(const SceneTargets& targets, const FrameParams& params,
                              const FrameCulling& culling) const;
     FrameCulling planFrame(const FrameParams& params, const SceneTargets& targets) const;

@@ -65,6 +65,7 @@ struct DrawSettings {
 struct Shading {
     float partWeight = 0.5f; // blend of the part colour over the material colour, 0..1
     bool colorizeDraws = false;
+    bool tintLevels = false;      // a colour per level of detail drawn (shading.glsl's levelTint)
     bool ignoreMaterials = false; // one neutral grey for every object: only part colours show
     bool operator==(const Shading&) const = default;
 };
@@ -95,12 +96,22 @@ struct CullSettings {
     bool operator==(const CullSettings&) const = default;
 };
 
+// Levels of detail chosen on the GPU (scene/lod.h builds them when the scene loads): above 0,
+// the draw list holds every level and the cull pass draws each object at its coarsest level
+// whose error, projected at the object, stays under this many pixels. Only where cull.comp
+// makes the lists (culling on, mdi modes); elsewhere, and at 0, full detail.
+struct LodSettings {
+    float errorPixels = 0.0f;
+    bool operator==(const LodSettings&) const = default;
+};
+
 struct RenderSettings {
     PipelineKey pipeline;
     DrawSettings draws;
     Shading shading;
     EdgeSettings edges;
     CullSettings culling;
+    LodSettings lod;
     bool operator==(const RenderSettings&) const = default;
 };
 

@@ -7,42 +7,51 @@
 namespace scene {
 namespace {
 
-DrawRange rangeOf(const Scene& scene, uint32_t object, uint32_t firstPart, uint32_t partCount) {
-    const Geometry& g = scene.geometries[scene.objects[object].geometry];
+DrawRange rangeOf(const Scene& scene, uint32_t object, uint32_t geometry, uint32_t firstPart,
+                  uint32_t partCount) {
+    const Geometry& g = scene.geometries[geometry];
     const Part& first = scene.parts[g.firstPart + firstPart];
     const Part& last = scene.parts[g.firstPart + firstPart + partCount - 1];
     const uint32_t triangles = last.firstTriangle + last.triangleCount - first.firstTriangle;
-    return {object,        firstPart,
+    return {object,        geometry,
+            g.level,       firstPart,
             partCount,     g.firstIndex + 3 * first.firstTriangle,
             3 * triangles, static_cast<int32_t>(g.firstVertex)};
 }
 
-template <typename PerObject>
-std::vector<DrawRange> drawsOf(const Scene& scene, PerObject&& perObject) {
+// Calls perGeometry(object, geometry) for every object that has `level`.
+template <typename PerGeometry>
+std::vector<DrawRange> drawsOf(const Scene& scene, uint32_t level, PerGeometry&& perGeometry) {
     std::vector<DrawRange> draws;
-    for (uint32_t o = 0; o < scene.objects.size(); ++o) perObject(o, draws);
+    for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+        const uint32_t full = scene.objects[o].geometry;
+        if (level == 0) {
+            perGeometry(o, full, draws);
+        } else if (scene.geometries[full].levels.size() >= level) {
+            perGeometry(o, scene.geometries[full].levels[level - 1], draws);
+        }
+    }
     return draws;
 }
 
 } // namespace
 
-std::vector<DrawRange> drawsPerPart(const Scene& scene) {
-    return drawsPerBatch(scene, 1);
+std::vector<DrawRange> drawsPerPart(const Scene& scene, uint32_t level) {
+    return drawsPerBatch(scene, 1, level);
 }
 
-std::vector<DrawRange> drawsPerObject(const Scene& scene) {
-    return drawsOf(scene, [&](uint32_t o, std::vector<DrawRange>& draws) {
-        draws.push_back(
-            rangeOf(scene, o, 0, scene.geometries[scene.objects[o].geometry].partCount));
+std::vector<DrawRange> drawsPerObject(const Scene& scene, uint32_t level) {
+    return drawsOf(scene, level, [&](uint32_t o, uint32_t g, std::vector<DrawRange>& draws) {
+        draws.push_back(rangeOf(scene, o, g, 0, scene.geometries[g].partCount));
     });
 }
 
-std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount) {
+std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount, uint32_t level) {
     if (searchCount == 0) throw std::invalid_argument("search batch must be at least 1");
-    return drawsOf(scene, [&](uint32_t o, std::vector<DrawRange>& draws) {
-        const uint32_t parts = scene.geometries[scene.objects[o].geometry].partCount;
+    return drawsOf(scene, level, [&](uint32_t o, uint32_t g, std::vector<DrawRange>& draws) {
+        const uint32_t parts = scene.geometries[g].partCount;
         for (uint32_t first = 0; first < parts; first += searchCount)
-            draws.push_back(rangeOf(scene, o, first, std::min(searchCount, parts - first)));
+            draws.push_back(rangeOf(scene, o, g, first, std::min(searchCount, parts - first)));
     });
 }
 

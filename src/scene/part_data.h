@@ -10,9 +10,12 @@
 
 namespace scene {
 
-// One draw call: a contiguous range of parts of one object's geometry.
+// One draw call: a contiguous range of parts of one object's geometry at one level of detail
+// (scene/lod.h): `geometry` is the object's own at level 0, else that level's.
 struct DrawRange {
     uint32_t object = 0;
+    uint32_t geometry = 0;
+    uint32_t level = 0;
     uint32_t firstPart = 0; // local part index within the geometry
     uint32_t partCount = 0;
     uint32_t firstIndex = 0; // into Scene::indices
@@ -20,10 +23,12 @@ struct DrawRange {
     int32_t vertexOffset = 0;
 };
 
-std::vector<DrawRange> drawsPerPart(const Scene& scene);
-std::vector<DrawRange> drawsPerObject(const Scene& scene);
+// The draws of every object at `level`: its own geometry at 0, else that level of it, and
+// none for objects whose geometry has fewer levels.
+std::vector<DrawRange> drawsPerPart(const Scene& scene, uint32_t level = 0);
+std::vector<DrawRange> drawsPerObject(const Scene& scene, uint32_t level = 0);
 // Up to searchCount consecutive parts of a geometry per draw.
-std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount);
+std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount, uint32_t level = 0);
 
 // Bytes per local part index for a geometry with this many parts: 1, 2 or 4.
 uint32_t partIndexBytes(uint32_t partCount);

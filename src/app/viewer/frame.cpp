@@ -203,6 +203,8 @@ PanelInfo Viewer::panelInfo() const {
     info.cullingApplied =
         render::describeCulling(*key.technique, *key.mode, renderer.settings().culling.mode);
     info.listsReused = renderer.lastFrameReused();
+    info.lodChosen =
+        render::cullPlan(*key.technique, *key.mode, renderer.settings().culling.mode).gpuLists;
     info.totals = renderer.cullTotals();
     if (!slots_.cullStats().empty())
         info.drawn = render::countsOf(slots_.cullStats().back(), key.technique->usesMeshShader());

@@ -12,6 +12,7 @@
 
 #include "render/culling.h"
 #include "render/technique.h"
+#include "scene/lod.h"
 
 namespace app {
 namespace {
@@ -157,6 +158,40 @@ void culling(render::CullSettings& c, const PanelInfo& info) {
     ImGui::Text("triangles      %s", counted(info.drawn.triangles, info.totals.triangles).c_str());
 }
 
+// Levels of detail: how many the scene has (a reload), the error the cull pass chooses them
+// by, the tint, and the triangles the newest frame drew at each.
+void levelsOfDetail(Options& settings, const PanelInfo& info) {
+    sliderOnRelease("LOD levels built", settings.scene.lodLevels, 1u, scene::maxLevels);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("levels of detail built when the scene loads, full detail included "
+                          "(changing it reloads the scene)");
+    const bool usable = settings.scene.lodLevels > 1 && info.lodChosen;
+    ImGui::BeginDisabled(!usable);
+    ImGui::SliderFloat("LOD error [px]", &settings.render.lod.errorPixels, 0.0f, 8.0f, "%.2f");
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", !usable && settings.scene.lodLevels < 2
+                                    ? "build levels of detail first (LOD levels built)"
+                                : !usable ? "levels are chosen by the cull pass: culling "
+                                            "frustum or occlusion in an mdi mode"
+                                          : "each object drawn at its coarsest level whose "
+                                            "error stays under this many pixels; 0: full "
+                                            "detail");
+    ImGui::Checkbox("tint by level", &settings.render.shading.tintLevels);
+    // The colours of shading.glsl's levelTint, as displayed.
+    static const ImVec4 tints[] = {{0.87f, 0.87f, 0.87f, 1},
+                                   {0.35f, 0.76f, 0.98f, 1},
+                                   {0.98f, 0.88f, 0.35f, 1},
+                                   {0.95f, 0.48f, 0.58f, 1}};
+    if (settings.render.lod.errorPixels <= 0.0f || !usable) return;
+    for (uint32_t l = 0; l < info.drawn.levelTriangles.size(); ++l) {
+        ImGui::TextColored(tints[l], "level %u", l);
+        ImGui::SameLine();
+        ImGui::Text("%llu triangles",
+                    static_cast<unsigned long long>(info.drawn.levelTriangles[l]));
+    }
+}
+
 void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
     render::RenderSettings& s = settings.render;
     render::PipelineKey& key = s.pipeline;
@@ -192,6 +227,7 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
         ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
     }
     culling(s.culling, info);
+    levelsOfDetail(settings, info);
     ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
     ImGui::Checkbox("vsync (V)", &view.vsync);
     // What the last switch cost: a cached pipeline makes it a lookup.

@@ -74,6 +74,9 @@ struct PanelInfo {
     bool listsReused = false; // a still view: the last culled frame's lists drawn again
     render::CullCounts drawn, totals;
     double cullMs = 0.0, pyramidMs = 0.0;
+    // Levels of detail: whether the technique, mode and culling chosen have the cull pass
+    // choose them (else full detail is drawn).
+    bool lodChosen = false;
 };
 
 // Draws the panel; the user's changes land in `settings` (scene, render, animation) and

@@ -26,7 +26,7 @@ SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettin
     Change change = Change::None;
     const SceneSettings& drawn = base_.settings;
     if (wanted.model != drawn.model || wanted.builtin != drawn.builtin ||
-        wanted.parts != drawn.parts) {
+        wanted.parts != drawn.parts || wanted.lodLevels != drawn.lodLevels) {
         if (openScene(wanted))
             change = Change::Model;
         else

@@ -1,0 +1,310 @@
+// test_lod_render.cpp - levels of detail chosen on the GPU (render/culling.h, scene/lod.h), on
+// lavapipe with validation on: at error 0 every technique x mode draws the images it drew
+// before levels existed; with levels chosen, two-phase occlusion culling draws frustum
+// culling's images on every frame of a camera path; a huge error draws every object's
+// coarsest level, which the engine forced to that level draws too; at a one-pixel error the
+// ID image moves only next to full detail's outlines, on the default model and a CAD file,
+// while the coarsest levels seen larger move it further (so the check can fail).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <deque>
+#include <filesystem>
+
+#include "app/headless.h"
+#include "app/scene_source.h"
+#include "render/culling.h"
+#include "render/technique.h"
+#include "scene/lod.h"
+#include "test_support.h"
+
+namespace {
+
+constexpr uint32_t NONE = gpu::BACKGROUND_ID;
+// An IGES file from Debian's occt-misc: one object of 213 faces, with Open CASCADE's levels.
+const char* const kCadBearing = "/usr/share/opencascade/data/iges/bearing.iges";
+
+app::LoadedScene smallScene(uint32_t lodLevels, uint32_t lodLevel = 0) {
+    app::SceneSettings source;
+    source.builtin = "procedural:preset=small,seed=1";
+    source.copies = 2;
+    source.lodLevels = lodLevels;
+    source.lodLevel = lodLevel;
+    return app::loadScene(source);
+}
+
+std::string nameOf(const render::RenderSettings& s) {
+    return std::string(s.pipeline.technique->name) + " + " + s.pipeline.mode->name + ", culling " +
+           render::cullModeName(s.culling.mode) + ", LOD error " +
+           std::to_string(s.lod.errorPixels);
+}
+
+// Triangles drawn at the coarser levels over every frame of a result.
+uint64_t coarserTriangles(const app::HeadlessResult& r, bool mesh) {
+    uint64_t sum = 0;
+    for (const gpu::CullStats& stats : r.cullStats) {
+        const render::CullCounts c = render::countsOf(stats, mesh);
+        for (size_t l = 1; l < c.levelTriangles.size(); ++l) sum += c.levelTriangles[l];
+    }
+    return sum;
+}
+
+} // namespace
+
+// The levels built, at error 0, change nothing: every technique x mode, culling on (the
+// default), draws the images of the same scene without levels on every frame of the dolly
+// path.
+TEST(LodRender, ErrorZeroDrawsTheImagesOfNoLevels) {
+    const app::LoadedScene plain = smallScene(1);
+    const app::LoadedScene levels = smallScene(scene::maxLevels);
+    ASSERT_GT(levels.scene.geometries.size(), plain.scene.geometries.size());
+    constexpr uint32_t W = 160, H = 90, frames = 3;
+    std::vector<render::RenderSettings> configs;
+    for (const render::Technique& t : render::techniques())
+        for (const render::DrawMode& m : render::drawModes())
+            configs.push_back(testing_support::settingsFor(t, m));
+    app::Options o = testing_support::headlessOptions(W, H, frames);
+    o.cameraPath = scene::CameraPath::Dolly;
+    o.keepEveryFrame = true;
+    const scene::Camera camera = app::initialCamera(plain, float(W) / float(H));
+    const auto before = app::renderHeadlessSequence(o, plain.scene, camera, configs);
+    const auto after = app::renderHeadlessSequence(o, levels.scene, camera, configs);
+    EXPECT_EQ(before.front().validationMessages, 0u);
+    EXPECT_EQ(after.front().validationMessages, 0u);
+    for (size_t c = 0; c < configs.size(); ++c) {
+        ASSERT_EQ(after[c].frames.size(), frames) << nameOf(configs[c]);
+        for (uint32_t f = 0; f < frames; ++f) {
+            EXPECT_TRUE(after[c].frames[f].ids == before[c].frames[f].ids)
+                << nameOf(configs[c]) << ", frame " << f;
+            EXPECT_TRUE(after[c].frames[f].color == before[c].frames[f].color)
+                << nameOf(configs[c]) << ", frame " << f;
+        }
+    }
+}
+
+// With levels chosen, the images do not depend on the culling: two-phase occlusion draws
+// what frustum culling draws (itself tested against culling off), on every frame of a path
+// along which objects change level, for every technique in the modes that choose levels.
+TEST(LodRender, OcclusionCullingDrawsFrustumCullingsImagesWithLevelsChosen) {
+    const app::LoadedScene loaded = smallScene(scene::maxLevels);
+    constexpr uint32_t W = 160, H = 90, frames = 4;
+    std::vector<render::RenderSettings> configs;
+    for (const render::Technique& t : render::techniques())
+        for (const render::DrawMode& m : render::drawModes())
+            for (render::CullMode mode : {render::CullMode::Frustum, render::CullMode::Occlusion}) {
+                if (!render::cullPlan(t, m, mode).gpuLists) continue;
+                configs.push_back(testing_support::settingsFor(t, m));
+                configs.back().culling.mode = mode;
+                configs.back().lod.errorPixels = 1.0f;
+            }
+    ASSERT_GE(configs.size(), 2u * render::techniques().size());
+    app::Options o = testing_support::headlessOptions(W, H, frames);
+    o.cameraPath = scene::CameraPath::Dolly;
+    o.keepEveryFrame = true;
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    for (size_t c = 0; c + 1 < configs.size(); c += 2) {
+        const app::HeadlessResult& frustum = results[c];
+        const app::HeadlessResult& occlusion = results[c + 1];
+        const std::string name = nameOf(configs[c + 1]);
+        ASSERT_EQ(occlusion.frames.size(), frames) << name;
+        for (uint32_t f = 0; f < frames; ++f) {
+            EXPECT_TRUE(occlusion.frames[f].ids == frustum.frames[f].ids)
+                << name << ", frame " << f;
+            EXPECT_TRUE(occlusion.frames[f].color == frustum.frames[f].color)
+                << name << ", frame " << f;
+        }
+        // Levels were chosen, and not only the coarsest: the path comes close enough for
+        // full detail too.
+        const bool mesh = configs[c].pipeline.technique->usesMeshShader();
+        EXPECT_GT(coarserTriangles(occlusion, mesh), 0u) << name;
+        uint64_t full = 0;
+        for (const gpu::CullStats& stats : occlusion.cullStats)
+            full += render::countsOf(stats, mesh).levelTriangles[0];
+        EXPECT_GT(full, 0u) << name;
+    }
+}
+
+// An error no level reaches draws every object at its coarsest level: the GPU's choice draws
+// the image of the engine forced to that level, for every technique in every mode that
+// chooses, and the counters put every triangle at the coarser levels.
+TEST(LodRender, AHugeErrorDrawsTheCoarsestLevel) {
+    const app::LoadedScene chosen = smallScene(scene::maxLevels);
+    const app::LoadedScene forced = smallScene(scene::maxLevels, scene::maxLevels - 1);
+    constexpr uint32_t W = 160, H = 90;
+    std::vector<render::RenderSettings> configs, references;
+    for (const render::Technique& t : render::techniques())
+        for (const render::DrawMode& m : render::drawModes()) {
+            if (!render::cullPlan(t, m, render::CullMode::Occlusion).gpuLists) continue;
+            references.push_back(testing_support::settingsFor(t, m));
+            configs.push_back(references.back());
+            configs.back().lod.errorPixels = 1e6f;
+        }
+    const app::Options o = testing_support::headlessOptions(W, H, 2);
+    const scene::Camera camera = app::initialCamera(chosen, float(W) / float(H));
+    const auto gpu = app::renderHeadlessSequence(o, chosen.scene, camera, configs);
+    const auto engine = app::renderHeadlessSequence(o, forced.scene, camera, references);
+    EXPECT_EQ(gpu.front().validationMessages, 0u);
+    EXPECT_EQ(engine.front().validationMessages, 0u);
+    for (size_t c = 0; c < configs.size(); ++c) {
+        const std::string name = nameOf(configs[c]);
+        EXPECT_TRUE(gpu[c].ids == engine[c].ids) << name;
+        EXPECT_TRUE(gpu[c].color == engine[c].color) << name;
+        ASSERT_FALSE(gpu[c].cullStats.empty()) << name;
+        const render::CullCounts counts = render::countsOf(
+            gpu[c].cullStats.back(), configs[c].pipeline.technique->usesMeshShader());
+        EXPECT_GT(counts.triangles, 0u) << name;
+        // Full detail only where an object has no coarser level.
+        uint64_t coarser = 0;
+        for (size_t l = 1; l < counts.levelTriangles.size(); ++l)
+            coarser += counts.levelTriangles[l];
+        EXPECT_EQ(coarser + counts.levelTriangles[0], counts.triangles) << name;
+        EXPECT_GT(coarser, counts.levelTriangles[0]) << name;
+    }
+}
+
+namespace {
+
+// Chebyshev distance of every pixel to the nearest outline pixel of `ids` (a pixel whose
+// right or lower neighbour shows another part or background, and that neighbour), capped.
+std::vector<uint32_t> outlineDistance(const std::vector<uint32_t>& ids, uint32_t w, uint32_t h,
+                                      uint32_t cap) {
+    std::vector<uint32_t> distance(ids.size(), cap);
+    std::deque<size_t> queue;
+    auto mark = [&](size_t i) {
+        if (distance[i] != 0) queue.push_back(i);
+        distance[i] = 0;
+    };
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            if (x + 1 < w && ids[i + 1] != ids[i]) mark(i), mark(i + 1);
+            if (y + 1 < h && ids[i + w] != ids[i]) mark(i), mark(i + w);
+        }
+    while (!queue.empty()) {
+        const size_t i = queue.front();
+        queue.pop_front();
+        const int x = int(i % w), y = int(i / w);
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                if (x + dx < 0 || y + dy < 0 || x + dx >= int(w) || y + dy >= int(h)) continue;
+                const size_t j = size_t(y + dy) * w + size_t(x + dx);
+                if (distance[j] > distance[i] + 1) {
+                    distance[j] = distance[i] + 1;
+                    queue.push_back(j);
+                }
+            }
+    }
+    return distance;
+}
+
+struct Moved {
+    size_t changed = 0; // pixels whose part differs from full detail's
+    size_t far = 0;     // of which further than 2 pixels from full detail's outlines
+    std::string first;  // where the first far one is
+};
+
+Moved movedPixels(const std::vector<uint32_t>& full, const std::vector<uint32_t>& level, uint32_t w,
+                  uint32_t h) {
+    const std::vector<uint32_t> distance = outlineDistance(full, w, h, 99);
+    Moved m;
+    for (size_t i = 0; i < full.size(); ++i) {
+        if (full[i] == level[i]) continue;
+        ++m.changed;
+        if (distance[i] <= 2) continue;
+        if (m.far++ == 0)
+            m.first = std::to_string(i % w) + "," + std::to_string(i / w) + ": part " +
+                      std::to_string(full[i]) + " became " +
+                      (level[i] == NONE ? std::string("background") : std::to_string(level[i]));
+    }
+    return m;
+}
+
+// At a one-pixel error, on every frame of the dolly path (the fitted view, into the assembly
+// and out) at w x h, each pixel whose part differs from full detail's lies within 2 pixels of
+// an outline of full detail's ID image: no part moves further, no crack opens where full
+// detail shows a surface. Where `zoom` is given, the rule is shown to fail: every object at
+// its coarsest level, seen `zoom` times larger, moves pixels further.
+void expectNearOutlines(const app::SceneSettings& source, uint32_t w, uint32_t h, uint32_t zoom) {
+    const app::LoadedScene loaded = app::loadScene(source);
+    const uint32_t frames = 4;
+    std::vector<render::RenderSettings> configs(
+        2, testing_support::settingsFor(*render::findTechnique("vertex-fs"),
+                                        *render::findDrawMode("mdi-baseinstance")));
+    configs[1].lod.errorPixels = 1.0f;
+    app::Options o = testing_support::headlessOptions(w, h, frames);
+    o.cameraPath = scene::CameraPath::Dolly;
+    o.keepEveryFrame = true;
+    const scene::Camera camera = app::initialCamera(loaded, float(w) / float(h));
+    const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    ASSERT_EQ(results[1].frames.size(), frames);
+    size_t changed = 0;
+    for (uint32_t f = 0; f < frames; ++f) {
+        const Moved one = movedPixels(results[0].frames[f].ids, results[1].frames[f].ids, w, h);
+        EXPECT_EQ(one.far, 0u) << "frame " << f << ", first at " << one.first;
+        changed += one.changed;
+    }
+    // The levels were drawn and changed the image.
+    EXPECT_GT(coarserTriangles(results[1], false), 0u);
+    EXPECT_GT(changed, 0u);
+
+    if (zoom == 0) return;
+    configs[1].lod.errorPixels = 1e6f;
+    const app::Options large = testing_support::headlessOptions(w * zoom, h * zoom);
+    const auto coarsest = app::renderHeadlessSequence(large, loaded.scene, camera, configs);
+    EXPECT_GT(movedPixels(coarsest[0].ids, coarsest[1].ids, w * zoom, h * zoom).far, 0u);
+}
+
+} // namespace
+
+TEST(LodRender, AOnePixelErrorMovesPartsOnlyNextToOutlinesOnTheDefaultModel) {
+    app::SceneSettings source;
+    source.lodLevels = scene::maxLevels;
+    expectNearOutlines(source, 320, 180, 4);
+}
+
+TEST(LodRender, AOnePixelErrorMovesPartsOnlyNextToOutlinesOnACadFile) {
+    if (!std::filesystem::exists(kCadBearing))
+        GTEST_SKIP() << kCadBearing << " missing (package occt-misc)";
+    app::SceneSettings source;
+    source.model = kCadBearing;
+    source.lodLevels = scene::maxLevels;
+    // Small enough for the first level to be chosen: its error is 0.7 % of the diagonal.
+    // Open CASCADE's coarsest level of this file moves no pixel beyond 2 pixels even at
+    // 1280x720 (tried), so the failing side is shown on the default model only.
+    expectNearOutlines(source, 160, 90, 0);
+}
+
+// A still view draws its last culled lists again (render/culling.h), but not once the error
+// changes: the levels are chosen again, and the images are those of a run that started with
+// the new error. Kept draw lists carry over between the two settings.
+TEST(LodRender, ChangingTheErrorInAStillViewChoosesAgain) {
+    const app::LoadedScene loaded = smallScene(scene::maxLevels);
+    constexpr uint32_t W = 160, H = 90;
+    std::vector<render::RenderSettings> sequence, fresh;
+    for (const char* name : {"vertex-fs", "mesh-fs"}) {
+        render::RenderSettings s = testing_support::settingsFor(
+            *render::findTechnique(name), *render::findDrawMode("mdi-baseinstance"));
+        s.lod.errorPixels = 0.01f; // full detail, mostly
+        sequence.push_back(s);
+        s.lod.errorPixels = 1e6f;
+        sequence.push_back(s);
+        fresh.push_back(s);
+    }
+    const app::Options o = testing_support::headlessOptions(W, H, 5);
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    const auto switched = app::renderHeadlessSequence(o, loaded.scene, camera, sequence);
+    EXPECT_EQ(switched.front().validationMessages, 0u);
+    for (size_t i = 0; i < fresh.size(); ++i) {
+        const auto alone = app::renderHeadlessSequence(o, loaded.scene, camera, {fresh[i]});
+        const app::HeadlessResult& before = switched[2 * i];
+        const app::HeadlessResult& after = switched[2 * i + 1];
+        const std::string name = nameOf(fresh[i]);
+        EXPECT_GT(before.reusedFrames, 0u) << name; // the view stood still
+        EXPECT_TRUE(after.ids == alone.front().ids) << name;
+        EXPECT_TRUE(after.color == alone.front().color) << name;
+        EXPECT_FALSE(after.ids == before.ids) << name;
+    }
+}
