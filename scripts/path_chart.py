@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""path_chart.py - GPU time of every frame along a camera path, one line per culling mode,
-as a chart (PNG), and each culling mode's median against culling off as a table (stdout),
+"""path_chart.py - GPU time of every frame along a camera path, one line per culling mode (and
+level-of-detail error, where levels were chosen), as a chart (PNG), and each one's median
+against culling off as a table (stdout),
 from the JSON that `idview --benchmark --camera-path PATH --benchmark-out` writes.
 
     scripts/path_chart.py RUN.json -o chart.png [--renderer vertex-fs,mesh-fs] [--mode M]
@@ -29,16 +30,19 @@ def main():
     s = run["settings"]
     if s.get("camera_path", "none") == "none":
         sys.exit(f"{args.run}: not a camera path run (settings.camera_path)")
-    rows = {}  # (renderer, mode) -> culling -> row, in the file's order
-    cullings = []
+    rows = {}  # (renderer, mode) -> setting -> row, in the file's order
+    cullings = []  # the settings: culling modes, with the error where levels were chosen
     for row in run["results"]:
-        rows.setdefault((row["renderer"], row["mode"]), {})[row["culling"]] = row
-        if row["culling"] not in cullings:
-            cullings.append(row["culling"])
+        setting = row["culling"]
+        if row.get("lod_applied"):
+            setting += f"+LOD{row['lod_error']:g}px"
+        rows.setdefault((row["renderer"], row["mode"]), {})[setting] = row
+        if setting not in cullings:
+            cullings.append(setting)
     others = [c for c in cullings if c != "off"]
 
     print(f"{'renderer':<16}{'mode':<18}{'off ms':>8}" +
-          "".join(f"{c + ' ms':>14}{'x off':>7}" for c in others))
+          "".join(f"{c + ' ms':>{max(14, len(c) + 5)}}{'x off':>7}" for c in others))
     for (renderer, mode), by in rows.items():
         if "off" not in by:
             continue
@@ -46,7 +50,7 @@ def main():
         line = f"{renderer:<16}{mode:<18}{off:>8.3f}"
         for c in others:
             ms = by[c]["gpu_ms_median"] if c in by else float("nan")
-            line += f"{ms:>14.3f}{ms / off:>7.3f}"
+            line += f"{ms:>{max(14, len(c) + 5)}.3f}{ms / off:>7.3f}"
         print(line)
 
     names = [n for n in args.renderer.split(",") if (n, args.mode) in rows]

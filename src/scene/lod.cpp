@@ -1,4 +1,5 @@
-// lod.cpp - levels of detail by meshoptimizer's simplifier, part by part with borders locked.
+// lod.cpp - levels of detail by meshoptimizer's simplifier: with seams between the parts, or
+// welded (lod_welded.h), whichever gives the fewer triangles for the error.
 #include "scene/lod.h"
 
 #include <meshoptimizer.h>
@@ -6,18 +7,16 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 #include <unordered_map>
+
+#include "scene/lod_welded.h"
 
 namespace scene {
 namespace {
-
-// One part's triangles at one level, as indices into the full-detail geometry's vertices.
-struct PartLevel {
-    std::vector<uint32_t> indices;
-    float error = 0.0f; // model units
-};
 
 // A full-detail geometry's coarser levels, before they join the scene.
 struct Levels {
@@ -107,29 +106,64 @@ std::vector<PartLevel> simplifyWhole(const Scene& scene, const Geometry& g, doub
     return parts;
 }
 
-Levels levelsOf(const Scene& scene, const Geometry& g, const LodOptions& options) {
+// With seams between the parts: as a whole where no part would vanish, at `share` or a
+// milder aim up to keepAtMost of full detail, else each part alone inside its fixed outline.
+std::vector<PartLevel> simplifySeamed(const Scene& scene, const Geometry& g, double share,
+                                      const LodOptions& options) {
+    std::vector<PartLevel> parts;
+    for (double tried = share; parts.empty() && tried <= options.keepAtMost; tried *= 1.4)
+        parts = simplifyWhole(scene, g, tried);
+    if (!parts.empty()) return parts;
+    for (uint32_t p = 0; p < g.partCount; ++p) {
+        const Part& part = scene.parts[g.firstPart + p];
+        const size_t target = size_t(double(part.triangleCount) * share + 0.5);
+        parts.push_back(simplifyPart(scene, g, part, target));
+    }
+    return parts;
+}
+
+struct Candidate {
+    std::vector<PartLevel> parts;
+    size_t triangles = 0;
+    float error = 0.0f;
+};
+
+// One candidate level: at `share`, with seams between the parts (way 0) or welded (way 1,
+// where the geometry has several parts; else none). Where parts meet, meshoptimizer's error
+// is the surface's, not how far a part's outline went along it: the error covers both.
+Candidate candidateOf(const Scene& scene, const Geometry& g, double share, int way,
+                      const LodOptions& options) {
+    Candidate c;
+    c.parts = way == 0 ? simplifySeamed(scene, g, share, options) : simplifyWelded(scene, g, share);
+    if (c.parts.empty()) return c;
+    c.error = partsMoved(scene, g, c.parts);
+    for (PartLevel& part : c.parts) {
+        c.triangles += part.indices.size() / 3;
+        c.error = std::max(c.error, part.error);
+    }
+    for (PartLevel& part : c.parts) part.error = c.error;
+    return c;
+}
+
+// The levels among a geometry's candidates: those that, taken by growing error, keep at most
+// keepAtMost of the triangles of the level before and fit in the memory allowed. No level is
+// both coarser-looking and heavier than another, and each is worth its memory.
+Levels chooseLevels(const Geometry& g, std::vector<Candidate> candidates,
+                    const LodOptions& options) {
+    std::erase_if(candidates, [](const Candidate& c) { return c.parts.empty(); });
+    std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+        return std::tie(a.error, a.triangles) < std::tie(b.error, b.triangles);
+    });
     Levels levels;
-    size_t previous = g.triangleCount;
-    double share = 1.0;
-    for (uint32_t level = 1; level < options.levels; ++level) {
-        share *= options.reduction;
-        // Where the level's share would make a part vanish, a milder one may not: the first
-        // that keeps every part, up to what the level may keep at most.
-        std::vector<PartLevel> parts;
-        const double most = double(options.keepAtMost) * double(previous) / g.triangleCount;
-        for (double tried = share; parts.empty() && tried <= most; tried *= 1.4)
-            parts = simplifyWhole(scene, g, tried);
-        if (parts.empty())
-            for (uint32_t p = 0; p < g.partCount; ++p) {
-                const Part& part = scene.parts[g.firstPart + p];
-                const size_t target = size_t(double(part.triangleCount) * share + 0.5);
-                parts.push_back(simplifyPart(scene, g, part, target));
-            }
-        size_t triangles = 0;
-        for (const PartLevel& part : parts) triangles += part.indices.size() / 3;
-        if (double(triangles) > double(options.keepAtMost) * double(previous)) break;
-        previous = triangles;
-        levels.byLevel.push_back(std::move(parts));
+    size_t previous = g.triangleCount, held = 0;
+    for (Candidate& c : candidates) {
+        if (levels.byLevel.size() + 1 >= options.levels) break;
+        if (double(c.triangles) > double(options.keepAtMost) * double(previous) ||
+            double(held + c.triangles) > double(options.memory) * double(g.triangleCount))
+            continue;
+        previous = c.triangles;
+        held += c.triangles;
+        levels.byLevel.push_back(std::move(c.parts));
     }
     return levels;
 }
@@ -179,29 +213,43 @@ void buildLevels(Scene& scene, const LodOptions& options, const LodProgress& pro
     std::vector<uint32_t> todo;
     for (uint32_t g = 0; g < scene.geometries.size(); ++g)
         if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty()) todo.push_back(g);
-    std::vector<Levels> results(todo.size());
+    // Every candidate of every geometry is a task of its own: a large geometry's do not
+    // wait for each other.
+    const uint32_t shares = options.levels - 1;
+    const size_t tasks = todo.size() * shares * 2;
+    std::vector<Candidate> candidates(tasks);
     std::atomic<size_t> next{0}, done{0};
     auto work = [&] {
-        for (size_t i; (i = next.fetch_add(1)) < todo.size(); ++done)
-            results[i] = levelsOf(scene, scene.geometries[todo[i]], options);
+        for (size_t i; (i = next.fetch_add(1)) < tasks; ++done) {
+            const size_t geometry = i / (2 * shares), level = i / 2 % shares + 1;
+            candidates[i] = candidateOf(scene, scene.geometries[todo[geometry]],
+                                        std::pow(double(options.reduction), double(level)),
+                                        int(i % 2), options);
+        }
     };
-    const unsigned threads = std::max(
-        1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(todo.size())));
+    const unsigned threads =
+        std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(tasks)));
     std::vector<std::jthread> workers;
     for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work);
     if (progress && !workers.empty()) {
         // The calling thread reports while the others work, then joins in.
-        while (done.load() < todo.size() && next.load() < todo.size()) {
-            progress(double(done.load()) / double(todo.size()));
+        while (done.load() < tasks && next.load() < tasks) {
+            progress(double(done.load()) / double(tasks));
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         }
     }
     work();
     workers.clear(); // joins
     // Appended in geometry order, so the scene does not depend on the threads' timing.
-    for (size_t i = 0; i < todo.size(); ++i)
-        for (size_t l = 0; l < results[i].byLevel.size(); ++l)
-            addLevel(scene, todo[i], uint32_t(l + 1), results[i].byLevel[l]);
+    for (size_t i = 0; i < todo.size(); ++i) {
+        const auto first = candidates.begin() + long(i * 2 * shares);
+        Levels levels = chooseLevels(
+            scene.geometries[todo[i]],
+            {std::make_move_iterator(first), std::make_move_iterator(first + long(2 * shares))},
+            options);
+        for (size_t l = 0; l < levels.byLevel.size(); ++l)
+            addLevel(scene, todo[i], uint32_t(l + 1), levels.byLevel[l]);
+    }
     if (progress) progress(1.0);
 }
 

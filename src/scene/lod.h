@@ -24,8 +24,10 @@ struct LodOptions {
     // Each level aims at this share of the triangles of full detail times the level before.
     float reduction = 0.25f;
     // A level that keeps more than this share of the level before's triangles is not worth
-    // its memory: it and every coarser level are left out.
+    // its memory, nor are levels that together would hold more than `memory` of full
+    // detail's triangles.
     float keepAtMost = 0.8f;
+    float memory = 0.6f;
 };
 
 // Called with the share of geometries done, 0..1, from the calling thread.
