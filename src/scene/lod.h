@@ -27,7 +27,7 @@ struct LodOptions {
     // its memory, nor are levels that together would hold more than `memory` of full
     // detail's triangles.
     float keepAtMost = 0.8f;
-    float memory = 0.6f;
+    float memory = 0.8f;
 };
 
 // Called with the share of geometries done, 0..1, from the calling thread.
