@@ -2,7 +2,8 @@
 # chart_test.sh ROOT - scripts/benchmark_chart.py on the committed H100 runs (the full runs and
 # the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are the
 # JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
-# scripts/path_chart.py on a committed camera-path run, likewise.
+# scripts/path_chart.py on a committed camera-path run, and scripts/lod_chart.py on the
+# levels-of-detail runs, likewise.
 set -uo pipefail
 root=$1
 runs=$root/docs/benchmarks/h100-2026-11-23-issue14/final
@@ -62,6 +63,38 @@ for line in lines:
     for got, key in ((fx, "frustum"), (ox, "occlusion")):
         if abs(float(got) - want[key] / want["off"]) > 5.01e-4:
             sys.exit(f"{name} {mode} {key} ratio: {got}")
+PY
+# scripts/lod_chart.py on the committed levels-of-detail runs: a PNG, and per run the GPU ms,
+# ratio to culling off and triangles drawn of vertex-fs with culling off, occlusion and
+# occlusion with levels chosen at 1 px, as the JSON has them.
+lod=$root/docs/benchmarks/h100-2026-11-25-lod
+/usr/bin/python3 "$root/scripts/lod_chart.py" "$lod/view-1x.json" "$lod/copies16-4x.json" \
+    "$lod/dolly-1x.json" -o "$work/lod.png" --renderer vertex-fs >"$work/lod.txt" \
+    2>"$work/err.txt" || fail "lod chart script: $(cat "$work/err.txt")"
+[[ $(head -c 8 "$work/lod.png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] ||
+    fail "no levels-of-detail PNG written"
+/usr/bin/python3 - "$work/lod.txt" "$lod/view-1x.json" "$lod/copies16-4x.json" \
+    "$lod/dolly-1x.json" <<'PY' || fail "levels-of-detail table does not match the JSON"
+import json, sys
+table, paths = sys.argv[1], sys.argv[2:]
+lines = open(table).read().splitlines()[1:]
+if len(lines) != len(paths):
+    sys.exit(f"{len(lines)} lines for {len(paths)} runs")
+for line, path in zip(lines, paths):
+    rows = [r for r in json.load(open(path))["results"]
+            if r["renderer"] == "vertex-fs" and r["mode"] == "mdi-baseinstance"]
+    off = next(r for r in rows if r["culling"] == "off")
+    want = [off, next(r for r in rows if r["culling"] == "occlusion" and not r["lod_applied"]),
+            next(r for r in rows if r["lod_applied"] and r["lod_error"] == 1)]
+    got = line.split()[1:]
+    if len(got) != 9:
+        sys.exit(f"{path}: {line}")
+    for k, row in enumerate(want):
+        ms, ratio, tris = (float(x) for x in got[3 * k:3 * k + 3])
+        if (abs(ms - row["gpu_ms_median"]) > 5.01e-4 or
+                abs(ratio - row["gpu_ms_median"] / off["gpu_ms_median"]) > 5.01e-4 or
+                abs(tris - row["triangles_drawn"] / 1e3) > 0.51):
+            sys.exit(f"{path} column {k}: {got[3 * k:3 * k + 3]}")
 PY
 echo "chart_test: $failures failed"
 exit $((failures > 0))
