@@ -23,7 +23,8 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
                    bool runs, std::vector<gpu::DrawCull>& out, std::vector<uint32_t>& pairs) {
     uint32_t bits = 0;
     out.reserve(list.ranges.size());
-    // The box around each object's full detail, whose sphere all its draws choose levels by.
+    // The box around each object's own geometry (full detail, or the level the scene was
+    // forced to), whose sphere all its draws choose their level by.
     std::vector<std::optional<scene::Bounds>> wholeBoxes(scene.geometries.size());
     auto whole = [&](uint32_t g) {
         if (!wholeBoxes[g])
@@ -45,7 +46,7 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
         cull.firstPair = static_cast<uint32_t>(pairs.size());
         cull.partsToEnd = scene.geometries[g].partCount - d.firstPart;
-        // The sphere around the object's full detail, and the errors the level choice weighs.
+        // The sphere around the object's own geometry, and the errors the level choice weighs.
         const uint32_t full = scene.objects[d.object].geometry;
         cull.lodCenter = whole(full).center();
         cull.lodRadius = whole(full).radius();
