@@ -141,11 +141,12 @@ bool occluded(FrameData frame, BoxView view, int span) {
 
 // Levels of detail: whether the draw `c` culls is of the level its object draws this frame.
 // Where the list holds levels (frame.lodErrorPixels above 0), an object draws its coarsest
-// level whose error, seen at the nearest depth of the sphere around it, spans under that many
-// pixels: its finest where none does, or where the sphere reaches the camera's plane. All of
-// an object's draws hold the same sphere and the errors grow level by level, so exactly one
-// level is chosen, by the same arithmetic in every draw. Elsewhere the list holds one level
-// of each object, which is drawn.
+// level whose error, seen at the nearest depth of the box around it, spans under that many
+// pixels: its finest where none does, or where the box reaches the camera's plane. A box
+// hugs a long part (a rail, a shaft seen from its side) far closer than a sphere, whose
+// nearest point may be next to the camera. All of an object's draws hold the same box and
+// the errors grow level by level, so exactly one level is chosen, by the same arithmetic in
+// every draw. Elsewhere the list holds one level of each object, which is drawn.
 bool lodChosen(FrameData frame, mat4 world, DrawCull c) {
     if (frame.lodErrorPixels <= 0.0) return true;
     // Pixels per model unit at depth 1: the projection's vertical scale (the length of the
@@ -154,12 +155,17 @@ bool lodChosen(FrameData frame, mat4 world, DrawCull c) {
     float wScale = length(vec3(frame.viewProj[0][3], frame.viewProj[1][3], frame.viewProj[2][3]));
     float pixelsAtUnitDepth = length(yRow) / max(wScale, 1e-30) * 0.5 * float(frame.viewport.y);
     float scale = max(length(world[0].xyz), max(length(world[1].xyz), length(world[2].xyz)));
-    vec4 center = frame.viewProj * (world * vec4(c.lodCenter, 1.0));
-    float depth = center.w / max(wScale, 1e-30) - c.lodRadius * scale;
-    if (!(depth > 0.0)) return c.lodFinest != 0u;
+    // w is linear over the box, so its nearest corner has the smallest.
+    mat4 mvp = frame.viewProj * world;
+    vec3 halfSize = max(c.lodBoxMax - c.lodBoxMin, vec3(0.0)) * 0.5;
+    float w = (mvp * vec4((c.lodBoxMin + c.lodBoxMax) * 0.5, 1.0)).w -
+              abs(mvp[0].w) * halfSize.x - abs(mvp[1].w) * halfSize.y - abs(mvp[2].w) * halfSize.z;
+    float depth = w / max(wScale, 1e-30);
+    bool finest = c.lodError < 0.0;
+    if (!(depth > 0.0)) return finest;
     // The largest error in model units that stays under the pixels asked at that depth.
     float budget = frame.lodErrorPixels * depth / (pixelsAtUnitDepth * scale);
-    bool fits = c.lodFinest != 0u || c.lodError < budget;
+    bool fits = finest || c.lodError < budget;
     bool nextFits = c.lodNextError < budget;
     return fits && !nextFits;
 }

@@ -303,13 +303,13 @@ struct DrawCull {
     // shows one of them, so that an object's draws are never drawn out of their order (a
     // later part drawn first would win where two of its parts tie in depth).
     uint partsToEnd;
-    // Levels of detail (cull.glsl's lodChosen): the sphere around the object's own geometry,
-    // the same in all its draws; the errors of the draw's level and of the next coarser one
-    // (FLT_MAX: none), in model units; and whether it is the object's own geometry.
-    vec3 lodCenter;
-    float lodRadius;
-    float lodError, lodNextError;
-    uint lodFinest, lodUnused;
+    // Levels of detail (cull.glsl's lodChosen): the box around the object's own geometry, the
+    // same in all its draws; the errors of the draw's level (below 0: the object's own
+    // geometry) and of the next coarser one (FLT_MAX: none), in model units.
+    vec3 lodBoxMin;
+    float lodError;
+    vec3 lodBoxMax;
+    float lodNextError;
 };
 // A meshlet's or a part's box, in its geometry's coordinates (min above max: no triangles).
 struct CullBox {

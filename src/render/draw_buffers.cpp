@@ -46,12 +46,11 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
         cull.firstPair = static_cast<uint32_t>(pairs.size());
         cull.partsToEnd = scene.geometries[g].partCount - d.firstPart;
-        // The sphere around the object's own geometry, and the errors the level choice weighs.
+        // The box around the object's own geometry, and the errors the level choice weighs.
         const uint32_t full = scene.objects[d.object].geometry;
-        cull.lodCenter = whole(full).center();
-        cull.lodRadius = whole(full).radius();
-        cull.lodFinest = g == full ? 1u : 0u;
-        cull.lodError = g == full ? 0.0f : scene.geometries[g].lodError;
+        cull.lodBoxMin = whole(full).min;
+        cull.lodBoxMax = whole(full).max;
+        cull.lodError = g == full ? -1.0f : scene.geometries[g].lodError;
         const uint32_t next = scene::geometryAtLevel(scene, full, d.level + 1);
         cull.lodNextError =
             next == g ? std::numeric_limits<float>::max() : scene.geometries[next].lodError;

@@ -8,20 +8,19 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <iterator>
+#include <limits>
+#include <span>
 #include <stdexcept>
 #include <thread>
 #include <tuple>
 #include <unordered_map>
 
+#include "scene/lod_choice.h"
 #include "scene/lod_welded.h"
 
 namespace scene {
 namespace {
-
-// A full-detail geometry's coarser levels, before they join the scene.
-struct Levels {
-    std::vector<std::vector<PartLevel>> byLevel; // [level - 1][part]
-};
 
 // Simplifies one part on its own vertices, so that the simplifier's work and memory scale
 // with the part, not with its geometry, and its border is the part's own outline.
@@ -125,47 +124,60 @@ std::vector<PartLevel> simplifySeamed(const Scene& scene, const Geometry& g, dou
 struct Candidate {
     std::vector<PartLevel> parts;
     size_t triangles = 0;
+    uint64_t bytes = 0; // as levelStats counts them
     float error = 0.0f;
 };
 
 // One candidate level: at `share`, with seams between the parts (way 0) or welded (way 1,
 // where the geometry has several parts; else none). Where parts meet, meshoptimizer's error
 // is the surface's, not how far a part's outline went along it: the error covers both.
+// Errors past `limit` need not be measured whole.
 Candidate candidateOf(const Scene& scene, const Geometry& g, double share, int way,
-                      const LodOptions& options) {
+                      const LodOptions& options, float limit) {
     Candidate c;
     c.parts = way == 0 ? simplifySeamed(scene, g, share, options) : simplifyWelded(scene, g, share);
     if (c.parts.empty()) return c;
-    c.error = partsMoved(scene, g, c.parts);
+    c.error = partsMoved(scene, g, c.parts, limit);
+    std::vector<bool> used(g.vertexCount, false);
+    size_t vertices = 0;
     for (PartLevel& part : c.parts) {
         c.triangles += part.indices.size() / 3;
         c.error = std::max(c.error, part.error);
+        for (uint32_t v : part.indices)
+            if (!used[v]) used[v] = true, ++vertices;
     }
+    c.bytes = vertices * sizeof(Vertex) + 12ull * c.triangles + g.partCount * sizeof(Part);
     for (PartLevel& part : c.parts) part.error = c.error;
     return c;
 }
 
-// The levels among a geometry's candidates: those that, taken by growing error, keep at most
-// keepAtMost of the triangles of the level before and fit in the memory allowed. No level is
-// both coarser-looking and heavier than another, and each is worth its memory.
-Levels chooseLevels(const Geometry& g, std::vector<Candidate> candidates,
-                    const LodOptions& options) {
-    std::erase_if(candidates, [](const Candidate& c) { return c.parts.empty(); });
-    std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
-        return std::tie(a.error, a.triangles) < std::tie(b.error, b.triangles);
-    });
-    Levels levels;
-    size_t previous = g.triangleCount, held = 0;
-    for (Candidate& c : candidates) {
-        if (levels.byLevel.size() + 1 >= options.levels) break;
-        if (double(c.triangles) > double(options.keepAtMost) * double(previous) ||
-            double(held + c.triangles) > double(options.memory) * double(g.triangleCount))
-            continue;
-        previous = c.triangles;
-        held += c.triangles;
-        levels.byLevel.push_back(std::move(c.parts));
+// The shares of full detail's triangles candidates aim at: finely spaced near full detail,
+// where a few hundredths of a unit of error separate a level that large parts may take at a
+// few pixels from one they may not, then halving.
+constexpr double candidateShares[] = {0.7, 0.5, 0.35, 0.25, 0.12, 0.06, 0.03, 0.015};
+
+// One way's candidates (by falling share) worth weighing: up to the first whose error passes
+// half the geometry's size (it would show only where the geometry spans a pixel or two),
+// each with fewer triangles than every one before it (a part's locked border or seams may
+// hold a share's aim back, and a smaller one may then do better).
+void keepUseful(std::vector<Candidate>& out, std::span<Candidate> way, size_t triangles,
+                float size) {
+    for (Candidate& c : way) {
+        if (c.parts.empty() || c.error > 0.5f * size) break;
+        if (c.triangles >= triangles) continue;
+        triangles = c.triangles;
+        out.push_back(std::move(c));
     }
-    return levels;
+}
+
+// The size errors are weighed against: the diagonal of the geometry's box.
+float sizeOf(const Scene& scene, const Geometry& g) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (uint32_t v = 0; v < g.vertexCount; ++v) {
+        lo = glm::min(lo, scene.vertices[g.firstVertex + v].position);
+        hi = glm::max(hi, scene.vertices[g.firstVertex + v].position);
+    }
+    return g.vertexCount ? glm::length(hi - lo) : 0.0f;
 }
 
 // Appends one level as a geometry of its own, with just the vertices it uses.
@@ -213,43 +225,64 @@ void buildLevels(Scene& scene, const LodOptions& options, const LodProgress& pro
     std::vector<uint32_t> todo;
     for (uint32_t g = 0; g < scene.geometries.size(); ++g)
         if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty()) todo.push_back(g);
-    // Every candidate of every geometry is a task of its own: a large geometry's do not
-    // wait for each other.
-    const uint32_t shares = options.levels - 1;
-    const size_t tasks = todo.size() * shares * 2;
-    std::vector<Candidate> candidates(tasks);
+    // Every candidate is a task of its own, the largest geometries' first, so that no
+    // thread is left with a large one at the end. The calling thread works too and reports
+    // between its tasks.
+    constexpr size_t shares = std::size(candidateShares);
+    std::vector<float> sizes(todo.size());
+    std::vector<uint32_t> order(todo.size());
+    for (size_t i = 0; i < todo.size(); ++i) {
+        sizes[i] = sizeOf(scene, scene.geometries[todo[i]]);
+        order[i] = uint32_t(i);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return scene.geometries[todo[a]].triangleCount > scene.geometries[todo[b]].triangleCount;
+    });
+    const size_t tasks = options.levels > 1 ? todo.size() * 2 * shares : 0;
+    std::vector<Candidate> candidates(todo.size() * 2 * shares);
     std::atomic<size_t> next{0}, done{0};
-    auto work = [&] {
-        for (size_t i; (i = next.fetch_add(1)) < tasks; ++done) {
-            const size_t geometry = i / (2 * shares), level = i / 2 % shares + 1;
-            candidates[i] = candidateOf(scene, scene.geometries[todo[geometry]],
-                                        std::pow(double(options.reduction), double(level)),
-                                        int(i % 2), options);
+    auto work = [&](bool report) {
+        for (size_t t; (t = next.fetch_add(1)) < tasks;) {
+            const size_t i = order[t / (2 * shares)], way = t / shares % 2, share = t % shares;
+            candidates[(2 * i + way) * shares + share] =
+                candidateOf(scene, scene.geometries[todo[i]], candidateShares[share], int(way),
+                            options, 0.5f * sizes[i]);
+            const size_t finished = ++done;
+            if (report && progress) progress(double(finished) / double(tasks));
         }
     };
     const unsigned threads =
         std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(tasks)));
     std::vector<std::jthread> workers;
-    for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work);
-    if (progress && !workers.empty()) {
-        // The calling thread reports while the others work, then joins in.
-        while (done.load() < tasks && next.load() < tasks) {
-            progress(double(done.load()) / double(tasks));
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-    }
-    work();
+    for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, false);
+    work(true);
     workers.clear(); // joins
-    // Appended in geometry order, so the scene does not depend on the threads' timing.
+    // Which candidates become levels weighs every geometry against the others, by the
+    // objects that draw it, for the memory the scene may spend on levels.
+    std::vector<uint32_t> instances(scene.geometries.size(), 0);
+    for (const Object& o : scene.objects) ++instances[o.geometry];
+    std::vector<CandidateSet> sets(todo.size());
+    std::vector<std::vector<Candidate>> useful(todo.size());
+    double bytes = 0.0;
     for (size_t i = 0; i < todo.size(); ++i) {
-        const auto first = candidates.begin() + long(i * 2 * shares);
-        Levels levels = chooseLevels(
-            scene.geometries[todo[i]],
-            {std::make_move_iterator(first), std::make_move_iterator(first + long(2 * shares))},
-            options);
-        for (size_t l = 0; l < levels.byLevel.size(); ++l)
-            addLevel(scene, todo[i], uint32_t(l + 1), levels.byLevel[l]);
+        const Geometry& g = scene.geometries[todo[i]];
+        for (size_t way = 0; way < 2; ++way)
+            keepUseful(useful[i], {candidates.data() + (2 * i + way) * shares, shares},
+                       g.triangleCount, sizes[i]);
+        sets[i].triangles = g.triangleCount;
+        sets[i].size = sizes[i];
+        sets[i].instances = std::max(instances[todo[i]], 1u);
+        for (const Candidate& c : useful[i])
+            sets[i].candidates.push_back({c.triangles, c.bytes, c.error});
+        bytes += double(g.vertexCount * sizeof(Vertex) + 12ull * g.triangleCount +
+                        g.partCount * sizeof(Part));
     }
+    const auto chosen =
+        chooseLevels(sets, options.levels - 1, options.keepAtMost, double(options.memory) * bytes);
+    // Appended in geometry order, so the scene does not depend on the threads' timing.
+    for (size_t i = 0; i < todo.size(); ++i)
+        for (size_t l = 0; l < chosen[i].size(); ++l)
+            addLevel(scene, todo[i], uint32_t(l + 1), useful[i][chosen[i][l]].parts);
     if (progress) progress(1.0);
 }
 

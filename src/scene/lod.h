@@ -21,23 +21,23 @@ constexpr uint32_t maxLevels = 4;
 
 struct LodOptions {
     uint32_t levels = maxLevels; // including full detail: 1 builds none
-    // Each level aims at this share of the triangles of full detail times the level before.
-    float reduction = 0.25f;
     // A level that keeps more than this share of the level before's triangles is not worth
-    // its memory, nor are levels that together would hold more than `memory` of full
-    // detail's triangles.
+    // its memory, nor are levels that together would take more than `memory` of full
+    // detail's bytes (vertices, indices and part ranges), so every level together stays
+    // under 1 + memory of full detail alone.
     float keepAtMost = 0.8f;
-    float memory = 0.8f;
+    float memory = 0.55f;
 };
 
 // Called with the share of geometries done, 0..1, from the calling thread.
 using LodProgress = std::function<void(double fraction)>;
 
 // Adds the levels of every full-detail geometry that has none yet. meshoptimizer's simplifier
-// reduces each part's triangles on its own with the part's border locked, so the outlines
-// between parts (and open edges) stay exactly where they are and no crack opens between
-// parts; the error recorded is the largest of the parts'. Runs over the geometries on every
-// hardware thread; the result does not depend on their number.
+// makes candidates at a falling share of the triangles, with seams between the parts or
+// welded (lod.cpp, lod_welded.h), each with the error it really has, covering how far any
+// part moved; the levels kept are those that would draw the fewest triangles over every
+// distance the geometry may be seen at. Runs on every hardware thread; the result does not
+// depend on their number.
 void buildLevels(Scene& scene, const LodOptions& options = {}, const LodProgress& progress = {});
 
 // The geometry `object` draws at `level`: its own at 0, else its coarsest level up to

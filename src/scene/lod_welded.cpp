@@ -128,15 +128,20 @@ class TriangleGrid {
     }
 
     // The nearest triangle to `p`: its distance and index; or, once one within `enough` is
-    // found (the caller wants no nearer), that one.
+    // found (the caller wants no nearer), that one; or, where none lies within `farEnough`
+    // (the caller needs no more), a distance above it that no triangle is nearer than.
     struct Hit {
         float distance = FLT_MAX;
         uint32_t index = 0;
     };
-    Hit nearest(glm::vec3 p, float enough = 0.0f) const {
+    Hit nearest(glm::vec3 p, float enough = 0.0f, float farEnough = FLT_MAX) const {
         const glm::ivec3 at = cellOf(p);
         Hit best;
         for (int ring = 0; float(ring - 1) * cell_ < best.distance; ++ring) {
+            if (float(ring - 1) * cell_ > farEnough) {
+                best.distance = std::min(best.distance, float(ring - 1) * cell_);
+                return best;
+            }
             for (int x = -ring; x <= ring; ++x)
                 for (int y = -ring; y <= ring; ++y)
                     for (int z = -ring; z <= ring; ++z) {
@@ -167,8 +172,9 @@ class TriangleGrid {
     std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
 };
 
-// The farthest a corner or centre of `from` lies from the nearest of `to`.
-float farthest(const std::vector<Triangle>& from, const std::vector<Triangle>& to) {
+// The farthest a corner or centre of `from` lies from the nearest of `to`; or, once that is
+// beyond `limit`, a distance beyond it.
+float farthest(const std::vector<Triangle>& from, const std::vector<Triangle>& to, float limit) {
     const TriangleGrid grid(to);
     std::vector<glm::vec3> points;
     points.reserve(2 * from.size());
@@ -182,8 +188,10 @@ float farthest(const std::vector<Triangle>& from, const std::vector<Triangle>& t
     });
     points.erase(std::unique(points.begin(), points.end()), points.end());
     float worst = 0.0f;
-    for (const glm::vec3& p : points)
-        worst = std::max(worst, grid.nearest(p, worst).distance); // no nearer can count
+    for (const glm::vec3& p : points) {
+        worst = std::max(worst, grid.nearest(p, worst, limit).distance); // no nearer can count
+        if (worst > limit) break;
+    }
     return worst;
 }
 
@@ -217,9 +225,10 @@ std::optional<uint32_t> sharedPart(const Welded& w, const std::vector<uint32_t>&
 
 } // namespace
 
-float partsMoved(const Scene& scene, const Geometry& g, const std::vector<PartLevel>& parts) {
+float partsMoved(const Scene& scene, const Geometry& g, const std::vector<PartLevel>& parts,
+                 float limit) {
     float moved = 0.0f;
-    for (uint32_t p = 0; p < g.partCount; ++p) {
+    for (uint32_t p = 0; p < g.partCount && moved <= limit; ++p) {
         const Part& part = scene.parts[g.firstPart + p];
         std::vector<Triangle> full, coarse;
         for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t) {
@@ -235,9 +244,9 @@ float partsMoved(const Scene& scene, const Geometry& g, const std::vector<PartLe
                              scene.vertices[g.firstVertex + indices[k + 2]].position};
             if (t[0] != t[1] || t[1] != t[2]) coarse.push_back(t);
         }
-        moved = std::max(moved, coarse.empty()
-                                    ? diagonal(full)
-                                    : std::max(farthest(full, coarse), farthest(coarse, full)));
+        moved = std::max(moved, coarse.empty() ? diagonal(full)
+                                               : std::max(farthest(full, coarse, limit),
+                                                          farthest(coarse, full, limit)));
     }
     return moved;
 }

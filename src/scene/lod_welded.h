@@ -5,6 +5,7 @@
 // their triangles; welded, a geometry of many small parts shrinks like any other surface.
 #pragma once
 
+#include <cfloat>
 #include <cstdint>
 #include <vector>
 
@@ -29,7 +30,9 @@ std::vector<PartLevel> simplifyWelded(const Scene& scene, const Geometry& g, dou
 
 // How far a level moves any part of `g`, in model units: over the parts, the farthest a
 // corner or centre of a part's triangles at either level lies from the part's triangles at
-// the other; for a part drawn nowhere (only triangles of zero area), its diagonal.
-float partsMoved(const Scene& scene, const Geometry& g, const std::vector<PartLevel>& parts);
+// the other; for a part drawn nowhere (only triangles of zero area), its diagonal. Past
+// `limit` it stops measuring and returns a distance beyond it.
+float partsMoved(const Scene& scene, const Geometry& g, const std::vector<PartLevel>& parts,
+                 float limit = FLT_MAX);
 
 } // namespace scene
