@@ -2,7 +2,10 @@
 // assembly tree walked down to its leaf instances; every distinct shape tessellated once (in
 // parallel) and turned into a geometry with one part per triangulated face.
 #include "scene/cad_loader.h"
+
+#include "scene/brep_counts.h"
 #include "scene/cad_mesh.h"
+#include "scene/cad_reader_losses.h"
 
 #include <algorithm>
 #include <cctype>
@@ -310,10 +313,18 @@ struct DocumentGuard {
     }
 };
 
+Handle(XSControl_WorkSession) sessionOf(STEPCAFControl_Reader& reader) {
+    return reader.ChangeReader().WS();
+}
+Handle(XSControl_WorkSession) sessionOf(IGESCAFControl_Reader& reader) {
+    return reader.WS();
+}
+
 // Reads the file into `doc` with names and colours; throws Bad with the reader's verdict.
+// Returns what the reading dropped.
 template <typename Reader>
-void transfer(Reader& reader, const std::string& path, const std::string& format,
-              Handle(TDocStd_Document) & doc, const CadProgress& progress) {
+ReaderLosses transfer(Reader& reader, const std::string& path, const std::string& format,
+                      Handle(TDocStd_Document) & doc, const CadProgress& progress) {
     reader.SetColorMode(true);
     reader.SetNameMode(true);
     reader.SetLayerMode(false);
@@ -328,9 +339,11 @@ void transfer(Reader& reader, const std::string& path, const std::string& format
     Handle(ProgressRelay) relay;
     if (!reader.Transfer(doc, startStage(relay, progress, "translating")))
         throw Bad("no shapes could be read from the " + format + " file");
+    return readerLosses(sessionOf(reader));
 }
 
-std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress) {
+std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
+                          ReaderLosses& losses) {
     DocumentGuard guard;
     // The first reader of each kind registers the toolkit's parameters, once per process.
     std::optional<OcctLeaksIgnored> ignored(std::in_place);
@@ -341,11 +354,11 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
         reader.SetViewMode(false);
-        transfer(reader, path, "STEP", guard.doc, progress);
+        losses = transfer(reader, path, "STEP", guard.doc, progress);
     } else {
         IGESCAFControl_Reader reader;
         ignored.reset();
-        transfer(reader, path, "IGES", guard.doc, progress);
+        losses = transfer(reader, path, "IGES", guard.doc, progress);
     }
     return TreeWalker(guard.doc).run();
 }
@@ -359,6 +372,10 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
     head.resize(size_t(in.gcount()));
     if (head.find("CASCADE Topology V") == std::string::npos)
         throw Bad("not a BREP file (no 'CASCADE Topology' header)");
+    in.clear();
+    in.seekg(0);
+    if (const auto why = implausibleBrepCount(in, fs::file_size(path)))
+        throw Bad("not a readable BREP file: " + *why);
     TopoDS_Shape shape;
     BRep_Builder builder;
     const CoutCapture capture;
@@ -397,10 +414,11 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
 
     auto start = Clock::now();
     std::vector<Leaf> leaves;
+    ReaderLosses losses;
     {
         const CoutCapture quiet;
         leaves = format == Format::Brep ? readBrep(path, stem, progress)
-                                        : readXde(path, format, progress);
+                                        : readXde(path, format, progress, losses);
     }
     result.readMs = msSince(start);
     if (leaves.empty()) throw Bad("the file holds no shapes");
@@ -548,6 +566,9 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
                      });
         result.levelsMs = msSince(start);
     }
+    if (const auto dropped =
+            lossWarning(losses, result.faces, format == Format::Step ? "STEP" : "IGES"))
+        result.warnings.push_back(*dropped);
     if (result.facesFailed)
         result.warnings.push_back(std::to_string(result.facesFailed) + " of " +
                                   std::to_string(result.faces) +
