@@ -109,7 +109,7 @@ TEST(CadLevels, CoarserTessellationsOfTheSameFaces) {
                 EXPECT_GE(level.lodError, finer->lodError);
                 EXPECT_LE(worstDistanceOverError(s, g, level), 1.0f) << name << " level " << k + 1;
                 EXPECT_LE(double(level.triangleCount),
-                          double(kLevelKeepsAtMost) * double(finer->triangleCount));
+                          double(scene::LodOptions{}.keepAtMost) * double(finer->triangleCount));
                 // Faces share their edges' points within one tessellation: no new open edge.
                 EXPECT_LE(openEdges(s, level), fullOpen) << name << " level " << k + 1;
                 finer = &level;

@@ -34,7 +34,7 @@ struct LoadedScene {
     // CAD files (STEP, IGES, BREP): what the load took and did; zeros for other sources.
     bool cad = false;
     double readMs = 0.0;         // the reader, before tessellation
-    double tessellationMs = 0.0; // BRepMesh over the distinct shapes
+    double tessellationMs = 0.0; // sewing (IGES) and BRepMesh over the distinct shapes
     double deflection = 0.0;     // the linear deflection used, in model units
     uint32_t facesFailed = 0;    // faces left out for want of triangles
     std::vector<std::string> warnings;

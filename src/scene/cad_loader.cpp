@@ -6,6 +6,7 @@
 #include "scene/brep_counts.h"
 #include "scene/cad_mesh.h"
 #include "scene/cad_reader_losses.h"
+#include "scene/cad_sew.h"
 
 #include <algorithm>
 #include <cctype>
@@ -28,6 +29,7 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <IGESCAFControl_Reader.hxx>
+#include <IGESData_IGESModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
@@ -342,8 +344,9 @@ ReaderLosses transfer(Reader& reader, const std::string& path, const std::string
     return readerLosses(sessionOf(reader));
 }
 
+// `sewTolerance`: for IGES, the file's resolution, within which its faces are sewn.
 std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
-                          ReaderLosses& losses) {
+                          ReaderLosses& losses, double& sewTolerance) {
     DocumentGuard guard;
     // The first reader of each kind registers the toolkit's parameters, once per process.
     std::optional<OcctLeaksIgnored> ignored(std::in_place);
@@ -359,6 +362,8 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
         IGESCAFControl_Reader reader;
         ignored.reset();
         losses = transfer(reader, path, "IGES", guard.doc, progress);
+        const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
+        if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
     }
     return TreeWalker(guard.doc).run();
 }
@@ -415,10 +420,11 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     auto start = Clock::now();
     std::vector<Leaf> leaves;
     ReaderLosses losses;
+    double sewTolerance = 0.0;
     {
         const CoutCapture quiet;
         leaves = format == Format::Brep ? readBrep(path, stem, progress)
-                                        : readXde(path, format, progress, losses);
+                                        : readXde(path, format, progress, losses, sewTolerance);
     }
     result.readMs = msSince(start);
     if (leaves.empty()) throw Bad("the file holds no shapes");
@@ -489,6 +495,8 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     }
     result.deflection = deflection;
     start = Clock::now();
+    // Colours were matched above by the faces as read; sewing keeps their order.
+    for (Distinct& d : distinct) sewFaces(d.shape, d.faces, sewTolerance);
     TopoDS_Compound all;
     BRep_Builder builder;
     builder.MakeCompound(all);
@@ -561,7 +569,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
         for (const Distinct& d : distinct)
             if (d.geometry >= 0) shapes.push_back({&d.faces, uint32_t(d.geometry)});
         addCadLevels(scene, all, shapes, deflection, options.angularDeflection, levels,
-                     kLevelKeepsAtMost, [&](double fraction) {
+                     LodOptions{}, [&](double fraction) {
                          if (progress) progress("levels of detail", fraction);
                      });
         result.levelsMs = msSince(start);

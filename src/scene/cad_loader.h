@@ -38,7 +38,7 @@ struct CadLoadResult {
     Scene scene;
     std::vector<std::string> warnings;
     double readMs = 0.0;         // parsing the file and building the shapes
-    double tessellationMs = 0.0; // BRepMesh_IncrementalMesh over every distinct shape
+    double tessellationMs = 0.0; // sewing (IGES) and BRepMesh_IncrementalMesh, every distinct shape
     double levelsMs = 0.0;       // the coarser tessellations of the levels of detail
     double deflection = 0.0;     // the linear deflection used
     uint32_t faces = 0;          // faces over all distinct shapes
@@ -63,10 +63,6 @@ struct OcctLeaksIgnored {
 
 // True for .step/.stp/.iges/.igs/.brep in any case.
 bool isCadPath(const std::string& path);
-
-// A level of detail that keeps more than this share of the level before's triangles is left
-// out, with the coarser ones.
-constexpr float kLevelKeepsAtMost = 0.8f;
 
 // Loads the whole model. The result passes scene::validate(). Throws ModelError with one
 // line "<path>: <reason>"; never returns a half-built scene. With `levels` above 1, each shape

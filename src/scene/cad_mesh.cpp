@@ -107,10 +107,17 @@ float measuredDistance(const Scene& scene, const Geometry& full, const Geometry&
     return worst;
 }
 
+// What a geometry's vertices, indices and part ranges take, as levelStats counts them.
+uint64_t bytesOf(const Geometry& g) {
+    return uint64_t(g.vertexCount) * sizeof(Vertex) + 12ull * g.triangleCount +
+           uint64_t(g.partCount) * sizeof(Part);
+}
+
 // Builds `shape`'s faces at the current triangulation as the level after `finer`'s; false
-// (and the scene as it was) when a face has no triangles or the level saves too little.
+// (and the scene as it was) when a face has no triangles, the level saves too little or the
+// levels would take too much memory.
 bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t level, float error,
-              float fullDeflection, float keepAtMost) {
+              float fullDeflection, const LodOptions& lod) {
     const size_t vertices = scene.vertices.size(), indices = scene.indices.size(),
                  parts = scene.parts.size();
     const Geometry& full = scene.geometries[shape.geometry];
@@ -133,7 +140,12 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
     Geometry& built = scene.geometries.back();
     built.vertexCount = uint32_t(scene.vertices.size() - vertices);
     const double before = scene.geometries[finer].triangleCount;
-    if (!whole || double(built.triangleCount) > double(keepAtMost) * before) {
+    uint64_t levelBytes = bytesOf(built);
+    for (uint32_t l : scene.geometries[shape.geometry].levels)
+        levelBytes += bytesOf(scene.geometries[l]);
+    if (!whole || double(built.triangleCount) > double(lod.keepAtMost) * before ||
+        double(levelBytes) >
+            double(lod.memory) * double(bytesOf(scene.geometries[shape.geometry]))) {
         scene.geometries.pop_back();
         scene.vertices.resize(vertices);
         scene.indices.resize(indices);
@@ -152,8 +164,8 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
 } // namespace
 
 void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
-                  double deflection, double angularDeflection, uint32_t levels, float keepAtMost,
-                  const std::function<void(double)>& progress) {
+                  double deflection, double angularDeflection, uint32_t levels,
+                  const LodOptions& lod, const std::function<void(double)>& progress) {
     for (uint32_t level = 1; level < levels; ++level) {
         if (progress) progress(double(level - 1) / double(levels - 1));
         const double scale = std::pow(4.0, double(level));
@@ -171,7 +183,7 @@ void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadSh
             if (full.levels.size() != level - 1) continue;
             const uint32_t finer = level == 1 ? shape.geometry : full.levels.back();
             addLevel(scene, shape, finer, level, float(parameters.Deflection), float(deflection),
-                     keepAtMost);
+                     lod);
         }
     }
     if (progress) progress(1.0);

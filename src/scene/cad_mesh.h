@@ -11,6 +11,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include "scene/lod.h"
 #include "scene/scene.h"
 
 namespace scene {
@@ -31,11 +32,12 @@ struct CadShapeFaces {
 // lodError is that deflection, or more where full detail's vertices lie further from the
 // level's triangles of their face (measured) plus full detail's deflection. Faces share their
 // edges' discretisation in one tessellation, so no crack opens between faces. A shape stops at a
-// level where a face of its would have no triangles, or where the level keeps more than
-// `keepAtMost` of the triangles of the one before. `all` keeps the coarsest triangulation.
-// `progress` gets 0..1.
+// level where a face of its would have no triangles, where the level keeps more than
+// `lod.keepAtMost` of the triangles of the one before, or where its levels together would
+// take more than `lod.memory` of its full detail's bytes. `all` keeps the coarsest
+// triangulation. `progress` gets 0..1.
 void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
-                  double deflection, double angularDeflection, uint32_t levels, float keepAtMost,
-                  const std::function<void(double)>& progress);
+                  double deflection, double angularDeflection, uint32_t levels,
+                  const LodOptions& lod, const std::function<void(double)>& progress);
 
 } // namespace scene

@@ -1,0 +1,32 @@
+// cad_sew.cpp - sewing a shape's faces, keeping their order (cad_sew.h).
+#include "scene/cad_sew.h"
+
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <TopExp.hxx>
+
+namespace scene {
+
+bool sewFaces(TopoDS_Shape& shape, TopTools_IndexedMapOfShape& faces, double tolerance) {
+    if (faces.Extent() < 2 || !(tolerance > 0.0)) return false;
+    BRepBuilderAPI_Sewing sewing(tolerance);
+    sewing.Add(shape);
+    sewing.Perform();
+    const TopoDS_Shape sewn = sewing.SewedShape();
+    if (sewn.IsNull()) return false;
+    TopTools_IndexedMapOfShape replaced;
+    for (int f = 1; f <= faces.Extent(); ++f) {
+        const TopoDS_Shape face = sewing.ModifiedSubShape(faces(f));
+        if (face.IsNull() || face.ShapeType() != TopAbs_FACE || replaced.Add(face) != f)
+            return false;
+    }
+    TopTools_IndexedMapOfShape all;
+    TopExp::MapShapes(sewn, TopAbs_FACE, all);
+    if (all.Extent() != replaced.Extent()) return false;
+    for (int f = 1; f <= all.Extent(); ++f)
+        if (!replaced.Contains(all(f))) return false;
+    shape = sewn;
+    faces = replaced;
+    return true;
+}
+
+} // namespace scene
