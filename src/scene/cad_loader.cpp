@@ -1,10 +1,10 @@
-// cad_loader.cpp - loadCad: STEP and IGES into an XDE document, BREP into one shape; the
-// assembly tree walked down to its leaf instances; every distinct shape tessellated once (in
-// parallel) and turned into a geometry with one part per triangulated face.
+// cad_loader.cpp - loadCad: the file read down to its leaf instances (cad_read.h); every
+// distinct shape sewn where the format needs it, tessellated once (in parallel) and turned
+// into a geometry with one part per triangulated face.
 #include "scene/cad_loader.h"
 
-#include "scene/brep_counts.h"
 #include "scene/cad_mesh.h"
+#include "scene/cad_read.h"
 #include "scene/cad_reader_losses.h"
 #include "scene/cad_sew.h"
 
@@ -13,43 +13,27 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <new>
 #include <optional>
-#include <sstream>
 
 #include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
-#include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
-#include <IGESCAFControl_Reader.hxx>
-#include <IGESData_IGESModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
-#include <Message_ProgressIndicator.hxx>
-#include <Message_ProgressScope.hxx>
 #include <Quantity_ColorRGBA.hxx>
-#include <STEPCAFControl_Reader.hxx>
 #include <Standard_Failure.hxx>
-#include <TDF_LabelSequence.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_ColorTool.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/lsan_interface.h>
@@ -71,36 +55,15 @@ OcctLeaksIgnored::~OcctLeaksIgnored() = default;
 
 namespace {
 
+using namespace cad;
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// A reason without the file name; loadCad puts "<path>: " in front.
-struct Bad : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
 // Far beyond any sample; a bound on what the readers are asked to hold in memory.
 constexpr uintmax_t kMaxFileBytes = uintmax_t(1) << 31;
-constexpr int kMaxAssemblyDepth = 64;
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
-}
-
-enum class Format { Step, Iges, Brep, None };
-
-Format formatOf(const std::string& path) {
-    const std::string ext = lowercase(fs::path(path).extension().string());
-    if (ext == ".step" || ext == ".stp") return Format::Step;
-    if (ext == ".iges" || ext == ".igs") return Format::Iges;
-    if (ext == ".brep") return Format::Brep;
-    return Format::None;
 }
 
 // The readers trace to OCCT's default messenger, which prints on stdout, where idview writes
@@ -110,49 +73,6 @@ void quietOcct() {
     std::call_once(once, [] {
         Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
     });
-}
-
-// Some OCCT readers write their complaints straight to std::cout; while one runs they go here
-// instead, so that stdout carries only idview's own output.
-class CoutCapture {
-  public:
-    CoutCapture() : saved_(std::cout.rdbuf(captured_.rdbuf())) {}
-    ~CoutCapture() { std::cout.rdbuf(saved_); }
-    CoutCapture(const CoutCapture&) = delete;
-    CoutCapture& operator=(const CoutCapture&) = delete;
-    // The first line written, for an error message.
-    std::string firstLine() const {
-        const std::string text = captured_.str();
-        return text.substr(0, text.find('\n'));
-    }
-
-  private:
-    std::ostringstream captured_;
-    std::streambuf* saved_;
-};
-
-// Hands OCCT's progress of one stage on to a CadProgress (OCCT serialises Show calls).
-class ProgressRelay : public Message_ProgressIndicator {
-  public:
-    ProgressRelay(const CadProgress& to, const char* stage) : to_(to), stage_(stage) {
-        if (to_) to_(stage_, 0.0);
-    }
-
-  protected:
-    void Show(const Message_ProgressScope&, const Standard_Boolean) override {
-        if (to_) to_(stage_, GetPosition());
-    }
-
-  private:
-    const CadProgress& to_;
-    const char* stage_;
-};
-
-// A progress range for `stage` that reports to `to` while `relay` lives.
-Message_ProgressRange startStage(Handle(ProgressRelay) & relay, const CadProgress& to,
-                                 const char* stage) {
-    relay = new ProgressRelay(to, stage);
-    return relay->Start();
 }
 
 void checkFile(const std::string& path) {
@@ -165,21 +85,6 @@ void checkFile(const std::string& path) {
     if (size > kMaxFileBytes) throw Bad("file too large (" + std::to_string(size) + " bytes)");
 }
 
-std::string statusReason(IFSelect_ReturnStatus status, const char* format) {
-    switch (status) {
-    case IFSelect_RetVoid:
-        return std::string("no ") + format + " data in the file";
-    case IFSelect_RetError:
-        return std::string("not a readable ") + format + " file (the reader found errors)";
-    case IFSelect_RetFail:
-        return std::string("not a readable ") + format + " file (the reader failed on it)";
-    case IFSelect_RetStop:
-        return std::string("the ") + format + " reader stopped on this file";
-    default:
-        return std::string("the ") + format + " reader refused the file";
-    }
-}
-
 glm::mat4 toMat4(const gp_Trsf& t) {
     glm::mat4 m(1.0f);
     for (int row = 1; row <= 3; ++row)
@@ -187,215 +92,12 @@ glm::mat4 toMat4(const gp_Trsf& t) {
     return m;
 }
 
-using Rgba = Quantity_ColorRGBA;
-
 uint32_t packed(const Rgba& c) {
     auto byte = [](double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
     // Colours as stored (XCAF keeps them linear); 8 bits each is plenty to tell them apart.
     const Quantity_Color& rgb = c.GetRGB();
     return byte(rgb.Red()) << 24 | byte(rgb.Green()) << 16 | byte(rgb.Blue()) << 8 |
            byte(c.Alpha());
-}
-
-// One leaf instance of the assembly tree.
-struct Leaf {
-    TopoDS_Shape shape; // at the identity location: `world` places it
-    gp_Trsf world;
-    std::string name;    // the instance's or the product's; empty: numbered later
-    std::string product; // the shape label's name, for the geometry
-    std::string group;   // the path of the assemblies above it
-    std::optional<Rgba> color;
-    // Faces (or solids and shells, for all their faces) with colours of their own.
-    std::vector<std::pair<TopoDS_Shape, Rgba>> subColors;
-};
-
-// Walks an XDE document from its free shapes down to the leaves.
-class TreeWalker {
-  public:
-    explicit TreeWalker(const Handle(TDocStd_Document) & doc)
-        : shapes_(XCAFDoc_DocumentTool::ShapeTool(doc->Main())),
-          colors_(XCAFDoc_DocumentTool::ColorTool(doc->Main())) {}
-
-    std::vector<Leaf> run() {
-        TDF_LabelSequence roots;
-        shapes_->GetFreeShapes(roots);
-        for (Standard_Integer i = 1; i <= roots.Length(); ++i)
-            walk(roots.Value(i), gp_Trsf(), std::string(), nullptr, 0);
-        return std::move(leaves_);
-    }
-
-  private:
-    static std::string nameOf(const TDF_Label& label) {
-        Handle(TDataStd_Name) name;
-        if (label.IsNull() || !label.FindAttribute(TDataStd_Name::GetID(), name)) return {};
-        return TCollection_AsciiString(name->Get()).ToCString(); // UTF-8
-    }
-
-    std::optional<Rgba> colorOf(const TDF_Label& label) const {
-        Rgba color;
-        if (colors_->GetColor(label, XCAFDoc_ColorSurf, color) ||
-            colors_->GetColor(label, XCAFDoc_ColorGen, color))
-            return color;
-        return std::nullopt;
-    }
-
-    // The sub-shapes of the shape (faces, or solids and shells holding them) with colours.
-    std::vector<std::pair<TopoDS_Shape, Rgba>> subColors(const TDF_Label& shapeLabel) const {
-        std::vector<std::pair<TopoDS_Shape, Rgba>> colored;
-        TDF_LabelSequence subs;
-        XCAFDoc_ShapeTool::GetSubShapes(shapeLabel, subs);
-        for (Standard_Integer i = 1; i <= subs.Length(); ++i)
-            if (const auto color = colorOf(subs.Value(i)))
-                colored.emplace_back(XCAFDoc_ShapeTool::GetShape(subs.Value(i)), *color);
-        return colored;
-    }
-
-    void walk(const TDF_Label& label, const gp_Trsf& parent, const std::string& group,
-              const TDF_Label* instance, int depth) {
-        if (depth > kMaxAssemblyDepth) throw Bad("assembly nested too deep");
-        if (XCAFDoc_ShapeTool::IsReference(label)) {
-            TDF_Label referred;
-            if (!XCAFDoc_ShapeTool::GetReferredShape(label, referred)) return;
-            const gp_Trsf here =
-                parent.Multiplied(XCAFDoc_ShapeTool::GetLocation(label).Transformation());
-            walk(referred, here, group, &label, depth + 1);
-            return;
-        }
-        std::string name = instance ? nameOf(*instance) : std::string();
-        const std::string product = nameOf(label);
-        if (name.empty()) name = product;
-        if (XCAFDoc_ShapeTool::IsAssembly(label)) {
-            // A free assembly's own placement (components carry theirs as references).
-            const gp_Trsf here =
-                instance
-                    ? parent
-                    : parent.Multiplied(XCAFDoc_ShapeTool::GetLocation(label).Transformation());
-            const std::string path = joinPath(group, name.empty() ? "assembly" : name);
-            TDF_LabelSequence components;
-            XCAFDoc_ShapeTool::GetComponents(label, components, false);
-            for (Standard_Integer i = 1; i <= components.Length(); ++i)
-                walk(components.Value(i), here, path, nullptr, depth + 1);
-            return;
-        }
-        TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
-        if (shape.IsNull()) return;
-        Leaf leaf;
-        leaf.world = parent.Multiplied(shape.Location().Transformation());
-        shape.Location(TopLoc_Location());
-        leaf.shape = shape;
-        leaf.name = name;
-        leaf.product = product;
-        leaf.group = group;
-        leaf.color = instance ? colorOf(*instance) : std::nullopt;
-        if (!leaf.color) leaf.color = colorOf(label);
-        leaf.subColors = subColors(label);
-        leaves_.push_back(std::move(leaf));
-    }
-
-    Handle(XCAFDoc_ShapeTool) shapes_;
-    Handle(XCAFDoc_ColorTool) colors_;
-    std::vector<Leaf> leaves_;
-};
-
-// Closes the XDE document however the load ends, so that its memory goes.
-Handle(XCAFApp_Application) application() {
-    const OcctLeaksIgnored ignored; // its driver table, made once
-    return XCAFApp_Application::GetApplication();
-}
-
-struct DocumentGuard {
-    Handle(XCAFApp_Application) app = application();
-    Handle(TDocStd_Document) doc;
-    DocumentGuard() { app->NewDocument("MDTV-XCAF", doc); }
-    ~DocumentGuard() {
-        try {
-            if (!doc.IsNull() && doc->IsOpened()) app->Close(doc);
-        } catch (...) { // nothing to do about a failing close in a destructor
-        }
-    }
-};
-
-Handle(XSControl_WorkSession) sessionOf(STEPCAFControl_Reader& reader) {
-    return reader.ChangeReader().WS();
-}
-Handle(XSControl_WorkSession) sessionOf(IGESCAFControl_Reader& reader) {
-    return reader.WS();
-}
-
-// Reads the file into `doc` with names and colours; throws Bad with the reader's verdict.
-// Returns what the reading dropped.
-template <typename Reader>
-ReaderLosses transfer(Reader& reader, const std::string& path, const std::string& format,
-                      Handle(TDocStd_Document) & doc, const CadProgress& progress) {
-    reader.SetColorMode(true);
-    reader.SetNameMode(true);
-    reader.SetLayerMode(false);
-    if (progress) progress("reading", 0.0);
-    IFSelect_ReturnStatus status;
-    {
-        const OcctLeaksIgnored ignored; // the IGES parser's buffers on a failed read
-        status = reader.ReadFile(path.c_str());
-    }
-    if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
-    if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
-    Handle(ProgressRelay) relay;
-    if (!reader.Transfer(doc, startStage(relay, progress, "translating")))
-        throw Bad("no shapes could be read from the " + format + " file");
-    return readerLosses(sessionOf(reader));
-}
-
-// `sewTolerance`: for IGES, the file's resolution, within which its faces are sewn.
-std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
-                          ReaderLosses& losses, double& sewTolerance) {
-    DocumentGuard guard;
-    // The first reader of each kind registers the toolkit's parameters, once per process.
-    std::optional<OcctLeaksIgnored> ignored(std::in_place);
-    if (format == Format::Step) {
-        STEPCAFControl_Reader reader;
-        ignored.reset();
-        reader.SetPropsMode(false);
-        reader.SetGDTMode(false);
-        reader.SetMatMode(false);
-        reader.SetViewMode(false);
-        losses = transfer(reader, path, "STEP", guard.doc, progress);
-    } else {
-        IGESCAFControl_Reader reader;
-        ignored.reset();
-        losses = transfer(reader, path, "IGES", guard.doc, progress);
-        const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
-        if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
-    }
-    return TreeWalker(guard.doc).run();
-}
-
-std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
-                           const CadProgress& progress) {
-    // BRepTools::Read reports a wrong header on stdout: check it here first.
-    std::ifstream in(path, std::ios::binary);
-    std::string head(256, '\0');
-    in.read(head.data(), std::streamsize(head.size()));
-    head.resize(size_t(in.gcount()));
-    if (head.find("CASCADE Topology V") == std::string::npos)
-        throw Bad("not a BREP file (no 'CASCADE Topology' header)");
-    in.clear();
-    in.seekg(0);
-    if (const auto why = implausibleBrepCount(in, fs::file_size(path)))
-        throw Bad("not a readable BREP file: " + *why);
-    TopoDS_Shape shape;
-    BRep_Builder builder;
-    const CoutCapture capture;
-    Handle(ProgressRelay) relay;
-    if (!BRepTools::Read(shape, path.c_str(), builder, startStage(relay, progress, "reading")) ||
-        shape.IsNull()) {
-        const std::string said = capture.firstLine();
-        throw Bad("not a readable BREP file" + (said.empty() ? "" : " (" + said + ")"));
-    }
-    Leaf leaf;
-    leaf.world = shape.Location().Transformation();
-    shape.Location(TopLoc_Location());
-    leaf.shape = shape;
-    leaf.name = leaf.product = stem;
-    return {std::move(leaf)};
 }
 
 std::string hex(const Rgba& color) {

@@ -1,0 +1,249 @@
+// cad_read.cpp - the readers behind cad_read.h: XDE documents walked down to their leaves,
+// BREP files checked before Open CASCADE reads them.
+#include "scene/cad_read.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <IGESCAFControl_Reader.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_ColorTool.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+
+#include "scene/brep_counts.h"
+
+namespace scene::cad {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxAssemblyDepth = 64;
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+}
+
+std::string statusReason(IFSelect_ReturnStatus status, const char* format) {
+    switch (status) {
+    case IFSelect_RetVoid:
+        return std::string("no ") + format + " data in the file";
+    case IFSelect_RetError:
+        return std::string("not a readable ") + format + " file (the reader found errors)";
+    case IFSelect_RetFail:
+        return std::string("not a readable ") + format + " file (the reader failed on it)";
+    case IFSelect_RetStop:
+        return std::string("the ") + format + " reader stopped on this file";
+    default:
+        return std::string("the ") + format + " reader refused the file";
+    }
+}
+// Walks an XDE document from its free shapes down to the leaves.
+class TreeWalker {
+  public:
+    explicit TreeWalker(const Handle(TDocStd_Document) & doc)
+        : shapes_(XCAFDoc_DocumentTool::ShapeTool(doc->Main())),
+          colors_(XCAFDoc_DocumentTool::ColorTool(doc->Main())) {}
+
+    std::vector<Leaf> run() {
+        TDF_LabelSequence roots;
+        shapes_->GetFreeShapes(roots);
+        for (Standard_Integer i = 1; i <= roots.Length(); ++i)
+            walk(roots.Value(i), gp_Trsf(), std::string(), nullptr, 0);
+        return std::move(leaves_);
+    }
+
+  private:
+    static std::string nameOf(const TDF_Label& label) {
+        Handle(TDataStd_Name) name;
+        if (label.IsNull() || !label.FindAttribute(TDataStd_Name::GetID(), name)) return {};
+        return TCollection_AsciiString(name->Get()).ToCString(); // UTF-8
+    }
+
+    std::optional<Rgba> colorOf(const TDF_Label& label) const {
+        Rgba color;
+        if (colors_->GetColor(label, XCAFDoc_ColorSurf, color) ||
+            colors_->GetColor(label, XCAFDoc_ColorGen, color))
+            return color;
+        return std::nullopt;
+    }
+
+    // The sub-shapes of the shape (faces, or solids and shells holding them) with colours.
+    std::vector<std::pair<TopoDS_Shape, Rgba>> subColors(const TDF_Label& shapeLabel) const {
+        std::vector<std::pair<TopoDS_Shape, Rgba>> colored;
+        TDF_LabelSequence subs;
+        XCAFDoc_ShapeTool::GetSubShapes(shapeLabel, subs);
+        for (Standard_Integer i = 1; i <= subs.Length(); ++i)
+            if (const auto color = colorOf(subs.Value(i)))
+                colored.emplace_back(XCAFDoc_ShapeTool::GetShape(subs.Value(i)), *color);
+        return colored;
+    }
+
+    void walk(const TDF_Label& label, const gp_Trsf& parent, const std::string& group,
+              const TDF_Label* instance, int depth) {
+        if (depth > kMaxAssemblyDepth) throw Bad("assembly nested too deep");
+        if (XCAFDoc_ShapeTool::IsReference(label)) {
+            TDF_Label referred;
+            if (!XCAFDoc_ShapeTool::GetReferredShape(label, referred)) return;
+            const gp_Trsf here =
+                parent.Multiplied(XCAFDoc_ShapeTool::GetLocation(label).Transformation());
+            walk(referred, here, group, &label, depth + 1);
+            return;
+        }
+        std::string name = instance ? nameOf(*instance) : std::string();
+        const std::string product = nameOf(label);
+        if (name.empty()) name = product;
+        if (XCAFDoc_ShapeTool::IsAssembly(label)) {
+            // A free assembly's own placement (components carry theirs as references).
+            const gp_Trsf here =
+                instance
+                    ? parent
+                    : parent.Multiplied(XCAFDoc_ShapeTool::GetLocation(label).Transformation());
+            const std::string path = joinPath(group, name.empty() ? "assembly" : name);
+            TDF_LabelSequence components;
+            XCAFDoc_ShapeTool::GetComponents(label, components, false);
+            for (Standard_Integer i = 1; i <= components.Length(); ++i)
+                walk(components.Value(i), here, path, nullptr, depth + 1);
+            return;
+        }
+        TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+        if (shape.IsNull()) return;
+        Leaf leaf;
+        leaf.world = parent.Multiplied(shape.Location().Transformation());
+        shape.Location(TopLoc_Location());
+        leaf.shape = shape;
+        leaf.name = name;
+        leaf.product = product;
+        leaf.group = group;
+        leaf.color = instance ? colorOf(*instance) : std::nullopt;
+        if (!leaf.color) leaf.color = colorOf(label);
+        leaf.subColors = subColors(label);
+        leaves_.push_back(std::move(leaf));
+    }
+
+    Handle(XCAFDoc_ShapeTool) shapes_;
+    Handle(XCAFDoc_ColorTool) colors_;
+    std::vector<Leaf> leaves_;
+};
+
+// Closes the XDE document however the load ends, so that its memory goes.
+Handle(XCAFApp_Application) application() {
+    const OcctLeaksIgnored ignored; // its driver table, made once
+    return XCAFApp_Application::GetApplication();
+}
+
+struct DocumentGuard {
+    Handle(XCAFApp_Application) app = application();
+    Handle(TDocStd_Document) doc;
+    DocumentGuard() { app->NewDocument("MDTV-XCAF", doc); }
+    ~DocumentGuard() {
+        try {
+            if (!doc.IsNull() && doc->IsOpened()) app->Close(doc);
+        } catch (...) { // nothing to do about a failing close in a destructor
+        }
+    }
+};
+
+Handle(XSControl_WorkSession) sessionOf(STEPCAFControl_Reader& reader) {
+    return reader.ChangeReader().WS();
+}
+Handle(XSControl_WorkSession) sessionOf(IGESCAFControl_Reader& reader) {
+    return reader.WS();
+}
+
+// Reads the file into `doc` with names and colours; throws Bad with the reader's verdict.
+// Returns what the reading dropped.
+template <typename Reader>
+ReaderLosses transfer(Reader& reader, const std::string& path, const std::string& format,
+                      Handle(TDocStd_Document) & doc, const CadProgress& progress) {
+    reader.SetColorMode(true);
+    reader.SetNameMode(true);
+    reader.SetLayerMode(false);
+    if (progress) progress("reading", 0.0);
+    IFSelect_ReturnStatus status;
+    {
+        const OcctLeaksIgnored ignored; // the IGES parser's buffers on a failed read
+        status = reader.ReadFile(path.c_str());
+    }
+    if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
+    if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
+    Handle(ProgressRelay) relay;
+    if (!reader.Transfer(doc, startStage(relay, progress, "translating")))
+        throw Bad("no shapes could be read from the " + format + " file");
+    return readerLosses(sessionOf(reader));
+}
+} // namespace
+
+Format formatOf(const std::string& path) {
+    const std::string ext = lowercase(fs::path(path).extension().string());
+    if (ext == ".step" || ext == ".stp") return Format::Step;
+    if (ext == ".iges" || ext == ".igs") return Format::Iges;
+    if (ext == ".brep") return Format::Brep;
+    return Format::None;
+}
+
+std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
+                          ReaderLosses& losses, double& sewTolerance) {
+    DocumentGuard guard;
+    // The first reader of each kind registers the toolkit's parameters, once per process.
+    std::optional<OcctLeaksIgnored> ignored(std::in_place);
+    if (format == Format::Step) {
+        STEPCAFControl_Reader reader;
+        ignored.reset();
+        reader.SetPropsMode(false);
+        reader.SetGDTMode(false);
+        reader.SetMatMode(false);
+        reader.SetViewMode(false);
+        losses = transfer(reader, path, "STEP", guard.doc, progress);
+    } else {
+        IGESCAFControl_Reader reader;
+        ignored.reset();
+        losses = transfer(reader, path, "IGES", guard.doc, progress);
+        const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
+        if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
+    }
+    return TreeWalker(guard.doc).run();
+}
+
+std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
+                           const CadProgress& progress) {
+    // BRepTools::Read reports a wrong header on stdout: check it here first.
+    std::ifstream in(path, std::ios::binary);
+    std::string head(256, '\0');
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    if (head.find("CASCADE Topology V") == std::string::npos)
+        throw Bad("not a BREP file (no 'CASCADE Topology' header)");
+    in.clear();
+    in.seekg(0);
+    if (const auto why = implausibleBrepCount(in, fs::file_size(path)))
+        throw Bad("not a readable BREP file: " + *why);
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    const CoutCapture capture;
+    Handle(ProgressRelay) relay;
+    if (!BRepTools::Read(shape, path.c_str(), builder, startStage(relay, progress, "reading")) ||
+        shape.IsNull()) {
+        const std::string said = capture.firstLine();
+        throw Bad("not a readable BREP file" + (said.empty() ? "" : " (" + said + ")"));
+    }
+    Leaf leaf;
+    leaf.world = shape.Location().Transformation();
+    shape.Location(TopLoc_Location());
+    leaf.shape = shape;
+    leaf.name = leaf.product = stem;
+    return {std::move(leaf)};
+}
+
+} // namespace scene::cad

@@ -1,0 +1,100 @@
+// cad_read.h - STEP and IGES read into an XDE document and BREP into one shape, down to the
+// leaf instances of the assembly tree, for cad_loader.cpp. Internal to src/scene: unlike
+// cad_loader.h it holds Open CASCADE types.
+#pragma once
+
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Message_ProgressIndicator.hxx>
+#include <Message_ProgressScope.hxx>
+#include <Quantity_ColorRGBA.hxx>
+#include <TopoDS_Shape.hxx>
+#include <gp_Trsf.hxx>
+
+#include "scene/cad_loader.h"
+#include "scene/cad_reader_losses.h"
+
+namespace scene::cad {
+
+// A reason without the file name; loadCad puts "<path>: " in front.
+struct Bad : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+enum class Format { Step, Iges, Brep, None };
+
+// By the file name's extension, in any case.
+Format formatOf(const std::string& path);
+
+// Some OCCT readers write their complaints straight to std::cout; while one runs they go here
+// instead, so that stdout carries only idview's own output.
+class CoutCapture {
+  public:
+    CoutCapture() : saved_(std::cout.rdbuf(captured_.rdbuf())) {}
+    ~CoutCapture() { std::cout.rdbuf(saved_); }
+    CoutCapture(const CoutCapture&) = delete;
+    CoutCapture& operator=(const CoutCapture&) = delete;
+    // The first line written, for an error message.
+    std::string firstLine() const {
+        const std::string text = captured_.str();
+        return text.substr(0, text.find('\n'));
+    }
+
+  private:
+    std::ostringstream captured_;
+    std::streambuf* saved_;
+};
+
+// Hands OCCT's progress of one stage on to a CadProgress (OCCT serialises Show calls).
+class ProgressRelay : public Message_ProgressIndicator {
+  public:
+    ProgressRelay(const CadProgress& to, const char* stage) : to_(to), stage_(stage) {
+        if (to_) to_(stage_, 0.0);
+    }
+
+  protected:
+    void Show(const Message_ProgressScope&, const Standard_Boolean) override {
+        if (to_) to_(stage_, GetPosition());
+    }
+
+  private:
+    const CadProgress& to_;
+    const char* stage_;
+};
+
+// A progress range for `stage` that reports to `to` while `relay` lives.
+inline Message_ProgressRange startStage(Handle(ProgressRelay) & relay, const CadProgress& to,
+                                        const char* stage) {
+    relay = new ProgressRelay(to, stage);
+    return relay->Start();
+}
+using Rgba = Quantity_ColorRGBA;
+
+// One leaf instance of the assembly tree.
+struct Leaf {
+    TopoDS_Shape shape; // at the identity location: `world` places it
+    gp_Trsf world;
+    std::string name;    // the instance's or the product's; empty: numbered later
+    std::string product; // the shape label's name, for the geometry
+    std::string group;   // the path of the assemblies above it
+    std::optional<Rgba> color;
+    // Faces (or solids and shells, for all their faces) with colours of their own.
+    std::vector<std::pair<TopoDS_Shape, Rgba>> subColors;
+};
+
+// The leaves of a STEP or IGES file with names and colours; `losses`: what the reader dropped;
+// `sewTolerance`: for IGES, the file's resolution, within which its faces are sewn (else
+// left as it is). Throws Bad with the reader's verdict.
+std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
+                          ReaderLosses& losses, double& sewTolerance);
+
+// A BREP file's shape as one leaf named `stem`. Throws Bad.
+std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
+                           const CadProgress& progress);
+
+} // namespace scene::cad
