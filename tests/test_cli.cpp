@@ -197,6 +197,19 @@ TEST(Cli, PickAndMsaaFlags) {
                  app::UsageError);
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--pick", "3"}), app::UsageError);
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--msaa", "3"}), app::UsageError);
+    // --measure keeps its two points in the order given, inside the image.
+    const auto m =
+        app::parseArgs(std::vector<std::string>{"--size", "100x50", "--measure", "90,4,2,49"});
+    ASSERT_TRUE(m.measure.has_value());
+    EXPECT_EQ((*m.measure)[0], (app::Options::Pixel{90, 4}));
+    EXPECT_EQ((*m.measure)[1], (app::Options::Pixel{2, 49}));
+    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).measure.has_value());
+    for (const char* bad : {"1,2,3", "1,2,3,4,5", "a,b,c,d"})
+        EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--measure", bad}), app::UsageError)
+            << bad;
+    EXPECT_THROW(
+        app::parseArgs(std::vector<std::string>{"--size", "100x50", "--measure", "0,0,3,50"}),
+        app::UsageError);
 }
 
 TEST(Benchmark, PercentileIsNearestRank) {

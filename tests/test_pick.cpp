@@ -237,6 +237,58 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, PickPerTechnique,
                                  std::to_string(std::get<1>(info.param)));
                          });
 
+// --measure, without MSAA and at 4x: each point lies where the CPU ray through its pick point
+// (pixel centre, or sample 0) meets the part the ray cast names, within a ten-thousandth of
+// the scene's size; the distance and delta are those of the two points; the JSON line says
+// so; a background pixel gives nulls.
+TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
+    for (uint32_t msaa : {1u, 4u}) {
+        Fixture& f = fixture(msaa);
+        const Points& p = f.points;
+        ASSERT_GE(p.interior.size(), 2u);
+        ASSERT_FALSE(p.background.empty());
+        app::Options o = options(msaa);
+        o.measure = {p.interior.front(), p.interior.back()};
+        const app::HeadlessResult r = app::renderHeadless(o, f.loaded.scene, f.camera);
+        EXPECT_EQ(r.validationMessages, 0u);
+        const scene::RayCaster caster(f.loaded.scene);
+        const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
+        const float size = glm::length(f.loaded.scene.bounds().max - f.loaded.scene.bounds().min);
+        ASSERT_EQ(r.measured.size(), 2u);
+        for (size_t i = 0; i < 2; ++i) {
+            const glm::vec2 at = glm::vec2(r.measured[i].pixel) + sampleZero(msaa);
+            const scene::Ray ray = scene::pixelRay(viewProj, glm::vec2(float(W), float(H)), at);
+            const auto hit = caster.cast(ray);
+            ASSERT_TRUE(hit.has_value());
+            ASSERT_TRUE(r.measuredPoints[i].has_value());
+            EXPECT_EQ(r.measured[i].part.value_or(NONE), hit->uniquePartId) << "msaa " << msaa;
+            EXPECT_LT(glm::length(*r.measuredPoints[i] - (ray.origin + hit->t * ray.direction)),
+                      1e-4f * size)
+                << "msaa " << msaa << " point " << i;
+        }
+        const glm::vec3 delta = *r.measuredPoints[1] - *r.measuredPoints[0];
+        EXPECT_GT(glm::length(delta), 0.0f);
+        char expected[64];
+        std::snprintf(expected, sizeof expected, "\"distance\":%.9g,", double(glm::length(delta)));
+        const std::string line = app::measureJson(r);
+        EXPECT_NE(line.find(expected), std::string::npos) << line;
+        EXPECT_NE(line.find("\"parts\":[" + std::to_string(*r.measured[0].part) + "," +
+                            std::to_string(*r.measured[1].part) + "]"),
+                  std::string::npos)
+            << line;
+
+        o.measure = {p.background.front(), p.interior.front()};
+        const app::HeadlessResult off = app::renderHeadless(o, f.loaded.scene, f.camera);
+        EXPECT_FALSE(off.measuredPoints[0].has_value());
+        ASSERT_TRUE(off.measuredPoints[1].has_value());
+        const std::string nulls = app::measureJson(off);
+        EXPECT_EQ(nulls.rfind("{\"p0\":null,", 0), 0u) << nulls;
+        EXPECT_NE(nulls.find("\"distance\":null,\"delta\":null,\"parts\":[null,"),
+                  std::string::npos)
+            << nulls;
+    }
+}
+
 // The decode of the packed value: depth bits high, part low, all ones for nothing.
 TEST(PickDecode, SplitsDepthAndPart) {
     const float depth = 0.25f;

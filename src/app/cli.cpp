@@ -125,6 +125,8 @@ Options parseArgs(const std::vector<std::string>& args) {
         return p.x >= options.width || p.y >= options.height;
     };
     std::vector<Options::Pixel> pixels = options.picks;
+    if (options.measure)
+        pixels.insert(pixels.end(), options.measure->begin(), options.measure->end());
     pixels.insert(pixels.end(), options.selects.begin(), options.selects.end());
     if (const auto& rect = options.selectRect) {
         pixels.push_back({rect->min.x, rect->min.y});

@@ -4,6 +4,7 @@
 // Parsing never touches Vulkan, so every flag is unit-tested.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -90,6 +91,9 @@ struct Options {
     // Headless box selection: the parts inside the rectangle become the selection and one
     // JSON line {"rect","parts","count"} is printed. Taken after --select, before --pick.
     std::optional<render::PartSetQuery> selectRect;
+    // Headless measuring: both points picked (after --pick) and one JSON line
+    // {"p0","p1","distance","delta","parts"} printed, from the world points their depths give.
+    std::optional<std::array<Pixel, 2>> measure;
     // Headless visibility: the parts --hide names are not drawn; --isolate draws only its
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;

@@ -99,6 +99,13 @@ render::PartSetQuery parseRect(const std::string& flag, const std::string& text)
     return render::spanning({corners[0], corners[1]}, {corners[2], corners[3]});
 }
 
+// "X0,Y0,X1,Y1": two pixels, in the order given.
+std::array<Options::Pixel, 2> parseMeasure(const std::string& text) {
+    const std::vector<uint32_t> v = parseCounts("--measure", text, 16383);
+    if (v.size() != 4) throw UsageError("--measure expects X0,Y0,X1,Y1, not '" + text + "'");
+    return {Options::Pixel{v[0], v[1]}, Options::Pixel{v[2], v[3]}};
+}
+
 // "RRGGBB" in hex, as displayed.
 glm::vec3 parseColor(const std::string& flag, const std::string& text) {
     uint32_t value = 0;
@@ -388,6 +395,12 @@ const std::vector<Flag>& flags() {
              "headless: select every part visible in the pixel rectangle (corners included) "
              "as a box selection would, and print one JSON line {rect,parts,count}",
              [](Options& o, auto& v) { o.selectRect = parseRect("--select-rect", v); }},
+            {"--measure", "X0,Y0,X1,Y1",
+             "headless: pick both pixels and print one JSON line "
+             "{p0,p1,distance,delta,parts}: the world points under them (from the depth the "
+             "pick reads), their distance and dX,dY,dZ, and the unique part at each; null "
+             "where a pixel shows no part",
+             [](Options& o, auto& v) { o.measure = parseMeasure(v); }},
             {"--hide", "ID,...", "headless: do not draw these unique parts (nor pick them)",
              [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }},
             {"--isolate", "ID,...", "headless: draw only these unique parts",

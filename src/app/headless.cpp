@@ -40,6 +40,32 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
            ",\"path\":" + jsonString(info->path) + depth;
 }
 
+std::string measureJson(const HeadlessResult& result) {
+    auto point = [](const std::optional<glm::vec3>& p) {
+        if (!p) return std::string("null");
+        char text[96];
+        std::snprintf(text, sizeof text, "[%.9g,%.9g,%.9g]", double(p->x), double(p->y),
+                      double(p->z));
+        return std::string(text);
+    };
+    const auto& [p0, p1] = result.measuredPoints;
+    std::string distance = "null";
+    std::optional<glm::vec3> delta;
+    if (p0 && p1) {
+        delta = *p1 - *p0;
+        char text[48];
+        std::snprintf(text, sizeof text, "%.9g", double(glm::length(*delta)));
+        distance = text;
+    }
+    auto part = [&](size_t i) {
+        return i < result.measured.size() && result.measured[i].part
+                   ? std::to_string(*result.measured[i].part)
+                   : std::string("null");
+    };
+    return "{\"p0\":" + point(p0) + ",\"p1\":" + point(p1) + ",\"distance\":" + distance +
+           ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) + "]}";
+}
+
 namespace {
 
 // What one frame found in a rectangle: the parts, and their count as the GPU counted it.
@@ -148,6 +174,17 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 result.picks.push_back(pickFrame(pixel));
                 params.pickPixel = result.picks.back().pixel;
             }
+            // The pick's depth is taken where sample 0 lies (the pixel centre without MSAA).
+            if (options.measure)
+                for (size_t i = 0; i < 2; ++i) {
+                    const render::PickReading pick = pickFrame((*options.measure)[i]);
+                    result.measured.push_back(pick);
+                    if (pick.part)
+                        result.measuredPoints[i] = scene::unprojectPixel(
+                            params.viewProj,
+                            glm::vec2(float(rig.extent.width), float(rig.extent.height)),
+                            glm::vec2(pick.pixel) + rig.targets->pass().sampleZero(), pick.depth);
+                }
             const uint64_t timedBefore = slots.timedFrames();
             const uint64_t reusedBefore = renderer.reusedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
@@ -215,12 +252,14 @@ int runHeadless(const Options& options) {
         std::printf("%s\n",
                     partSetJson(*result.rectParts, result.rectCount, options.selectRect).c_str());
     for (const auto& pick : result.picks) std::printf("%s\n", pickJson(scene, pick).c_str());
+    if (options.measure) std::printf("%s\n", measureJson(result).c_str());
     if (result.visibleParts)
         std::printf("%s\n",
                     partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
-    const bool json = !options.picks.empty() || result.rectParts || result.visibleParts;
+    const bool json =
+        !options.picks.empty() || options.measure || result.rectParts || result.visibleParts;
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()

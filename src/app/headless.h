@@ -2,6 +2,7 @@
 // renderer the window uses. Used by `idview --headless` and, in-process, by the tests.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,7 +20,11 @@ struct HeadlessResult {
     std::vector<uint32_t> ids;  // unique part IDs of the last frame, gpu::BACKGROUND_ID if none
     std::vector<double> gpuMs;  // scene pass time of each frame
     std::vector<render::PickReading> picks; // one per Options::picks entry, in order
-    std::optional<uint32_t> selected;       // the part Options::selects picked, if any
+    // Options::measure: both picks, and the world points their depths give (none on
+    // background).
+    std::vector<render::PickReading> measured;
+    std::array<std::optional<glm::vec3>, 2> measuredPoints;
+    std::optional<uint32_t> selected; // the part Options::selects picked, if any
     // Options::selectRect: the parts in the rectangle (the selection afterwards), and their
     // count as the GPU counted it.
     std::optional<scene::PartSet> rectParts;
@@ -49,11 +54,15 @@ struct HeadlessResult {
 // nulls for every field but x and y on background.
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
 
+// --measure's line: {"p0":[x,y,z],"p1":[x,y,z],"distance":D,"delta":[dx,dy,dz],"parts":[A,B]},
+// null where a point shows no part (and the distance and delta then).
+std::string measureJson(const HeadlessResult& result);
+
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
 // Options::hide / isolate apply first. Then the picks: Options::selects (one frame, its part
 // becomes the selection), Options::selectRect (one frame, its parts become the selection),
-// then one frame per Options::picks entry; the timed frames keep the last pick point hovered.
-// Throws vk::Error / vk::ShaderError with a message for people.
+// then one frame per Options::picks entry, then one per Options::measure point; the timed frames
+// keep the last pick point hovered. Throws vk::Error / vk::ShaderError with a message for people.
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 

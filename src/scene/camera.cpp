@@ -43,6 +43,11 @@ void fitPlanes(Camera& camera, const Bounds& bounds, float reach) {
     camera.nearPlane = std::max(centre - radius, floor);
 }
 
+glm::vec3 unprojectPixel(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel, float depth) {
+    const glm::vec4 p = glm::inverse(viewProj) * glm::vec4(pixel / size * 2.0f - 1.0f, depth, 1.0f);
+    return glm::vec3(p) / p.w;
+}
+
 Ray pixelRay(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel) {
     const glm::mat4 inverse = glm::inverse(viewProj);
     const glm::vec2 ndc = pixel / size * 2.0f - 1.0f;

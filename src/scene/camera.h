@@ -40,4 +40,8 @@ struct Ray {
 // image rendered with `viewProj`.
 Ray pixelRay(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel);
 
+// The world point at framebuffer depth `depth` (0 near, 1 far) under framebuffer position
+// `pixel` of that image: what a pick's depth says of where the surface is.
+glm::vec3 unprojectPixel(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel, float depth);
+
 } // namespace scene
