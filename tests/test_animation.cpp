@@ -25,7 +25,7 @@ scene::Scene twoTriangles() {
     s.vertices = {{{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}}};
     s.indices = {0, 1, 2};
     s.parts = {{0, 1}};
-    s.geometries = {{"triangle", 0, 3, 0, 1, 0, 1, {}, {}, {}, 0, 0.0f}};
+    s.geometries = {{"triangle", 0, 3, 0, 1, 0, 1, {}, {}, {}, {}, 0, 0.0f}};
     scene::addMaterial(s, "grey", glm::vec4(0.5f));
     glm::mat4 a(1.0f), b(2.0f); // b scales by 2
     a[3] = {-3, 0, 0, 1};

@@ -10,6 +10,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "render/technique.h"
+#include "scene/face_info.h"
 #include "scene/raycast.h"
 #include "test_support.h"
 
@@ -196,6 +197,38 @@ TEST(CadSeams, ClosedModelsShowNoBackgroundBetweenTheirFaces) {
         EXPECT_GT(shown, size_t(w) * h / 20) << path;
         EXPECT_EQ(enclosedBackground(result.ids, w, h), 0u) << path;
     }
+}
+
+} // namespace
+
+namespace {
+
+// --face-info picks the face the ID image shows at the pixel and reports that face: on
+// linkrods.step, at a pixel inside a face near the centre, the part of the ID image, the
+// B-rep face the pick names, a surface the B-rep knows and an area that is positive.
+TEST(FaceInfoPick, NamesTheFaceTheIdImageShows) {
+    const std::string path = "/usr/share/opencascade/data/step/linkrods.step";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    app::SceneSettings source;
+    source.model = path;
+    const app::LoadedScene loaded = app::loadScene(source);
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    app::Options o = testing_support::headlessOptions(W, H);
+    const auto plain = app::renderHeadless(o, loaded.scene, camera);
+    const app::Options::Pixel pixel = interiorNearCentre(plain.ids);
+    o.faceInfos = {pixel, {0, 0}};
+    const auto r = app::renderHeadless(o, loaded.scene, camera);
+    EXPECT_EQ(r.validationMessages, 0u);
+    ASSERT_EQ(r.faceInfoPicks.size(), 2u);
+    const uint32_t shown = plain.ids[size_t(pixel.y) * W + pixel.x];
+    ASSERT_TRUE(r.faceInfoPicks[0].part.has_value());
+    EXPECT_EQ(*r.faceInfoPicks[0].part, shown);
+    EXPECT_FALSE(r.faceInfoPicks[1].part.has_value()); // the corner shows no part
+    const auto report = scene::faceReport(loaded.scene, shown);
+    ASSERT_TRUE(report.has_value());
+    EXPECT_EQ(report->face, scene::describePart(loaded.scene, shown)->face);
+    EXPECT_NE(report->surface.kind, scene::SurfaceKind::Mesh);
+    EXPECT_GT(report->surface.area, 0.0);
 }
 
 } // namespace

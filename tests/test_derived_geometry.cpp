@@ -50,7 +50,7 @@ scene::Scene fiveTrianglesOnFourVertices() {
         s.indices.insert(s.indices.end(), tris[t], tris[t] + 3);
         s.parts.push_back({t, 1});
     }
-    s.geometries.push_back({"tetra", 0, 4, 0, 5, 0, 5, {}, {}, {}, 0, 0.0f});
+    s.geometries.push_back({"tetra", 0, 4, 0, 5, 0, 5, {}, {}, {}, {}, 0, 0.0f});
     scene::addMaterial(s, "grey", glm::vec4(0.5f));
     scene::addObject(s, 0, 0, glm::mat4(1.0f));
     scene::validate(s);

@@ -125,6 +125,7 @@ Options parseArgs(const std::vector<std::string>& args) {
         return p.x >= options.width || p.y >= options.height;
     };
     std::vector<Options::Pixel> pixels = options.picks;
+    pixels.insert(pixels.end(), options.faceInfos.begin(), options.faceInfos.end());
     if (options.measure)
         pixels.insert(pixels.end(), options.measure->begin(), options.measure->end());
     pixels.insert(pixels.end(), options.selects.begin(), options.selects.end());

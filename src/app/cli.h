@@ -94,6 +94,9 @@ struct Options {
     // Headless measuring: both points picked (after --pick) and one JSON line
     // {"p0","p1","distance","delta","parts"} printed, from the world points their depths give.
     std::optional<std::array<Pixel, 2>> measure;
+    // Headless face properties: each point picked (after --measure) and one JSON line of the
+    // part's surface printed (scene/face_info.h).
+    std::vector<Pixel> faceInfos;
     // Headless visibility: the parts --hide names are not drawn; --isolate draws only its
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;

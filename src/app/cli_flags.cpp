@@ -401,6 +401,14 @@ const std::vector<Flag>& flags() {
              "pick reads), their distance and dX,dY,dZ, and the unique part at each; null "
              "where a pixel shows no part",
              [](Options& o, auto& v) { o.measure = parseMeasure(v); }},
+            {"--face-info", "X,Y",
+             "headless: pick the pixel and print one JSON line of its part's face "
+             "{part,object,face,surface,area,...,bbox}: for CAD files the B-rep surface type "
+             "(plane, cylinder, cone, sphere, torus, bspline, bezier, revolution, extrusion, "
+             "offset, other) and exact area, with normal and d for planes, radius and axis for "
+             "cylinders, radius and center for spheres; for other parts surface mesh and the "
+             "area of its triangles; {\"part\":null} on background; repeatable",
+             [](Options& o, auto& v) { o.faceInfos.push_back(parsePixel("--face-info", v)); }},
             {"--hide", "ID,...", "headless: do not draw these unique parts (nor pick them)",
              [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }},
             {"--isolate", "ID,...", "headless: draw only these unique parts",

@@ -15,6 +15,7 @@
 #include "render/targets.h"
 #include "scene/camera_path.h"
 #include "scene/explode.h"
+#include "scene/face_info.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
@@ -185,6 +186,8 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                             glm::vec2(float(rig.extent.width), float(rig.extent.height)),
                             glm::vec2(pick.pixel) + rig.targets->pass().sampleZero(), pick.depth);
                 }
+            for (const auto& pixel : options.faceInfos)
+                result.faceInfoPicks.push_back(pickFrame(pixel));
             const uint64_t timedBefore = slots.timedFrames();
             const uint64_t reusedBefore = renderer.reusedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
@@ -253,13 +256,17 @@ int runHeadless(const Options& options) {
                     partSetJson(*result.rectParts, result.rectCount, options.selectRect).c_str());
     for (const auto& pick : result.picks) std::printf("%s\n", pickJson(scene, pick).c_str());
     if (options.measure) std::printf("%s\n", measureJson(result).c_str());
+    for (const auto& pick : result.faceInfoPicks) {
+        const auto report = pick.part ? scene::faceReport(scene, *pick.part) : std::nullopt;
+        std::printf("%s\n", report ? scene::faceReportJson(*report).c_str() : "{\"part\":null}");
+    }
     if (result.visibleParts)
         std::printf("%s\n",
                     partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
-    const bool json =
-        !options.picks.empty() || options.measure || result.rectParts || result.visibleParts;
+    const bool json = !options.picks.empty() || options.measure || !options.faceInfos.empty() ||
+                      result.rectParts || result.visibleParts;
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()

@@ -24,7 +24,8 @@ struct HeadlessResult {
     // background).
     std::vector<render::PickReading> measured;
     std::array<std::optional<glm::vec3>, 2> measuredPoints;
-    std::optional<uint32_t> selected; // the part Options::selects picked, if any
+    std::vector<render::PickReading> faceInfoPicks; // one per Options::faceInfos entry
+    std::optional<uint32_t> selected;               // the part Options::selects picked, if any
     // Options::selectRect: the parts in the rectangle (the selection afterwards), and their
     // count as the GPU counted it.
     std::optional<scene::PartSet> rectParts;

@@ -7,6 +7,7 @@
 #include "scene/cad_read.h"
 #include "scene/cad_reader_losses.h"
 #include "scene/cad_sew.h"
+#include "scene/cad_surface.h"
 
 #include <algorithm>
 #include <cctype>
@@ -243,6 +244,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
             if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex)) {
                 Geometry& built = scene.geometries.back();
                 built.partFaces.push_back(uint32_t(f - 1));
+                built.partSurfaces.push_back(surfaceOf(TopoDS::Face(d.faces(f))));
                 const auto& own = d.faceColor[size_t(f - 1)];
                 built.partMaterials.push_back(own ? materialFor(*own) : gpu::OBJECT_MATERIAL);
             } else {

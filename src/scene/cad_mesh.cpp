@@ -124,6 +124,7 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
     Geometry next;
     next.name = full.name + " (level " + std::to_string(level) + ")";
     next.partFaces = full.partFaces;
+    next.partSurfaces = full.partSurfaces;
     next.partMaterials = full.partMaterials;
     next.level = level;
     next.lodError = error;

@@ -186,6 +186,7 @@ uint32_t addLevel(Scene& scene, uint32_t base, uint32_t level, std::vector<PartL
     Geometry out;
     out.name = g.name + " (level " + std::to_string(level) + ")";
     out.partFaces = g.partFaces;
+    out.partSurfaces = g.partSurfaces;
     out.partMaterials = g.partMaterials;
     out.level = level;
     out.firstVertex = uint32_t(scene.vertices.size());

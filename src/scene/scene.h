@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/surface_info.h"
 #include "shared.h"
 
 namespace scene {
@@ -35,6 +36,9 @@ struct Geometry {
     // faces (a face that did not triangulate has no part, so the numbers may skip). Empty for
     // other sources, whose parts are no faces.
     std::vector<uint32_t> partFaces;
+    // CAD files: each part's face as the B-rep knows it (surface type, exact area, plane,
+    // axis, radius), in the order of partFaces; empty for other sources.
+    std::vector<SurfaceInfo> partSurfaces;
     // A material per part, or gpu::OBJECT_MATERIAL where the object's applies (CAD faces
     // with colours of their own); empty when every part takes its object's.
     std::vector<uint32_t> partMaterials;

@@ -1,0 +1,97 @@
+// face_info.cpp - a part's surface and box in world coordinates (face_info.h).
+#include "scene/face_info.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace scene {
+
+const char* surfaceName(SurfaceKind kind) {
+    static constexpr const char* names[] = {
+        "mesh",    "plane",  "cylinder",   "cone",      "sphere", "torus",
+        "bspline", "bezier", "revolution", "extrusion", "offset", "other",
+    };
+    return names[size_t(kind)];
+}
+
+std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId) {
+    const auto ref = scene.locate(uniquePartId);
+    if (!ref) return std::nullopt;
+    const Object& object = scene.objects[ref->object];
+    const Geometry& g = scene.geometries[object.geometry];
+    FaceReport report;
+    report.part = uniquePartId;
+    report.object = ref->object;
+    if (ref->localPart < g.partFaces.size()) report.face = g.partFaces[ref->localPart];
+    const glm::dmat4 world(object.world);
+    const glm::dmat3 linear(world);
+    const double scale = std::cbrt(std::abs(glm::determinant(linear)));
+    auto place = [&](glm::dvec3 p) { return glm::dvec3(world * glm::dvec4(p, 1.0)); };
+
+    const Part& part = scene.part(object, ref->localPart);
+    report.bbox.min = glm::vec3(std::numeric_limits<float>::max());
+    report.bbox.max = glm::vec3(std::numeric_limits<float>::lowest());
+    double triangleArea = 0.0;
+    for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t) {
+        glm::dvec3 c[3];
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = scene.indices[g.firstIndex + 3 * t + uint32_t(k)];
+            c[k] = place(glm::dvec3(scene.vertices[g.firstVertex + v].position));
+            report.bbox.min = glm::min(report.bbox.min, glm::vec3(c[k]));
+            report.bbox.max = glm::max(report.bbox.max, glm::vec3(c[k]));
+        }
+        triangleArea += 0.5 * glm::length(glm::cross(c[1] - c[0], c[2] - c[0]));
+    }
+    if (ref->localPart >= g.partSurfaces.size()) {
+        report.surface.area = triangleArea;
+        return report;
+    }
+    SurfaceInfo s = g.partSurfaces[ref->localPart];
+    s.area *= scale * scale;
+    s.radius *= scale;
+    if (s.kind == SurfaceKind::Plane) {
+        const glm::dvec3 normal = glm::normalize(glm::transpose(glm::inverse(linear)) * s.normal);
+        s.d = glm::dot(normal, place(s.normal * s.d));
+        s.normal = normal;
+    }
+    if (s.kind == SurfaceKind::Cylinder || s.kind == SurfaceKind::Sphere)
+        s.axisOrigin = place(s.axisOrigin);
+    if (s.kind == SurfaceKind::Cylinder) s.axisDirection = glm::normalize(linear * s.axisDirection);
+    report.surface = s;
+    return report;
+}
+
+namespace {
+
+std::string vec(glm::dvec3 v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "[%.9g,%.9g,%.9g]", v.x, v.y, v.z);
+    return text;
+}
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    return text;
+}
+
+} // namespace
+
+std::string faceReportJson(const FaceReport& r) {
+    const SurfaceInfo& s = r.surface;
+    std::string json = "{\"part\":" + std::to_string(r.part) +
+                       ",\"object\":" + std::to_string(r.object) +
+                       ",\"face\":" + (r.face ? std::to_string(*r.face) : std::string("null")) +
+                       ",\"surface\":\"" + surfaceName(s.kind) + "\",\"area\":" + number(s.area);
+    if (s.kind == SurfaceKind::Plane)
+        json += ",\"normal\":" + vec(s.normal) + ",\"d\":" + number(s.d);
+    if (s.kind == SurfaceKind::Cylinder)
+        json += ",\"radius\":" + number(s.radius) + ",\"axis\":{\"origin\":" + vec(s.axisOrigin) +
+                ",\"direction\":" + vec(s.axisDirection) + "}";
+    if (s.kind == SurfaceKind::Sphere)
+        json += ",\"radius\":" + number(s.radius) + ",\"center\":" + vec(s.axisOrigin);
+    return json + ",\"bbox\":{\"min\":" + vec(glm::dvec3(r.bbox.min)) +
+           ",\"max\":" + vec(glm::dvec3(r.bbox.max)) + "}}";
+}
+
+} // namespace scene
