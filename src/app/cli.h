@@ -52,6 +52,7 @@ struct Options {
     bool listRenderers = false;
     bool headless = false;
     bool stats = false;
+    bool tree = false;      // print the assembly tree as JSON and exit
     std::string exportPath; // write the scene as .glb and exit
     bool benchmark = false;
     std::string benchmarkOut; // JSON, or CSV when the name ends in .csv

@@ -323,6 +323,12 @@ const std::vector<Flag>& flags() {
                "triangles, load_ms, ID buffer bytes) and, for the chosen renderer and mode, draws, "
                "pipelines and the bytes of each buffer; then exit",
                &Options::stats),
+            on("--tree",
+               "print the scene's assembly tree as one JSON object, nested "
+               "{name,children} down to each object's leaf {name,object,parts:[first unique "
+               "part, count]} (STEP/IGES products and instances, glTF nodes, procedural groups, "
+               "copies); then exit",
+               &Options::tree),
             text("--export", "FILE", "write the scene (after copies) as binary glTF and exit",
                  &Options::exportPath),
             registryFlag("--renderer", "part-ID technique (see --list-renderers)",

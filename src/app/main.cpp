@@ -88,10 +88,11 @@ int main(int argc, char** argv) {
     try {
         if (options.listRenderers) return listRenderers();
         if (options.listDevices) return listDevices(options);
-        if (options.stats || !options.exportPath.empty()) {
+        if (options.stats || options.tree || !options.exportPath.empty()) {
             const app::LoadedScene loaded = app::loadScene(options.scene);
             if (!options.exportPath.empty()) scene::writeGlb(loaded.scene, options.exportPath);
             if (options.stats) std::printf("%s\n", app::statsJson(loaded, options.render).c_str());
+            if (options.tree) std::printf("%s\n", app::treeJson(loaded).c_str());
             return 0;
         }
         if (options.benchmark) return app::benchmarkCommand(options);

@@ -15,6 +15,7 @@
 
 #include "app/json.h"
 #include "render/draw_list.h"
+#include "scene/assembly_tree.h"
 #include "scene/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/generator.h"
@@ -175,6 +176,36 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect) {
     const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
     const glm::vec3 direction = yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);
     return scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
+}
+
+namespace {
+
+void appendNode(std::string& out, const scene::AssemblyNode& node) {
+    out += "{\"name\":" + jsonString(node.name);
+    if (node.object) {
+        out.append(",\"object\":").append(std::to_string(*node.object));
+        out.append(",\"parts\":[").append(std::to_string(node.firstPart)).append(",");
+        out.append(std::to_string(node.partCount)).append("]");
+    }
+    if (!node.object || !node.children.empty()) {
+        out += ",\"children\":[";
+        for (size_t i = 0; i < node.children.size(); ++i) {
+            if (i) out += ",";
+            appendNode(out, node.children[i]);
+        }
+        out += "]";
+    }
+    out += "}";
+}
+
+} // namespace
+
+std::string treeJson(const LoadedScene& loaded) {
+    const std::filesystem::path source(loaded.source);
+    const std::string root = source.has_extension() ? source.filename().string() : loaded.source;
+    std::string out;
+    appendNode(out, scene::assemblyTree(loaded.scene, root));
+    return out;
 }
 
 std::string levelStatsJson(const std::vector<scene::LevelStats>& levels) {

@@ -85,4 +85,9 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
 // benchmark.
 std::string levelStatsJson(const std::vector<scene::LevelStats>& levels);
 
+// --tree: the scene's assembly tree (scene/assembly_tree.h) as nested
+// {"name","children":[...]}, each leaf {"name","object","parts":[first unique part, count]};
+// the root is named after the file (or the built-in scene).
+std::string treeJson(const LoadedScene& loaded);
+
 } // namespace app
