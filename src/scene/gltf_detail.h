@@ -2,6 +2,7 @@
 // reads and the conversion of one glTF mesh into parts of a geometry. Not a public interface.
 #pragma once
 
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,6 +18,21 @@ namespace scene::gltf {
 struct Bad : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// The bytes of a model file: a regular file of sane size, whole. Throws Bad.
+std::vector<unsigned char> readFileBytes(const std::string& path);
+
+// tinygltf's messages span lines and may quote file content: one printable line of them.
+std::string oneLine(const std::string& text);
+
+// The file parsed as glTF 2.0 (gltf_parse.cpp): its GLB container and version checked first,
+// external buffers read only from inside `name`'s folder, images skipped; tinygltf's warnings
+// go to `warnings`. Throws Bad.
+tinygltf::Model parse(std::span<const unsigned char> bytes, const std::string& name,
+                      std::vector<std::string>& warnings);
+
+// Throws Bad naming the first required extension idview cannot honour.
+void checkRequiredExtensions(const std::vector<std::string>& required);
 
 // Float VEC3 attribute data (POSITION, NORMAL), sparse substitution applied. Every byte read
 // is range-checked first; `what` names the attribute in messages.
