@@ -70,7 +70,9 @@ TEST(AssemblyTree, EveryObjectIsOneNodeWhereItsPathSays) {
     std::function<void(const AssemblyNode&)> unique = [&](const AssemblyNode& node) {
         std::set<std::string> groups;
         for (const AssemblyNode& child : node.children) {
-            if (!child.object) EXPECT_TRUE(groups.insert(child.name).second) << child.name;
+            if (!child.object) {
+                EXPECT_TRUE(groups.insert(child.name).second) << child.name;
+            }
             unique(child);
         }
     };

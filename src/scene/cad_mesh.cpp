@@ -120,18 +120,8 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
               float fullDeflection, const LodOptions& lod) {
     const size_t vertices = scene.vertices.size(), indices = scene.indices.size(),
                  parts = scene.parts.size();
-    const Geometry& full = scene.geometries[shape.geometry];
-    Geometry next;
-    next.name = full.name + " (level " + std::to_string(level) + ")";
-    next.partFaces = full.partFaces;
-    next.partSurfaces = full.partSurfaces;
-    next.partMaterials = full.partMaterials;
-    next.level = level;
+    Geometry next = levelShell(scene, scene.geometries[shape.geometry], level);
     next.lodError = error;
-    next.firstVertex = uint32_t(vertices);
-    next.firstIndex = uint32_t(indices);
-    next.firstPart = uint32_t(parts);
-    next.partCount = full.partCount;
     scene.geometries.push_back(std::move(next));
     bool whole = true;
     for (uint32_t face : scene.geometries[shape.geometry].partFaces)

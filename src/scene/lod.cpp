@@ -183,16 +183,7 @@ float sizeOf(const Scene& scene, const Geometry& g) {
 // Appends one level as a geometry of its own, with just the vertices it uses.
 uint32_t addLevel(Scene& scene, uint32_t base, uint32_t level, std::vector<PartLevel>& parts) {
     const Geometry& g = scene.geometries[base];
-    Geometry out;
-    out.name = g.name + " (level " + std::to_string(level) + ")";
-    out.partFaces = g.partFaces;
-    out.partSurfaces = g.partSurfaces;
-    out.partMaterials = g.partMaterials;
-    out.level = level;
-    out.firstVertex = uint32_t(scene.vertices.size());
-    out.firstIndex = uint32_t(scene.indices.size());
-    out.firstPart = uint32_t(scene.parts.size());
-    out.partCount = g.partCount;
+    Geometry out = levelShell(scene, g, level);
     std::vector<uint32_t> remap(g.vertexCount, UINT32_MAX);
     for (PartLevel& part : parts) {
         out.lodError = std::max(out.lodError, part.error);
@@ -285,6 +276,20 @@ void buildLevels(Scene& scene, const LodOptions& options, const LodProgress& pro
         for (size_t l = 0; l < chosen[i].size(); ++l)
             addLevel(scene, todo[i], uint32_t(l + 1), useful[i][chosen[i][l]].parts);
     if (progress) progress(1.0);
+}
+
+Geometry levelShell(const Scene& scene, const Geometry& full, uint32_t level) {
+    Geometry out;
+    out.name = full.name + " (level " + std::to_string(level) + ")";
+    out.partFaces = full.partFaces;
+    out.partSurfaces = full.partSurfaces;
+    out.partMaterials = full.partMaterials;
+    out.level = level;
+    out.firstVertex = uint32_t(scene.vertices.size());
+    out.firstIndex = uint32_t(scene.indices.size());
+    out.firstPart = uint32_t(scene.parts.size());
+    out.partCount = full.partCount;
+    return out;
 }
 
 uint32_t geometryAtLevel(const Scene& scene, uint32_t geometry, uint32_t level) {

@@ -40,6 +40,10 @@ using LodProgress = std::function<void(double fraction)>;
 // depend on their number.
 void buildLevels(Scene& scene, const LodOptions& options = {}, const LodProgress& progress = {});
 
+// A new coarser level of `full` before its vertices and triangles: named after it, with its
+// parts (same count, faces, surfaces and materials), starting at the scene's array ends.
+Geometry levelShell(const Scene& scene, const Geometry& full, uint32_t level);
+
 // The geometry `object` draws at `level`: its own at 0, else its coarsest level up to
 // `level` (geometries with fewer levels stop at their last).
 uint32_t geometryAtLevel(const Scene& scene, uint32_t geometry, uint32_t level);
