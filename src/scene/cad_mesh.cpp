@@ -107,12 +107,6 @@ float measuredDistance(const Scene& scene, const Geometry& full, const Geometry&
     return worst;
 }
 
-// What a geometry's vertices, indices and part ranges take, as levelStats counts them.
-uint64_t bytesOf(const Geometry& g) {
-    return uint64_t(g.vertexCount) * sizeof(Vertex) + 12ull * g.triangleCount +
-           uint64_t(g.partCount) * sizeof(Part);
-}
-
 // Builds `shape`'s faces at the current triangulation as the level after `finer`'s; false
 // (and the scene as it was) when a face has no triangles, the level saves too little or the
 // levels would take too much memory.
@@ -131,12 +125,12 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
     Geometry& built = scene.geometries.back();
     built.vertexCount = uint32_t(scene.vertices.size() - vertices);
     const double before = scene.geometries[finer].triangleCount;
-    uint64_t levelBytes = bytesOf(built);
+    uint64_t levelBytes = geometryBytes(built);
     for (uint32_t l : scene.geometries[shape.geometry].levels)
-        levelBytes += bytesOf(scene.geometries[l]);
+        levelBytes += geometryBytes(scene.geometries[l]);
     if (!whole || double(built.triangleCount) > double(lod.keepAtMost) * before ||
         double(levelBytes) >
-            double(lod.memory) * double(bytesOf(scene.geometries[shape.geometry]))) {
+            double(lod.memory) * double(geometryBytes(scene.geometries[shape.geometry]))) {
         scene.geometries.pop_back();
         scene.vertices.resize(vertices);
         scene.indices.resize(indices);

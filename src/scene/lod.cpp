@@ -146,7 +146,7 @@ Candidate candidateOf(const Scene& scene, const Geometry& g, double share, int w
         for (uint32_t v : part.indices)
             if (!used[v]) used[v] = true, ++vertices;
     }
-    c.bytes = vertices * sizeof(Vertex) + 12ull * c.triangles + g.partCount * sizeof(Part);
+    c.bytes = geometryBytes(vertices, c.triangles, g.partCount);
     for (PartLevel& part : c.parts) part.error = c.error;
     return c;
 }
@@ -266,8 +266,7 @@ void buildLevels(Scene& scene, const LodOptions& options, const LodProgress& pro
         sets[i].instances = std::max(instances[todo[i]], 1u);
         for (const Candidate& c : useful[i])
             sets[i].candidates.push_back({c.triangles, c.bytes, c.error});
-        bytes += double(g.vertexCount * sizeof(Vertex) + 12ull * g.triangleCount +
-                        g.partCount * sizeof(Part));
+        bytes += double(geometryBytes(g));
     }
     const auto chosen =
         chooseLevels(sets, options.levels - 1, options.keepAtMost, double(options.memory) * bytes);
@@ -313,8 +312,7 @@ std::vector<LevelStats> levelStats(const Scene& scene) {
         ++s.geometries;
         s.uniqueTriangles += g.triangleCount;
         s.vertices += g.vertexCount;
-        s.bytes += uint64_t(g.vertexCount) * sizeof(Vertex) + 12ull * g.triangleCount +
-                   uint64_t(g.partCount) * sizeof(Part);
+        s.bytes += geometryBytes(g);
         s.maxError = std::max(s.maxError, g.lodError);
     }
     for (const Object& o : scene.objects)

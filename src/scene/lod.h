@@ -40,6 +40,15 @@ using LodProgress = std::function<void(double fraction)>;
 // depend on their number.
 void buildLevels(Scene& scene, const LodOptions& options = {}, const LodProgress& progress = {});
 
+// What a geometry of this size takes in memory: its vertices, indices and part ranges. The
+// memory rules of levels and the statistics all count this.
+inline uint64_t geometryBytes(uint64_t vertices, uint64_t triangles, uint64_t parts) {
+    return vertices * sizeof(Vertex) + 12 * triangles + parts * sizeof(Part);
+}
+inline uint64_t geometryBytes(const Geometry& g) {
+    return geometryBytes(g.vertexCount, g.triangleCount, g.partCount);
+}
+
 // A new coarser level of `full` before its vertices and triangles: named after it, with its
 // parts (same count, faces, surfaces and materials), starting at the scene's array ends.
 Geometry levelShell(const Scene& scene, const Geometry& full, uint32_t level);
