@@ -46,6 +46,12 @@ FrameData loadFrame() {
     return FrameRef(push.frameAddress).frame;
 }
 
+// From a surface point towards the viewer, not normalised: to the eye in perspective
+// (eyePosition.w 1), the view's constant direction in orthographic views (w 0).
+vec3 toViewer(FrameData frame, vec3 worldPos) {
+    return frame.eyePosition.w == 0.0 ? frame.eyePosition.xyz : frame.eyePosition.xyz - worldPos;
+}
+
 ObjectData loadObject(uint64_t objectsAddress, uint objectIndex) {
     return ObjectsRef(objectsAddress).objects[objectIndex];
 }

@@ -18,8 +18,9 @@
 // makes the pick agree with the ID attachment even where surfaces share a depth. While parts
 // are hidden and no earlier stage drops them (IDV_HIDE_IN_FRAGMENT), the test must come after
 // the shader: a fragment discarded after an early test would still have written its depth
-// and hidden what is behind it.
-#if !IDV_HIDE_IN_FRAGMENT
+// and hidden what is behind it. Section planes (IDV_SECTION) discard here for every
+// technique, for the same reason after the test.
+#if !IDV_HIDE_IN_FRAGMENT && !IDV_SECTION
 layout(early_fragment_tests) in;
 #endif
 
@@ -54,8 +55,32 @@ float pickDepth(FrameData frame) {
     return clamp(z + dFdx(z) * offset.x + dFdy(z) * offset.y, 0.0, 1.0);
 }
 
+#if IDV_SECTION
+// Whether any section plane cuts the point away (shared.h, FrameData::sectionPlanes).
+bool cutAway(FrameData frame, vec3 worldPos) {
+    [[unroll]] for (uint p = 0u; p < SECTION_PLANES_MAX; ++p)
+        if (dot(frame.sectionPlanes[p], vec4(worldPos, 1.0)) > 0.0) return true;
+    return false;
+}
+
+// Whether the fragment lies on the back of its surface: where a cut opens a solid, the first
+// surface seen through it is the inside of the cut part, which shows as its cap. Windings are
+// unreliable in CAD exports, so the triangle's own normal (exact, from the derivatives of the
+// position) takes the side its vertex normals point to, and is compared with the view.
+bool backFacing(FrameData frame) {
+    vec3 faceNormal = cross(dFdx(inWorldPos), dFdy(inWorldPos));
+    if (dot(faceNormal, inWorldNormal) < 0.0) faceNormal = -faceNormal;
+    return dot(faceNormal, toViewer(frame, inWorldPos)) < 0.0;
+}
+#endif
+
 void main() {
     FrameData frame = loadFrame();
+#if IDV_SECTION
+    bool cap = backFacing(frame); // derivatives: before any discard
+#else
+    bool cap = false;
+#endif
     DrawData draw = loadDraw(frame, inDrawIndex);
     ObjectData object = loadObject(frame.objectsAddress, draw.objectIndex);
     vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
@@ -64,7 +89,12 @@ void main() {
     if ((frame.flags & FRAME_TINT_LEVELS) != 0u) base = levelTint(draw.lodLevel);
 #if IDV_NO_ID
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.
-    outColor = vec4(headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz), 1.0);
+#if IDV_SECTION
+    if (cutAway(frame, inWorldPos)) discard;
+#endif
+    outColor = vec4(cap ? capColor(base, gl_FragCoord.xy)
+                        : headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz),
+                    1.0);
 #else
 #if IDV_PART_FROM_EARLIER_STAGE
     uint localPart = inPartIndex;
@@ -87,10 +117,14 @@ void main() {
 #if IDV_HIDE_IN_FRAGMENT
     if (partInSet(frame.hiddenAddress, uniquePartId)) discard;
 #endif
+#if IDV_SECTION
+    if (cutAway(frame, inWorldPos)) discard;
+#endif
     outPartId = uniquePartId;
 
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
-    vec3 color = headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
+    vec3 color = cap ? capColor(base, gl_FragCoord.xy)
+                     : headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
 
     PickRef pick = PickRef(frame.pickAddress);
     // With MSAA, sample 0 decides, as in the resolve of the ID attachment (see targets.h):

@@ -30,6 +30,14 @@ vec3 headlight(vec3 base, vec3 worldPos, vec3 worldNormal, vec3 eye) {
     return pow(linear, vec3(1.0 / 2.2)); // the colour attachment is UNORM: encode for display
 }
 
+// Where a section plane opens a solid (scene.frag): the part's colour, darker, under
+// diagonal hatching 2 of every 8 pixels wide, unlit, so a cap never reads as a surface.
+vec3 capColor(vec3 base, vec2 fragCoord) {
+    bool line = (uint(fragCoord.x) + uint(fragCoord.y)) % 8u < 2u;
+    vec3 linear = base * (line ? 0.12 : 0.45);
+    return pow(linear, vec3(1.0 / 2.2));
+}
+
 // The two highlights. Hovered: the inverted colour, blinking. Selected: a steady amber tint.
 // Inverting a mid-grey gives the same grey, so where the inverse is too close the highlight
 // goes to black or white instead: a highlighted pixel always changes visibly.

@@ -60,6 +60,7 @@ IDV_CONST FRAME_BOUNDS_HISTORY = 8u;
 IDV_CONST FRAME_VIEW_UNCHANGED = 16u;
 // Shade each object in the colour of the level of detail it is drawn at (shading.glsl).
 IDV_CONST FRAME_TINT_LEVELS = 32u;
+IDV_CONST SECTION_PLANES_MAX = 3u; // scene::maxSectionPlanes
 // The one material of FRAME_IGNORE_MATERIALS (linear RGB): a mid grey, so that only part
 // colours (--part-weight) tint the image.
 #ifdef __cplusplus
@@ -122,6 +123,9 @@ struct FrameData {
     // level may be off by; 0 elsewhere.
     float lodErrorPixels;
     uint lodUnused;
+    // Section planes (scene/section.h): a fragment is cut away where dot(plane, (p, 1)) > 0
+    // for any of them; unused ones are (0, 0, 0, -1). Read only by IDV_SECTION pipelines.
+    vec4 sectionPlanes[SECTION_PLANES_MAX];
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
@@ -480,7 +484,7 @@ static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 4
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 288 && offsetof(FrameData, pickPixel) == 248);
+static_assert(sizeof(FrameData) == 336 && offsetof(FrameData, pickPixel) == 248);
 static_assert(sizeof(DrawCull) == 80 && sizeof(CullBox) == 32);
 static_assert(sizeof(MeshTaskCommand) == 16 && sizeof(CullStats) == 64);
 static_assert(sizeof(CullDispatches) == 16 * (CULL_PYRAMID_PASSES + 3));

@@ -81,6 +81,12 @@ TEST(Cli, EveryFlagIsApplied) {
     EXPECT_EQ(parseArgs({"--scene", "procedural:preset=car-like,seed=42"}).scene.builtin,
               "procedural:preset=car-like,seed=42");
     EXPECT_EQ(parseArgs({"--scene=procedural"}).scene.builtin, "procedural");
+    // Section planes fill the slots in order.
+    const scene::Section cut =
+        parseArgs({"--section", "z,-2,flip", "--section", "x,1"}).render.section;
+    EXPECT_EQ(cut.planes[0], scene::axisPlane(2, -2.0f, true));
+    EXPECT_EQ(cut.planes[1], scene::axisPlane(0, 1.0f));
+    EXPECT_FALSE(cut.planes[2].on);
 }
 
 TEST(Cli, RefusesBadCommandLines) {
@@ -120,6 +126,9 @@ TEST(Cli, RefusesBadCommandLines) {
         {"--lod-error", "0,1"}, // a list only with --benchmark
         {"--lod-levels", "1", "--lod-error", "1"},
         {"--lod-levels", "4", "--lod-level", "1", "--lod-error", "1"},
+        {"--section", "w,1"},
+        {"--section", "x,1,keep"},
+        {"--section", "x,1", "--section", "y,1", "--section", "z,1", "--section", "x,2"},
     };
     for (const auto& args : bad) {
         std::string joined;

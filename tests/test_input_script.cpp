@@ -126,6 +126,10 @@ TEST(InputScript, BadLinesNameFileAndLine) {
     EXPECT_NE(errorOf("1 mode pull\n").find("s.txt:1: unknown mode 'pull'"), std::string::npos);
     EXPECT_EQ(errorOf("1 quit now\n"), "s.txt:1: 'quit' takes: quit");
     EXPECT_EQ(errorOf("1 screenshot\n"), "s.txt:1: 'screenshot' takes: screenshot FILE");
+    EXPECT_EQ(errorOf("1 section y,0,flip\n2 section off\n3 section x,-2.5\n"), "(no error)");
+    EXPECT_NE(errorOf("1 section w,0\n").find("s.txt:1: 'section' expects AXIS,VALUE"),
+              std::string::npos);
+    EXPECT_NE(errorOf("1 section on\n").find(", or off"), std::string::npos);
 }
 
 TEST(InputScript, MissingFileIsAnError) {

@@ -49,3 +49,72 @@ TEST(Raycast, HonoursObjectTransforms) {
     EXPECT_EQ(hit->uniquePartId, 0u);
     EXPECT_NEAR(hit->t, 15.0f / 20.0f, 1e-5f);
 }
+
+// Section planes: the flag's form, and which side a plane keeps.
+TEST(Section, ParsesAxisValueAndFlip) {
+    const SectionPlane x = parseSectionPlane("x,1.5");
+    EXPECT_TRUE(x.on);
+    EXPECT_EQ(x.normal, glm::vec3(1, 0, 0));
+    EXPECT_FLOAT_EQ(x.offset, 1.5f);
+    EXPECT_FALSE(x.flip);
+    const SectionPlane z = parseSectionPlane("z,-20,flip");
+    EXPECT_EQ(z.normal, glm::vec3(0, 0, 1));
+    EXPECT_FLOAT_EQ(z.offset, -20.0f);
+    EXPECT_TRUE(z.flip);
+    for (const char* bad : {"", "x", "x,", "w,1", "xy,1", "x,1,fl", "x,one", "x,1e99", "x,nan",
+                            "x,1,flip,flip", ",1", "X,1"})
+        EXPECT_THROW(parseSectionPlane(bad), std::invalid_argument) << bad;
+}
+
+TEST(Section, KeepsTheSideAtMostTheValueOrTheOtherWhenFlipped) {
+    const SectionPlane y = axisPlane(1, 2.0f);
+    EXPECT_TRUE(y.keeps({9, 2.0f, 9}));
+    EXPECT_TRUE(y.keeps({0, 1.9f, 0}));
+    EXPECT_FALSE(y.keeps({0, 2.1f, 0}));
+    const SectionPlane flipped = axisPlane(1, 2.0f, true);
+    EXPECT_FALSE(flipped.keeps({0, 1.9f, 0}));
+    EXPECT_TRUE(flipped.keeps({0, 2.1f, 0}));
+    SectionPlane off = y;
+    off.on = false;
+    EXPECT_TRUE(off.keeps({0, 1e6f, 0}));
+    // Several planes: a point stays where every plane keeps it.
+    Section section;
+    EXPECT_FALSE(section.any());
+    section.planes[0] = axisPlane(0, 0.0f);
+    section.planes[2] = axisPlane(2, 1.0f, true);
+    EXPECT_TRUE(section.any());
+    EXPECT_TRUE(section.keeps({-1, 5, 2}));
+    EXPECT_FALSE(section.keeps({1, 5, 2}));
+    EXPECT_FALSE(section.keeps({-1, 5, 0}));
+}
+
+// The ray goes through what a plane cuts away, and meeting a surface from behind (its
+// normals face away) is a cap: the tiles face the +z camera, so from -z they are caps.
+TEST(Raycast, SectionsCutAwayAndBackFacesAreCaps) {
+    const Scene s = makeTiles();
+    const glm::vec3 target(0.2f + 2.4f, -0.4f + 1.4f, 0); // a tile of the second sheet
+    const glm::vec3 front(target.x, target.y, 20), back(target.x, target.y, -20);
+    const auto seen = raycast(s, {front, (target - front) * 2.0f});
+    ASSERT_TRUE(seen);
+    EXPECT_EQ(seen->uniquePartId, 12u + 1 * 4 + 2);
+    EXPECT_FALSE(seen->cap);
+    const RayCaster caster(s);
+    const auto behind = caster.cast({back, (target - back) * 2.0f}); // the plate, from behind
+    ASSERT_TRUE(behind);
+    EXPECT_EQ(behind->uniquePartId, 24u);
+    EXPECT_TRUE(behind->cap);
+    // Cutting z > -0.5 away leaves the plate (z = -1) to the front ray, seen from the front.
+    Section section;
+    section.planes[0] = axisPlane(2, -0.5f);
+    const auto cut = caster.cast({front, (target - front) * 2.0f}, nullptr, &section);
+    ASSERT_TRUE(cut);
+    EXPECT_EQ(cut->uniquePartId, 24u);
+    EXPECT_FALSE(cut->cap);
+    EXPECT_GT(cut->t, seen->t);
+    // Flipped, it keeps only the tiles: the back ray now meets a tile from behind.
+    section.planes[0].flip = true;
+    const auto flipped = caster.cast({back, (target - back) * 2.0f}, nullptr, &section);
+    ASSERT_TRUE(flipped);
+    EXPECT_EQ(flipped->uniquePartId, 12u + 1 * 4 + 2);
+    EXPECT_TRUE(flipped->cap);
+}

@@ -81,6 +81,11 @@ TEST(Shaders, VariantKeysCoverEveryChoice) {
                     << t.name << " + " << m.name << " culling";
                 ++expected;
             }
+            // The section variant, with every other switch on, once per technique and mode.
+            render::PipelineKey section{&t, &m};
+            section.section = section.hiding = section.taskCulling = section.runOffsets = true;
+            EXPECT_EQ(has(section.effective(true)), 1) << t.name << " + " << m.name << " section";
+            ++expected;
             // The hiding variant, once per technique and mode with part IDs.
             render::PipelineKey hiding{&t, &m};
             hiding.hiding = true;

@@ -71,6 +71,12 @@ done
     at screenshot "$work/window.png"
     at frames 3
     at key ESC
+    at frames 3
+    at screenshot "$work/uncut.png"
+    at section z,0,flip # a plane through the plates, as the panel's Section sets one
+    at frames 3
+    at screenshot "$work/cut.png"
+    at section off
     at drop "$work/broken.glb"
     at drop "$work/small.glb"
     at frames 6 # drops open between frames
@@ -140,6 +146,13 @@ for f in "${cad_files[@]}"; do
         fail "the dropped $f did not open with $objects objects and $parts parts"
     fi
 done
+
+# The section plane changed the picture.
+if [[ -s $work/cut.png && -s $work/uncut.png ]] && ! cmp -s "$work/cut.png" "$work/uncut.png"; then
+    echo "ok   the section plane cut the picture"
+else
+    fail "the section plane did not change the screenshot"
+fi
 
 # The screenshot is a picture: the window's size and many distinct colours.
 png=$work/window.png

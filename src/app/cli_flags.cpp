@@ -106,6 +106,18 @@ std::array<Options::Pixel, 2> parseMeasure(const std::string& text) {
     return {Options::Pixel{v[0], v[1]}, Options::Pixel{v[2], v[3]}};
 }
 
+void addSectionPlane(scene::Section& section, const std::string& text) {
+    scene::SectionPlane plane;
+    try {
+        plane = scene::parseSectionPlane(text);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--section ") + e.what());
+    }
+    if (!section.add(plane))
+        throw UsageError("--section is given more than " + std::to_string(scene::maxSectionPlanes) +
+                         " times");
+}
+
 // "RRGGBB" in hex, as displayed.
 glm::vec3 parseColor(const std::string& flag, const std::string& text) {
     uint32_t value = 0;
@@ -423,6 +435,11 @@ const std::vector<Flag>& flags() {
                "headless: print one JSON line {count,parts} of the unique parts the last frame "
                "shows, counted on the GPU; with --benchmark every frame counts them",
                &Options::visibleParts),
+            {"--section", "AXIS,VALUE[,flip]",
+             "cut the scene: keep where coordinate AXIS (x, y or z) is at most VALUE (model "
+             "units), flip keeps the other side; caps show where a cut opens a solid; up to " +
+                 std::to_string(scene::maxSectionPlanes) + ", each cutting its side away",
+             [](Options& o, auto& v) { addSectionPlane(o.render.section, v); }},
             {"--edges", nullptr,
              "draw part edges from the ID image, and outlines of the selected and hovered parts",
              [](Options& o, auto&) { o.render.edges.on = true; }},

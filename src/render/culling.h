@@ -101,6 +101,7 @@ struct CullBuffers {
         uint64_t hiddenVersion;
         uint32_t width, height, samples; // of the targets
         float lodErrorPixels;            // which levels of detail are drawn
+        scene::Section section;          // a cut shows what the view hid before
         bool operator==(const View&) const = default;
     };
     std::optional<View> lastView;

@@ -78,6 +78,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
     wanted.taskCulling = settings.culling.mode != CullMode::Off;
     wanted.runOffsets = settings.culling.mode != CullMode::Off;
+    wanted.section = settings.section.any();
     const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
     const Technique& technique = *key.technique;
     if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "render/technique.h"
+#include "scene/section.h"
 
 namespace render {
 
@@ -45,6 +46,9 @@ struct PipelineKey {
     // modes, whose culled lists are cluster runs: the vertex shader hands on each run's
     // offset in its draw (IDV_RUN_OFFSET), and culling off keeps the technique's own shaders.
     bool runOffsets = false;
+    // Nor this: set while a section plane is on (RenderSettings::section), for the variant
+    // that cuts fragments away and draws caps (IDV_SECTION; late fragment tests, like hiding).
+    bool section = false;
 
     // The same key with what the technique ignores set to defaults, and passthrough only
     // where the technique has a geometry stage and the device offers it.
@@ -112,6 +116,9 @@ struct RenderSettings {
     EdgeSettings edges;
     CullSettings culling;
     LodSettings lod;
+    // Cuts through the scene (scene/section.h). Every technique honours them, and so does
+    // everything read from the ID image: picks, box selection, edges, the visible parts.
+    scene::Section section;
     bool operator==(const RenderSettings&) const = default;
 };
 

@@ -25,6 +25,7 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     const bool dropEarlier = mesh || (inGeometry && !key.gsPassthrough);
     defines.push_back({"IDV_HIDE_PARTS", key.hiding ? "1" : "0"});
     defines.push_back({"IDV_HIDE_IN_FRAGMENT", key.hiding && !dropEarlier ? "1" : "0"});
+    defines.push_back({"IDV_SECTION", key.section ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
     defines.push_back({"IDV_TASK_CULLING", key.taskCulling ? "1" : "0"});
     defines.push_back({"IDV_RUN_OFFSET", key.runOffsets ? "1" : "0"});
@@ -91,6 +92,10 @@ std::vector<PipelineKey> allPipelineKeys() {
             culling.taskCulling = culling.runOffsets = true;
             culling = culling.effective(true);
             if (culling.taskCulling || culling.runOffsets) keys.push_back(culling);
+            // Sections change only the fragment shader; compiled with every other switch on.
+            PipelineKey section{&technique, &mode};
+            section.section = section.hiding = section.taskCulling = section.runOffsets = true;
+            keys.push_back(section.effective(true));
         }
     return keys;
 }

@@ -8,7 +8,7 @@
 namespace scene {
 
 static bool intersect(glm::vec3 origin, glm::vec3 dir, glm::vec3 a, glm::vec3 b, glm::vec3 c,
-                      float& t) {
+                      float& t, glm::vec2& uv) {
     const glm::vec3 e1 = b - a, e2 = c - a;
     const glm::vec3 p = glm::cross(dir, e2);
     const float det = glm::dot(e1, p);
@@ -21,6 +21,7 @@ static bool intersect(glm::vec3 origin, glm::vec3 dir, glm::vec3 a, glm::vec3 b,
     const float v = glm::dot(dir, q) * inv;
     if (v < 0.0f || u + v > 1.0f) return false;
     t = glm::dot(e2, q) * inv;
+    uv = {u, v};
     return t >= 0.0f;
 }
 
@@ -67,8 +68,27 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene) {
     }
 }
 
-std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden) const {
+// Whether the ray meets triangle `idx` of the object from behind, decided as the fragment
+// shader decides it (shaders/scene.frag, backFacing): in world space, the triangle's normal
+// turned towards the normal interpolated at the hit.
+static bool fromBehind(const Scene& scene, const Object& object, const uint32_t* idx, glm::vec2 uv,
+                       const Ray& ray) {
+    const Vertex* v = &scene.vertices[scene.geometries[object.geometry].firstVertex];
+    glm::vec3 p[3];
+    for (int i = 0; i < 3; ++i) p[i] = glm::vec3(object.world * glm::vec4(v[idx[i]].position, 1));
+    glm::vec3 faceNormal = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const glm::vec3 local =
+        (1.0f - uv.x - uv.y) * v[idx[0]].normal + uv.x * v[idx[1]].normal + uv.y * v[idx[2]].normal;
+    const glm::vec3 normal = glm::transpose(glm::inverse(glm::mat3(object.world))) * local;
+    if (glm::dot(faceNormal, normal) < 0.0f) faceNormal = -faceNormal;
+    return glm::dot(faceNormal, ray.direction) > 0.0f;
+}
+
+std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden,
+                                   const Section* section) const {
     std::optional<Hit> best;
+    const uint32_t* bestTriangle = nullptr;
+    glm::vec2 bestUv{};
     for (uint32_t oi = 0; oi < scene_.objects.size(); ++oi) {
         if (!hitsBox(ray, objects_[oi].worldBounds)) continue;
         const Object& object = scene_.objects[oi];
@@ -84,14 +104,20 @@ std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden) const 
                  ++tri) {
                 const uint32_t* idx = &scene_.indices[g.firstIndex + 3 * tri];
                 float t;
+                glm::vec2 uv;
                 if (!intersect(origin, dir, v[idx[0]].position, v[idx[1]].position,
-                               v[idx[2]].position, t))
+                               v[idx[2]].position, t, uv))
                     continue;
                 if (t > 1.0f || (best && t >= best->t)) continue; // beyond far plane, or behind
+                if (section && !section->keeps(ray.origin + t * ray.direction)) continue;
                 best = Hit{object.uniquePartOffset + p, oi, p, t};
+                bestTriangle = idx;
+                bestUv = uv;
             }
         }
     }
+    if (best)
+        best->cap = fromBehind(scene_, scene_.objects[best->object], bestTriangle, bestUv, ray);
     return best;
 }
 

@@ -8,6 +8,7 @@
 #include "scene/camera.h"
 #include "scene/part_set.h"
 #include "scene/scene.h"
+#include "scene/section.h"
 
 namespace scene {
 
@@ -16,6 +17,9 @@ struct Hit {
     uint32_t object = 0;
     uint32_t localPart = 0;
     float t = 0.0f; // along Ray::direction, 0 at the origin
+    // The ray meets the back of the surface (its triangle's normal, turned to the side the
+    // vertex normals give at the hit, faces away): with section planes, a cap of the part.
+    bool cap = false;
 };
 
 // Prepares per-object inverse matrices and world bounds once, so rays skip the objects
@@ -23,8 +27,10 @@ struct Hit {
 class RayCaster {
   public:
     explicit RayCaster(const Scene& scene);
-    // The nearest hit of a part not in `hidden` (rays go through hidden parts).
-    std::optional<Hit> cast(const Ray& ray, const PartSet* hidden = nullptr) const;
+    // The nearest hit of a part not in `hidden` (rays go through hidden parts) at a point
+    // `section` keeps (rays go through what its planes cut away).
+    std::optional<Hit> cast(const Ray& ray, const PartSet* hidden = nullptr,
+                            const Section* section = nullptr) const;
 
   private:
     struct Prepared {

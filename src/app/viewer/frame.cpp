@@ -12,6 +12,7 @@
 #include "app/image_io.h"
 #include "app/viewer/viewer.h"
 #include "scene/explode.h"
+#include "scene/face_info.h"
 
 namespace app {
 namespace {
@@ -194,6 +195,10 @@ PanelInfo Viewer::panelInfo() const {
     info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
     const Selection& selection = input_.selection();
     info.selected = describe(selection.primary(), input_.selectedDepth());
+    info.bounds = camera_.bounds();
+    if (selection.primary())
+        if (const auto face = scene::faceReport(scene_.scene(), *selection.primary()))
+            if (face->surface.kind == scene::SurfaceKind::Plane) info.selectedPlane = face->surface;
     info.selectedCount = selection.selected().size();
     info.hiddenCount = selection.hidden().size();
     info.visibleParts = input_.visibleParts();

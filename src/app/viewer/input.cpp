@@ -301,6 +301,18 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Freeze:
         step(settings([on = c.text == "on"](Options& s) { s.render.culling.freeze = on; }), true);
         break;
+    case ScriptOp::Section: // checked when the script was parsed
+        step(settings([text = c.text](Options& s) {
+                 scene::Section& section = s.render.section;
+                 if (text == "off") {
+                     section = {};
+                 } else if (const auto plane = scene::parseSectionPlane(text);
+                            !section.add(plane)) {
+                     section.planes.back() = plane;
+                 }
+             }),
+             true);
+        break;
     case ScriptOp::Copies:
         step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);
         break;

@@ -40,6 +40,7 @@ class OrbitCamera {
     glm::vec3 eye() const;
     glm::vec3 target() const { return target_; }
     float distance() const { return distance_; }
+    const scene::Bounds& bounds() const { return bounds_; }
     // The camera for this frame, near and far planes fitted to the bounds. `reach` is how
     // far from the centre the scene may extend, in bounding radii (an exploded view: 2).
     scene::Camera camera(float reach = 1.0f) const;

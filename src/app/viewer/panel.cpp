@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/panel_section.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/lod.h"
@@ -416,6 +417,8 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         rendering(settings, view, info);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
         sceneSection(settings.scene, view, info, actions);
+    if (ImGui::CollapsingHeader("Section"))
+        sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
     if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen)) picking(info, actions);
     if (ImGui::CollapsingHeader("Objects")) objectList(view, info, actions);

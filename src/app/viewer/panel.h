@@ -17,6 +17,7 @@
 #include "render/renderer.h"
 #include "scene/part_data.h"
 #include "scene/scene.h"
+#include "scene/surface_info.h"
 
 namespace app {
 
@@ -57,6 +58,9 @@ struct PanelInfo {
     };
     std::optional<Loading> loading; // a dropped model still loading
     const scene::Scene* scene = nullptr;
+    scene::Bounds bounds; // the scene's, for the section planes' sliders
+    // The selected part's surface when it is a planar B-rep face (world), for a section plane.
+    std::optional<scene::SurfaceInfo> selectedPlane;
     render::RenderStats stats;
     render::SwitchReport lastSwitch;
     size_t cachedPipelines = 0;

@@ -10,6 +10,7 @@
 
 #include "render/culling.h"
 #include "render/technique.h"
+#include "scene/section.h"
 
 // Only the key code constants are used; no GLFW function is called here.
 #define GLFW_INCLUDE_NONE
@@ -40,6 +41,7 @@ const CommandSpec commandSpecs[] = {
     {"freeze", ScriptOp::Freeze, 0, "freeze on|off"},
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
     {"copies", ScriptOp::Copies, 1, "copies N"},
+    {"section", ScriptOp::Section, 0, "section AXIS,VALUE[,flip] | off"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
@@ -76,15 +78,15 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     if (!spec)
         fail("unknown command '" + name +
              "' (known: key, move, click, drag, box, object, scroll, resize, renderer, mode, "
-             "culling, freeze, msaa, copies, screenshot, drop, loaded, frames, quit)");
+             "culling, freeze, msaa, copies, section, screenshot, drop, loaded, frames, quit)");
     command.op = spec->op;
 
     std::vector<std::string> args;
     for (std::string word; in >> word;) args.push_back(word);
     const bool takesText = spec->op == ScriptOp::Key || spec->op == ScriptOp::Renderer ||
                            spec->op == ScriptOp::Mode || spec->op == ScriptOp::Culling ||
-                           spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Screenshot ||
-                           spec->op == ScriptOp::Drop;
+                           spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Section ||
+                           spec->op == ScriptOp::Screenshot || spec->op == ScriptOp::Drop;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool fits = spec->op == ScriptOp::Object ? !args.empty()
@@ -159,6 +161,13 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     case ScriptOp::Culling:
         if (!render::findCullMode(command.text))
             fail("unknown culling '" + command.text + "' (known: " + render::cullModeNames() + ")");
+        break;
+    case ScriptOp::Section:
+        if (command.text != "off") try {
+                scene::parseSectionPlane(command.text);
+            } catch (const std::invalid_argument& e) {
+                fail(std::string("'section' ") + e.what() + ", or off");
+            }
         break;
     case ScriptOp::Freeze:
         if (command.text != "on" && command.text != "off")

@@ -18,6 +18,9 @@
 //   3   mode push           switch per-draw mode
 //   3.5 msaa 4              samples per pixel
 //   3.6 copies 3            model copies, as the panel's field does
+//   3.7 section y,0,flip    a section plane as --section gives it, in the first free slot of
+//                           the panel's three (a fourth replaces the third); `section off`
+//                           turns them all off
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
 //   4.6 loaded              wait until every dropped model has loaded (they load while
@@ -54,6 +57,7 @@ enum class ScriptOp {
     Freeze,
     Msaa,
     Copies,
+    Section,
     Screenshot,
     Drop,
     Loaded,

@@ -1,0 +1,90 @@
+// panel_section.cpp - the section planes in the panel. Offsets apply while dragging: a plane
+// is a per-frame constant (FrameData::sectionPlanes), only switching sections on or off
+// changes the pipeline.
+#include "app/viewer/panel_section.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+#include <imgui.h>
+
+namespace app {
+
+glm::vec2 offsetRange(const scene::Bounds& bounds, glm::vec3 normal) {
+    glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
+                          (corner & 2) ? bounds.max.y : bounds.min.y,
+                          (corner & 4) ? bounds.max.z : bounds.min.z);
+        range.x = std::min(range.x, glm::dot(normal, p));
+        range.y = std::max(range.y, glm::dot(normal, p));
+    }
+    return range;
+}
+
+namespace {
+
+// Which axis a plane lies on, or -1 for a face's plane.
+int axisOf(const scene::SectionPlane& plane) {
+    for (int axis = 0; axis < 3; ++axis)
+        if (plane.normal == glm::vec3(axis == 0, axis == 1, axis == 2)) return axis;
+    return -1;
+}
+
+void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds,
+              const std::optional<scene::SurfaceInfo>& selectedPlane) {
+    ImGui::PushID(index);
+    char label[32];
+    std::snprintf(label, sizeof label, "plane %d", index + 1);
+    if (ImGui::Checkbox(label, &plane.on) && plane.on && axisOf(plane) >= 0) {
+        // Turned on: start through the middle of the scene, where a cut shows most.
+        const glm::vec2 range = offsetRange(bounds, plane.normal);
+        plane.offset = 0.5f * (range.x + range.y);
+    }
+    if (!plane.on) {
+        ImGui::PopID();
+        return;
+    }
+    const int axis = axisOf(plane);
+    for (int a = 0; a < 3; ++a) {
+        ImGui::SameLine();
+        const char* names[] = {"X", "Y", "Z"};
+        if (ImGui::RadioButton(names[a], axis == a) && axis != a) {
+            const float middle = 0.5f * (bounds.min[a] + bounds.max[a]);
+            plane = scene::axisPlane(a, middle, plane.flip);
+        }
+    }
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!selectedPlane);
+    if (ImGui::RadioButton("face", axis < 0) && selectedPlane) {
+        // Flush with the selected face, keeping what lies behind it: the solid it bounds.
+        plane.normal = glm::vec3(selectedPlane->normal);
+        plane.offset = float(selectedPlane->d);
+    }
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip(selectedPlane ? "on the plane of the selected face"
+                                        : "select a planar face of a CAD model first");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Checkbox("flip", &plane.flip);
+    const glm::vec2 range = offsetRange(bounds, plane.normal);
+    // A little past the bounds, so a plane can leave the scene whole on either side.
+    const float margin = 0.02f * (range.y - range.x) + 1e-6f;
+    ImGui::SliderFloat("offset", &plane.offset, range.x - margin, range.y + margin, "%.3f");
+    if (axis < 0)
+        ImGui::TextDisabled("normal %.3f %.3f %.3f", plane.normal.x, plane.normal.y,
+                            plane.normal.z);
+    ImGui::PopID();
+}
+
+} // namespace
+
+void sectionPlanes(scene::Section& section, const scene::Bounds& bounds,
+                   const std::optional<scene::SurfaceInfo>& selectedPlane) {
+    for (size_t i = 0; i < section.planes.size(); ++i)
+        onePlane(int(i), section.planes[i], bounds, selectedPlane);
+    ImGui::TextDisabled("Each plane cuts its side away; hatched caps close the cut solids.");
+}
+
+} // namespace app

@@ -1,0 +1,21 @@
+// panel_section.h - the panel's section planes: up to three, each on an axis or on the plane
+// of the selected face, with an offset slider and a flip.
+#pragma once
+
+#include <optional>
+
+#include "scene/bounds.h"
+#include "scene/section.h"
+#include "scene/surface_info.h"
+
+namespace app {
+
+// `bounds`: the scene's, which the offset sliders span. `selectedPlane`: the selected part's
+// surface when it is a planar B-rep face (world coordinates), which a plane can be put on.
+void sectionPlanes(scene::Section& section, const scene::Bounds& bounds,
+                   const std::optional<scene::SurfaceInfo>& selectedPlane);
+
+// The offsets at which a plane of this normal touches the bounds: the slider's range.
+glm::vec2 offsetRange(const scene::Bounds& bounds, glm::vec3 normal);
+
+} // namespace app
