@@ -103,6 +103,43 @@ TEST(FaceInfo, ABoxWithAHoleHasItsKnownPlanesAndCylinder) {
     EXPECT_NE(json.find("\"bbox\":{\"min\":["), std::string::npos) << json;
 }
 
+// Planes compared: square faces at 90 degrees, opposite ones at 180 and their distance
+// apart, a face with itself at 0 and 0; the hole is no plane.
+TEST(FaceInfo, PlanarFacesGiveTheirAngleAndParallelOnesTheirDistance) {
+    const Scene s = boxWithHole();
+    std::vector<FaceReport> faces;
+    for (uint32_t p = 0; p < s.geometries[0].partCount; ++p)
+        faces.push_back(*faceReport(s, s.objects[0].uniquePartOffset + p));
+    auto withNormal = [&](glm::dvec3 n) {
+        for (const FaceReport& f : faces)
+            if (f.surface.kind == SurfaceKind::Plane && glm::length(f.surface.normal - n) < 1e-9)
+                return f;
+        ADD_FAILURE() << "no face with normal " << n.x << "," << n.y << "," << n.z;
+        return FaceReport{};
+    };
+    const auto across = comparePlanes(withNormal({-1, 0, 0}), withNormal({1, 0, 0}));
+    ASSERT_TRUE(across);
+    EXPECT_NEAR(across->angleDegrees, 180.0, 1e-9);
+    ASSERT_TRUE(across->distance);
+    EXPECT_NEAR(*across->distance, 40.0, 1e-9);
+    const auto height = comparePlanes(withNormal({0, 0, 1}), withNormal({0, 0, -1}));
+    ASSERT_TRUE(height && height->distance);
+    EXPECT_NEAR(*height->distance, 20.0, 1e-9);
+    const auto square = comparePlanes(withNormal({0, -1, 0}), withNormal({1, 0, 0}));
+    ASSERT_TRUE(square);
+    EXPECT_NEAR(square->angleDegrees, 90.0, 1e-9);
+    EXPECT_FALSE(square->distance);
+    const auto itself = comparePlanes(withNormal({0, 1, 0}), withNormal({0, 1, 0}));
+    ASSERT_TRUE(itself && itself->distance);
+    EXPECT_NEAR(itself->angleDegrees, 0.0, 1e-9);
+    EXPECT_NEAR(*itself->distance, 0.0, 1e-9);
+    const auto hole = std::find_if(faces.begin(), faces.end(), [](const FaceReport& f) {
+        return f.surface.kind == SurfaceKind::Cylinder;
+    });
+    ASSERT_NE(hole, faces.end());
+    EXPECT_FALSE(comparePlanes(*hole, withNormal({1, 0, 0})));
+}
+
 // A copy moved along the grid: the same normals and areas, each plane's d moved by the
 // normal's share of the shift, the hole's axis moved with it.
 TEST(FaceInfo, AMovedCopySaysWhereItIs) {

@@ -55,6 +55,12 @@ done
     at mode "${modes%%[[:space:]]*}"
     at msaa 4
     at msaa 1
+    at key M # measure mode: two clicks measure instead of selecting
+    at click 470 260
+    at frames 6
+    at click 520 280
+    at frames 6
+    at key M
     at key V
     at key V
     at drag 600 300 560 320
@@ -146,6 +152,27 @@ for f in "${cad_files[@]}"; do
         fail "the dropped $f did not open with $objects objects and $parts parts"
     fi
 done
+
+# Measure mode: the second click's line holds both points, as headless --measure finds them
+# in the same opening view (the viewer's orbit camera rebuilds it, so to float rounding).
+measured=$(grep '^idview: measure: {' "$work/out.txt" | tail -1 | sed 's/^idview: measure: //')
+expected=$("$idview" --headless --scene procedural:preset=small --size 720x450 --frames 1 \
+    --measure 470,260,520,280 2>/dev/null)
+if python3 - "$measured" "$expected" <<'EOF'
+import json, sys
+got, want = json.loads(sys.argv[1]), json.loads(sys.argv[2])
+assert got["parts"] == want["parts"] and None not in got["parts"], (got, want)
+for key in ("p0", "p1"):
+    assert all(abs(a - b) <= 1e-4 for a, b in zip(got[key], want[key])), (key, got, want)
+assert abs(got["distance"] - want["distance"]) <= 1e-4, (got, want)
+EOF
+then
+    echo "ok   measure mode: $measured"
+else
+    fail "measure mode gave '$measured', headless --measure '$expected'"
+fi
+sed -n '/measure: on/,/measure: off/p' "$work/out.txt" | grep -q '^idview: selected: part' &&
+    fail "a click in measure mode selected a part"
 
 # The section plane changed the picture.
 if [[ -s $work/cut.png && -s $work/uncut.png ]] && ! cmp -s "$work/cut.png" "$work/uncut.png"; then

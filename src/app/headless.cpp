@@ -41,7 +41,8 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
            ",\"path\":" + jsonString(info->path) + depth;
 }
 
-std::string measureJson(const HeadlessResult& result) {
+std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
+                        const std::array<std::optional<uint32_t>, 2>& parts) {
     auto point = [](const std::optional<glm::vec3>& p) {
         if (!p) return std::string("null");
         char text[96];
@@ -49,7 +50,7 @@ std::string measureJson(const HeadlessResult& result) {
                       double(p->z));
         return std::string(text);
     };
-    const auto& [p0, p1] = result.measuredPoints;
+    const auto& [p0, p1] = points;
     std::string distance = "null";
     std::optional<glm::vec3> delta;
     if (p0 && p1) {
@@ -59,12 +60,16 @@ std::string measureJson(const HeadlessResult& result) {
         distance = text;
     }
     auto part = [&](size_t i) {
-        return i < result.measured.size() && result.measured[i].part
-                   ? std::to_string(*result.measured[i].part)
-                   : std::string("null");
+        return parts[i] ? std::to_string(*parts[i]) : std::string("null");
     };
     return "{\"p0\":" + point(p0) + ",\"p1\":" + point(p1) + ",\"distance\":" + distance +
            ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) + "]}";
+}
+
+std::string measureJson(const HeadlessResult& result) {
+    std::array<std::optional<uint32_t>, 2> parts;
+    for (size_t i = 0; i < 2 && i < result.measured.size(); ++i) parts[i] = result.measured[i].part;
+    return measureJson(result.measuredPoints, parts);
 }
 
 namespace {

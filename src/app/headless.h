@@ -58,6 +58,9 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
 // --measure's line: {"p0":[x,y,z],"p1":[x,y,z],"distance":D,"delta":[dx,dy,dz],"parts":[A,B]},
 // null where a point shows no part (and the distance and delta then).
 std::string measureJson(const HeadlessResult& result);
+// The same line for any two points (the viewer's measure mode prints it too).
+std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
+                        const std::array<std::optional<uint32_t>, 2>& parts);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
 // Options::hide / isolate apply first. Then the picks: Options::selects (one frame, its part

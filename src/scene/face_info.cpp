@@ -94,4 +94,17 @@ std::string faceReportJson(const FaceReport& r) {
            ",\"max\":" + vec(glm::dvec3(r.bbox.max)) + "}}";
 }
 
+std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b) {
+    if (a.surface.kind != SurfaceKind::Plane || b.surface.kind != SurfaceKind::Plane)
+        return std::nullopt;
+    const glm::dvec3 na = glm::normalize(a.surface.normal), nb = glm::normalize(b.surface.normal);
+    PlanePair pair;
+    // atan2 of |cross| and dot: exact near 0 and 180 degrees, where acos loses digits.
+    pair.angleDegrees = glm::degrees(std::atan2(glm::length(glm::cross(na, nb)), glm::dot(na, nb)));
+    // Parallel within a millionth of a radian: the distance from a's plane to b's.
+    if (glm::length(glm::cross(na, nb)) < 1e-6)
+        pair.distance = std::abs(glm::dot(nb, na * a.surface.d) - b.surface.d);
+    return pair;
+}
+
 } // namespace scene

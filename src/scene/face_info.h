@@ -23,6 +23,16 @@ struct FaceReport {
 // cube root of the placement's determinant.
 std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId);
 
+// Two planar faces compared: the angle between their outward normals (0: facing the same
+// way, 90: square, 180: facing each other or apart), and where they are parallel the distance
+// between their planes (a wall's thickness, a slot's width).
+struct PlanePair {
+    double angleDegrees = 0.0;
+    std::optional<double> distance;
+};
+// nullopt unless both are planes.
+std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b);
+
 // {"part","object","face","surface","area",...,"bbox"}: "normal" and "d" for planes,
 // "radius" and "axis" {origin, direction} for cylinders, "radius" and "center" for spheres.
 std::string faceReportJson(const FaceReport& report);

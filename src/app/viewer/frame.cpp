@@ -66,6 +66,8 @@ void Viewer::drawPanel() {
         ImGui::GetForegroundDrawList()->AddRect(ImVec2(box->first.x, box->first.y),
                                                 ImVec2(box->second.x, box->second.y),
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y));
     ImGui::Render();
 }
 
@@ -103,6 +105,7 @@ void Viewer::follow(SceneState::Change change) {
     if (change == SceneState::Change::None) return;
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
+    measure_.forget();
     if (change == SceneState::Change::Copies) {
         camera_.setBounds(scene.bounds()); // more copies: same view, planes follow
         return;
@@ -120,6 +123,7 @@ render::FrameParams Viewer::frameParams(double seconds) {
     // The exploded view pushes objects out to twice their distance from the centre.
     render::FrameParams params = cameraFrame(camera_.camera(animate ? 2.0f : 1.0f), extent);
     params.time = float(seconds);
+    viewProj_ = params.viewProj;
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
     // Every frame counts the visible parts for the panel; a released box asks for its parts.
     params.partSets = {{{0, 0}, {extent.width - 1, extent.height - 1}}};
@@ -196,6 +200,8 @@ PanelInfo Viewer::panelInfo() const {
     const Selection& selection = input_.selection();
     info.selected = describe(selection.primary(), input_.selectedDepth());
     info.bounds = camera_.bounds();
+    info.measuring = measure_.on();
+    info.measureLines = measureLines(scene_.scene(), measure_.points());
     if (selection.primary())
         if (const auto face = scene::faceReport(scene_.scene(), *selection.primary()))
             if (face->surface.kind == scene::SurfaceKind::Plane) info.selectedPlane = face->surface;

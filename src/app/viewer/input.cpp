@@ -43,6 +43,9 @@ void Input::onKey(int key, int scancode, int action, int mods) {
     case GLFW_KEY_F1:
         view.panelVisible = !view.panelVisible;
         break;
+    case GLFW_KEY_M:
+        viewer_.toggleMeasure();
+        break;
     case GLFW_KEY_E:
         viewer_.settings().render.edges.on = !viewer_.settings().render.edges.on;
         break;
@@ -167,6 +170,11 @@ bool Input::readPick(const std::optional<render::PickReading>& pick) {
         hoveredDepth_ = pick->depth;
     }
     // A click selects what was under the cursor in the frame after the click.
+    if (pendingClick_ && pick && pick->frame >= *pendingClick_ && viewer_.measuring()) {
+        viewer_.measured(*pick); // measure mode: the click places a point, selects nothing
+        pendingClick_.reset();
+        return false;
+    }
     if (pendingClick_ && pick && pick->frame >= *pendingClick_) {
         selection_.click();
         selectedDepth_ = hoveredDepth_;

@@ -27,6 +27,7 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "H / I              hide / isolate the selection\n"
                                  "shift + H          show all parts\n"
                                  "E                  part edges on/off\n"
+                                 "M                  measure: click points and faces\n"
                                  "Esc                clear selection; if none, quit\n"
                                  "F                  fit the view to the scene\n"
                                  "Home               reset the view\n"
@@ -417,6 +418,12 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         rendering(settings, view, info);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
         sceneSection(settings.scene, view, info, actions);
+    if (info.measuring &&
+        ImGui::CollapsingHeader("Measure (M to leave)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (info.measureLines.empty())
+            ImGui::TextWrapped("Click a part for its face; two clicks for their distance.");
+        for (const std::string& line : info.measureLines) ImGui::TextUnformatted(line.c_str());
+    }
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);

@@ -61,6 +61,8 @@ struct PanelInfo {
     scene::Bounds bounds; // the scene's, for the section planes' sliders
     // The selected part's surface when it is a planar B-rep face (world), for a section plane.
     std::optional<scene::SurfaceInfo> selectedPlane;
+    bool measuring = false;                // measure mode (M)
+    std::vector<std::string> measureLines; // its points, faces, distance and angle
     render::RenderStats stats;
     render::SwitchReport lastSwitch;
     size_t cachedPipelines = 0;

@@ -109,4 +109,28 @@ int runViewer(const Options& options) {
     return exitCode(instance.validationMessages());
 }
 
+void Viewer::toggleMeasure() {
+    measure_.toggle();
+    events_.say(std::string("measure: ") + (measure_.on() ? "on" : "off"));
+}
+
+// The point is where the pick's depth puts the surface, in the view of the newest frame: a
+// click does not move the camera, so that is the view the pick was taken in.
+void Viewer::measured(const render::PickReading& pick) {
+    if (!pick.part) return; // background: nothing to measure
+    const VkExtent2D extent = scene_.targets()->extent();
+    const glm::vec3 world = scene::unprojectPixel(
+        viewProj_, glm::vec2(extent.width, extent.height),
+        glm::vec2(pick.pixel) + scene_.targets()->pass().sampleZero(), pick.depth);
+    measure_.add({world, *pick.part});
+    const auto& points = measure_.points();
+    std::array<std::optional<glm::vec3>, 2> at;
+    std::array<std::optional<uint32_t>, 2> parts;
+    for (size_t i = 0; i < points.size(); ++i) {
+        at[i] = points[i].world;
+        parts[i] = points[i].part;
+    }
+    events_.say("measure: " + measureJson(at, parts));
+}
+
 } // namespace app

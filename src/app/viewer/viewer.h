@@ -12,6 +12,7 @@
 #include "app/cli.h"
 #include "app/viewer/events.h"
 #include "app/viewer/input.h"
+#include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/panel.h"
 #include "app/viewer/presenter.h"
@@ -51,6 +52,10 @@ class Viewer {
     // The parts of every object named `name` join the selection as `mode` says.
     void selectObjects(const std::string& name, SelectMode mode);
     void quit() { window_.close(); }
+    // Measure mode (M): clicks place points instead of selecting.
+    void toggleMeasure();
+    bool measuring() const { return measure_.on(); }
+    void measured(const render::PickReading& pick);               // a click's pick in measure mode
     bool loading() const { return scene_.loading().has_value(); } // a dropped model
 
   private:
@@ -83,6 +88,8 @@ class Viewer {
     render::FrameSlots slots_; // after what the frames use: destroyed (and waited for) first
     Input input_;
     OrbitCamera camera_;
+    Measure measure_;
+    glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
 
     // Frame timing and the title.
     uint64_t frameNumber_ = 0;
