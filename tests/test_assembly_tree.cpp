@@ -102,3 +102,57 @@ TEST(AssemblyTree, PrintsTheJsonExpected) {
               "\"b\",\"object\":0,\"parts\":[0,1],\"children\":[{\"name\":\"c\",\"object\":1,"
               "\"parts\":[1,1]}]}]},{\"name\":\"d\",\"object\":2,\"parts\":[2,1]}]}");
 }
+
+// The rows the panel draws: depth-first, each row's subtree the rows up to its end, its
+// parts exactly the parts of the objects in it (counted here from the objects' paths).
+TEST(AssemblyTree, RowsHoldEachSubtreeAndItsParts) {
+    const Scene s = makeProcedural({"car-like", 1});
+    const std::vector<TreeRow> rows = treeRows(assemblyTree(s, "car"));
+    ASSERT_FALSE(rows.empty());
+    EXPECT_EQ(rows[0].end, rows.size());
+    EXPECT_EQ(rows[0].depth, 0u);
+    size_t objects = 0;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const TreeRow& row = rows[i];
+        ASSERT_GT(row.end, i);
+        ASSERT_LE(row.end, rows.size());
+        for (size_t r = i + 1; r < row.end; ++r) EXPECT_GT(rows[r].depth, row.depth);
+        if (row.end < rows.size()) {
+            EXPECT_LE(rows[row.end].depth, row.depth);
+        }
+        if (row.object) {
+            ++objects;
+            EXPECT_EQ(row.path, s.objects[*row.object].path);
+        }
+        // Independently: the parts of every object whose path is this row's or below it.
+        PartSet expected(s.uniquePartCount()), got(s.uniquePartCount());
+        for (const Object& o : s.objects)
+            if (i == 0 || o.path == row.path || o.path.starts_with(row.path + "/"))
+                for (uint32_t p = 0; p < s.geometries[o.geometry].partCount; ++p)
+                    expected.insert(o.uniquePartOffset + p);
+        for (size_t k = 0; k < row.parts.size(); ++k) {
+            const auto [first, count] = row.parts[k];
+            EXPECT_GT(count, 0u);
+            if (k > 0) {
+                EXPECT_GT(first, row.parts[k - 1].first + row.parts[k - 1].second);
+            }
+            for (uint32_t p = first; p < first + count; ++p) got.insert(p);
+        }
+        EXPECT_EQ(got, expected) << row.path;
+    }
+    EXPECT_EQ(objects, s.objects.size());
+}
+
+TEST(PartSet, CountsMembersInARange) {
+    PartSet set(100);
+    for (uint32_t id : {0u, 31u, 32u, 33u, 64u, 99u}) set.insert(id);
+    for (uint32_t first = 0; first < 100; first += 7)
+        for (uint32_t count = 0; first + count <= 100; count += 5) {
+            uint32_t expected = 0;
+            for (uint32_t id = first; id < first + count; ++id) expected += set.contains(id);
+            EXPECT_EQ(set.countIn(first, count), expected) << first << "+" << count;
+            EXPECT_EQ(set.anyIn(first, count), expected > 0);
+            EXPECT_EQ(set.allIn(first, count), expected == count);
+        }
+    EXPECT_EQ(set.countIn(90, 50), 1u); // clamped to the set's parts
+}

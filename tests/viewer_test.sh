@@ -355,5 +355,47 @@ isolated=$(awk '/^idview: hidden: [1-9]/{n++} n==2{on=1} on && /^idview: hidden:
 [[ $(echo "$counts" | tail -1) == "$visible_all" ]] ||
     fail "visible parts after showing all: $(echo "$counts" | tail -1), expected $visible_all"
 
+# The assembly tree: a node's checkbox hides every part under it and shows them again, a
+# row click selects them, Ctrl+click adds another node's; the counts are those --tree gives.
+node_parts() { # node_parts PATH...: the unique parts under these nodes, from --tree's JSON
+    "$idview" --tree --scene procedural:preset=small | python3 -c '
+import json, sys
+wanted, parts = set(sys.argv[1:]), set()
+def walk(node, path, inside):
+    inside = inside or path in wanted
+    if inside and "parts" in node:
+        parts.update(range(node["parts"][0], node["parts"][0] + node["parts"][1]))
+    for child in node.get("children", []):
+        walk(child, path + "/" + child["name"] if path else child["name"], inside)
+walk(json.load(sys.stdin), "", False)
+print(len(parts))' "$@"
+}
+gearbox=$(node_parts "gearbox module")
+plate=$(node_parts "gearbox module/base plate")
+both=$(node_parts "gearbox module" "gearbox module/base plate")
+{
+    at node hide gearbox module
+    at frames 4
+    at node show gearbox module
+    at frames 4
+    at node select gearbox module/base plate
+    at frames 2
+    at node add gearbox module
+    at frames 2
+    at quit
+} >"$work/tree.txt"
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/tree.txt" --print-events \
+    >"$work/tree.out" 2>"$work/tree.err"
+rc=$?
+[[ $rc -eq 0 ]] || { fail "tree session: exit code $rc"; head -c 3000 "$work/tree.err"; }
+tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | tr '\n' '|')
+want="idview: hidden: $gearbox parts|idview: hidden: 0 parts|idview: selected: $plate parts|idview: selected: $both parts|"
+if [[ $gearbox -gt $plate && $plate -gt 0 && $tree_events == "$want" ]]; then
+    echo "ok   assembly tree: hide, show, select and add nodes ($gearbox and $plate parts)"
+else
+    fail "assembly tree events '$tree_events', expected '$want'"
+fi
+
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
 echo "viewer test passed"

@@ -200,11 +200,14 @@ void appendNode(std::string& out, const scene::AssemblyNode& node) {
 
 } // namespace
 
-std::string treeJson(const LoadedScene& loaded) {
+std::string treeRootName(const LoadedScene& loaded) {
     const std::filesystem::path source(loaded.source);
-    const std::string root = source.has_extension() ? source.filename().string() : loaded.source;
+    return source.has_extension() ? source.filename().string() : loaded.source;
+}
+
+std::string treeJson(const LoadedScene& loaded) {
     std::string out;
-    appendNode(out, scene::assemblyTree(loaded.scene, root));
+    appendNode(out, scene::assemblyTree(loaded.scene, treeRootName(loaded)));
     return out;
 }
 

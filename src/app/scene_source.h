@@ -89,5 +89,7 @@ std::string levelStatsJson(const std::vector<scene::LevelStats>& levels);
 // {"name","children":[...]}, each leaf {"name","object","parts":[first unique part, count]};
 // the root is named after the file (or the built-in scene).
 std::string treeJson(const LoadedScene& loaded);
+// The tree's root: the file's name, or the built-in scene's spec.
+std::string treeRootName(const LoadedScene& loaded);
 
 } // namespace app

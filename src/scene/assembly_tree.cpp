@@ -1,6 +1,7 @@
 // assembly_tree.cpp - the tree of node paths (assembly_tree.h).
 #include "scene/assembly_tree.h"
 
+#include <algorithm>
 #include <map>
 
 namespace scene {
@@ -43,6 +44,50 @@ AssemblyNode assemblyTree(const Scene& scene, const std::string& rootName) {
         own.partCount = scene.geometries[object.geometry].partCount;
     }
     return root;
+}
+
+namespace {
+
+void addRows(const AssemblyNode& node, const std::string& path, uint32_t depth,
+             std::vector<TreeRow>& rows) {
+    const size_t index = rows.size();
+    rows.push_back({node.name, path, depth, 0, node.object, {}});
+    PartRanges parts;
+    if (node.object && node.partCount) parts.push_back({node.firstPart, node.partCount});
+    for (const AssemblyNode& child : node.children)
+        addRows(child, path.empty() ? child.name : path + "/" + child.name, depth + 1, rows);
+    // The children's rows are done: gather their ranges (each child's row is the first of
+    // its subtree), sort and merge touching ones.
+    for (size_t r = index + 1; r < rows.size(); r = rows[r].end)
+        parts.insert(parts.end(), rows[r].parts.begin(), rows[r].parts.end());
+    std::sort(parts.begin(), parts.end());
+    PartRanges merged;
+    for (const auto& [first, count] : parts) {
+        if (!merged.empty() && merged.back().first + merged.back().second >= first) {
+            const uint32_t end =
+                std::max(merged.back().first + merged.back().second, first + count);
+            merged.back().second = end - merged.back().first;
+        } else {
+            merged.push_back({first, count});
+        }
+    }
+    rows[index].parts = std::move(merged);
+    rows[index].end = uint32_t(rows.size());
+}
+
+} // namespace
+
+PartSet partSetOf(const PartRanges& ranges, uint32_t partCount) {
+    PartSet set(partCount);
+    for (const auto& [first, count] : ranges)
+        for (uint32_t id = first; id < first + count; ++id) set.insert(id);
+    return set;
+}
+
+std::vector<TreeRow> treeRows(const AssemblyNode& root) {
+    std::vector<TreeRow> rows;
+    addRows(root, "", 0, rows);
+    return rows;
 }
 
 } // namespace scene

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/part_set.h"
 #include "scene/scene.h"
 
 namespace scene {
@@ -26,5 +27,21 @@ struct AssemblyNode {
 // parent are one node, and an object joins the group of its path; two objects are never one
 // node (the second of one path gets a node of its own). A name that holds '/' reads as two.
 AssemblyNode assemblyTree(const Scene& scene, const std::string& rootName);
+
+// A ranges of unique parts, [first, first + count), sorted and merged.
+using PartRanges = std::vector<std::pair<uint32_t, uint32_t>>;
+
+// The tree as rows in depth-first order, for a panel that draws only the rows on screen:
+// row i's subtree is the rows [i, end).
+struct TreeRow {
+    std::string name;
+    std::string path; // names from below the root down to this node, joined by '/'
+    uint32_t depth = 0;
+    uint32_t end = 0;
+    std::optional<uint32_t> object;
+    PartRanges parts; // every unique part of the subtree
+};
+std::vector<TreeRow> treeRows(const AssemblyNode& root);
+PartSet partSetOf(const PartRanges& ranges, uint32_t partCount);
 
 } // namespace scene

@@ -55,6 +55,22 @@ class PartSet {
         for (uint32_t w : words_) n += uint32_t(std::popcount(w));
         return n;
     }
+    // Whether any of, or all of, the parts [first, first + count) are members: a word at a
+    // time, so a tree row over a whole scene costs little per frame.
+    bool anyIn(uint32_t first, uint32_t count) const { return countIn(first, count) > 0; }
+    bool allIn(uint32_t first, uint32_t count) const { return countIn(first, count) == count; }
+    uint32_t countIn(uint32_t first, uint32_t count) const {
+        uint32_t n = 0;
+        const uint64_t end = std::min<uint64_t>(uint64_t(first) + count, count_);
+        for (uint64_t id = first; id < end;) {
+            const uint32_t bit = uint32_t(id & 31),
+                           take = uint32_t(std::min<uint64_t>(32 - bit, end - id));
+            const uint32_t mask = take == 32 ? ~0u : ((1u << take) - 1u) << bit;
+            n += uint32_t(std::popcount(words_[id >> 5] & mask));
+            id += take;
+        }
+        return n;
+    }
     // The members in increasing order.
     std::vector<uint32_t> ids() const {
         std::vector<uint32_t> out;

@@ -75,6 +75,18 @@ void Viewer::act(const PanelActions& actions) {
     if (actions.open) input_.onDrop(*actions.open); // opened like a dropped file
     Selection& selection = input_.selection();
     if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);
+    const uint32_t partCount = scene_.scene().uniquePartCount();
+    if (actions.selectParts) {
+        selection.select(scene::partSetOf(*actions.selectParts, partCount), actions.mode);
+        selectionChanged();
+    }
+    if (actions.hideParts || actions.showParts) {
+        const scene::PartSet before = selection.selected();
+        if (actions.hideParts) selection.hide(scene::partSetOf(*actions.hideParts, partCount));
+        if (actions.showParts) selection.show(scene::partSetOf(*actions.showParts, partCount));
+        if (selection.selected() != before) selectionChanged(); // hidden parts leave it
+        partsChanged();
+    }
     if (actions.hide) selection.hideSelected();
     if (actions.isolate) selection.isolateSelected();
     if (actions.showAll) selection.showAll();
@@ -106,6 +118,9 @@ void Viewer::follow(SceneState::Change change) {
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
+    tree_ = scene::treeRows(scene::assemblyTree(scene, treeRootName(scene_.loaded())));
+    view_.treeOpen.clear();
+    view_.treeShown.clear();
     if (change == SceneState::Change::Copies) {
         camera_.setBounds(scene.bounds()); // more copies: same view, planes follow
         return;
@@ -182,6 +197,8 @@ PanelInfo Viewer::panelInfo() const {
         info.loading =
             PanelInfo::Loading{loading->path, loading->seconds, loading->stage, loading->fraction};
     info.scene = &scene_.scene();
+    info.tree = &tree_;
+    info.hidden = &input_.selection().hidden();
     info.stats = scene_.renderer().stats();
     info.lastSwitch = scene_.renderer().lastSwitch();
     info.cachedPipelines = scene_.renderer().cachedPipelines();

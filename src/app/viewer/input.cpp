@@ -283,6 +283,20 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Object:
         step([this, name = c.text] { viewer_.selectObjects(name, SelectMode::Replace); }, true);
         break;
+    case ScriptOp::Node:
+        step(
+            [this, c] {
+                const int action = int(c.values[0]); // select, add, hide, show (script.h)
+                const auto what = action >= 2 ? (action == 2 ? Viewer::NodeAction::Hide
+                                                             : Viewer::NodeAction::Show)
+                                              : Viewer::NodeAction::Select;
+                if (!viewer_.actOnNode(c.text, what,
+                                       action == 1 ? SelectMode::Add : SelectMode::Replace))
+                    throw ScriptError(c.where + ": no node of the assembly tree has the path '" +
+                                      c.text + "'");
+            },
+            true);
+        break;
     case ScriptOp::Scroll:
         step([this, v] { onScroll(0.0, v[0]); }, false);
         break;

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "app/viewer/panel_section.h"
+#include "app/viewer/panel_tree.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/lod.h"
@@ -341,47 +342,6 @@ void picking(const PanelInfo& info, PanelActions& actions) {
     if (info.hiddenCount) ImGui::Text("hidden parts   %u", info.hiddenCount);
 }
 
-bool matches(const std::string& text, const char* filter) {
-    if (!*filter) return true;
-    auto lower = [](unsigned char c) { return char(std::tolower(c)); };
-    std::string a(text), b(filter);
-    std::transform(a.begin(), a.end(), a.begin(), lower);
-    std::transform(b.begin(), b.end(), b.begin(), lower);
-    return a.find(b) != std::string::npos;
-}
-
-// The objects whose name or path holds the filter text; a click selects the parts of every
-// object of that name (Ctrl+click adds them).
-void objectList(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
-    if (!info.scene) return;
-    ImGui::InputTextWithHint("##filter", "filter by name or path", view.objectFilter.data(),
-                             view.objectFilter.size());
-    constexpr size_t shownAtMost = 2000; // a long list helps nobody: refine the filter
-    std::vector<size_t> shown;
-    size_t found = 0;
-    const auto& objects = info.scene->objects;
-    for (size_t i = 0; i < objects.size(); ++i)
-        if (matches(objects[i].name, view.objectFilter.data()) ||
-            matches(objects[i].path, view.objectFilter.data()))
-            if (found++ < shownAtMost) shown.push_back(i);
-    ImGui::Text("%zu of %zu objects", found, objects.size());
-    if (!ImGui::BeginListBox("##objects", ImVec2(-1, 180))) return;
-    ImGuiListClipper clipper;
-    clipper.Begin(int(shown.size()));
-    while (clipper.Step())
-        for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
-            const scene::Object& object = objects[shown[size_t(row)]];
-            ImGui::PushID(row);
-            if (ImGui::Selectable(object.name.c_str())) {
-                actions.selectObjects = object.name;
-                actions.mode = ImGui::GetIO().KeyCtrl ? SelectMode::Add : SelectMode::Replace;
-            }
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", object.path.c_str());
-            ImGui::PopID();
-        }
-    ImGui::EndListBox();
-}
-
 } // namespace
 
 PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
@@ -428,7 +388,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
     if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen)) picking(info, actions);
-    if (ImGui::CollapsingHeader("Objects")) objectList(view, info, actions);
+    if (ImGui::CollapsingHeader("Assembly tree")) assemblyTree(view, info, actions);
     if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     ImGui::PopItemWidth();

@@ -15,6 +15,7 @@
 #include "app/viewer/selection.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"
+#include "scene/assembly_tree.h"
 #include "scene/part_data.h"
 #include "scene/scene.h"
 #include "scene/surface_info.h"
@@ -25,14 +26,20 @@ namespace app {
 struct ViewSettings {
     bool vsync = true;
     bool panelVisible = true;
-    std::array<char, 96> objectFilter{}; // the object list's filter text
-    std::array<char, 512> openPath{};    // the panel's "open" field
+    std::array<char, 96> objectFilter{}; // the assembly tree's filter text
+    // The assembly tree's state, per row of PanelInfo::tree: open nodes; and the rows the
+    // filter keeps, worked out again only when the filter text changes.
+    std::vector<uint8_t> treeOpen, treeShown;
+    std::string treeFilterFor;
+    std::array<char, 512> openPath{}; // the panel's "open" field
 };
 
 // What the user asked of the parts through the panel, for the viewer to carry out.
 struct PanelActions {
-    std::optional<std::string> selectObjects; // the objects of this name (a list click)
-    SelectMode mode = SelectMode::Replace;    // Ctrl+click adds
+    std::optional<std::string> selectObjects;              // the objects of this name
+    std::optional<scene::PartRanges> selectParts;          // a tree node's parts (a row click)
+    SelectMode mode = SelectMode::Replace;                 // Ctrl+click adds
+    std::optional<scene::PartRanges> hideParts, showParts; // a tree row's checkbox
     bool hide = false, isolate = false, showAll = false;
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
 };
@@ -58,6 +65,8 @@ struct PanelInfo {
     };
     std::optional<Loading> loading; // a dropped model still loading
     const scene::Scene* scene = nullptr;
+    const std::vector<scene::TreeRow>* tree = nullptr; // the scene's assembly tree
+    const scene::PartSet* hidden = nullptr;
     scene::Bounds bounds; // the scene's, for the section planes' sliders
     // The selected part's surface when it is a planar B-rep face (world), for a section plane.
     std::optional<scene::SurfaceInfo> selectedPlane;

@@ -33,6 +33,7 @@ const CommandSpec commandSpecs[] = {
     {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1"},
     {"box", ScriptOp::Box, 4, "box X0 Y0 X1 Y1 [add|remove]"},
     {"object", ScriptOp::Object, 0, "object NAME"},
+    {"node", ScriptOp::Node, 0, "node select|add|hide|show [PATH]"},
     {"scroll", ScriptOp::Scroll, 1, "scroll DY"},
     {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT"},
     {"renderer", ScriptOp::Renderer, 0, "renderer NAME"},
@@ -77,7 +78,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (name == candidate.name) spec = &candidate;
     if (!spec)
         fail("unknown command '" + name +
-             "' (known: key, move, click, drag, box, object, scroll, resize, renderer, mode, "
+             "' (known: key, move, click, drag, box, object, node, scroll, resize, renderer, mode, "
              "culling, freeze, msaa, copies, section, screenshot, drop, loaded, frames, quit)");
     command.op = spec->op;
 
@@ -89,14 +90,26 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Screenshot || spec->op == ScriptOp::Drop;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
-    const bool fits = spec->op == ScriptOp::Object ? !args.empty()
-                      : spec->op == ScriptOp::Box  ? args.size() == 4 || args.size() == 5
-                                                   : args.size() == expected;
+    const bool fits = spec->op == ScriptOp::Object || spec->op == ScriptOp::Node ? !args.empty()
+                      : spec->op == ScriptOp::Box ? args.size() == 4 || args.size() == 5
+                                                  : args.size() == expected;
     if (!fits) fail(std::string("'") + spec->name + "' takes: " + spec->usage);
     if (spec->op == ScriptOp::Object) {
         const auto start = line.find("object") + 6;
         command.text = line.substr(line.find_first_not_of(" \t", start));
         command.text.erase(command.text.find_last_not_of(" \t") + 1);
+    }
+    if (spec->op == ScriptOp::Node) {
+        const char* actions[] = {"select", "add", "hide", "show"};
+        const auto found = std::find(std::begin(actions), std::end(actions), args[0]);
+        if (found == std::end(actions))
+            fail("a node is selected, added, hidden or shown, not '" + args[0] + "' (" +
+                 spec->usage + ")");
+        command.values[0] = double(found - std::begin(actions));
+        const size_t word = line.find(args[0], line.find("node") + 4) + args[0].size();
+        const size_t start = line.find_first_not_of(" \t\r", word);
+        command.text = start == std::string::npos ? "" : line.substr(start);
+        command.text.erase(command.text.find_last_not_of(" \t\r") + 1);
     }
     if (spec->op == ScriptOp::Box && args.size() == 5) {
         if (args[4] == "add")

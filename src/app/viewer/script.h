@@ -12,6 +12,10 @@
 //                           holds Ctrl (adds), `box ... remove` Alt (removes)
 //   1.7 object bolt M10 #3  select the parts of the objects with this name, as the panel's
 //                           object list does
+//   1.8 node hide car/wheel front left  a node of the panel's assembly tree by its path
+//                           (names below the root joined by '/'; nothing after the word is
+//                           the root): select (as a row click), add (Ctrl+click), hide or
+//                           show (its checkbox)
 //   2   scroll 2            wheel steps, positive zooms in
 //   2.5 resize 800 500      window size
 //   3   renderer tri-fs     switch technique (no-id too), as the panel's combo box does
@@ -49,6 +53,7 @@ enum class ScriptOp {
     Drag,
     Box,
     Object,
+    Node,
     Scroll,
     Resize,
     Renderer,
@@ -68,7 +73,7 @@ enum class ScriptOp {
 struct ScriptCommand {
     double seconds = 0.0;
     ScriptOp op = ScriptOp::Quit;
-    std::string text;               // key name, renderer or mode name, file path
+    std::string text;               // key name, renderer or mode name, file path, node path
     int key = 0;                    // Key: the GLFW key code
     int mods = 0;                   // Key, Box: GLFW modifier bits held
     std::array<double, 4> values{}; // coordinates, wheel steps, window size or sample count

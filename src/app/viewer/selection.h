@@ -65,6 +65,13 @@ class Selection {
     }
     // Shift+H.
     void showAll() { hidden_.clear(); }
+    // A tree row's checkbox: its parts hidden (and so no longer selected), or shown again.
+    void hide(const scene::PartSet& parts) {
+        hidden_.insertAll(parts);
+        selected_.eraseAll(parts);
+        if (primary_ && !selected_.contains(*primary_)) primary_.reset();
+    }
+    void show(const scene::PartSet& parts) { hidden_.eraseAll(parts); }
 
     std::optional<uint32_t> hovered() const { return hovered_; }
     // The part the panel details: the one clicked, or the only one selected.

@@ -79,6 +79,22 @@ void Viewer::selectObjects(const std::string& name, SelectMode mode) {
     selectionChanged();
 }
 
+bool Viewer::actOnNode(const std::string& path, NodeAction action, SelectMode mode) {
+    for (const scene::TreeRow& row : tree_) {
+        if (row.path != path) continue;
+        const scene::PartSet parts = scene::partSetOf(row.parts, scene_.scene().uniquePartCount());
+        Selection& selection = input_.selection();
+        const scene::PartSet before = selection.selected();
+        if (action == NodeAction::Select) selection.select(parts, mode);
+        if (action == NodeAction::Hide) selection.hide(parts);
+        if (action == NodeAction::Show) selection.show(parts);
+        if (action == NodeAction::Select || selection.selected() != before) selectionChanged();
+        if (action != NodeAction::Select) partsChanged();
+        return true;
+    }
+    return false;
+}
+
 void Viewer::run() {
     while (!window_.closing() && !input_.failure()) {
         window_.pollEvents();

@@ -51,6 +51,11 @@ class Viewer {
     void partsChanged() const;     // hidden parts changed: tells the event lines
     // The parts of every object named `name` join the selection as `mode` says.
     void selectObjects(const std::string& name, SelectMode mode);
+    // The tree node at `path` (names below the root joined by '/'; "" is the root): its parts
+    // selected as `mode` says, hidden or shown, as the panel's tree row would. False when no
+    // node has that path.
+    enum class NodeAction { Select, Hide, Show };
+    bool actOnNode(const std::string& path, NodeAction action, SelectMode mode);
     void quit() { window_.close(); }
     // Measure mode (M): clicks place points instead of selecting.
     void toggleMeasure();
@@ -89,7 +94,8 @@ class Viewer {
     Input input_;
     OrbitCamera camera_;
     Measure measure_;
-    glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
+    std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
+    glm::mat4 viewProj_{1.0f};         // of the newest frame: where measure points come from
 
     // Frame timing and the title.
     uint64_t frameNumber_ = 0;

@@ -1,0 +1,112 @@
+// panel_tree.cpp - the assembly tree in the panel. Rows are drawn through ImGui's list
+// clipper, so a tree of tens of thousands of nodes costs the rows on screen; what the rows
+// are (open nodes, the filter) is worked out from the flat rows by skipping closed subtrees.
+#include "app/viewer/panel_tree.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include <imgui.h>
+
+namespace app {
+
+std::vector<uint8_t> rowsMatching(const std::vector<scene::TreeRow>& rows, const char* filter) {
+    std::vector<uint8_t> kept(rows.size(), *filter ? 0 : 1);
+    if (!*filter) return kept;
+    auto lower = [](std::string text) {
+        std::transform(text.begin(), text.end(), text.begin(),
+                       [](unsigned char c) { return char(std::tolower(c)); });
+        return text;
+    };
+    const std::string wanted = lower(filter);
+    // Backwards: a row is kept when it matches or any row of its subtree was kept.
+    for (size_t i = rows.size(); i-- > 0;) {
+        bool keep = lower(rows[i].name).find(wanted) != std::string::npos;
+        for (size_t r = i + 1; r < rows[i].end && !keep; r = rows[r].end) keep = kept[r];
+        kept[i] = keep;
+    }
+    return kept;
+}
+
+namespace {
+
+// Whether none, some or all of the ranges' parts are hidden.
+enum class Shown { All, Some, None };
+Shown shownOf(const scene::PartRanges& parts, const scene::PartSet& hidden) {
+    bool anyHidden = false, anyShown = false;
+    for (const auto& [first, count] : parts) {
+        const uint32_t n = hidden.countIn(first, count);
+        anyHidden = anyHidden || n > 0;
+        anyShown = anyShown || n < count;
+    }
+    return anyHidden ? (anyShown ? Shown::Some : Shown::None) : Shown::All;
+}
+
+} // namespace
+
+void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
+    if (!info.tree || info.tree->empty() || !info.hidden) return;
+    const std::vector<scene::TreeRow>& rows = *info.tree;
+    if (view.treeOpen.size() != rows.size()) view.treeOpen.assign(rows.size(), 0);
+    ImGui::InputTextWithHint("##filter", "filter by name", view.objectFilter.data(),
+                             view.objectFilter.size());
+    if (view.treeFilterFor != view.objectFilter.data() || view.treeShown.size() != rows.size()) {
+        view.treeFilterFor = view.objectFilter.data();
+        view.treeShown = rowsMatching(rows, view.objectFilter.data());
+    }
+    const bool filtering = !view.treeFilterFor.empty();
+    // The rows to draw: kept by the filter, under open nodes (all open while filtering).
+    std::vector<uint32_t> shown;
+    for (uint32_t i = 0; i < rows.size();) {
+        if (!view.treeShown[i]) {
+            i = rows[i].end;
+            continue;
+        }
+        shown.push_back(i);
+        i = (filtering || view.treeOpen[i] || i == 0) ? i + 1 : rows[i].end;
+    }
+    ImGui::Text("%zu rows of %zu nodes", shown.size(), rows.size());
+    if (!ImGui::BeginChild("##tree", ImVec2(-1, 240), true)) {
+        ImGui::EndChild();
+        return;
+    }
+    ImGuiListClipper clipper;
+    clipper.Begin(int(shown.size()));
+    while (clipper.Step())
+        for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line) {
+            const uint32_t i = shown[size_t(line)];
+            const scene::TreeRow& row = rows[i];
+            ImGui::PushID(int(i));
+            const float indent = float(row.depth) * 12.0f;
+            if (indent > 0.0f) ImGui::Indent(indent); // 0 would mean ImGui's default width
+            const bool branch = row.end > i + 1;
+            if (branch && i > 0 && !filtering) {
+                if (ImGui::ArrowButton("##open", view.treeOpen[i] ? ImGuiDir_Down : ImGuiDir_Right))
+                    view.treeOpen[i] = !view.treeOpen[i];
+            } else {
+                ImGui::Dummy(ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
+            }
+            ImGui::SameLine();
+            // Checked: every part under the node shows; a click hides them all, or shows them
+            // all when some are hidden.
+            const Shown state = shownOf(row.parts, *info.hidden);
+            bool visible = state == Shown::All;
+            if (state == Shown::Some) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 0.5f);
+            if (ImGui::Checkbox("##visible", &visible))
+                (state == Shown::All ? actions.hideParts : actions.showParts) = row.parts;
+            if (state == Shown::Some) ImGui::PopStyleVar();
+            ImGui::SameLine();
+            if (ImGui::Selectable(row.name.c_str())) {
+                actions.selectParts = row.parts;
+                actions.mode = ImGui::GetIO().KeyCtrl ? SelectMode::Add : SelectMode::Replace;
+            }
+            if (ImGui::IsItemHovered() && !row.path.empty())
+                ImGui::SetTooltip("%s", row.path.c_str());
+            if (indent > 0.0f) ImGui::Unindent(indent);
+            ImGui::PopID();
+        }
+    ImGui::EndChild();
+}
+
+} // namespace app
