@@ -129,6 +129,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
         leaves = format == Format::Brep ? readBrep(path, stem, progress)
                                         : readXde(path, format, progress, losses, sewTolerance);
     }
+    leaves = splitSolids(std::move(leaves), stem);
     result.readMs = msSince(start);
     if (leaves.empty()) throw Bad("the file holds no shapes");
 

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <map>
+
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IGESCAFControl_Reader.hxx>
@@ -15,6 +17,10 @@
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
@@ -183,7 +189,79 @@ ReaderLosses transfer(Reader& reader, const std::string& path, const std::string
         throw Bad("no shapes could be read from the " + format + " file");
     return readerLosses(sessionOf(reader));
 }
+// The sub-shape colours of `leaf` that touch a face of `part`, by the faces' TShapes (a
+// sub-shape's location is the product's, which the parts no longer carry).
+std::vector<std::pair<TopoDS_Shape, Rgba>>
+colorsTouching(const TopoDS_Shape& part, const std::multimap<const void*, size_t>& byFace,
+               const Leaf& leaf) {
+    std::vector<bool> taken(leaf.subColors.size(), false);
+    std::vector<std::pair<TopoDS_Shape, Rgba>> touching;
+    for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next()) {
+        const auto [first, last] = byFace.equal_range(e.Current().TShape().get());
+        for (auto it = first; it != last; ++it)
+            if (!taken[it->second]) {
+                taken[it->second] = true;
+                touching.push_back(leaf.subColors[it->second]);
+            }
+    }
+    return touching;
+}
+
+// `leaf` split into its solids and the faces of no solid.
+void appendSplit(const Leaf& leaf, const std::string& group, std::vector<Leaf>& out) {
+    std::multimap<const void*, size_t> byFace; // face TShape -> sub-colour index
+    for (size_t i = 0; i < leaf.subColors.size(); ++i) {
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(leaf.subColors[i].first, TopAbs_FACE, faces);
+        for (int f = 1; f <= faces.Extent(); ++f) byFace.emplace(faces(f).TShape().get(), i);
+    }
+    auto add = [&](TopoDS_Shape part, const std::string& name) {
+        Leaf& piece = out.emplace_back();
+        piece.world = leaf.world.Multiplied(part.Location().Transformation());
+        piece.subColors = colorsTouching(part, byFace, leaf);
+        part.Location(TopLoc_Location());
+        piece.shape = part;
+        piece.name = name;
+        piece.product = leaf.product.empty() ? std::string() : leaf.product + " " + name;
+        piece.group = group;
+        piece.color = leaf.color;
+    };
+    int n = 0;
+    for (TopExp_Explorer e(leaf.shape, TopAbs_SOLID); e.More(); e.Next())
+        add(e.Current(), "solid " + std::to_string(++n));
+    TopoDS_Compound free;
+    BRep_Builder builder;
+    builder.MakeCompound(free);
+    bool any = false;
+    for (TopExp_Explorer e(leaf.shape, TopAbs_FACE, TopAbs_SOLID); e.More(); e.Next(), any = true)
+        builder.Add(free, e.Current());
+    if (any) add(free, "free faces");
+}
+
 } // namespace
+
+std::vector<Leaf> splitSolids(std::vector<Leaf> leaves, const std::string& stem) {
+    std::vector<Leaf> out;
+    out.reserve(leaves.size());
+    uint32_t unnamed = 0;
+    for (Leaf& leaf : leaves) {
+        int solids = 0;
+        for (TopExp_Explorer e(leaf.shape, TopAbs_SOLID); e.More() && solids < 2; e.Next())
+            ++solids;
+        const bool freeFaces =
+            solids > 0 && TopExp_Explorer(leaf.shape, TopAbs_FACE, TopAbs_SOLID).More();
+        if (solids < 2 && !freeFaces) {
+            out.push_back(std::move(leaf));
+            continue;
+        }
+        const std::string name = !leaf.name.empty() ? leaf.name
+                                 : !leaf.product.empty()
+                                     ? leaf.product
+                                     : stem + " compound " + std::to_string(++unnamed);
+        appendSplit(leaf, joinPath(leaf.group, name), out);
+    }
+    return out;
+}
 
 Format formatOf(const std::string& path) {
     const std::string ext = lowercase(fs::path(path).extension().string());

@@ -97,4 +97,12 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
                            const CadProgress& progress);
 
+// Each leaf whose shape holds several solids (a compound, as BREP files and some STEP products
+// are), or a solid beside faces of no solid, becomes one leaf per solid, so that a solid is an
+// object of its own to pick and select as a whole. They are named "solid N" (N from 1, in
+// TopExp_Explorer order) under the compound's path (its name, else its product's, else "<stem>
+// compound N"); the faces of no solid, if any, become one more leaf, "free faces". Each keeps
+// the compound's colour and the sub-shape colours that touch its faces. Other leaves stay.
+std::vector<Leaf> splitSolids(std::vector<Leaf> leaves, const std::string& stem);
+
 } // namespace scene::cad
