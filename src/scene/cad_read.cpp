@@ -172,7 +172,8 @@ Handle(XSControl_WorkSession) sessionOf(IGESCAFControl_Reader& reader) {
 // Returns what the reading dropped.
 template <typename Reader>
 ReaderLosses transfer(Reader& reader, const std::string& path, const std::string& format,
-                      Handle(TDocStd_Document) & doc, const CadProgress& progress) {
+                      Handle(TDocStd_Document) & doc, const CadProgress& progress,
+                      const std::atomic<bool>* cancel) {
     reader.SetColorMode(true);
     reader.SetNameMode(true);
     reader.SetLayerMode(false);
@@ -185,7 +186,7 @@ ReaderLosses transfer(Reader& reader, const std::string& path, const std::string
     if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
     if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
     Handle(ProgressRelay) relay;
-    if (!reader.Transfer(doc, startStage(relay, progress, "translating")))
+    if (!reader.Transfer(doc, startStage(relay, progress, "translating", cancelled(cancel))))
         throw Bad("no shapes could be read from the " + format + " file");
     return readerLosses(sessionOf(reader));
 }
@@ -272,7 +273,8 @@ Format formatOf(const std::string& path) {
 }
 
 std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
-                          ReaderLosses& losses, double& sewTolerance) {
+                          ReaderLosses& losses, double& sewTolerance,
+                          const std::atomic<bool>* cancel) {
     DocumentGuard guard;
     // The first reader of each kind registers the toolkit's parameters, once per process.
     std::optional<OcctLeaksIgnored> ignored(std::in_place);
@@ -283,11 +285,11 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
         reader.SetViewMode(false);
-        losses = transfer(reader, path, "STEP", guard.doc, progress);
+        losses = transfer(reader, path, "STEP", guard.doc, progress, cancel);
     } else {
         IGESCAFControl_Reader reader;
         ignored.reset();
-        losses = transfer(reader, path, "IGES", guard.doc, progress);
+        losses = transfer(reader, path, "IGES", guard.doc, progress, cancel);
         const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
         if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
     }
@@ -295,7 +297,7 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
 }
 
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
-                           const CadProgress& progress) {
+                           const CadProgress& progress, const std::atomic<bool>* cancel) {
     // BRepTools::Read reports a wrong header on stdout: check it here first.
     std::ifstream in(path, std::ios::binary);
     std::string head(256, '\0');
@@ -311,7 +313,8 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
     BRep_Builder builder;
     const CoutCapture capture;
     Handle(ProgressRelay) relay;
-    if (!BRepTools::Read(shape, path.c_str(), builder, startStage(relay, progress, "reading")) ||
+    if (!BRepTools::Read(shape, path.c_str(), builder,
+                         startStage(relay, progress, "reading", cancelled(cancel))) ||
         shape.IsNull()) {
         const std::string said = capture.firstLine();
         throw Bad("not a readable BREP file" + (said.empty() ? "" : " (" + said + ")"));
