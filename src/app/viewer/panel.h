@@ -34,6 +34,7 @@ struct PanelActions {
     SelectMode mode = SelectMode::Replace;    // Ctrl+click adds
     bool hide = false, isolate = false, showAll = false;
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
+    bool cancelLoad = false;         // stop the model loading (and those queued behind it)
 };
 
 // A part under the cursor or selected, as the pick reported it.

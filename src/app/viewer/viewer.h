@@ -51,6 +51,7 @@ class Viewer {
     // The parts of every object named `name` join the selection as `mode` says.
     void selectObjects(const std::string& name, SelectMode mode);
     void quit() { window_.close(); }
+    void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
     bool loading() const { return scene_.loading().has_value(); } // a dropped model
 
   private:
