@@ -60,11 +60,15 @@ CadLoadResult getResult(ByteReader& in) {
     return r;
 }
 
+// The whole file in one read: entries of large models run to hundreds of megabytes.
 std::optional<std::string> readWhole(const fs::path& file) {
+    std::error_code ec;
+    const uintmax_t size = fs::file_size(file, ec);
     std::ifstream in(file, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return std::nullopt;
+    if (ec || !in) return std::nullopt;
+    std::string bytes(size_t(size), '\0');
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    if (size_t(in.gcount()) != bytes.size()) return std::nullopt;
     return bytes;
 }
 
@@ -83,13 +87,12 @@ std::optional<CadLoadResult> parseEntry(const std::string& bytes, const CadCache
                   std::to_string(kCadCacheVersion);
             return std::nullopt;
         }
-        const std::string keyBytes = in.getString();
-        ByteReader keyIn(keyBytes);
+        ByteReader keyIn(in.getBytes());
         if (!(getKey(keyIn) == key) || !keyIn.done()) {
             why = "stale (the file or the settings changed)";
             return std::nullopt;
         }
-        const std::string payload = in.getString();
+        const std::string_view payload = in.getBytes();
         const uint64_t checksum = in.get<uint64_t>();
         if (!in.done()) throw std::runtime_error("bytes after the checksum");
         if (hash64(payload.data(), payload.size()) != checksum) {
@@ -175,14 +178,14 @@ std::optional<CadLoadResult> readCadCache(const fs::path& entry, const CadCacheK
 
 std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
                           const CadLoadResult& result) {
-    ByteWriter keyBytes, payload, out;
+    ByteWriter keyBytes, payload, head, tail;
     putKey(keyBytes, key);
     putResult(payload, result);
-    for (char c : kMagic) out.put(c);
-    out.put(kCadCacheVersion);
-    out.putString(keyBytes.bytes());
-    out.putString(payload.bytes());
-    out.put(hash64(payload.bytes().data(), payload.bytes().size()));
+    for (char c : kMagic) head.put(c);
+    head.put(kCadCacheVersion);
+    head.putString(keyBytes.bytes());
+    head.put(uint64_t(payload.bytes().size())); // the payload's length prefix
+    tail.put(hash64(payload.bytes().data(), payload.bytes().size()));
 
     std::error_code ec;
     fs::create_directories(entry.parent_path(), ec);
@@ -193,7 +196,8 @@ std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
     temporary += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        file.write(out.bytes().data(), std::streamsize(out.bytes().size()));
+        for (const std::string* part : {&head.bytes(), &payload.bytes(), &tail.bytes()})
+            file.write(part->data(), std::streamsize(part->size()));
         file.close();
         if (!file) {
             fs::remove(temporary, ec);

@@ -63,12 +63,14 @@ class ByteReader {
         at_ += count * sizeof(T);
         return values;
     }
-    std::string getString() {
+    std::string getString() { return std::string(getBytes()); }
+    // A length-prefixed run of bytes, viewed where it lies (no copy).
+    std::string_view getBytes() {
         const uint64_t size = get<uint64_t>();
         need(size);
-        std::string text(bytes_.substr(at_, size));
+        const std::string_view bytes = bytes_.substr(at_, size);
         at_ += size;
-        return text;
+        return bytes;
     }
     bool done() const { return at_ == bytes_.size(); }
 
