@@ -9,6 +9,13 @@ namespace {
 // The fixed-size records that go as whole arrays: their layouts have no padding.
 static_assert(sizeof(Vertex) == 6 * sizeof(float));
 static_assert(sizeof(Part) == 2 * sizeof(uint32_t));
+// The records written field by field, at their sizes on this platform (libstdc++, x86-64):
+// a field added to one of them changes its size and stops the build here, until it is
+// encoded below and kCadCacheVersion (cad_cache.h) is bumped, so that no old entry is read
+// as a new one.
+static_assert(sizeof(Geometry) == 160 && sizeof(Object) == 144 && sizeof(Material) == 48 &&
+                  sizeof(SurfaceInfo) == 104,
+              "a scene record changed: encode its fields and bump kCadCacheVersion");
 
 void putSurface(ByteWriter& out, const SurfaceInfo& s) {
     out.put(uint8_t(s.kind));
