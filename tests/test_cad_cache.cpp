@@ -5,10 +5,12 @@
 // (scene::loadCad): the mesher stops between faces once the budget is spent, and the refusal
 // is one line naming the file and a larger deflection, which leads under the limit.
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <random>
 #include <set>
 #include <tuple>
 #include <unistd.h>
@@ -242,6 +244,40 @@ TEST_F(CadCache, DamagedEntriesAreMissesAndWrittenAnew) {
         EXPECT_EQ(loadCadCached(kMotor.string(), {}).cache, "hit") << d.what;
     }
     EXPECT_EQ(entries().size(), 1u); // no temporary file left behind
+}
+
+// Damage the checksum cannot see (bytes changed and the checksum recomputed, as a bug
+// writing entries would): every read either refuses the entry or gives a valid scene.
+TEST_F(CadCache, DamageBehindAGoodChecksumNeverGivesABrokenScene) {
+    loadCadCached(kMotor.string(), {});
+    ASSERT_EQ(entries().size(), 1u);
+    const fs::path entry = entries()[0];
+    const std::string good = readBytes(entry);
+    const auto key = cadCacheKey(kMotor.string(), {}, 1);
+    ASSERT_TRUE(key);
+    // magic (8), version (4), key length (8) and key, payload length (8) and payload, checksum.
+    uint64_t keySize = 0, payloadSize = 0;
+    std::memcpy(&keySize, good.data() + 12, 8);
+    std::memcpy(&payloadSize, good.data() + 20 + keySize, 8);
+    const size_t payloadAt = 28 + keySize;
+    ASSERT_EQ(payloadAt + payloadSize + 8, good.size());
+    std::mt19937 random(7);
+    size_t refused = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::string bad = good;
+        // The first bytes hold the counts and sizes that steer the decoding.
+        const size_t at = payloadAt + (trial < 150 ? random() % 64 : random() % payloadSize);
+        bad[at] = static_cast<char>(random());
+        const uint64_t checksum = hash64(bad.data() + payloadAt, payloadSize);
+        std::memcpy(bad.data() + payloadAt + payloadSize, &checksum, 8);
+        writeBytes(entry, bad);
+        std::string why;
+        if (const auto r = readCadCache(entry, *key, why))
+            EXPECT_NO_THROW(validate(r->scene)) << "byte " << at;
+        else
+            ++refused;
+    }
+    EXPECT_GT(refused, 0u);
 }
 
 TEST_F(CadCache, AChangedFileIsAMissAndReplacesItsEntry) {
