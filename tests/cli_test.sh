@@ -8,6 +8,8 @@ icd=$2
 # folder, for the newer libdrm (tests/CMakeLists.txt).
 export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
 work=$(mktemp -d)
+# CAD tessellations are cached here, never in the cache of the user running the test.
+export XDG_CACHE_HOME=$work/xdg-cache-home
 trap 'rm -rf "$work"' EXIT
 failures=0
 
@@ -213,6 +215,30 @@ expect cad-junk 1 "^idview: error: $work/junk.STEP: not a readable STEP file" --
 : >"$work/empty.igs"
 expect cad-empty 1 "^idview: error: $work/empty.igs: the file is empty" -- "$idview" --model "$work/empty.igs" --stats
 expect cad-bad-deflection 2 '--deflection expects a length' -- "$idview" --deflection -2
+
+# The tessellation cache in a folder of this run: a miss, then a hit; --no-cache neither.
+motor=/usr/share/opencascade/data/occ/Motor-c.brep
+bearing=/usr/share/opencascade/data/iges/bearing.iges
+if [[ -f $motor && -f $bearing ]]; then
+    cache=$work/xdg-cache
+    in_cache() { XDG_CACHE_HOME=$cache "$@"; }
+    expect cad-no-cache 0 '"cache":"off","cache_note":"--no-cache"' -- in_cache "$idview" --model "$motor" --stats --no-cache
+    [[ -e $cache ]] && { echo "FAIL cad-no-cache wrote $cache"; failures=$((failures + 1)); }
+    expect cad-cache-miss 0 '"cache":"miss","cache_note":"no entry"' -- in_cache "$idview" --model "$motor" --stats
+    expect cad-cache-hit 0 '"objects":17,.*"cache":"hit"' -- in_cache "$idview" --model "$motor" --stats
+    # Past --max-triangles: one line naming the file and a deflection, exit 1, headless or not.
+    for f in "$motor" "$bearing"; do
+        name=max-triangles-$(basename "$f")
+        out=$("$idview" --headless --no-cache --model "$f" --max-triangles 1000 2>&1)
+        rc=$?
+        line="^idview: error: $f: the tessellation passes --max-triangles 1000 \\(about [0-9]+ triangles at deflection [0-9.e+-]+\\); try --deflection [0-9.e+-]+$"
+        if [[ $rc -eq 1 && $(wc -l <<<"$out") -eq 1 ]] && grep -qE "$line" <<<"$out"; then
+            echo "ok   $name"
+        else
+            echo "FAIL $name: exit $rc, output:"; echo "$out" | head -5; failures=$((failures + 1))
+        fi
+    done
+fi
 
 echo "cli_test: $failures failed"
 exit $((failures > 0))

@@ -134,7 +134,7 @@ TEST(AssemblyTree, RowsHoldEachSubtreeAndItsParts) {
             const auto [first, count] = row.parts[k];
             EXPECT_GT(count, 0u);
             if (k > 0) {
-                EXPECT_GT(first, row.parts[k - 1].first + row.parts[k - 1].second);
+                EXPECT_GT(first, row.parts[k - 1].first + row.parts[k - 1].count);
             }
             for (uint32_t p = first; p < first + count; ++p) got.insert(p);
         }
@@ -155,4 +155,21 @@ TEST(PartSet, CountsMembersInARange) {
             EXPECT_EQ(set.allIn(first, count), expected == count);
         }
     EXPECT_EQ(set.countIn(90, 50), 1u); // clamped to the set's parts
+}
+
+// Around a part at each level, on hand-made paths: the bolt's parent node is the first
+// bracket (object 0), whose path the third object shares; "framework" is no part of "frame".
+TEST(AssemblyTree, PartsAroundAPartGrowWithTheLevel) {
+    const Scene s = withPaths({"frame/bracket", "frame/bracket/bolt", "frame/plate", "nut",
+                               "frame/bracket", "framework"});
+    using R = std::vector<PartRange>;
+    EXPECT_EQ(partsAround(s, 1, 0), (R{{1, 1}}));
+    EXPECT_EQ(partsAround(s, 1, 1), (R{{1, 1}}));
+    EXPECT_EQ(partsAround(s, 1, 2), (R{{0, 2}, {4, 1}}));
+    EXPECT_EQ(partsAround(s, 1, 3), (R{{0, 3}, {4, 1}}));
+    EXPECT_EQ(partsAround(s, 1, 9), (R{{0, 3}, {4, 1}})); // never past "frame"
+    EXPECT_EQ(partsAround(s, 0, 2), (R{{0, 3}, {4, 1}}));
+    EXPECT_EQ(partsAround(s, 3, 5), (R{{3, 1}})); // at the root: alone
+    EXPECT_EQ(partsAround(s, 5, 2), (R{{5, 1}}));
+    EXPECT_TRUE(partsAround(s, 6, 1).empty()); // no such part
 }

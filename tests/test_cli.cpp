@@ -312,6 +312,23 @@ TEST(Cli, PartFlags) {
         EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
 }
 
+TEST(Cli, CadCacheAndTriangleLimitFlags) {
+    const app::Options d;
+    EXPECT_TRUE(d.scene.cadCache);
+    EXPECT_EQ(d.scene.cad.maxTriangles, scene::kDefaultMaxTriangles);
+    const auto o = app::parseArgs(std::vector<std::string>{"--no-cache", "--max-triangles=5000"});
+    EXPECT_FALSE(o.scene.cadCache);
+    EXPECT_EQ(o.scene.cad.maxTriangles, 5000u);
+    const std::string text = app::usage();
+    for (const std::string& needle : std::vector<std::string>{
+             "--no-cache", "--max-triangles N", std::to_string(scene::kDefaultMaxTriangles)})
+        EXPECT_NE(text.find(needle), std::string::npos) << needle;
+    for (const char* bad : {"0", "lots", "-3", "1e6"})
+        EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--max-triangles", bad}),
+                     app::UsageError)
+            << bad;
+}
+
 TEST(Cli, CadTessellationFlags) {
     const app::Options d;
     EXPECT_EQ(d.scene.cad.deflection, 0.0);

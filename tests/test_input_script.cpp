@@ -64,6 +64,14 @@ TEST(InputScript, ParsesEveryCommand) {
     EXPECT_EQ(commands[12].op, app::ScriptOp::Quit);
 }
 
+// The panel's Cancel as a script line: no arguments.
+TEST(InputScript, Cancel) {
+    const auto commands = app::parseScript("1 drop m.step\n2 cancel\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[1].op, app::ScriptOp::Cancel);
+    EXPECT_THROW(app::parseScript("1 cancel now\n", "s.txt"), app::ScriptError);
+}
+
 TEST(InputScript, BoxObjectAndModifiers) {
     const auto commands = app::parseScript("1 box 10 20 300 200\n"
                                            "2 box 1 2 3 4 add\n"

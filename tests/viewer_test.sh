@@ -17,6 +17,8 @@ if ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; then
     exit 77
 fi
 work=$(mktemp -d)
+# CAD tessellations are cached here, never in the cache of the user running the test.
+export XDG_CACHE_HOME=$work/xdg-cache-home
 # VIEWER_TEST_KEEP=1 keeps the script, output and screenshot for a look.
 [[ ${VIEWER_TEST_KEEP:-} == 1 ]] && echo "keeping $work" || trap 'rm -rf "$work"' EXIT
 failures=0
@@ -395,6 +397,51 @@ if [[ $gearbox -gt $plate && $plate -gt 0 && $tree_events == "$want" ]]; then
     echo "ok   assembly tree: hide, show, select and add nodes ($gearbox and $plate parts)"
 else
     fail "assembly tree events '$tree_events', expected '$want'"
+fi
+
+# Loads that must not take the scene: a drop past --max-triangles fails in one line and the
+# scene stays (a click picks the very part it picked before); Cancel stops a slow CAD load
+# (terrain.brep meshes for half a minute in one face) within seconds, and the scene stays.
+motor=/usr/share/opencascade/data/occ/Motor-c.brep
+terrain=/usr/share/opencascade/data/occ/terrain.brep
+if [[ -f $motor && -f $terrain ]]; then
+    t=0.5
+    {
+        at move 420 230
+        at click 420 230
+        at frames 6
+        at drop "$motor"
+        at loaded
+        at key ESC
+        at click 420 230
+        at frames 6
+        at drop "$terrain"
+        at frames 10
+        at cancel
+        at loaded
+        at quit
+    } >"$work/refuse.txt"
+    start=$(date +%s)
+    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+        --scene procedural:preset=small --max-triangles 1000 --no-cache \
+        --script "$work/refuse.txt" --print-events >"$work/refuse.out" 2>"$work/refuse.err"
+    rc=$?
+    took=$(($(date +%s) - start))
+    [[ $rc -eq 0 ]] || { fail "refused loads: exit code $rc"; head -c 2000 "$work/refuse.err"; }
+    grep -q "^idview: $motor: the tessellation passes --max-triangles 1000 (about [0-9]* triangles at deflection [0-9.e+-]*); try --deflection [0-9.e+-]*$" \
+        "$work/refuse.err" && echo "ok   a drop past --max-triangles is refused in one line" ||
+        fail "no one-line refusal of $motor: $(head -c 500 "$work/refuse.err")"
+    grep -q "^idview: $terrain: cancelled$" "$work/refuse.err" && echo "ok   Cancel stopped $terrain" ||
+        fail "Cancel did not stop $terrain: $(head -c 500 "$work/refuse.err")"
+    grep -q "^idview: opened: " "$work/refuse.out" && fail "a refused or cancelled model opened"
+    picks=$(grep '^idview: selected: part' "$work/refuse.out")
+    if [[ $(wc -l <<<"$picks") -eq 2 && $(sort -u <<<"$picks" | wc -l) -eq 1 ]]; then
+        echo "ok   the scene stayed: $(head -1 <<<"$picks")"
+    else
+        fail "the two clicks picked: $picks"
+    fi
+    ((took < 25)) && echo "ok   refused and cancelled in $took s" ||
+        fail "the refused and cancelled loads took $took s"
 fi
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }

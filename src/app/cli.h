@@ -27,6 +27,8 @@ struct SceneSettings {
     std::string builtin; // built-in or procedural scene spec (scene_source.h)
     scene::PartMode parts = scene::PartMode::Primitives; // glTF: what one part is
     scene::CadOptions cad;                               // STEP, IGES, BREP: the tessellation
+    // STEP, IGES, BREP: read and write the tessellation cache (scene/cad_cache.h).
+    bool cadCache = true;
     uint32_t copies = 1;
     uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans
     // Levels of detail built at load, full detail included (scene/lod.h; 1 builds none), and

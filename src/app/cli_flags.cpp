@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "app/scene_source.h"
@@ -238,6 +239,18 @@ const std::vector<Flag>& flags() {
                                       "'");
                  o.scene.cad.angularDeflection = radians;
              }},
+            {"--max-triangles", "N",
+             "CAD files: stop a tessellation as soon as its faces pass N triangles (full detail, "
+             "each distinct shape once) and exit 1 naming a --deflection that fits" +
+                 byDefault(d.scene.cad.maxTriangles),
+             [](Options& o, auto& v) {
+                 o.scene.cad.maxTriangles =
+                     parseCount("--max-triangles", v, 1, std::numeric_limits<uint32_t>::max());
+             }},
+            {"--no-cache", nullptr,
+             "CAD files: neither read nor write the tessellation cache ($XDG_CACHE_HOME/idview, "
+             "else ~/.cache/idview)",
+             [](Options& o, auto&) { o.scene.cadCache = false; }},
             {"--scene", "SPEC",
              "built-in scene instead of a model: assembly, tiles (the test layout) or "
              "procedural[:preset=small|car-like][,seed=N]",

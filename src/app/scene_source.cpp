@@ -16,6 +16,7 @@
 #include "app/json.h"
 #include "render/draw_list.h"
 #include "scene/assembly_tree.h"
+#include "scene/cad_cache.h"
 #include "scene/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/generator.h"
@@ -108,7 +109,8 @@ scene::CadProgress stderrProgress(const std::string& source) {
     };
 }
 
-LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
+LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
+                      const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
     loaded.settings = settings;
@@ -116,13 +118,15 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
         if (scene::isCadPath(loaded.source)) {
             const scene::CadProgress onStderr = stderrProgress(loaded.source);
-            scene::CadLoadResult result = scene::loadCad(
-                loaded.source, settings.cad,
-                [&](const char* stage, double fraction) {
-                    onStderr(stage, fraction);
-                    if (progress) progress->set(stage, fraction);
-                },
-                settings.lodLevels);
+            const scene::CadProgress report = [&](const char* stage, double fraction) {
+                onStderr(stage, fraction);
+                if (progress) progress->set(stage, fraction);
+            };
+            scene::CadLoadResult result =
+                settings.cadCache ? scene::loadCadCached(loaded.source, settings.cad, report,
+                                                         settings.lodLevels, cancel)
+                                  : scene::loadCad(loaded.source, settings.cad, report,
+                                                   settings.lodLevels, cancel);
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
             if (settings.parts != scene::PartMode::Primitives)
@@ -134,6 +138,9 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress) {
             loaded.deflection = result.deflection;
             loaded.facesFailed = result.facesFailed;
             loaded.lodMs = result.levelsMs;
+            loaded.cache = result.cache;
+            loaded.cacheNote = settings.cadCache ? result.cacheNote : "--no-cache";
+            loaded.cacheMs = result.cacheMs;
         } else {
             scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
             loaded.scene = std::move(result.scene);
@@ -241,6 +248,8 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
          << ",\"faces_failed\":" << loaded.facesFailed << ",\"deflection\":" << std::defaultfloat
          << std::setprecision(6) << loaded.deflection << std::fixed << std::setprecision(3)
+         << ",\"cache\":" << jsonString(loaded.cache)
+         << ",\"cache_note\":" << jsonString(loaded.cacheNote) << ",\"cache_ms\":" << loaded.cacheMs
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
          << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts

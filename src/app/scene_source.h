@@ -3,6 +3,7 @@
 // the headless path, the viewer and --stats.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <string>
@@ -37,6 +38,9 @@ struct LoadedScene {
     double tessellationMs = 0.0; // sewing (IGES) and BRepMesh over the distinct shapes
     double deflection = 0.0;     // the linear deflection used, in model units
     uint32_t facesFailed = 0;    // faces left out for want of triangles
+    std::string cache = "off";   // the tessellation cache: "hit", "miss" or "off"
+    std::string cacheNote;       // why a miss or "off" ("no entry", "checksum mismatch", ...)
+    double cacheMs = 0.0;        // reading the entry (hit) or writing it (miss)
     std::vector<std::string> warnings;
     bool tilesLayout = false; // the test layout at its own camera
 };
@@ -68,7 +72,10 @@ class LoadProgress {
     double fraction_ = 0.0;
 };
 
-LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress = nullptr);
+// A CAD load stops while `cancel` is set (the viewer's Cancel), with ModelError "<file>:
+// cancelled".
+LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress = nullptr,
+                      const std::atomic<bool>* cancel = nullptr);
 
 // Throws std::runtime_error, one line, when `copies` of `scene` would not fit in this
 // machine's memory (checked before any allocation).

@@ -46,6 +46,40 @@ AssemblyNode assemblyTree(const Scene& scene, const std::string& rootName) {
     return root;
 }
 
+std::vector<PartRange> partsAround(const Scene& scene, uint32_t id, uint32_t level) {
+    const std::optional<PartRef> ref = scene.locate(id);
+    if (!ref) return {};
+    const Object& object = scene.objects[ref->object];
+    if (level == 0) return {{id, 1}};
+    const uint32_t partCount = scene.geometries[object.geometry].partCount;
+    const std::string& path = object.path.empty() ? object.name : object.path;
+    // The node `level - 1` names above the object's, keeping the first name at least.
+    size_t end = path.size();
+    for (uint32_t up = 1; up < level; ++up) {
+        const size_t slash = path.rfind('/', end - 1);
+        if (slash == std::string::npos || slash == 0) break;
+        end = slash;
+    }
+    if (end == path.size()) return {{object.uniquePartOffset, partCount}};
+    const std::string node = path.substr(0, end);
+    std::vector<PartRange> ranges;
+    for (const Object& o : scene.objects) {
+        const std::string& p = o.path.empty() ? o.name : o.path;
+        if (p == node || (p.size() > node.size() && p.starts_with(node) && p[node.size()] == '/'))
+            ranges.push_back({o.uniquePartOffset, scene.geometries[o.geometry].partCount});
+    }
+    std::sort(ranges.begin(), ranges.end(),
+              [](const PartRange& a, const PartRange& b) { return a.first < b.first; });
+    std::vector<PartRange> merged;
+    for (const PartRange& r : ranges) {
+        if (!merged.empty() && merged.back().first + merged.back().count == r.first)
+            merged.back().count += r.count;
+        else
+            merged.push_back(r);
+    }
+    return merged;
+}
+
 namespace {
 
 void addRows(const AssemblyNode& node, const std::string& path, uint32_t depth,
@@ -60,13 +94,13 @@ void addRows(const AssemblyNode& node, const std::string& path, uint32_t depth,
     // its subtree), sort and merge touching ones.
     for (size_t r = index + 1; r < rows.size(); r = rows[r].end)
         parts.insert(parts.end(), rows[r].parts.begin(), rows[r].parts.end());
-    std::sort(parts.begin(), parts.end());
+    std::sort(parts.begin(), parts.end(),
+              [](const PartRange& x, const PartRange& y) { return x.first < y.first; });
     PartRanges merged;
     for (const auto& [first, count] : parts) {
-        if (!merged.empty() && merged.back().first + merged.back().second >= first) {
-            const uint32_t end =
-                std::max(merged.back().first + merged.back().second, first + count);
-            merged.back().second = end - merged.back().first;
+        if (!merged.empty() && merged.back().first + merged.back().count >= first) {
+            const uint32_t end = std::max(merged.back().first + merged.back().count, first + count);
+            merged.back().count = end - merged.back().first;
         } else {
             merged.push_back({first, count});
         }

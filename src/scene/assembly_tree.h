@@ -28,8 +28,22 @@ struct AssemblyNode {
 // node (the second of one path gets a node of its own). A name that holds '/' reads as two.
 AssemblyNode assemblyTree(const Scene& scene, const std::string& rootName);
 
-// A ranges of unique parts, [first, first + count), sorted and merged.
-using PartRanges = std::vector<std::pair<uint32_t, uint32_t>>;
+// A run of unique part IDs, [first, first + count).
+struct PartRange {
+    uint32_t first = 0, count = 0;
+    bool operator==(const PartRange&) const = default;
+};
+
+// What a selection at a coarser level than the face takes in around part `id`, by the node
+// paths: level 0 the part alone; 1 its object (a CAD solid, a glTF node's mesh); 2 every
+// object under the node above the object (path equal to that node's, or below it), 3 the
+// node above that, and so on, stopping at the topmost node below the root (never the whole
+// scene, unless the scene is one node). An object at the root is alone at every level above
+// 0. Runs in increasing order, touching ones merged; empty when `id` names no part.
+std::vector<PartRange> partsAround(const Scene& scene, uint32_t id, uint32_t level);
+
+// Runs of unique parts, sorted and merged.
+using PartRanges = std::vector<PartRange>;
 
 // The tree as rows in depth-first order, for a panel that draws only the rows on screen:
 // row i's subtree is the rows [i, end).

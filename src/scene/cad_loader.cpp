@@ -21,7 +21,6 @@
 #include <optional>
 
 #include <BRepBndLib.hxx>
-#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -108,7 +107,7 @@ std::string hex(const Rgba& color) {
 }
 
 CadLoadResult load(const std::string& path, const CadOptions& options, const CadProgress& progress,
-                   uint32_t levels) {
+                   uint32_t levels, const std::atomic<bool>* cancel) {
     const Format format = formatOf(path);
     if (format == Format::None) throw Bad("not a STEP, IGES or BREP file name");
     if (!(options.deflection >= 0.0) || !std::isfinite(options.deflection))
@@ -126,9 +125,11 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     double sewTolerance = 0.0;
     {
         const CoutCapture quiet;
-        leaves = format == Format::Brep ? readBrep(path, stem, progress)
-                                        : readXde(path, format, progress, losses, sewTolerance);
+        leaves = format == Format::Brep
+                     ? readBrep(path, stem, progress, cancel)
+                     : readXde(path, format, progress, losses, sewTolerance, cancel);
     }
+    leaves = splitSolids(std::move(leaves), stem);
     result.readMs = msSince(start);
     if (leaves.empty()) throw Bad("the file holds no shapes");
 
@@ -211,7 +212,20 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     parameters.Relative = false;
     parameters.InParallel = true;
     Handle(ProgressRelay) relay;
-    BRepMesh_IncrementalMesh mesher(all, parameters, startStage(relay, progress, "tessellating"));
+    MeshBudget budget;
+    budget.maxTriangles = options.maxTriangles;
+    budget.cancel = cancel;
+    meshCounted(all, parameters, budget,
+                startStage(relay, progress, "tessellating", [&budget] { return budget.stop(); }));
+    if (cancel && *cancel) throw Bad("cancelled");
+    if (budget.over) {
+        // What the whole would have come to, at the rate of the faces counted so far.
+        uint64_t faces = 0;
+        for (const Distinct& d : distinct) faces += uint64_t(d.faces.Extent());
+        const double meshed = std::max(1.0, double(budget.facesMeshed.load()));
+        const double estimate = double(budget.triangles) * std::max(1.0, double(faces) / meshed);
+        throw Bad(triangleLimitReason(uint64_t(estimate), options.maxTriangles, deflection));
+    }
     result.tessellationMs = msSince(start);
 
     Scene& scene = result.scene;
@@ -233,6 +247,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     for (size_t di = 0; di < distinct.size(); ++di) {
         Distinct& d = distinct[di];
         if (progress) progress("building", double(di) / double(distinct.size()));
+        if (cancel && *cancel) throw Bad("cancelled");
         if (d.faces.Extent() == 0) continue;
         Geometry& g = scene.geometries.emplace_back();
         g.name = d.name.empty() ? stem + " shape " + std::to_string(++unnamedShapes) : d.name;
@@ -274,6 +289,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
             if (d.geometry >= 0) shapes.push_back({&d.faces, uint32_t(d.geometry)});
         addCadLevels(scene, all, shapes, deflection, options.angularDeflection, levels,
                      LodOptions{}, [&](double fraction) {
+                         if (cancel && *cancel) throw Bad("cancelled");
                          if (progress) progress("levels of detail", fraction);
                      });
         result.levelsMs = msSince(start);
@@ -316,11 +332,29 @@ bool isCadPath(const std::string& path) {
     return formatOf(path) != Format::None;
 }
 
+std::string triangleLimitReason(uint64_t estimate, uint64_t limit, double deflection) {
+    // A curved face's triangles grow as 1 / deflection: aim at half the limit.
+    double suggested =
+        deflection * std::max(2.0, 2.0 * double(estimate) / double(std::max<uint64_t>(limit, 1)));
+    const double step = std::pow(10.0, std::floor(std::log10(suggested)) - 1.0);
+    suggested = std::ceil(suggested / step) * step;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the tessellation passes --max-triangles %llu (about %llu triangles at "
+                  "deflection %.3g); try --deflection %g",
+                  static_cast<unsigned long long>(limit), static_cast<unsigned long long>(estimate),
+                  deflection, suggested);
+    return text;
+}
+
 CadLoadResult loadCad(const std::string& path, const CadOptions& options,
-                      const CadProgress& progress, uint32_t levels) {
+                      const CadProgress& progress, uint32_t levels,
+                      const std::atomic<bool>* cancel) {
     try {
-        return load(path, options, progress, levels);
+        return load(path, options, progress, levels, cancel);
     } catch (const Bad& e) {
+        // A reader broken off by the flag says only that it read nothing.
+        if (cancel && *cancel) throw ModelError(path + ": cancelled");
         throw ModelError(path + ": " + e.what());
     } catch (const Standard_Failure& e) {
         const char* message = e.GetMessageString();

@@ -13,6 +13,7 @@
 // This header stays free of Open CASCADE types.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -23,11 +24,25 @@
 
 namespace scene {
 
+// The default --max-triangles. Measured on the 2-core development machine, shared with two
+// other builds (Release, `idview --stats --no-cache`, peak resident memory by /usr/bin/time):
+// Motor-c.brep at --deflection 0.003 --angular-deflection 0.05 makes 546,696 triangles in
+// 166 MB and 18.6 s of tessellation; at 0.001 and 0.02, 2,236,816 triangles in 632 MB and
+// 335 s. So about 280 bytes per triangle at load: 4 M triangles take about 1.1 GB, a small
+// share of a 24 GB machine even with the renderer's copy beside it, while the time to mesh
+// grows faster than the count (minutes of both cores already at 2 M), which the limit bounds
+// too. A face is counted once meshed, so one huge face (terrain.brep: 230,288 triangles,
+// 1.8 GB, 31.6 s) is not stopped half-way; the viewer's Cancel is.
+constexpr uint64_t kDefaultMaxTriangles = 4'000'000;
+
 struct CadOptions {
     // Linear deflection of the tessellation in model units; 0 picks
     // kRelativeDeflection x the model's bounding box diagonal.
     double deflection = 0.0;
     double angularDeflection = 0.5; // radians
+    // The most triangles full detail may have (over the distinct shapes, before instancing):
+    // the tessellation stops as soon as its faces pass it, and the load fails in words.
+    uint64_t maxTriangles = kDefaultMaxTriangles;
     bool operator==(const CadOptions&) const = default;
 };
 
@@ -43,6 +58,12 @@ struct CadLoadResult {
     double deflection = 0.0;     // the linear deflection used
     uint32_t faces = 0;          // faces over all distinct shapes
     uint32_t facesFailed = 0;    // of those, the ones without triangles (left out)
+    // The tessellation cache (scene/cad_cache.h): "off" (not asked, or no folder), "hit" or
+    // "miss"; for misses and "off" what happened ("no entry", "checksum mismatch", ...); the
+    // time spent reading (hit) or writing (miss) the entry.
+    std::string cache = "off";
+    std::string cacheNote;
+    double cacheMs = 0.0;
 };
 
 // How far a load is: `stage` is "reading", "translating" (the file's entities into shapes),
@@ -69,7 +90,16 @@ bool isCadPath(const std::string& path);
 // also gets up to levels - 1 levels of detail (scene/lod.h): its faces tessellated again at 4,
 // 16 and 64 times the deflection, which is each level's error; progress then reports a
 // "levels of detail" stage.
+// While `cancel` is set the load stops at the next face or progress step, throwing ModelError
+// "<path>: cancelled". A tessellation that passes options.maxTriangles stops between faces
+// and throws ModelError "<path>: <triangleLimitReason>".
 CadLoadResult loadCad(const std::string& path, const CadOptions& options = {},
-                      const CadProgress& progress = {}, uint32_t levels = 1);
+                      const CadProgress& progress = {}, uint32_t levels = 1,
+                      const std::atomic<bool>* cancel = nullptr);
+
+// "the tessellation passes --max-triangles LIMIT (about ESTIMATE triangles at deflection D);
+// try --deflection X": X is D scaled so that the estimate falls to half the limit (a curved
+// face's triangles grow as 1 / deflection), rounded up to two significant digits.
+std::string triangleLimitReason(uint64_t estimate, uint64_t limit, double deflection);
 
 } // namespace scene

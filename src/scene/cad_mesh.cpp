@@ -4,12 +4,18 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <set>
 
+#include <BRepMesh_Context.hxx>
+#include <BRepMesh_FaceDiscret.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepMesh_MeshAlgoFactory.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <IMeshData_Face.hxx>
 #include <Poly.hxx>
 #include <Poly_Triangulation.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 namespace scene {
@@ -52,6 +58,49 @@ bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVer
 }
 
 namespace {
+
+uint64_t trianglesOf(const TopoDS_Face& face) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation)& t = BRep_Tool::Triangulation(face, location);
+    return t.IsNull() ? 0 : uint64_t(t->NbTriangles());
+}
+
+// Open CASCADE's own meshing of a face, then its triangles counted; skipped once the budget
+// is spent. Faces are meshed on the mesher's threads, so the budget is atomic.
+class CountingAlgo : public IMeshTools_MeshAlgo {
+  public:
+    CountingAlgo(const Handle(IMeshTools_MeshAlgo) & inner, MeshBudget& budget)
+        : inner_(inner), budget_(budget) {}
+    void Perform(const IMeshData::IFaceHandle& face, const IMeshTools_Parameters& parameters,
+                 const Message_ProgressRange& range) override {
+        if (budget_.stop() || inner_.IsNull()) return;
+        // A triangulation the face had (read from a BREP file) was counted before meshing
+        // began, and this one replaces it.
+        const uint64_t before = trianglesOf(face->GetFace());
+        inner_->Perform(face, parameters, range);
+        const uint64_t after = trianglesOf(face->GetFace());
+        const uint64_t total = budget_.triangles.fetch_add(after - before) + (after - before);
+        if (total > budget_.maxTriangles) budget_.over = true;
+        if (before == 0) ++budget_.facesMeshed;
+    }
+
+  private:
+    Handle(IMeshTools_MeshAlgo) inner_;
+    MeshBudget& budget_;
+};
+
+class CountingFactory : public IMeshTools_MeshAlgoFactory {
+  public:
+    explicit CountingFactory(MeshBudget& budget) : budget_(budget) {}
+    Handle(IMeshTools_MeshAlgo) GetAlgo(const GeomAbs_SurfaceType type,
+                                        const IMeshTools_Parameters& parameters) const override {
+        return new CountingAlgo(inner_->GetAlgo(type, parameters), budget_);
+    }
+
+  private:
+    Handle(IMeshTools_MeshAlgoFactory) inner_ = new BRepMesh_MeshAlgoFactory;
+    MeshBudget& budget_;
+};
 
 // The closest point of triangle a, b, c to p, by the triangle's Voronoi regions.
 glm::vec3 closestOnTriangle(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
@@ -147,6 +196,36 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
 }
 
 } // namespace
+
+void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& parameters,
+                 MeshBudget& budget, const Message_ProgressRange& range) {
+    // Faces that keep the triangulations they have (a BREP file may hold some, which the
+    // mesher keeps where they are fine enough) are never handed to the algorithms: count them
+    // first, each face once. Where they alone pass the budget, they go, and every face is
+    // meshed at the deflection asked for, so that a larger one can help.
+    std::set<const void*> counted;
+    uint64_t stored = 0;
+    uint32_t storedFaces = 0;
+    for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next())
+        if (counted.insert(e.Current().TShape().get()).second) {
+            const uint64_t t = trianglesOf(TopoDS::Face(e.Current()));
+            stored += t;
+            storedFaces += t > 0;
+        }
+    if (stored > budget.maxTriangles) {
+        BRepTools::Clean(shape);
+    } else {
+        budget.triangles += stored;
+        budget.facesMeshed += storedFaces;
+    }
+    // BRepMesh_IncrementalMesh's own context, with the face step's algorithms wrapped.
+    Handle(BRepMesh_Context) context = new BRepMesh_Context(parameters.MeshAlgo);
+    context->SetFaceDiscret(new BRepMesh_FaceDiscret(new CountingFactory(budget)));
+    BRepMesh_IncrementalMesh mesher;
+    mesher.SetShape(shape);
+    mesher.ChangeParameters() = parameters;
+    mesher.Perform(context, range);
+}
 
 void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
                   double deflection, double angularDeflection, uint32_t levels,

@@ -3,10 +3,13 @@
 // levels of detail as coarser tessellations of the same faces.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
+#include <IMeshTools_Parameters.hxx>
+#include <Message_ProgressRange.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
@@ -19,6 +22,26 @@ namespace scene {
 // Appends the triangles of `face` as the next part of scene.geometries.back(), whose vertices
 // start at `geometryFirstVertex`; false when the face has none.
 bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex);
+
+// What one tessellation may take: its triangles, counted face by face as the mesher's
+// threads finish them, and a flag another thread may set to stop it.
+struct MeshBudget {
+    uint64_t maxTriangles = 0;
+    const std::atomic<bool>* cancel = nullptr;
+    std::atomic<uint64_t> triangles{0};
+    std::atomic<uint32_t> facesMeshed{0}; // faces counted, with triangles kept or new
+    std::atomic<bool> over{false};
+    bool stop() const { return over || (cancel && *cancel); }
+};
+
+// BRepMesh_IncrementalMesh(shape, parameters) with the faces' triangles counted into
+// `budget`, those they already have first (dropped, and the faces meshed anew, where those
+// alone pass the budget), each face's new ones as soon as it is meshed: once they
+// pass budget.maxTriangles (or budget.cancel is set) no further face is begun, and `range`'s
+// indicator should report a break (budget.stop()) so that Open CASCADE leaves the face it is in.
+// The shape is then partly meshed; the caller throws it away.
+void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& parameters,
+                 MeshBudget& budget, const Message_ProgressRange& range);
 
 // A distinct shape's faces, and the full-detail geometry built from them.
 struct CadShapeFaces {

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <map>
+
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IGESCAFControl_Reader.hxx>
@@ -15,6 +17,10 @@
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
@@ -166,7 +172,8 @@ Handle(XSControl_WorkSession) sessionOf(IGESCAFControl_Reader& reader) {
 // Returns what the reading dropped.
 template <typename Reader>
 ReaderLosses transfer(Reader& reader, const std::string& path, const std::string& format,
-                      Handle(TDocStd_Document) & doc, const CadProgress& progress) {
+                      Handle(TDocStd_Document) & doc, const CadProgress& progress,
+                      const std::atomic<bool>* cancel) {
     reader.SetColorMode(true);
     reader.SetNameMode(true);
     reader.SetLayerMode(false);
@@ -179,11 +186,83 @@ ReaderLosses transfer(Reader& reader, const std::string& path, const std::string
     if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
     if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
     Handle(ProgressRelay) relay;
-    if (!reader.Transfer(doc, startStage(relay, progress, "translating")))
+    if (!reader.Transfer(doc, startStage(relay, progress, "translating", cancelled(cancel))))
         throw Bad("no shapes could be read from the " + format + " file");
     return readerLosses(sessionOf(reader));
 }
+// The sub-shape colours of `leaf` that touch a face of `part`, by the faces' TShapes (a
+// sub-shape's location is the product's, which the parts no longer carry).
+std::vector<std::pair<TopoDS_Shape, Rgba>>
+colorsTouching(const TopoDS_Shape& part, const std::multimap<const void*, size_t>& byFace,
+               const Leaf& leaf) {
+    std::vector<bool> taken(leaf.subColors.size(), false);
+    std::vector<std::pair<TopoDS_Shape, Rgba>> touching;
+    for (TopExp_Explorer e(part, TopAbs_FACE); e.More(); e.Next()) {
+        const auto [first, last] = byFace.equal_range(e.Current().TShape().get());
+        for (auto it = first; it != last; ++it)
+            if (!taken[it->second]) {
+                taken[it->second] = true;
+                touching.push_back(leaf.subColors[it->second]);
+            }
+    }
+    return touching;
+}
+
+// `leaf` split into its solids and the faces of no solid.
+void appendSplit(const Leaf& leaf, const std::string& group, std::vector<Leaf>& out) {
+    std::multimap<const void*, size_t> byFace; // face TShape -> sub-colour index
+    for (size_t i = 0; i < leaf.subColors.size(); ++i) {
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(leaf.subColors[i].first, TopAbs_FACE, faces);
+        for (int f = 1; f <= faces.Extent(); ++f) byFace.emplace(faces(f).TShape().get(), i);
+    }
+    auto add = [&](TopoDS_Shape part, const std::string& name) {
+        Leaf& piece = out.emplace_back();
+        piece.world = leaf.world.Multiplied(part.Location().Transformation());
+        piece.subColors = colorsTouching(part, byFace, leaf);
+        part.Location(TopLoc_Location());
+        piece.shape = part;
+        piece.name = name;
+        piece.product = leaf.product.empty() ? std::string() : leaf.product + " " + name;
+        piece.group = group;
+        piece.color = leaf.color;
+    };
+    int n = 0;
+    for (TopExp_Explorer e(leaf.shape, TopAbs_SOLID); e.More(); e.Next())
+        add(e.Current(), "solid " + std::to_string(++n));
+    TopoDS_Compound free;
+    BRep_Builder builder;
+    builder.MakeCompound(free);
+    bool any = false;
+    for (TopExp_Explorer e(leaf.shape, TopAbs_FACE, TopAbs_SOLID); e.More(); e.Next(), any = true)
+        builder.Add(free, e.Current());
+    if (any) add(free, "free faces");
+}
+
 } // namespace
+
+std::vector<Leaf> splitSolids(std::vector<Leaf> leaves, const std::string& stem) {
+    std::vector<Leaf> out;
+    out.reserve(leaves.size());
+    uint32_t unnamed = 0;
+    for (Leaf& leaf : leaves) {
+        int solids = 0;
+        for (TopExp_Explorer e(leaf.shape, TopAbs_SOLID); e.More() && solids < 2; e.Next())
+            ++solids;
+        const bool freeFaces =
+            solids > 0 && TopExp_Explorer(leaf.shape, TopAbs_FACE, TopAbs_SOLID).More();
+        if (solids < 2 && !freeFaces) {
+            out.push_back(std::move(leaf));
+            continue;
+        }
+        const std::string name = !leaf.name.empty() ? leaf.name
+                                 : !leaf.product.empty()
+                                     ? leaf.product
+                                     : stem + " compound " + std::to_string(++unnamed);
+        appendSplit(leaf, joinPath(leaf.group, name), out);
+    }
+    return out;
+}
 
 Format formatOf(const std::string& path) {
     const std::string ext = lowercase(fs::path(path).extension().string());
@@ -194,7 +273,8 @@ Format formatOf(const std::string& path) {
 }
 
 std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
-                          ReaderLosses& losses, double& sewTolerance) {
+                          ReaderLosses& losses, double& sewTolerance,
+                          const std::atomic<bool>* cancel) {
     DocumentGuard guard;
     // The first reader of each kind registers the toolkit's parameters, once per process.
     std::optional<OcctLeaksIgnored> ignored(std::in_place);
@@ -205,11 +285,11 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
         reader.SetViewMode(false);
-        losses = transfer(reader, path, "STEP", guard.doc, progress);
+        losses = transfer(reader, path, "STEP", guard.doc, progress, cancel);
     } else {
         IGESCAFControl_Reader reader;
         ignored.reset();
-        losses = transfer(reader, path, "IGES", guard.doc, progress);
+        losses = transfer(reader, path, "IGES", guard.doc, progress, cancel);
         const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
         if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
     }
@@ -217,7 +297,7 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
 }
 
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
-                           const CadProgress& progress) {
+                           const CadProgress& progress, const std::atomic<bool>* cancel) {
     // BRepTools::Read reports a wrong header on stdout: check it here first.
     std::ifstream in(path, std::ios::binary);
     std::string head(256, '\0');
@@ -233,7 +313,8 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
     BRep_Builder builder;
     const CoutCapture capture;
     Handle(ProgressRelay) relay;
-    if (!BRepTools::Read(shape, path.c_str(), builder, startStage(relay, progress, "reading")) ||
+    if (!BRepTools::Read(shape, path.c_str(), builder,
+                         startStage(relay, progress, "reading", cancelled(cancel))) ||
         shape.IsNull()) {
         const std::string said = capture.firstLine();
         throw Bad("not a readable BREP file" + (said.empty() ? "" : " (" + said + ")"));

@@ -3,6 +3,8 @@
 // cad_loader.h it holds Open CASCADE types.
 #pragma once
 
+#include <atomic>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -50,12 +52,15 @@ class CoutCapture {
     std::streambuf* saved_;
 };
 
-// Hands OCCT's progress of one stage on to a CadProgress (OCCT serialises Show calls).
+// Hands OCCT's progress of one stage on to a CadProgress (OCCT serialises Show calls), and
+// tells OCCT to stop (UserBreak, polled by the readers and the mesher) while `stop` says so.
 class ProgressRelay : public Message_ProgressIndicator {
   public:
-    ProgressRelay(const CadProgress& to, const char* stage) : to_(to), stage_(stage) {
+    ProgressRelay(const CadProgress& to, const char* stage, std::function<bool()> stop)
+        : to_(to), stage_(stage), stop_(std::move(stop)) {
         if (to_) to_(stage_, 0.0);
     }
+    Standard_Boolean UserBreak() override { return stop_ && stop_(); }
 
   protected:
     void Show(const Message_ProgressScope&, const Standard_Boolean) override {
@@ -65,13 +70,20 @@ class ProgressRelay : public Message_ProgressIndicator {
   private:
     const CadProgress& to_;
     const char* stage_;
+    std::function<bool()> stop_;
 };
 
-// A progress range for `stage` that reports to `to` while `relay` lives.
+// A progress range for `stage` that reports to `to` while `relay` lives, and breaks off
+// while `stop` returns true.
 inline Message_ProgressRange startStage(Handle(ProgressRelay) & relay, const CadProgress& to,
-                                        const char* stage) {
-    relay = new ProgressRelay(to, stage);
+                                        const char* stage, std::function<bool()> stop = {}) {
+    relay = new ProgressRelay(to, stage, std::move(stop));
     return relay->Start();
+}
+
+// The stop test of a `cancel` flag that may be null.
+inline std::function<bool()> cancelled(const std::atomic<bool>* cancel) {
+    return [cancel] { return cancel && cancel->load(); };
 }
 using Rgba = Quantity_ColorRGBA;
 
@@ -89,12 +101,22 @@ struct Leaf {
 
 // The leaves of a STEP or IGES file with names and colours; `losses`: what the reader dropped;
 // `sewTolerance`: for IGES, the file's resolution, within which its faces are sewn (else
-// left as it is). Throws Bad with the reader's verdict.
+// left as it is). Throws Bad with the reader's verdict. Translation stops while `cancel` is
+// set (the caller then says so).
 std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
-                          ReaderLosses& losses, double& sewTolerance);
+                          ReaderLosses& losses, double& sewTolerance,
+                          const std::atomic<bool>* cancel);
 
 // A BREP file's shape as one leaf named `stem`. Throws Bad.
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
-                           const CadProgress& progress);
+                           const CadProgress& progress, const std::atomic<bool>* cancel);
+
+// Each leaf whose shape holds several solids (a compound, as BREP files and some STEP products
+// are), or a solid beside faces of no solid, becomes one leaf per solid, so that a solid is an
+// object of its own to pick and select as a whole. They are named "solid N" (N from 1, in
+// TopExp_Explorer order) under the compound's path (its name, else its product's, else "<stem>
+// compound N"); the faces of no solid, if any, become one more leaf, "free faces". Each keeps
+// the compound's colour and the sub-shape colours that touch its faces. Other leaves stay.
+std::vector<Leaf> splitSolids(std::vector<Leaf> leaves, const std::string& stem);
 
 } // namespace scene::cad

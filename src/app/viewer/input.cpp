@@ -350,6 +350,9 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Loaded:
         step([this] { waitForLoads(); }, true);
         break;
+    case ScriptOp::Cancel:
+        step([this] { viewer_.cancelLoads(); }, true);
+        break;
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
         break;

@@ -373,6 +373,8 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         ImGui::TextWrapped("%s", loading->path.c_str());
         const double shown = loading->stage.empty() ? t - std::floor(t) : loading->fraction;
         ImGui::ProgressBar(float(shown), ImVec2(-1, 0), label);
+        // CAD loads stop at their next face or progress step; glTF loads run to their end.
+        if (ImGui::Button("Cancel")) actions.cancelLoad = true;
     }
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen))
         rendering(settings, view, info);

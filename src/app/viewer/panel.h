@@ -42,6 +42,7 @@ struct PanelActions {
     std::optional<scene::PartRanges> hideParts, showParts; // a tree row's checkbox
     bool hide = false, isolate = false, showAll = false;
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
+    bool cancelLoad = false;         // stop the model loading (and those queued behind it)
 };
 
 // A part under the cursor or selected, as the pick reported it.

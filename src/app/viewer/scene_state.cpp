@@ -56,10 +56,12 @@ void SceneState::launchNext() {
     single.copies = 1;
     // Loading touches no Vulkan object and nothing the frames use: safe on its own thread.
     auto progress = std::make_shared<LoadProgress>();
-    pending_ =
-        PendingOpen{std::async(std::launch::async,
-                               [single, progress] { return loadScene(single, progress.get()); }),
-                    queued_.front(), std::chrono::steady_clock::now(), progress};
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    pending_ = PendingOpen{std::async(std::launch::async,
+                                      [single, progress, cancel] {
+                                          return loadScene(single, progress.get(), cancel.get());
+                                      }),
+                           queued_.front(), std::chrono::steady_clock::now(), progress, cancel};
     queued_.pop_front();
 }
 
@@ -78,6 +80,11 @@ SceneState::Change SceneState::poll(SceneSettings& settings) {
     opened();
     settings = done.settings;
     return Change::Model;
+}
+
+void SceneState::cancelOpen() {
+    queued_.clear();
+    if (pending_) *pending_->cancel = true;
 }
 
 std::optional<SceneState::Loading> SceneState::loading() const {

@@ -5,6 +5,7 @@
 // in flight still use lives on in their slots.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <deque>
 #include <future>
@@ -47,6 +48,9 @@ class SceneState {
         double fraction = 0.0;
     };
     std::optional<Loading> loading() const;
+    // The panel's Cancel: the drops queued are forgotten and the load running is told to
+    // stop; it fails with "<file>: cancelled" and the scene drawn stays.
+    void cancelOpen();
     // Targets at the window's new size.
     void resize(VkExtent2D extent);
     // R: shaders from disk, caches cleared; a compile error keeps the last good pipeline.
@@ -87,7 +91,8 @@ class SceneState {
         std::future<LoadedScene> scene;
         SceneSettings settings;
         std::chrono::steady_clock::time_point start;
-        std::shared_ptr<LoadProgress> progress; // written by the worker
+        std::shared_ptr<LoadProgress> progress;    // written by the worker
+        std::shared_ptr<std::atomic<bool>> cancel; // read by the worker
     };
     std::deque<SceneSettings> queued_;   // drops waiting for the one loading
     std::optional<PendingOpen> pending_; // destroyed first: waits for the worker

@@ -46,6 +46,7 @@ const CommandSpec commandSpecs[] = {
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
+    {"cancel", ScriptOp::Cancel, 0, "cancel"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
     {"quit", ScriptOp::Quit, 0, "quit"},
 };
@@ -79,7 +80,8 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     if (!spec)
         fail("unknown command '" + name +
              "' (known: key, move, click, drag, box, object, node, scroll, resize, renderer, mode, "
-             "culling, freeze, msaa, copies, section, screenshot, drop, loaded, frames, quit)");
+             "culling, freeze, msaa, copies, section, screenshot, drop, loaded, cancel, frames, "
+             "quit)");
     command.op = spec->op;
 
     std::vector<std::string> args;

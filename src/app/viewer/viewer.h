@@ -61,6 +61,7 @@ class Viewer {
     void toggleMeasure();
     bool measuring() const { return measure_.on(); }
     void measured(const render::PickReading& pick);               // a click's pick in measure mode
+    void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
     bool loading() const { return scene_.loading().has_value(); } // a dropped model
 
   private:

@@ -1,0 +1,254 @@
+// cad_cache.cpp - the CAD tessellation cache (cad_cache.h): keys, entries, and loadCad
+// through them.
+#include "scene/cad_cache.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <unistd.h>
+
+#include "scene/hash64.h"
+#include "scene/scene_codec.h"
+
+namespace scene {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kMagic[8] = {'i', 'd', 'v', 'i', 'e', 'w', 'T', 'C'};
+
+void putKey(ByteWriter& out, const CadCacheKey& key) {
+    out.putString(key.path);
+    out.put(key.fileSize);
+    out.put(key.contentHash);
+    out.put(key.deflection);
+    out.put(key.angularDeflection);
+    out.put(key.levels);
+}
+
+CadCacheKey getKey(ByteReader& in) {
+    CadCacheKey key;
+    key.path = in.getString();
+    key.fileSize = in.get<uint64_t>();
+    key.contentHash = in.get<uint64_t>();
+    key.deflection = in.get<double>();
+    key.angularDeflection = in.get<double>();
+    key.levels = in.get<uint32_t>();
+    return key;
+}
+
+void putResult(ByteWriter& out, const CadLoadResult& r) {
+    encodeScene(r.scene, out);
+    out.put(uint64_t(r.warnings.size()));
+    for (const std::string& w : r.warnings) out.putString(w);
+    out.put(r.deflection);
+    out.put(r.faces);
+    out.put(r.facesFailed);
+}
+
+CadLoadResult getResult(ByteReader& in) {
+    CadLoadResult r;
+    r.scene = decodeScene(in);
+    const uint64_t warnings = in.get<uint64_t>();
+    for (uint64_t i = 0; i < warnings; ++i) r.warnings.push_back(in.getString());
+    r.deflection = in.get<double>();
+    r.faces = in.get<uint32_t>();
+    r.facesFailed = in.get<uint32_t>();
+    if (!in.done()) throw std::runtime_error("bytes after the load");
+    return r;
+}
+
+// The whole file in one read: entries of large models run to hundreds of megabytes.
+std::optional<std::string> readWhole(const fs::path& file) {
+    std::error_code ec;
+    const uintmax_t size = fs::file_size(file, ec);
+    std::ifstream in(file, std::ios::binary);
+    if (ec || !in) return std::nullopt;
+    std::string bytes(size_t(size), '\0');
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    if (size_t(in.gcount()) != bytes.size()) return std::nullopt;
+    return bytes;
+}
+
+std::optional<CadLoadResult> parseEntry(const std::string& bytes, const CadCacheKey& key,
+                                        std::string& why) {
+    ByteReader in(bytes);
+    try {
+        char magic[sizeof kMagic];
+        for (char& c : magic) c = in.get<char>();
+        if (!std::equal(std::begin(magic), std::end(magic), std::begin(kMagic))) {
+            why = "not an idview cache entry";
+            return std::nullopt;
+        }
+        if (const uint32_t version = in.get<uint32_t>(); version != kCadCacheVersion) {
+            why = "format version " + std::to_string(version) + ", not " +
+                  std::to_string(kCadCacheVersion);
+            return std::nullopt;
+        }
+        ByteReader keyIn(in.getBytes());
+        if (!(getKey(keyIn) == key) || !keyIn.done()) {
+            why = "stale (the file or the settings changed)";
+            return std::nullopt;
+        }
+        const std::string_view payload = in.getBytes();
+        const uint64_t checksum = in.get<uint64_t>();
+        if (!in.done()) throw std::runtime_error("bytes after the checksum");
+        if (hash64(payload.data(), payload.size()) != checksum) {
+            why = "checksum mismatch";
+            return std::nullopt;
+        }
+        ByteReader payloadIn(payload);
+        return getResult(payloadIn);
+    } catch (const std::exception& e) {
+        why = std::string("damaged (") + e.what() + ")";
+        return std::nullopt;
+    }
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+} // namespace
+
+fs::path cadCacheFolder() {
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && fs::path(xdg).is_absolute())
+        return fs::path(xdg) / "idview";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return fs::path(home) / ".cache" / "idview";
+    return {};
+}
+
+std::optional<CadCacheKey> cadCacheKey(const std::string& path, const CadOptions& options,
+                                       uint32_t levels) {
+    std::error_code ec;
+    CadCacheKey key;
+    key.path = fs::weakly_canonical(fs::absolute(path, ec), ec).string();
+    if (ec) return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    // A megabyte at a time, each chunk's hash seeding the next.
+    std::string chunk(size_t(1) << 20, '\0');
+    uint64_t hash = kHashSeed;
+    while (in) {
+        in.read(chunk.data(), std::streamsize(chunk.size()));
+        const auto got = size_t(in.gcount());
+        if (got == 0) break;
+        hash = hash64(chunk.data(), got, hash);
+        key.fileSize += got;
+    }
+    if (in.bad()) return std::nullopt;
+    key.contentHash = hash;
+    key.deflection = options.deflection;
+    key.angularDeflection = options.angularDeflection;
+    key.levels = levels;
+    return key;
+}
+
+fs::path cadCacheEntry(const fs::path& folder, const CadCacheKey& key) {
+    ByteWriter name;
+    name.putString(key.path);
+    name.put(key.deflection);
+    name.put(key.angularDeflection);
+    name.put(key.levels);
+    char hex[32];
+    std::snprintf(
+        hex, sizeof hex, "%016llx.tess",
+        static_cast<unsigned long long>(hash64(name.bytes().data(), name.bytes().size())));
+    return folder / hex;
+}
+
+std::optional<CadLoadResult> readCadCache(const fs::path& entry, const CadCacheKey& key,
+                                          std::string& why) {
+    std::error_code ec;
+    if (!fs::exists(entry, ec)) {
+        why = "no entry";
+        return std::nullopt;
+    }
+    const std::optional<std::string> bytes = readWhole(entry);
+    if (!bytes) {
+        why = "entry unreadable";
+        return std::nullopt;
+    }
+    return parseEntry(*bytes, key, why);
+}
+
+std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
+                          const CadLoadResult& result) {
+    ByteWriter keyBytes, payload, head, tail;
+    putKey(keyBytes, key);
+    putResult(payload, result);
+    for (char c : kMagic) head.put(c);
+    head.put(kCadCacheVersion);
+    head.putString(keyBytes.bytes());
+    head.put(uint64_t(payload.bytes().size())); // the payload's length prefix
+    tail.put(hash64(payload.bytes().data(), payload.bytes().size()));
+
+    std::error_code ec;
+    fs::create_directories(entry.parent_path(), ec);
+    if (ec) return entry.parent_path().string() + ": " + ec.message();
+    // Unique per process and call, in the entry's folder so that the rename stays atomic.
+    static std::atomic<uint32_t> serial{0};
+    fs::path temporary = entry;
+    temporary += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
+    {
+        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+        for (const std::string* part : {&head.bytes(), &payload.bytes(), &tail.bytes()})
+            file.write(part->data(), std::streamsize(part->size()));
+        file.close();
+        if (!file) {
+            fs::remove(temporary, ec);
+            return temporary.string() + ": write failed";
+        }
+    }
+    fs::rename(temporary, entry, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        return entry.string() + ": " + ec.message();
+    }
+    return {};
+}
+
+CadLoadResult loadCadCached(const std::string& path, const CadOptions& options,
+                            const CadProgress& progress, uint32_t levels,
+                            const std::atomic<bool>* cancel) {
+    const auto start = std::chrono::steady_clock::now();
+    const fs::path folder = cadCacheFolder();
+    const std::optional<CadCacheKey> key =
+        folder.empty() ? std::nullopt : cadCacheKey(path, options, levels);
+    if (!key) {
+        CadLoadResult result = loadCad(path, options, progress, levels, cancel);
+        result.cacheNote = folder.empty() ? "no cache folder (neither XDG_CACHE_HOME nor HOME)"
+                                          : "file not hashed";
+        return result;
+    }
+    const fs::path entry = cadCacheEntry(folder, *key);
+    std::string why;
+    if (std::optional<CadLoadResult> hit = readCadCache(entry, *key, why)) {
+        // Levels are coarser: full detail's triangles are what the limit counts.
+        uint64_t fullDetail = 0;
+        for (const Geometry& g : hit->scene.geometries)
+            if (g.level == 0) fullDetail += g.triangleCount;
+        if (fullDetail > options.maxTriangles)
+            throw ModelError(
+                path + ": " +
+                triangleLimitReason(fullDetail, options.maxTriangles, hit->deflection));
+        hit->cache = "hit";
+        hit->cacheMs = msSince(start);
+        return std::move(*hit);
+    }
+    CadLoadResult result = loadCad(path, options, progress, levels, cancel);
+    result.cache = "miss";
+    result.cacheNote = why;
+    const auto writeStart = std::chrono::steady_clock::now();
+    if (const std::string error = writeCadCache(entry, *key, result); !error.empty())
+        result.warnings.push_back("tessellation cache not written: " + error);
+    result.cacheMs = msSince(writeStart);
+    return result;
+}
+
+} // namespace scene

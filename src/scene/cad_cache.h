@@ -1,0 +1,66 @@
+// cad_cache.h - CAD tessellations kept on disk, so that a file opened again skips Open
+// CASCADE: one entry per file path and tessellation settings in cadCacheFolder(), holding
+// what loadCad returned (the scene with its levels of detail, the warnings, the deflection
+// used, the face counts). An entry is used only when its magic, format version, key (the
+// path, the file's size and content hash, the deflections and levels asked for) and the
+// checksum of its payload all match and the payload decodes to a valid scene; anything else
+// is a miss, and the entry is written anew (to a temporary file renamed over it, so that a
+// crash never leaves half an entry under the entry's name). This header stays free of Open
+// CASCADE types.
+//
+// Entry layout: "idviewTC" (8 bytes), format version (u32), key size (u64) and key, payload
+// size (u64), payload checksum (u64, hash64), payload. Host byte order.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "scene/cad_loader.h"
+
+namespace scene {
+
+// Bumped whenever the entry layout or what the loader puts in a scene changes.
+constexpr uint32_t kCadCacheVersion = 1;
+
+struct CadCacheKey {
+    std::string path; // absolute, symbolic links resolved
+    uint64_t fileSize = 0;
+    uint64_t contentHash = 0; // hash64 of the file's bytes
+    double deflection = 0.0;  // as asked (0: automatic)
+    double angularDeflection = 0.0;
+    uint32_t levels = 1;
+    bool operator==(const CadCacheKey&) const = default;
+};
+
+// $XDG_CACHE_HOME/idview where that variable holds an absolute path (as the XDG base
+// directory specification asks), else $HOME/.cache/idview; empty where neither is set.
+std::filesystem::path cadCacheFolder();
+
+// Reads and hashes the file; nullopt where it cannot be read (loadCad then says why).
+std::optional<CadCacheKey> cadCacheKey(const std::string& path, const CadOptions& options,
+                                       uint32_t levels);
+
+// The entry's file in `folder`: named by a hash of the path and settings, so that a changed
+// file replaces its own entry.
+std::filesystem::path cadCacheEntry(const std::filesystem::path& folder, const CadCacheKey& key);
+
+// The load the entry holds, or nullopt with `why` ("no entry", "truncated", "checksum
+// mismatch", ...) when it is missing or not to be trusted.
+std::optional<CadLoadResult> readCadCache(const std::filesystem::path& entry,
+                                          const CadCacheKey& key, std::string& why);
+
+// Writes `result` as the entry; returns "" or why it could not.
+std::string writeCadCache(const std::filesystem::path& entry, const CadCacheKey& key,
+                          const CadLoadResult& result);
+
+// loadCad through the cache: a valid entry is returned (CadLoadResult::cache "hit", no
+// progress reported, the --max-triangles limit still applied); otherwise the file is loaded
+// ("miss", cacheNote saying why) and its entry written, a failure to write being a warning.
+CadLoadResult loadCadCached(const std::string& path, const CadOptions& options,
+                            const CadProgress& progress = {}, uint32_t levels = 1,
+                            const std::atomic<bool>* cancel = nullptr);
+
+} // namespace scene
