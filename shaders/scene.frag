@@ -64,7 +64,7 @@ void main() {
     if ((frame.flags & FRAME_TINT_LEVELS) != 0u) base = levelTint(draw.lodLevel);
 #if IDV_NO_ID
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.
-    outColor = vec4(headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz), 1.0);
+    outColor = vec4(headlight(base, inWorldNormal, toViewer(frame, inWorldPos)), 1.0);
 #else
 #if IDV_PART_FROM_EARLIER_STAGE
     uint localPart = inPartIndex;
@@ -90,7 +90,7 @@ void main() {
     outPartId = uniquePartId;
 
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
-    vec3 color = headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
+    vec3 color = headlight(base, inWorldNormal, toViewer(frame, inWorldPos));
 
     PickRef pick = PickRef(frame.pickAddress);
     // With MSAA, sample 0 decides, as in the resolve of the ID attachment (see targets.h):

@@ -80,7 +80,9 @@ struct Vertex {
 // Per-frame constants, in a device-local buffer per frame slot.
 struct FrameData {
     mat4 viewProj;
-    vec4 eyePosition; // world space, w unused
+    // Toward the viewer (prelude.glsl's toViewer): perspective, the eye's world position and
+    // w 1; orthographic, the unit direction toward the viewer, the same at every point, and w 0
+    vec4 eyePosition;
     uvec2 viewport;
     float partColorWeight; // 0: material colour only, 1: part colour only
     uint flags;
@@ -121,7 +123,9 @@ struct FrameData {
     // Where the lists hold levels of detail (cull.glsl's lodChosen), the pixels an object's
     // level may be off by; 0 elsewhere.
     float lodErrorPixels;
-    uint lodUnused;
+    // The distance of the camera's position from the world origin, in either projection: the
+    // float rounding the culling tests allow for grows with it (cull.glsl's viewBox)
+    float eyeReach;
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).
