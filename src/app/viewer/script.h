@@ -18,6 +18,8 @@
 //   3   mode push           switch per-draw mode
 //   3.5 msaa 4              samples per pixel
 //   3.6 copies 3            model copies, as the panel's field does
+//   3.7 view top            a standard view (scene/standard_view.h), as the keys 1, 3, 7, 0 do
+//   3.8 ortho on            orthographic projection (off: perspective), as O does
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
 //   4.6 loaded              wait until every dropped model has loaded (they load while
@@ -54,6 +56,8 @@ enum class ScriptOp {
     Freeze,
     Msaa,
     Copies,
+    View,
+    Ortho,
     Screenshot,
     Drop,
     Loaded,
