@@ -55,8 +55,13 @@ Camera turnedTo(const Camera& camera, const StandardView& view, glm::vec3 modelU
     const glm::mat3 frame = modelFrame(modelUp);
     Camera turned = camera;
     const float distance = glm::length(camera.eye - camera.target);
-    turned.eye = camera.target + glm::normalize(frame * view.toEye) * distance;
-    turned.up = glm::normalize(frame * view.screenUp);
+    const glm::vec3 toEye = glm::normalize(frame * view.toEye);
+    turned.eye = camera.target + toEye * distance;
+    // lookAt turns the model's up into the screen's up everywhere but along it, and keeping it
+    // keeps what turns about the up axis (--camera-path orbit) doing so; top and bottom look
+    // along it and take the screen's up.
+    const bool alongUp = std::abs(glm::dot(toEye, frame[2])) > 0.999f;
+    turned.up = alongUp ? glm::normalize(frame * view.screenUp) : frame[2];
     return turned;
 }
 

@@ -28,7 +28,8 @@ std::string standardViewNames();                             // "front, back, ..
 glm::mat3 modelFrame(glm::vec3 modelUp);
 
 // `camera` turned to `view` around its target, at the same distance (so a fitted view stays
-// fitted), in a model whose up axis is `modelUp`. Its up vector is the screen's up.
+// fitted), in a model whose up axis is `modelUp`. Its up vector stays the model's, except
+// for top and bottom, which look along it and take the screen's up.
 Camera turnedTo(const Camera& camera, const StandardView& view, glm::vec3 modelUp);
 
 } // namespace scene
