@@ -80,9 +80,7 @@ struct Vertex {
 // Per-frame constants, in a device-local buffer per frame slot.
 struct FrameData {
     mat4 viewProj;
-    // Toward the viewer (prelude.glsl's toViewer): perspective, the eye's world position and
-    // w 1; orthographic, the unit direction toward the viewer, the same at every point, and w 0
-    vec4 eyePosition;
+    vec4 eyePosition; // the eye, w 1; ortho: unit direction toward the viewer, w 0 (toViewer)
     uvec2 viewport;
     float partColorWeight; // 0: material colour only, 1: part colour only
     uint flags;
@@ -123,9 +121,7 @@ struct FrameData {
     // Where the lists hold levels of detail (cull.glsl's lodChosen), the pixels an object's
     // level may be off by; 0 elsewhere.
     float lodErrorPixels;
-    // The distance of the camera's position from the world origin, in either projection: the
-    // float rounding the culling tests allow for grows with it (cull.glsl's viewBox)
-    float eyeReach;
+    float eyeReach; // |eye| in either projection: cull.glsl's rounding margins grow with it
 };
 
 // A part without a material of its own (FrameData::partMaterialsAddress).

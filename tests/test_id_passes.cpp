@@ -3,7 +3,7 @@
 // applied on the CPU to the ID image; box selection and the visible parts against the IDs
 // in the ID image; hidden and isolated parts against the unhidden image and a CPU ray cast
 // (hidden parts never reach the ID image, picks go through them); at full detail and with
-// every object at its coarsest level of detail.
+// every object at its coarsest level of detail, and in orthographic projection.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,8 +29,9 @@ struct Fixture {
 };
 
 // The scene at full detail, or with every object at its coarsest level of detail
-// (scene/lod.h), whose geometry the ray cast then follows too.
-enum class Detail { Full, Coarsest };
+// (scene/lod.h), whose geometry the ray cast then follows too; or at full detail seen from
+// the isometric view in orthographic projection (the ray cast's rays then run parallel).
+enum class Detail { Full, Coarsest, Ortho };
 
 Fixture& fixture(Detail detail) {
     static std::map<Detail, Fixture> fixtures;
@@ -45,7 +46,9 @@ Fixture& fixture(Detail detail) {
         source.lodLevel = scene::maxLevels - 1;
     }
     fx.loaded = app::loadScene(source);
-    fx.camera = app::initialCamera(fx.loaded, float(W) / float(H));
+    app::CameraSettings view;
+    if (detail == Detail::Ortho) view = {scene::findStandardView("isometric"), true};
+    fx.camera = app::initialCamera(fx.loaded, float(W) / float(H), view);
     fx.ids =
         app::renderHeadless(testing_support::headlessOptions(W, H), fx.loaded.scene, fx.camera).ids;
     return fx;
@@ -54,7 +57,9 @@ Fixture& fixture(Detail detail) {
 class IdPasses : public ::testing::TestWithParam<Detail> {};
 
 std::string detailName(const ::testing::TestParamInfo<Detail>& info) {
-    return info.param == Detail::Full ? "FullDetail" : "CoarsestLevel";
+    return info.param == Detail::Full       ? "FullDetail"
+           : info.param == Detail::Coarsest ? "CoarsestLevel"
+                                            : "Ortho";
 }
 
 // Every part-ID technique in push mode, then every mode of the default technique and two
@@ -336,8 +341,10 @@ TEST_P(IdPasses, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
 
 // Showing everything again (an empty hidden set) goes back to the pipeline without the
 // hiding variant and to the unhidden image.
-// Picks, box selection, edges and hiding, at full detail and at the coarsest level of detail.
-INSTANTIATE_TEST_SUITE_P(Lavapipe, IdPasses, ::testing::Values(Detail::Full, Detail::Coarsest),
+// Picks, box selection, edges and hiding, at full detail, at the coarsest level of detail and
+// in ortho.
+INSTANTIATE_TEST_SUITE_P(Lavapipe, IdPasses,
+                         ::testing::Values(Detail::Full, Detail::Coarsest, Detail::Ortho),
                          detailName);
 
 // The coarsest level draws another image than full detail: the cases above test another
