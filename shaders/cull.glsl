@@ -73,7 +73,7 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
     vec3 center = (boxMin + boxMax) * 0.5;
     vec3 halfSize = max((boxMax - boxMin) * 0.5, vec3(0.0));
     vec3 scales = vec3(length(world[0].xyz), length(world[1].xyz), length(world[2].xyz));
-    float reach = length(world[3].xyz) + length(frame.eyePosition.xyz) +
+    float reach = length(world[3].xyz) + frame.eyeReach +
                   (length(center) + length(halfSize)) * max(scales.x, max(scales.y, scales.z));
     halfSize += reach * CULL_RELATIVE_MARGIN / max(min(scales.x, min(scales.y, scales.z)), 1e-30);
 
@@ -146,22 +146,30 @@ bool occluded(FrameData frame, BoxView view, int span) {
 // hugs a long part (a rail, a shaft seen from its side) far closer than a sphere, whose
 // nearest point may be next to the camera. All of an object's draws hold the same box and
 // the errors grow level by level, so exactly one level is chosen, by the same arithmetic in
-// every draw. Elsewhere the list holds one level of each object, which is drawn.
+// every draw. Elsewhere the list holds one level of each object, which is drawn. In ortho the
+// depth does not matter: the budget is the same for every object of one scale.
 bool lodChosen(FrameData frame, mat4 world, DrawCull c) {
     if (frame.lodErrorPixels <= 0.0) return true;
     // Pixels per model unit at depth 1: the projection's vertical scale (the length of the
     // view-projection's y row, over a rigid view) times half the viewport's height.
     vec3 yRow = vec3(frame.viewProj[0][1], frame.viewProj[1][1], frame.viewProj[2][1]);
+    float scale = max(length(world[0].xyz), max(length(world[1].xyz), length(world[2].xyz)));
+    bool finest = c.lodError < 0.0;
+    if (frame.eyePosition.w == 0.0) {
+        // Orthographic: a world unit spans the same pixels at every depth, the y row's length
+        // (2 / the view's height) times half the viewport's height; w is 1 everywhere.
+        float pixelsPerUnit = length(yRow) * 0.5 * float(frame.viewport.y);
+        float orthoBudget = frame.lodErrorPixels / (pixelsPerUnit * scale);
+        return (finest || c.lodError < orthoBudget) && !(c.lodNextError < orthoBudget);
+    }
     float wScale = length(vec3(frame.viewProj[0][3], frame.viewProj[1][3], frame.viewProj[2][3]));
     float pixelsAtUnitDepth = length(yRow) / max(wScale, 1e-30) * 0.5 * float(frame.viewport.y);
-    float scale = max(length(world[0].xyz), max(length(world[1].xyz), length(world[2].xyz)));
     // w is linear over the box, so its nearest corner has the smallest.
     mat4 mvp = frame.viewProj * world;
     vec3 halfSize = max(c.lodBoxMax - c.lodBoxMin, vec3(0.0)) * 0.5;
     float w = (mvp * vec4((c.lodBoxMin + c.lodBoxMax) * 0.5, 1.0)).w -
               abs(mvp[0].w) * halfSize.x - abs(mvp[1].w) * halfSize.y - abs(mvp[2].w) * halfSize.z;
     float depth = w / max(wScale, 1e-30);
-    bool finest = c.lodError < 0.0;
     if (!(depth > 0.0)) return finest;
     // The largest error in model units that stays under the pixels asked at that depth.
     float budget = frame.lodErrorPixels * depth / (pixelsAtUnitDepth * scale);

@@ -42,14 +42,14 @@ bool partInSet(uint64_t address, uint id) {
     return (UintsRef(address).values[id >> 5] & (1u << (id & 31u))) != 0u;
 }
 
-FrameData loadFrame() {
-    return FrameRef(push.frameAddress).frame;
+// From the surface point `worldPos` toward the viewer, not normalised: to the eye in
+// perspective (FrameData::eyePosition.w 1), the one direction of the view in ortho (w 0).
+vec3 toViewer(FrameData frame, vec3 worldPos) {
+    return frame.eyePosition.w != 0.0 ? frame.eyePosition.xyz - worldPos : frame.eyePosition.xyz;
 }
 
-// From a surface point towards the viewer, not normalised: to the eye in perspective
-// (eyePosition.w 1), the view's constant direction in orthographic views (w 0).
-vec3 toViewer(FrameData frame, vec3 worldPos) {
-    return frame.eyePosition.w == 0.0 ? frame.eyePosition.xyz : frame.eyePosition.xyz - worldPos;
+FrameData loadFrame() {
+    return FrameRef(push.frameAddress).frame;
 }
 
 ObjectData loadObject(uint64_t objectsAddress, uint objectIndex) {

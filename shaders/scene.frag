@@ -93,7 +93,7 @@ void main() {
     if (cutAway(frame, inWorldPos)) discard;
 #endif
     outColor = vec4(cap ? capColor(base, gl_FragCoord.xy)
-                        : headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz),
+                        : headlight(base, inWorldNormal, toViewer(frame, inWorldPos)),
                     1.0);
 #else
 #if IDV_PART_FROM_EARLIER_STAGE
@@ -124,7 +124,7 @@ void main() {
 
     base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
     vec3 color = cap ? capColor(base, gl_FragCoord.xy)
-                     : headlight(base, inWorldPos, inWorldNormal, frame.eyePosition.xyz);
+                     : headlight(base, inWorldNormal, toViewer(frame, inWorldPos));
 
     PickRef pick = PickRef(frame.pickAddress);
     // With MSAA, sample 0 decides, as in the resolve of the ID attachment (see targets.h):

@@ -21,10 +21,11 @@ vec3 hashColor(uint id) {
 
 // Light placed at the eye: faces turned to the viewer are bright whatever the orientation,
 // which is what CAD users expect from an inspection view. Two-sided, since CAD exports often
-// have inconsistent winding.
-vec3 headlight(vec3 base, vec3 worldPos, vec3 worldNormal, vec3 eye) {
+// have inconsistent winding. `toViewer`: from the point toward the viewer (prelude.glsl's
+// toViewer), so an orthographic view lights every point from its one direction.
+vec3 headlight(vec3 base, vec3 worldNormal, vec3 toViewer) {
     vec3 n = normalize(worldNormal);
-    vec3 v = normalize(eye - worldPos);
+    vec3 v = normalize(toViewer);
     float diffuse = abs(dot(n, v));
     vec3 linear = base * (0.2 + 0.8 * diffuse);
     return pow(linear, vec3(1.0 / 2.2)); // the colour attachment is UNORM: encode for display

@@ -81,7 +81,7 @@ struct Vertex {
 // Per-frame constants, in a device-local buffer per frame slot.
 struct FrameData {
     mat4 viewProj;
-    vec4 eyePosition; // world space, w unused
+    vec4 eyePosition; // the eye, w 1; ortho: unit direction toward the viewer, w 0 (toViewer)
     uvec2 viewport;
     float partColorWeight; // 0: material colour only, 1: part colour only
     uint flags;
@@ -122,7 +122,7 @@ struct FrameData {
     // Where the lists hold levels of detail (cull.glsl's lodChosen), the pixels an object's
     // level may be off by; 0 elsewhere.
     float lodErrorPixels;
-    uint lodUnused;
+    float eyeReach; // |eye| in either projection: cull.glsl's rounding margins grow with it
     // Section planes (scene/section.h): a fragment is cut away where dot(plane, (p, 1)) > 0
     // for any of them; unused ones are (0, 0, 0, -1). Read only by IDV_SECTION pipelines.
     vec4 sectionPlanes[SECTION_PLANES_MAX];

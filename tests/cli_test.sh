@@ -45,6 +45,25 @@ expect msaa-unsupported 1 'MSAA 8x is not supported by llvmpipe.*\(it offers 1, 
 expect msaa-4 0 '64x48' -- "$idview" --headless --validation --frames 1 --size 64x48 --msaa 4
 expect unwritable 1 "cannot write PNG '/nonexistent/x.png'" -- "$idview" --headless --frames 1 --size 64x48 --screenshot /nonexistent/x.png
 
+# --view: every name idview lists (read from its own refusal, which names them all) renders
+# a view of its own; --ortho changes the image; an unknown name is refused in one line.
+view_names=$("$idview" --view sideways 2>&1 | sed -n "s/^idview: --view expects \(.*\), not 'sideways'$/\1/p" | tr -d ',')
+expect view-unknown 2 "^idview: --view expects front, .*isometric, not 'sideways'$" -- "$idview" --view sideways
+[[ $(wc -w <<<"$view_names") -ge 7 ]] || { echo "FAIL view-names: '$view_names'"; failures=$((failures + 1)); }
+for v in $view_names; do
+    expect "view-$v" 0 '64x48' -- "$idview" --headless --validation --scene procedural:preset=small \
+        --size 64x48 --frames 1 --view "$v" --id-image "$work/view-$v.ids"
+done
+expect view-ortho 0 '64x48' -- "$idview" --headless --validation --scene procedural:preset=small \
+    --size 64x48 --frames 1 --view front --ortho --id-image "$work/view-front-ortho.ids"
+sums=$(for v in $view_names front-ortho; do md5sum <"$work/view-$v.ids"; done | sort -u | wc -l)
+if [[ $sums -eq $(($(wc -w <<<"$view_names") + 1)) ]]; then
+    echo "ok   views-differ ($sums distinct ID images)"
+else
+    echo "FAIL views-differ: $sums distinct ID images of $(($(wc -w <<<"$view_names") + 1))"
+    failures=$((failures + 1))
+fi
+
 # No driver at all: exactly one line, exit 1.
 out=$(VK_DRIVER_FILES=$work/none.json VK_ICD_FILENAMES=$work/none.json "$idview" --headless 2>&1)
 rc=$?

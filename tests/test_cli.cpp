@@ -347,3 +347,31 @@ TEST(Cli, CadTessellationFlags) {
                                                                  {"--angular-deflection", "4"}})
         EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
 }
+
+// --view takes every name of the standard views' registry, refuses others in one line that
+// lists them; --ortho switches the projection. Neither is set by default.
+TEST(Cli, ViewAndOrthoFlags) {
+    const Options none = parseArgs(std::vector<std::string>{});
+    EXPECT_EQ(none.camera.standard, nullptr);
+    EXPECT_FALSE(none.camera.ortho);
+    for (const scene::StandardView& view : scene::standardViews()) {
+        const Options o = parseArgs({"--view", view.name});
+        EXPECT_EQ(o.camera.standard, &view) << view.name;
+        EXPECT_FALSE(o.camera.ortho);
+        EXPECT_EQ(parseArgs({"--view=" + std::string(view.name), "--ortho"}).camera.standard,
+                  &view);
+    }
+    EXPECT_TRUE(parseArgs({"--ortho"}).camera.ortho);
+    try {
+        parseArgs({"--view", "sideways"});
+        ADD_FAILURE() << "--view sideways was accepted";
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "--view expects " + scene::standardViewNames() + ", not 'sideways'");
+    }
+    EXPECT_THROW(parseArgs({"--view"}), UsageError);
+    EXPECT_THROW(parseArgs({"--ortho=yes"}), UsageError);
+    const std::string text = app::usage();
+    EXPECT_NE(text.find("--view NAME"), std::string::npos);
+    EXPECT_NE(text.find("--ortho"), std::string::npos);
+}

@@ -1,9 +1,9 @@
 // test_culling.cpp - culling leaves the images exactly as they are without it
 // (render/culling.h): every technique x mode of the registry, the floors included, at 1x and
-// 4x MSAA, on every frame of a dolly path over the default model and a CAD file, frustum and
-// occlusion culling draw the ID and colour images of culling off byte for byte. The
-// counters, hidden objects, freezing, and a pyramid test shrunk by one pixel are in
-// test_culling_edges.cpp.
+// 4x MSAA, on every frame of a dolly path over the default model and a CAD file (and of an
+// orbit in orthographic projection), frustum and occlusion culling draw the ID and colour
+// images of culling off byte for byte. The counters, hidden objects, freezing, and a pyramid
+// test shrunk by one pixel are in test_culling_edges.cpp.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -40,10 +40,15 @@ struct PathCase {
     // (FRAME_VIEW_UNCHANGED), and from the fourth on every two-pass culling draws its last
     // lists again. Only occlusion culling does either, so a still case leaves frustum out.
     bool still = false;
+    // Orthographic: the opening view zoomed in to a third of the fitted distance (so the
+    // frustum leaves parts out), orbiting the target about the up axis, since an ortho dolly
+    // would keep the view's size: the frustum's planes and the pyramid with w 1 everywhere,
+    // and a near plane behind the eye.
+    bool ortho = false;
     // Frustum culling decides by boxes against the view, whatever the sample count: over the
     // default model it is tested at 1x (on the CAD file at both), which keeps the suite's
     // heaviest rendering to what can differ.
-    bool frustum() const { return !still && (msaa == 1 || std::string(scene) == "cad"); }
+    bool frustum() const { return !still && (msaa == 1 || std::string(scene) == "cad" || ortho); }
 };
 
 const char* pipelinesName(Pipelines p) {
@@ -52,7 +57,7 @@ const char* pipelinesName(Pipelines p) {
 
 void PrintTo(const PathCase& c, std::ostream* os) {
     *os << c.scene << " msaa " << c.msaa << " " << pipelinesName(c.pipelines)
-        << (c.still ? " still" : "");
+        << (c.still ? " still" : "") << (c.ortho ? " ortho" : "");
 }
 
 // Where two images first differ, for the failure message.
@@ -79,7 +84,12 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
         source.model = kCadBearing;
     }
     const app::LoadedScene loaded = app::loadScene(source);
-    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    if (c.ortho) {
+        camera = app::initialCamera(loaded, float(W) / float(H), {nullptr, true});
+        camera.eye = camera.target + (camera.eye - camera.target) / 3.0f;
+        scene::fitPlanes(camera, loaded.scene.bounds());
+    }
 
     // Per technique the reference without culling, then every mode with each culling mode.
     std::vector<render::RenderSettings> configs;
@@ -105,7 +115,9 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
     }
     for (render::RenderSettings& s : configs) s.pipeline.msaa = c.msaa;
     app::Options o = testing_support::headlessOptions(W, H, kFrames);
-    o.cameraPath = c.still ? scene::CameraPath::None : scene::CameraPath::Dolly;
+    o.cameraPath = c.still   ? scene::CameraPath::None
+                   : c.ortho ? scene::CameraPath::Orbit
+                             : scene::CameraPath::Dolly;
     o.keepEveryFrame = true;
     const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
     ASSERT_EQ(results.size(), configs.size());
@@ -188,12 +200,15 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
                                            PathCase{"cad", 4, Pipelines::All},
                                            PathCase{"default", 1, Pipelines::Vertex, true},
                                            PathCase{"cad", 1, Pipelines::All, true},
-                                           PathCase{"cad", 4, Pipelines::All, true}),
+                                           PathCase{"cad", 4, Pipelines::All, true},
+                                           PathCase{"default", 1, Pipelines::Vertex, false, true},
+                                           PathCase{"default", 1, Pipelines::Mesh, false, true}),
                          [](const ::testing::TestParamInfo<PathCase>& info) {
                              return std::string(info.param.scene) + "_msaa" +
                                     std::to_string(info.param.msaa) + "_" +
                                     pipelinesName(info.param.pipelines) +
-                                    (info.param.still ? "_still" : "");
+                                    (info.param.still ? "_still" : "") +
+                                    (info.param.ortho ? "_ortho" : "");
                          });
 
 // In a still view cluster runs draw first just the clusters that passed the last frame's

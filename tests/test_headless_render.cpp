@@ -2,6 +2,7 @@
 // pixel by pixel against a CPU ray cast, and that the check itself catches one wrong part.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -223,8 +224,8 @@ TEST(HeadlessRenderAssembly, ShadingOptionsChangeColoursButNotIds) {
 namespace {
 
 void expectIdsMatchRaycast(const app::LoadedScene& loaded, uint32_t width, uint32_t height,
-                           size_t minimumParts) {
-    const scene::Camera camera = app::initialCamera(loaded, float(width) / float(height));
+                           size_t minimumParts, const app::CameraSettings& view = {}) {
+    const scene::Camera camera = app::initialCamera(loaded, float(width) / float(height), view);
     HeadlessResult r = renderChecked(testOptions(width, height), loaded.scene, camera);
     std::set<uint32_t> seen;
     for (uint32_t id : r.ids)
@@ -252,4 +253,39 @@ TEST(HeadlessRenderScenes, EngineFromGltfInComponentsModeAgreesWithRaycast) {
     // 1,410 parts instead of 115: many more borders to get right.
     source.parts = scene::PartMode::Components;
     expectIdsMatchRaycast(app::loadScene(source), 192, 120, 100);
+}
+
+// Orthographic views and the standard views: the ID image against the ray cast through the
+// same camera (parallel rays in ortho), pixel by pixel, from three sides.
+TEST(HeadlessRenderScenes, StandardViewsInBothProjectionsAgreeWithRaycast) {
+    app::SceneSettings source;
+    source.builtin = "procedural:preset=small,seed=3";
+    const app::LoadedScene loaded = app::loadScene(source);
+    for (const auto& [name, ortho] : {std::pair("isometric", true), std::pair("top", true),
+                                      std::pair("front", false), std::pair("left", true)}) {
+        SCOPED_TRACE(std::string(name) + (ortho ? " ortho" : ""));
+        expectIdsMatchRaycast(loaded, 192, 120, 30, {scene::findStandardView(name), ortho});
+    }
+}
+
+// The headlight follows the projection (prelude.glsl's toViewer): in ortho every point is lit
+// from the view's one direction, so the flat tiles and plate, all facing the camera in one
+// grey material, come out one colour; in perspective the light's angle changes across them.
+TEST(HeadlessRenderScenes, OrthoLightsEveryPointFromTheViewsDirection) {
+    const scene::Scene s = scene::makeTiles();
+    app::Options o = testOptions(160, 100);
+    o.render.shading.partWeight = 0.0f;
+    scene::Camera camera = scene::tilesCamera();
+    auto colours = [&](bool ortho) {
+        camera.ortho = ortho;
+        scene::fitPlanes(camera, s.bounds());
+        const HeadlessResult r = renderChecked(o, s, camera);
+        std::set<std::array<uint8_t, 3>> seen;
+        for (size_t i = 0; i < r.ids.size(); ++i)
+            if (r.ids[i] != gpu::BACKGROUND_ID)
+                seen.insert({r.color[4 * i], r.color[4 * i + 1], r.color[4 * i + 2]});
+        return seen.size();
+    };
+    EXPECT_EQ(colours(true), 1u);
+    EXPECT_GT(colours(false), 5u);
 }

@@ -3,7 +3,7 @@
 // applied on the CPU to the ID image; box selection and the visible parts against the IDs
 // in the ID image; hidden and isolated parts against the unhidden image and a CPU ray cast
 // (hidden parts never reach the ID image, picks go through them); at full detail and with
-// every object at its coarsest level of detail.
+// every object at its coarsest level of detail, and in orthographic projection.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,9 +30,11 @@ struct Fixture {
 };
 
 // The scene at full detail, or with every object at its coarsest level of detail
-// (scene/lod.h), whose geometry the ray cast then follows too, or at full detail cut by a
-// section plane through the middle of the assembly's height, the camera on the side cut away.
-enum class Detail { Full, Coarsest, Sectioned };
+// (scene/lod.h), whose geometry the ray cast then follows too; at full detail seen from the
+// isometric view in orthographic projection (the ray cast's rays then run parallel); or at
+// full detail cut by a section plane through the middle of the assembly's height, the camera
+// on the side cut away.
+enum class Detail { Full, Coarsest, Ortho, Sectioned };
 
 Fixture& fixture(Detail detail) {
     static std::map<Detail, Fixture> fixtures;
@@ -47,7 +49,9 @@ Fixture& fixture(Detail detail) {
         source.lodLevel = scene::maxLevels - 1;
     }
     fx.loaded = app::loadScene(source);
-    fx.camera = app::initialCamera(fx.loaded, float(W) / float(H));
+    app::CameraSettings view;
+    if (detail == Detail::Ortho) view = {scene::findStandardView("isometric"), true};
+    fx.camera = app::initialCamera(fx.loaded, float(W) / float(H), view);
     if (detail == Detail::Sectioned) // across the plates, the camera on the side cut away
         fx.section.planes[0] =
             scene::axisPlane(2, fx.camera.target.z, fx.camera.eye.z < fx.camera.target.z);
@@ -60,7 +64,7 @@ Fixture& fixture(Detail detail) {
 class IdPasses : public ::testing::TestWithParam<Detail> {};
 
 std::string detailName(const ::testing::TestParamInfo<Detail>& info) {
-    const char* names[] = {"FullDetail", "CoarsestLevel", "Sectioned"};
+    const char* names[] = {"FullDetail", "CoarsestLevel", "Ortho", "Sectioned"};
     return names[int(info.param)];
 }
 
@@ -345,9 +349,11 @@ TEST_P(IdPasses, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
 
 // Showing everything again (an empty hidden set) goes back to the pipeline without the
 // hiding variant and to the unhidden image.
-// Picks, box selection, edges and hiding, at full detail and at the coarsest level of detail.
+// Picks, box selection, edges and hiding, at full detail, at the coarsest level of detail, in
+// ortho and cut by a section plane.
 INSTANTIATE_TEST_SUITE_P(Lavapipe, IdPasses,
-                         ::testing::Values(Detail::Full, Detail::Coarsest, Detail::Sectioned),
+                         ::testing::Values(Detail::Full, Detail::Coarsest, Detail::Ortho,
+                                           Detail::Sectioned),
                          detailName);
 
 // The coarsest level and the section draw other images than full detail: the cases above

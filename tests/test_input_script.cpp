@@ -4,6 +4,7 @@
 
 #include "app/viewer/script.h"
 #include "render/technique.h"
+#include "scene/standard_view.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -167,4 +168,27 @@ TEST(InputScript, FramesWaitsAWholeNumberOfFrames) {
     EXPECT_EQ(commands[0].values[0], 6.0);
     EXPECT_THROW(app::parseScript("1 frames 0\n", "s.txt"), app::ScriptError);
     EXPECT_THROW(app::parseScript("1 frames 2.5\n", "s.txt"), app::ScriptError);
+}
+
+// `view NAME` takes every standard view the registry lists, and nothing else; `ortho` takes
+// on or off.
+TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
+    for (const scene::StandardView& view : scene::standardViews()) {
+        const auto commands = app::parseScript("1 view " + std::string(view.name) + "\n", "s.txt");
+        ASSERT_EQ(commands.size(), 1u);
+        EXPECT_EQ(commands[0].op, app::ScriptOp::View);
+        EXPECT_EQ(commands[0].text, view.name);
+    }
+    EXPECT_EQ(errorOf("1 view sideways\n"),
+              "s.txt:1: unknown view 'sideways' (known: " + scene::standardViewNames() + ")");
+    EXPECT_EQ(errorOf("1 view\n"), "s.txt:1: 'view' takes: view NAME");
+    const auto on = app::parseScript("1 ortho on\n2 ortho off\n", "s.txt");
+    ASSERT_EQ(on.size(), 2u);
+    EXPECT_EQ(on[0].op, app::ScriptOp::Ortho);
+    EXPECT_EQ(on[0].text, "on");
+    EXPECT_EQ(on[1].text, "off");
+    EXPECT_EQ(errorOf("1 ortho yes\n"), "s.txt:1: 'ortho' takes on or off, not 'yes'");
+    // The unknown-command message lists the commands, these two among them.
+    const std::string unknown = errorOf("1 jump\n");
+    EXPECT_NE(unknown.find(", view, ortho,"), std::string::npos) << unknown;
 }

@@ -313,3 +313,75 @@ TEST(LodRender, ChangingTheErrorInAStillViewChoosesAgain) {
         EXPECT_FALSE(after.ids == before.ids) << name;
     }
 }
+
+namespace {
+
+// The triangles per level the scene draws in an orthographic view of `camera` at `errorPixels`
+// when every object is in view, as the CPU works it out: a world unit spans viewport height /
+// view height pixels at any depth, so an object of scale s takes its coarsest level whose
+// error e keeps e * s * pixels per unit under the error asked (full detail always fits).
+// `margin` gets the smallest relative distance of any object's error from that bound.
+std::array<uint64_t, gpu::LOD_MAX_LEVELS> orthoLevelTriangles(const scene::Scene& s,
+                                                              const scene::Camera& camera,
+                                                              uint32_t height, float errorPixels,
+                                                              double& margin) {
+    std::array<uint64_t, gpu::LOD_MAX_LEVELS> triangles{};
+    const double pixelsPerUnit = double(height) / double(camera.orthoHeight());
+    margin = 1e30;
+    for (const scene::Object& object : s.objects) {
+        const double scale = std::max({glm::length(glm::vec3(object.world[0])),
+                                       glm::length(glm::vec3(object.world[1])),
+                                       glm::length(glm::vec3(object.world[2]))});
+        uint32_t chosen = object.geometry;
+        for (uint32_t level = 1; level < gpu::LOD_MAX_LEVELS; ++level) {
+            const uint32_t g = scene::geometryAtLevel(s, object.geometry, level);
+            if (g == scene::geometryAtLevel(s, object.geometry, level - 1)) break;
+            const double pixels = double(s.geometries[g].lodError) * scale * pixelsPerUnit;
+            margin = std::min(margin, std::abs(pixels / errorPixels - 1.0));
+            if (pixels < errorPixels) chosen = g;
+        }
+        triangles[s.geometries[chosen].level] += s.geometries[chosen].triangleCount;
+    }
+    return triangles;
+}
+
+} // namespace
+
+// In ortho the GPU chooses each object's level by the constant pixels per world unit: with
+// the whole scene in view, the triangles drawn at each level are exactly those the CPU's
+// choice gives, for an error where no object lies within 1% of its bound and objects draw
+// different levels (the CPU's count at twice the error differs, so a wrong scale would show).
+TEST(LodRender, OrthoChoosesTheLevelsTheCpuWorksOut) {
+    const app::LoadedScene loaded = smallScene(scene::maxLevels);
+    constexpr uint32_t W = 160, H = 90;
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H),
+                                                    {scene::findStandardView("isometric"), true});
+    float error = 0.0f;
+    std::array<uint64_t, gpu::LOD_MAX_LEVELS> expected{};
+    for (float candidate : {1.0f, 1.3f, 1.7f, 2.2f, 0.7f, 3.0f}) {
+        double margin = 0.0;
+        expected = orthoLevelTriangles(loaded.scene, camera, H, candidate, margin);
+        const size_t levelsUsed = size_t(
+            std::count_if(expected.begin(), expected.end(), [](uint64_t t) { return t != 0; }));
+        if (margin > 0.01 && levelsUsed >= 2) {
+            error = candidate;
+            break;
+        }
+    }
+    ASSERT_GT(error, 0.0f) << "no error tried gives a clear choice of several levels";
+    double unused = 0.0;
+    EXPECT_NE(orthoLevelTriangles(loaded.scene, camera, H, 2.0f * error, unused), expected);
+
+    render::RenderSettings s = testing_support::settingsFor(
+        *render::findTechnique("vertex-fs"), *render::findDrawMode("mdi-baseinstance"));
+    s.culling.mode = render::CullMode::Frustum;
+    s.lod.errorPixels = error;
+    const auto results = app::renderHeadlessSequence(testing_support::headlessOptions(W, H, 2),
+                                                     loaded.scene, camera, {s});
+    EXPECT_EQ(results.front().validationMessages, 0u);
+    ASSERT_FALSE(results.front().cullStats.empty());
+    const render::CullCounts counts = render::countsOf(results.front().cullStats.back(), false);
+    for (size_t l = 0; l < expected.size(); ++l)
+        EXPECT_EQ(counts.levelTriangles[l], expected[l])
+            << "level " << l << " at " << error << " px";
+}

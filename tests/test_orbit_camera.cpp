@@ -143,3 +143,55 @@ TEST(OrbitCamera, ResetReturnsToTheOpeningView) {
     EXPECT_NEAR(glm::length(camera.target() - start.target), 0.0f, 1e-5f);
     EXPECT_EQ(camera.camera().up, start.up);
 }
+
+// The standard view keys turn the orbit camera to the view scene::turnedTo gives (itself
+// checked against FreeCAD's rotations), top and bottom on the poles included, for Z-up and
+// Y-up models, at the same target and distance; Home comes back to an opening standard view.
+TEST(OrbitCamera, StandardViewsLookAsTheSceneDefinesThem) {
+    const scene::Bounds bounds = box({-1, -2, 0}, {3, 1, 2});
+    for (glm::vec3 up : {glm::vec3(0, 0, 1), glm::vec3(0, 1, 0)}) {
+        const scene::Camera start = opening(bounds, up, 1.5f);
+        app::OrbitCamera camera(start, bounds);
+        camera.orbit({77, 31});
+        for (const scene::StandardView& view : scene::standardViews()) {
+            camera.turnTo(view);
+            const scene::Camera expected = scene::turnedTo(camera.camera(), view, up);
+            const scene::Camera got = camera.camera();
+            const glm::mat4 a = got.view(), b = expected.view();
+            for (int c = 0; c < 4; ++c)
+                EXPECT_LT(glm::length(glm::vec3(a[c]) - glm::vec3(b[c])), 1e-4f * (c == 3 ? 10 : 1))
+                    << view.name << " up " << up.y;
+            EXPECT_NEAR(camera.distance(), glm::length(start.eye - start.target), 1e-4f);
+            // On the poles too, panning and orbiting stay finite.
+            app::OrbitCamera moved = camera;
+            moved.pan({10, 5}, 500.0f);
+            EXPECT_TRUE(std::isfinite(moved.target().x + moved.target().y + moved.target().z))
+                << view.name;
+            EXPECT_LT(glm::length(moved.target() - camera.target()), bounds.radius()) << view.name;
+        }
+        app::OrbitCamera top(start, bounds, scene::findStandardView("top"));
+        top.orbit({100, 100});
+        top.resetView();
+        const glm::vec3 down = glm::normalize(top.target() - top.eye());
+        EXPECT_NEAR(glm::dot(down, -up), 1.0f, 1e-5f);
+    }
+}
+
+// F with a selection frames the selection's box, in either projection.
+TEST(OrbitCamera, FitFramesTheSelectionInBothProjections) {
+    const scene::Bounds scene = box({-100, -100, -10}, {100, 100, 10});
+    const scene::Bounds selected = box({40, 50, 0}, {42, 53, 1});
+    for (float aspect : {0.6f, 1.8f}) {
+        app::OrbitCamera camera(opening(scene, {0, 0, 1}, aspect), scene);
+        camera.fit(selected, aspect);
+        EXPECT_EQ(camera.target(), selected.center());
+        for (bool ortho : {false, true}) {
+            expectContains(camera.camera(1.0f, ortho), selected, aspect);
+            // Tight: the selection spans much of the view, not a speck of the scene's.
+            const scene::Camera c = camera.camera(1.0f, ortho);
+            const glm::vec4 clip = c.viewProjection(aspect) *
+                                   glm::vec4(selected.center() + glm::vec3(1, 1.5f, 0.5f), 1.0f);
+            EXPECT_GT(glm::length(glm::vec2(clip) / clip.w), 0.3f) << "ortho " << ortho;
+        }
+    }
+}

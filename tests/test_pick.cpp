@@ -74,17 +74,20 @@ Points choosePoints(const std::vector<uint32_t>& ids) {
     return {spread(all.interior, 10), spread(all.border, 10), spread(all.background, 4)};
 }
 
-// Per sample count, since MSAA moves the edges of the ID image (sample 0 decides there).
-Fixture& fixture(uint32_t msaa) {
-    static std::map<uint32_t, Fixture> cache;
-    if (auto found = cache.find(msaa); found != cache.end()) return found->second;
-    Fixture& f = cache[msaa];
+// Per sample count, since MSAA moves the edges of the ID image (sample 0 decides there), and
+// per projection: `ortho` looks at the isometric view in orthographic projection.
+Fixture& fixture(uint32_t msaa, bool ortho = false) {
+    static std::map<std::pair<uint32_t, bool>, Fixture> cache;
+    if (auto found = cache.find({msaa, ortho}); found != cache.end()) return found->second;
+    Fixture& f = cache[{msaa, ortho}];
     {
         app::SceneSettings source;
         source.builtin = "procedural:preset=small,seed=1";
         source.copies = 2;
         f.loaded = app::loadScene(source);
-        f.camera = app::initialCamera(f.loaded, float(W) / float(H));
+        app::CameraSettings view;
+        if (ortho) view = {scene::findStandardView("isometric"), true};
+        f.camera = app::initialCamera(f.loaded, float(W) / float(H), view);
         f.ids = app::renderHeadless(options(msaa), f.loaded.scene, f.camera).ids;
         f.points = choosePoints(f.ids);
     }
@@ -241,9 +244,13 @@ INSTANTIATE_TEST_SUITE_P(Lavapipe, PickPerTechnique,
 // (pixel centre, or sample 0) meets the part the ray cast names, within a ten-thousandth of
 // the scene's size; the distance and delta are those of the two points; the JSON line says
 // so; a background pixel gives nulls.
+// In perspective with and without MSAA, and in ortho (parallel rays, a near plane that may
+// lie behind the eye: the depth still unprojects to the surface).
 TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
-    for (uint32_t msaa : {1u, 4u}) {
-        Fixture& f = fixture(msaa);
+    for (const auto& [msaa, ortho] :
+         {std::pair(1u, false), std::pair(4u, false), std::pair(1u, true)}) {
+        SCOPED_TRACE(ortho ? "ortho" : "perspective");
+        Fixture& f = fixture(msaa, ortho);
         const Points& p = f.points;
         ASSERT_GE(p.interior.size(), 2u);
         ASSERT_FALSE(p.background.empty());
@@ -286,6 +293,43 @@ TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
         EXPECT_NE(nulls.find("\"distance\":null,\"delta\":null,\"parts\":[null,"),
                   std::string::npos)
             << nulls;
+    }
+}
+
+// In ortho a pick names the part the ID image shows at its pixel (interiors, borders and
+// background alike), the CPU ray cast agrees inside parts, and its depth unprojects to the
+// point where that ray meets the part.
+TEST(Pick, OrthoPicksAgreeWithTheIdImageAndTheRayCast) {
+    Fixture& f = fixture(1, true);
+    ASSERT_TRUE(f.camera.ortho);
+    const Points& p = f.points;
+    ASSERT_GE(p.interior.size(), 5u);
+    ASSERT_GE(p.border.size(), 5u);
+    ASSERT_FALSE(p.background.empty());
+    app::Options o = options(1);
+    for (const auto* points : {&p.interior, &p.border, &p.background})
+        o.picks.insert(o.picks.end(), points->begin(), points->end());
+    const app::HeadlessResult r = app::renderHeadless(o, f.loaded.scene, f.camera);
+    EXPECT_EQ(r.validationMessages, 0u);
+    ASSERT_EQ(r.picks.size(), o.picks.size());
+    const scene::RayCaster caster(f.loaded.scene);
+    const glm::vec2 size{float(W), float(H)};
+    const glm::mat4 viewProj = f.camera.viewProjection(size.x / size.y);
+    const float extent = glm::length(f.loaded.scene.bounds().max - f.loaded.scene.bounds().min);
+    for (size_t i = 0; i < o.picks.size(); ++i) {
+        const auto& pixel = o.picks[i];
+        const std::string where = std::to_string(pixel.x) + "," + std::to_string(pixel.y);
+        EXPECT_EQ(r.picks[i].part.value_or(NONE), idAt(f.ids, int(pixel.x), int(pixel.y))) << where;
+        if (i >= p.interior.size()) continue;
+        const glm::vec2 at = glm::vec2(float(pixel.x), float(pixel.y)) + 0.5f;
+        const scene::Ray ray = scene::pixelRay(viewProj, size, at);
+        const auto hit = caster.cast(ray);
+        ASSERT_TRUE(hit.has_value()) << where;
+        EXPECT_EQ(r.picks[i].part.value_or(NONE), hit->uniquePartId) << where;
+        EXPECT_LT(glm::length(scene::unprojectPixel(viewProj, size, at, r.picks[i].depth) -
+                              (ray.origin + hit->t * ray.direction)),
+                  1e-4f * extent)
+            << where;
     }
 }
 

@@ -3,6 +3,7 @@
 # on lavapipe with validation (synchronization validation too), fed a --script that switches
 # through every renderer (the floors included) and mode, changes MSAA, presses V twice,
 # orbits, zooms, resizes, clicks the model, takes a screenshot and drops files on the window.
+# Then the standard views, the projection and F on the selection (a session of its own).
 # Checks the exit code (3 means validation messages), the title following the renderer and
 # vsync, the click selecting a part, the drops, and that the screenshot shows a picture; and
 # that without --print-events the viewer writes nothing to stdout. Exit 77: skipped.
@@ -443,6 +444,63 @@ if [[ -f $motor && -f $terrain ]]; then
     ((took < 25)) && echo "ok   refused and cancelled in $took s" ||
         fail "the refused and cancelled loads took $took s"
 fi
+
+# The views session: the standard view keys (1, Ctrl+7, 0), the script's view and ortho, O, and
+# F fitting the selection, then the scene. Each says so in an event line; the top view in
+# ortho shows the parts headless --view top --ortho shows for the same window size.
+t=0.5
+{
+    at key 1
+    at frames 3
+    at key ctrl+7
+    at frames 3
+    at key 0
+    at frames 3
+    at key O
+    at view top
+    at frames 8
+    at ortho off
+    at frames 3
+    at view front
+    at frames 3
+    at object base plate
+    at frames 3
+    at key F
+    at frames 6
+    at key ESC
+    at key F
+    at frames 6
+    at quit
+} >"$work/views.txt"
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/views.txt" --print-events \
+    >"$work/views.out" 2>"$work/views.err"
+rc=$?
+[[ $rc -eq 0 ]] || { fail "views session: exit code $rc"; head -c 3000 "$work/views.err"; }
+said=$(grep -E '^idview: (view|projection|fit):' "$work/views.out" | sed 's/^idview: //' | paste -sd'|' -)
+expected='view: front|view: bottom|view: isometric|projection: orthographic|view: top|projection: perspective|view: front|fit: selection|fit: scene'
+[[ $said == "$expected" ]] && echo "ok   views session: $said" || fail "views session said '$said', expected '$expected'"
+# F on the base plate frames it (another set of parts shows); F with nothing selected frames
+# the scene as the front view did (the views keep the fitted distance).
+visible_after() { # the last visible part count after the event line $1, before the next event
+    awk -v e="idview: $1" '$0 == e {on=1; next} on && /^idview: (view|projection|fit|selected):/{exit} on' \
+        "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1
+}
+front=$(visible_after "view: front")
+on_plate=$(visible_after "fit: selection")
+whole=$(visible_after "fit: scene")
+[[ -n $front && -n $on_plate && $on_plate != "$front" && $whole == "$front" ]] &&
+    echo "ok   F: selection shows $on_plate parts, then the scene $whole (front view: $front)" ||
+    fail "F: selection '$on_plate', scene '$whole', front view '$front'"
+top_viewer=$(awk '/^idview: view: top/{on=1} on && /^idview: projection: perspective/{exit} on' \
+    "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+top_headless=$("$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
+    --view top --ortho --visible-parts 2>/dev/null | sed -n 's/^{"count":\([0-9]*\).*/\1/p')
+iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: orthographic/{exit} on' \
+    "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+[[ -n $top_viewer && $top_viewer == "$top_headless" && $top_viewer != "$iso_count" ]] &&
+    echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
+    fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
 echo "viewer test passed"

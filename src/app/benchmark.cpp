@@ -157,7 +157,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
         // As headless and the viewer open the scene; with a path, timed frame f is frame f
         // of the path (the warm-up frames stay at its start).
-        const scene::Camera start = initialCamera(loaded, aspect);
+        const scene::Camera start = initialCamera(loaded, aspect, options.camera);
         const scene::Bounds bounds =
             options.cameraPath == scene::CameraPath::None ? scene::Bounds{} : scene.bounds();
         render::FrameParams params = cameraFrame(start, rig.extent);
@@ -188,6 +188,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
                                 rig.extent);
                 params.viewProj = moved.viewProj;
                 params.eye = moved.eye;
+                params.orthoToViewer = moved.orthoToViewer;
                 const auto start = Clock::now();
                 rig.renderer.record(slot, rig.targets, params);
                 const auto recorded = Clock::now();

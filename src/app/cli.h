@@ -18,6 +18,7 @@
 #include "scene/camera_path.h"
 #include "scene/copies.h"
 #include "scene/gltf_loader.h"
+#include "scene/standard_view.h"
 
 namespace app {
 
@@ -45,6 +46,14 @@ struct Animation {
     bool animate = false;
     std::optional<float> time;
     float explode = 0.0f;
+};
+
+// The opening view: one of the standard views (scene/standard_view.h) instead of the
+// three-quarter one, at the same fitted distance, and the projection. The viewer starts from
+// it and then changes it with its keys (1, 3, 7, 0, O).
+struct CameraSettings {
+    const scene::StandardView* standard = nullptr; // nullptr: the three-quarter view
+    bool ortho = false;
 };
 
 struct Options {
@@ -108,6 +117,7 @@ struct Options {
     SceneSettings scene;
     render::RenderSettings render;
     Animation animation;
+    CameraSettings camera;
 
     // Viewer: scripted input, one `<seconds> <command> [args]` per line (viewer/script.h),
     // and the event lines (title, selection, opened, screenshot, reload) on stdout.

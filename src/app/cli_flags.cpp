@@ -386,6 +386,20 @@ const std::vector<Flag>& flags() {
                                       ", not '" + v + "'");
                  o.cameraPath = *path;
              }},
+            {"--view", "NAME",
+             "open on a standard view of the fitted scene, as FreeCAD shows them (front looks "
+             "along +Y of a Z-up model): " +
+                 scene::standardViewNames(),
+             [](Options& o, auto& v) {
+                 o.camera.standard = scene::findStandardView(v);
+                 if (!o.camera.standard)
+                     throw UsageError("--view expects " + scene::standardViewNames() + ", not '" +
+                                      v + "'");
+             }},
+            {"--ortho", nullptr,
+             "orthographic projection, as tall as the perspective view at the target (the "
+             "viewer's O switches)",
+             [](Options& o, auto&) { o.camera.ortho = true; }},
             {"--benchmark", nullptr,
              "headless: time every renderer x mode x culling mode and the floors (no-id, "
              "no-id-mesh with mesh techniques); defaults 2560x1440, "

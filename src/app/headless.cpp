@@ -92,6 +92,7 @@ render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent) 
     render::FrameParams params;
     params.viewProj = camera.viewProjection(float(extent.width) / float(extent.height));
     params.eye = camera.eye;
+    if (camera.ortho) params.orthoToViewer = glm::normalize(camera.eye - camera.target);
     return params;
 }
 
@@ -204,6 +205,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                     const render::FrameParams moved = frameCamera(frame);
                     frameParams.viewProj = moved.viewProj;
                     frameParams.eye = moved.eye;
+                    frameParams.orthoToViewer = moved.orthoToViewer;
                 }
                 if (lastFrame && options.visibleParts) frameParams.partSets = {whole};
                 renderer.record(slot, rig.targets, frameParams);
@@ -250,7 +252,8 @@ int runHeadless(const Options& options) {
     for (const auto& warning : loaded.warnings)
         std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
     const float aspect = float(options.width) / float(options.height);
-    HeadlessResult result = renderHeadless(options, scene, initialCamera(loaded, aspect));
+    HeadlessResult result =
+        renderHeadless(options, scene, initialCamera(loaded, aspect, options.camera));
     const render::PipelineKey& key = options.render.pipeline;
 
     if (!options.screenshot.empty())

@@ -175,14 +175,26 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
     return loaded;
 }
 
-scene::Camera initialCamera(const LoadedScene& loaded, float aspect) {
-    if (loaded.tilesLayout) return scene::tilesCamera();
-    // A three-quarter view from the front, above: how CAD viewers open an assembly. glTF is
-    // y-up, the built-in scenes z-up.
-    const bool yUp = loaded.source.ends_with(".glb") || loaded.source.ends_with(".gltf");
-    const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
-    const glm::vec3 direction = yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);
-    return scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
+scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const CameraSettings& view) {
+    scene::Camera camera;
+    if (loaded.tilesLayout) {
+        camera = scene::tilesCamera();
+    } else {
+        // A three-quarter view from the front, above: how CAD viewers open an assembly. glTF
+        // is y-up, the built-in scenes z-up.
+        const bool yUp = loaded.source.ends_with(".glb") || loaded.source.ends_with(".gltf");
+        const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+        const glm::vec3 direction =
+            yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);
+        camera =
+            scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
+    }
+    // The standard views turn about the fitted target at the fitted distance, the model's
+    // up axis being the opening camera's.
+    if (view.standard) camera = scene::turnedTo(camera, *view.standard, camera.up);
+    camera.ortho = view.ortho;
+    if (view.ortho) scene::fitPlanes(camera, loaded.scene.bounds());
+    return camera;
 }
 
 namespace {

@@ -82,7 +82,8 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress = nu
 void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
 
 // The camera idview opens a scene with, at this aspect ratio.
-scene::Camera initialCamera(const LoadedScene& loaded, float aspect);
+scene::Camera initialCamera(const LoadedScene& loaded, float aspect,
+                            const CameraSettings& view = {});
 
 // One JSON object for --stats: objects, geometries, parts, triangles, load_ms, read_ms,
 // tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), ... and what

@@ -84,7 +84,9 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     const Shading& shading = settings_.shading;
     gpu::FrameData frame{};
     frame.viewProj = params.viewProj;
-    frame.eyePosition = glm::vec4(params.eye, 1.0f);
+    frame.eyePosition =
+        params.orthoToViewer ? glm::vec4(*params.orthoToViewer, 0.0f) : glm::vec4(params.eye, 1.0f);
+    frame.eyeReach = glm::length(params.eye);
     frame.viewport = {targets.extent().width, targets.extent().height};
     frame.partColorWeight = shading.partWeight;
     frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |

@@ -29,7 +29,10 @@ namespace render {
 // What changes every frame (the settings do not).
 struct FrameParams {
     glm::mat4 viewProj{1.0f};
-    glm::vec3 eye{0.0f};
+    glm::vec3 eye{0.0f}; // the camera's position
+    // Orthographic: the unit direction toward the viewer, the same at every point; none in
+    // perspective, where it runs from each point to the eye (FrameData::eyePosition).
+    std::optional<glm::vec3> orthoToViewer;
     float time = 0.0f; // seconds; drives the blink of the hovered part
     // The pixel (top-left origin) whose nearest part this frame picks; the result reaches
     // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.

@@ -36,6 +36,26 @@ std::vector<Bounds> partBounds(const Scene& scene) {
     return boxes;
 }
 
+Bounds partsWorldBounds(const Scene& scene, const PartSet& parts) {
+    Bounds box = emptyBounds();
+    for (const uint32_t id : parts.ids()) {
+        const auto ref = scene.locate(id);
+        if (!ref) continue;
+        const Object& object = scene.objects[ref->object];
+        const Geometry& g = scene.geometries[object.geometry];
+        const Part& part = scene.part(object, ref->localPart);
+        const uint32_t first = g.firstIndex + 3 * part.firstTriangle;
+        for (uint32_t i = first; i < first + 3 * part.triangleCount; ++i) {
+            const glm::vec3 p = glm::vec3(
+                object.world *
+                glm::vec4(scene.vertices[g.firstVertex + scene.indices[i]].position, 1.0f));
+            box.min = glm::min(box.min, p);
+            box.max = glm::max(box.max, p);
+        }
+    }
+    return box;
+}
+
 Clusters partClusters(const Scene& scene, uint32_t maxTriangles) {
     // Numbered in Scene::parts order, so that the clusters of a run of parts are a run too.
     Clusters c;

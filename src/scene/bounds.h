@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scene/meshlets.h"
+#include "scene/part_set.h"
 #include "scene/scene.h"
 
 namespace scene {
@@ -21,6 +22,10 @@ std::vector<Bounds> partBounds(const Scene& scene);
 // The box of parts [firstPart, firstPart + count) of geometry `g`, from partBounds().
 Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uint32_t g,
                        uint32_t firstPart, uint32_t count);
+
+// The world box of the triangles of the unique parts in `parts`, placed where their objects
+// are (what F fits the view to); empty (isEmpty) when the set holds no part with triangles.
+Bounds partsWorldBounds(const Scene& scene, const PartSet& parts);
 
 // Each part's triangles in runs of at most `maxTriangles` in index order (clusters), each
 // run's box and part: what culling tests a draw by, cluster by cluster, where its own box

@@ -1,4 +1,5 @@
-// camera.cpp - view and projection matrices, view fitting and pixel rays.
+// camera.cpp - view and projection matrices (perspective and orthographic), view fitting and
+// pixel rays.
 #include "scene/camera.h"
 
 #include <algorithm>
@@ -11,8 +12,19 @@ glm::mat4 Camera::view() const {
     return glm::lookAt(eye, target, up);
 }
 
+float Camera::orthoHeight() const {
+    return 2.0f * glm::length(target - eye) * std::tan(0.5f * fovY);
+}
+
 glm::mat4 Camera::projection(float aspect) const {
-    glm::mat4 proj = glm::perspective(fovY, aspect, nearPlane, farPlane);
+    glm::mat4 proj;
+    if (ortho) {
+        const float halfHeight = 0.5f * orthoHeight();
+        const float halfWidth = halfHeight * aspect;
+        proj = glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, nearPlane, farPlane);
+    } else {
+        proj = glm::perspective(fovY, aspect, nearPlane, farPlane);
+    }
     proj[1][1] *= -1.0f; // Vulkan's framebuffer y points down
     return proj;
 }
@@ -38,6 +50,11 @@ void fitPlanes(Camera& camera, const Bounds& bounds, float reach) {
     radius *= 1.05f * std::max(reach, 1.0f);
     const float centre = glm::length(camera.eye - bounds.center());
     camera.farPlane = centre + radius;
+    if (camera.ortho) {
+        // Depth is linear and no ray starts at the eye: the slab through the whole sphere.
+        camera.nearPlane = centre - radius;
+        return;
+    }
     const float floor =
         std::min(0.5f * glm::length(camera.target - camera.eye), camera.farPlane * 1e-3f);
     camera.nearPlane = std::max(centre - radius, floor);

@@ -130,14 +130,16 @@ void Viewer::follow(SceneState::Change change) {
     if (scene_.loaded().settings.copies > 1) // copy 0's opening view, drawn back to take in all
         initial = scene::fitCamera(scene.bounds(), initial.eye - initial.target, initial.up,
                                    initial.fovY, aspect());
-    camera_ = OrbitCamera(initial, scene.bounds());
+    // The model's up axis comes from the three-quarter view; --view turns from there.
+    camera_ = OrbitCamera(initial, scene.bounds(), settings_.camera.standard);
 }
 
 render::FrameParams Viewer::frameParams(double seconds) {
     const VkExtent2D extent = scene_.targets()->extent();
     const bool animate = settings_.animation.animate;
     // The exploded view pushes objects out to twice their distance from the centre.
-    render::FrameParams params = cameraFrame(camera_.camera(animate ? 2.0f : 1.0f), extent);
+    render::FrameParams params =
+        cameraFrame(camera_.camera(animate ? 2.0f : 1.0f, settings_.camera.ortho), extent);
     params.time = float(seconds);
     viewProj_ = params.viewProj;
     params.pickPixel = input_.pickPixel(extent, frameNumber_);

@@ -18,6 +18,29 @@ namespace {
 // A left click is a press and release this close together; farther is a drag.
 constexpr double clickSlop = 4.0;
 
+// The standard views' keys: 1 front, 3 right, 7 top, with Ctrl the opposite side (the numpad
+// habit Blender made common), 0 isometric, and FreeCAD's own 2 top, 4 back, 5 bottom, 6 left
+// (its 1, 3 and 0 agree), on the number row and the keypad.
+struct ViewKey {
+    int key;
+    bool ctrl;
+    const char* view; // scene::findStandardView's name
+};
+constexpr ViewKey viewKeys[] = {
+    {GLFW_KEY_1, false, "front"},     {GLFW_KEY_1, true, "back"},  {GLFW_KEY_3, false, "right"},
+    {GLFW_KEY_3, true, "left"},       {GLFW_KEY_7, false, "top"},  {GLFW_KEY_7, true, "bottom"},
+    {GLFW_KEY_0, false, "isometric"}, {GLFW_KEY_2, false, "top"},  {GLFW_KEY_4, false, "back"},
+    {GLFW_KEY_5, false, "bottom"},    {GLFW_KEY_6, false, "left"},
+};
+
+const scene::StandardView* viewOfKey(int key, int mods) {
+    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) key = GLFW_KEY_0 + (key - GLFW_KEY_KP_0);
+    for (const ViewKey& k : viewKeys)
+        if (k.key == key && k.ctrl == ((mods & GLFW_MOD_CONTROL) != 0))
+            return scene::findStandardView(k.view);
+    return nullptr;
+}
+
 } // namespace
 
 Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
@@ -27,12 +50,19 @@ void Input::onKey(int key, int scancode, int action, int mods) {
     ImGui_ImplGlfw_KeyCallback(window_, key, scancode, action, mods);
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
     ViewSettings& view = viewer_.view();
+    if (const scene::StandardView* standard = viewOfKey(key, mods)) {
+        viewer_.turnTo(*standard);
+        return;
+    }
     switch (key) {
     case GLFW_KEY_V:
         view.vsync = !view.vsync; // the next frame makes a swapchain with it
         break;
     case GLFW_KEY_F:
-        viewer_.camera().fit(viewer_.aspect());
+        viewer_.fitView();
+        break;
+    case GLFW_KEY_O:
+        viewer_.setOrtho(!viewer_.settings().camera.ortho);
         break;
     case GLFW_KEY_R:
         viewer_.reloadShaders();
@@ -334,6 +364,12 @@ void Input::queue(const ScriptCommand& c) {
                  }
              }),
              true);
+        break;
+    case ScriptOp::View: // names were checked when the script was parsed
+        step([this, view = scene::findStandardView(c.text)] { viewer_.turnTo(*view); }, true);
+        break;
+    case ScriptOp::Ortho:
+        step([this, on = c.text == "on"] { viewer_.setOrtho(on); }, true);
         break;
     case ScriptOp::Copies:
         step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);

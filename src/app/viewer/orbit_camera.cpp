@@ -1,4 +1,5 @@
-// orbit_camera.cpp - orbit, pan, zoom and fit, and the near/far planes that follow the eye.
+// orbit_camera.cpp - orbit, pan, zoom, fit and the standard views, and the near/far planes
+// that follow the eye.
 #include "app/viewer/orbit_camera.h"
 
 #include <algorithm>
@@ -8,7 +9,8 @@
 namespace app {
 namespace {
 
-// Just short of the poles: at the pole itself the view's up vector would be undefined.
+// Orbiting stops just short of the poles, so that dragging keeps turning about the model's
+// up axis; only the top and bottom views stand on them.
 constexpr float maxPitch = 1.5607963f; // pi/2 - 0.01
 
 // Scenes of a single point (or none) still get a usable camera.
@@ -19,9 +21,10 @@ float usableRadius(const scene::Bounds& bounds) {
 
 } // namespace
 
-OrbitCamera::OrbitCamera(const scene::Camera& initial, const scene::Bounds& bounds)
-    : bounds_(bounds), initial_(initial) {
-    setFrom(initial);
+OrbitCamera::OrbitCamera(const scene::Camera& initial, const scene::Bounds& bounds,
+                         const scene::StandardView* opening)
+    : bounds_(bounds), initial_(initial), opening_(opening) {
+    resetView();
 }
 
 void OrbitCamera::setFrom(const scene::Camera& camera) {
@@ -53,6 +56,10 @@ glm::vec3 OrbitCamera::direction() const {
     return std::cos(pitch_) * (std::cos(yaw_) * a_ + std::sin(yaw_) * b_) + std::sin(pitch_) * up_;
 }
 
+glm::vec3 OrbitCamera::viewUp() const {
+    return -std::sin(pitch_) * (std::cos(yaw_) * a_ + std::sin(yaw_) * b_) + std::cos(pitch_) * up_;
+}
+
 glm::vec3 OrbitCamera::eye() const {
     return target_ + direction() * distance_;
 }
@@ -67,7 +74,7 @@ void OrbitCamera::pan(glm::vec2 pixels, float viewportHeight) {
     // World units per pixel at the target's depth, so the target follows the cursor.
     const float scale = 2.0f * distance_ * std::tan(0.5f * fovY_) / std::max(viewportHeight, 1.0f);
     const glm::vec3 forward = -direction();
-    const glm::vec3 right = glm::normalize(glm::cross(forward, up_));
+    const glm::vec3 right = glm::normalize(glm::cross(forward, viewUp()));
     const glm::vec3 viewUp = glm::cross(right, forward);
     target_ += (-right * pixels.x + viewUp * pixels.y) * scale;
 }
@@ -80,24 +87,48 @@ void OrbitCamera::zoom(float steps) {
 }
 
 void OrbitCamera::fit(float aspect) {
-    const float radius = usableRadius(bounds_);
-    // The narrower of the two fields of view decides, as in scene::fitCamera.
+    fit(bounds_, aspect);
+}
+
+void OrbitCamera::fit(const scene::Bounds& what, float aspect) {
+    const float radius = usableRadius(what);
+    // The narrower of the two fields of view decides, as in scene::fitCamera; the
+    // orthographic view of that distance is taller than the sphere (Camera::orthoHeight).
     const float halfFov =
         0.5f * std::min(fovY_, 2.0f * std::atan(std::tan(0.5f * fovY_) * std::max(aspect, 1e-3f)));
-    target_ = bounds_.center();
+    target_ = what.center();
     distance_ = radius / std::sin(halfFov);
+}
+
+void OrbitCamera::turnTo(const scene::StandardView& view) {
+    const glm::mat3 frame = scene::modelFrame(up_);
+    const glm::vec3 d = glm::normalize(frame * view.toEye);
+    const float along = glm::dot(d, up_);
+    if (std::abs(along) > 0.9999f) {
+        // Top or bottom: on the pole, where the yaw only says which way the screen's up
+        // points (viewUp): away from the horizontal direction at the top, towards it below.
+        pitch_ = std::copysign(0.5f * glm::pi<float>(), along);
+        const glm::vec3 h = -std::copysign(1.0f, along) * glm::normalize(frame * view.screenUp);
+        yaw_ = std::atan2(glm::dot(h, b_), glm::dot(h, a_));
+    } else {
+        pitch_ = std::asin(along);
+        yaw_ = std::atan2(glm::dot(d, b_), glm::dot(d, a_));
+    }
 }
 
 void OrbitCamera::resetView() {
     setFrom(initial_);
+    if (opening_) turnTo(*opening_);
 }
 
-scene::Camera OrbitCamera::camera(float reach) const {
+scene::Camera OrbitCamera::camera(float reach, bool ortho) const {
     scene::Camera camera;
     camera.eye = eye();
     camera.target = target_;
-    camera.up = up_;
+    // Off the poles lookAt takes the model's up as it always did; on them only viewUp works.
+    camera.up = std::abs(pitch_) > maxPitch ? viewUp() : up_;
     camera.fovY = fovY_;
+    camera.ortho = ortho;
     scene::fitPlanes(camera, bounds_, reach);
     return camera;
 }

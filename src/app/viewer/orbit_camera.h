@@ -1,13 +1,15 @@
 // orbit_camera.h - the viewer's camera: it orbits, pans and zooms around a target point and
 // turns that into a scene::Camera whose near and far planes hug the scene's bounding sphere
-// as seen from the current eye, so depth precision follows the model whatever its size.
-// Plain maths (no window, no Vulkan), so it is unit-tested.
+// as seen from the current eye, so depth precision follows the model whatever its size. It
+// turns to the standard views (scene/standard_view.h), straight down and up included, and
+// gives either projection. Plain maths (no window, no Vulkan), so it is unit-tested.
 #pragma once
 
 #include <glm/glm.hpp>
 
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "scene/standard_view.h"
 
 namespace app {
 
@@ -18,9 +20,11 @@ class OrbitCamera {
     static constexpr float zoomPerStep = 0.85f;
 
     OrbitCamera() = default;
-    // Starts from `initial` (its eye, target, up axis and field of view) around a scene with
-    // `bounds`; R (resetView) comes back to exactly this view.
-    OrbitCamera(const scene::Camera& initial, const scene::Bounds& bounds);
+    // Starts from `initial` (its eye, target, up axis and field of view; its up is the
+    // model's) around a scene with `bounds`, turned to `opening` if given; Home (resetView)
+    // comes back to exactly this view.
+    OrbitCamera(const scene::Camera& initial, const scene::Bounds& bounds,
+                const scene::StandardView* opening = nullptr);
 
     // The scene changed size (copies) but the user keeps the view.
     void setBounds(const scene::Bounds& bounds);
@@ -32,9 +36,13 @@ class OrbitCamera {
     // Wheel steps (positive: closer). Scales the distance to the target, so the eye never
     // reaches or crosses it.
     void zoom(float steps);
-    // Keeps the view direction and frames the whole scene (F).
+    // Keeps the view direction and frames the whole scene, or `what` (F: the selection), in
+    // either projection (scene::fitCamera's distance).
     void fit(float aspect);
-    // Back to the initial view (R).
+    void fit(const scene::Bounds& what, float aspect);
+    // Turns to a standard view around the target, at the same distance (1, 3, 7, 0).
+    void turnTo(const scene::StandardView& view);
+    // Back to the initial view (Home).
     void resetView();
 
     glm::vec3 eye() const;
@@ -43,10 +51,13 @@ class OrbitCamera {
     const scene::Bounds& bounds() const { return bounds_; }
     // The camera for this frame, near and far planes fitted to the bounds. `reach` is how
     // far from the centre the scene may extend, in bounding radii (an exploded view: 2).
-    scene::Camera camera(float reach = 1.0f) const;
+    scene::Camera camera(float reach = 1.0f, bool ortho = false) const;
 
   private:
     glm::vec3 direction() const; // unit vector from target to eye
+    // The screen's up: the direction's derivative by pitch, defined at the poles too, where
+    // the model's up axis is the view direction itself.
+    glm::vec3 viewUp() const;
     void setFrom(const scene::Camera& camera);
 
     // Orthonormal frame: up_, and a_ x b_ = up_ spanning the horizontal plane.
@@ -57,6 +68,7 @@ class OrbitCamera {
     float fovY_ = glm::radians(40.0f);
     scene::Bounds bounds_;
     scene::Camera initial_;
+    const scene::StandardView* opening_ = nullptr;
 };
 
 } // namespace app

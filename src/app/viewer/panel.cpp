@@ -30,7 +30,13 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "E                  part edges on/off\n"
                                  "M                  measure: click points and faces\n"
                                  "Esc                clear selection; if none, quit\n"
-                                 "F                  fit the view to the scene\n"
+                                 "F                  fit the view to the selection,\n"
+                                 "                   or the scene when none\n"
+                                 "1 / 3 / 7          front / right / top view\n"
+                                 "ctrl + 1 / 3 / 7   back / left / bottom view\n"
+                                 "0                  isometric view\n"
+                                 "2 / 4 / 5 / 6      FreeCAD's top / back / bottom / left\n"
+                                 "O                  orthographic / perspective\n"
                                  "Home               reset the view\n"
                                  "R                  reload shaders, clear pipeline caches\n"
                                  "V                  vsync on/off\n"
@@ -233,6 +239,7 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
     levelsOfDetail(settings, info);
     ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
     ImGui::Checkbox("vsync (V)", &view.vsync);
+    ImGui::Checkbox("orthographic (O)", &settings.camera.ortho);
     // What the last switch cost: a cached pipeline makes it a lookup.
     const render::SwitchReport& last = info.lastSwitch;
     ImGui::Text("last switch %.2f ms, pipeline %s%s", last.ms,

@@ -11,6 +11,7 @@
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/section.h"
+#include "scene/standard_view.h"
 
 // Only the key code constants are used; no GLFW function is called here.
 #define GLFW_INCLUDE_NONE
@@ -43,6 +44,8 @@ const CommandSpec commandSpecs[] = {
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
     {"copies", ScriptOp::Copies, 1, "copies N"},
     {"section", ScriptOp::Section, 0, "section AXIS,VALUE[,flip] | off"},
+    {"view", ScriptOp::View, 0, "view NAME"},
+    {"ortho", ScriptOp::Ortho, 0, "ortho on|off"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
@@ -77,11 +80,12 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     const CommandSpec* spec = nullptr;
     for (const auto& candidate : commandSpecs)
         if (name == candidate.name) spec = &candidate;
-    if (!spec)
-        fail("unknown command '" + name +
-             "' (known: key, move, click, drag, box, object, node, scroll, resize, renderer, mode, "
-             "culling, freeze, msaa, copies, section, screenshot, drop, loaded, cancel, frames, "
-             "quit)");
+    if (!spec) {
+        std::string known;
+        for (const auto& candidate : commandSpecs)
+            known += (known.empty() ? "" : ", ") + std::string(candidate.name);
+        fail("unknown command '" + name + "' (known: " + known + ")");
+    }
     command.op = spec->op;
 
     std::vector<std::string> args;
@@ -89,7 +93,8 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     const bool takesText = spec->op == ScriptOp::Key || spec->op == ScriptOp::Renderer ||
                            spec->op == ScriptOp::Mode || spec->op == ScriptOp::Culling ||
                            spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Section ||
-                           spec->op == ScriptOp::Screenshot || spec->op == ScriptOp::Drop;
+                           spec->op == ScriptOp::Screenshot || spec->op == ScriptOp::Drop ||
+                           spec->op == ScriptOp::View || spec->op == ScriptOp::Ortho;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool fits = spec->op == ScriptOp::Object || spec->op == ScriptOp::Node ? !args.empty()
@@ -185,8 +190,13 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             }
         break;
     case ScriptOp::Freeze:
+    case ScriptOp::Ortho:
         if (command.text != "on" && command.text != "off")
-            fail(std::string("'freeze' takes on or off, not '") + command.text + "'");
+            fail("'" + name + "' takes on or off, not '" + command.text + "'");
+        break;
+    case ScriptOp::View:
+        if (!scene::findStandardView(command.text))
+            fail("unknown view '" + command.text + "' (known: " + scene::standardViewNames() + ")");
         break;
     default:
         break;

@@ -25,6 +25,8 @@
 //   3.7 section y,0,flip    a section plane as --section gives it, in the first free slot of
 //                           the panel's three (a fourth replaces the third); `section off`
 //                           turns them all off
+//   3.8 view top            a standard view (scene/standard_view.h), as the keys 1, 3, 7, 0 do
+//   3.9 ortho on            orthographic projection (off: perspective), as O does
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
 //   4.6 loaded              wait until every dropped model has loaded (they load while
@@ -64,6 +66,8 @@ enum class ScriptOp {
     Msaa,
     Copies,
     Section,
+    View,
+    Ortho,
     Screenshot,
     Drop,
     Loaded,

@@ -3,6 +3,7 @@
 #include "app/viewer/viewer.h"
 
 #include "app/headless.h" // exitCode
+#include "scene/bounds.h"
 #include "scene/part_data.h"
 #include "vk/check.h"
 
@@ -61,6 +62,26 @@ void Viewer::selectionChanged() const {
     events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
                 std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
                 "): " + info->path);
+}
+
+void Viewer::fitView() {
+    const scene::Bounds selected =
+        scene::partsWorldBounds(scene_.scene(), input_.selection().selected());
+    if (scene::isEmpty(selected))
+        camera_.fit(aspect());
+    else
+        camera_.fit(selected, aspect());
+    events_.say(scene::isEmpty(selected) ? "fit: scene" : "fit: selection");
+}
+
+void Viewer::turnTo(const scene::StandardView& view) {
+    camera_.turnTo(view);
+    events_.say(std::string("view: ") + view.name);
+}
+
+void Viewer::setOrtho(bool ortho) {
+    settings_.camera.ortho = ortho;
+    events_.say(ortho ? "projection: orthographic" : "projection: perspective");
 }
 
 void Viewer::partsChanged() const {

@@ -46,6 +46,12 @@ class Viewer {
     float aspect() const;
     uint64_t nextFrame() const { return frameNumber_; }
     void reloadShaders(); // R
+    // F: frames the selected parts when there are some, else the whole scene.
+    void fitView();
+    // 1, 3, 7, 0 (and a script's `view`): a standard view, at the same distance. O (and a
+    // script's `ortho`): the projection, a setting (Options::camera) the panel edits too.
+    void turnTo(const scene::StandardView& view);
+    void setOrtho(bool ortho);
     void screenshot(const std::string& path) { screenshotPath_ = path; }
     void selectionChanged() const; // tells the event lines
     void partsChanged() const;     // hidden parts changed: tells the event lines

@@ -1,0 +1,218 @@
+// test_camera.cpp - the camera's maths in both projections: the standard views against
+// FreeCAD's own camera rotations, fitting that keeps every corner of the bounds in view,
+// switching projections keeping the target's size, pixel rays and unprojection round trips
+// in ortho, and the world box of selected parts that F fits.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/quaternion.hpp>
+#include <map>
+
+#include "scene/bounds.h"
+#include "scene/camera.h"
+#include "scene/generator.h"
+#include "scene/standard_view.h"
+
+namespace {
+
+scene::Bounds box(glm::vec3 min, glm::vec3 max) {
+    scene::Bounds b;
+    b.min = min;
+    b.max = max;
+    return b;
+}
+
+// FreeCAD's Gui/Camera.cpp: each standard view as the rotation (x, y, z, w) of a camera that
+// looks down its -Z with +Y up. Written out from FreeCAD's source, not from our table.
+const std::map<std::string, glm::quat>& freecadRotations() {
+    const float r = std::sqrt(0.5f);
+    static const std::map<std::string, glm::quat> rotations = {
+        {"top", glm::quat(1, 0, 0, 0)}, // glm::quat is (w, x, y, z)
+        {"bottom", glm::quat(0, 1, 0, 0)},
+        {"front", glm::quat(r, r, 0, 0)},
+        {"back", glm::quat(0, 0, r, r)}, // FreeCAD's "rear"
+        {"right", glm::quat(0.5f, 0.5f, 0.5f, 0.5f)},
+        {"left", glm::quat(-0.5f, -0.5f, 0.5f, 0.5f)},
+        {"isometric", glm::quat(0.820473f, 0.424708f, 0.17592f, 0.339851f)},
+    };
+    return rotations;
+}
+
+// The camera's forward and up directions as its view matrix has them.
+glm::vec3 forwardOf(const scene::Camera& c) {
+    const glm::mat4 v = c.view();
+    return -glm::vec3(v[0][2], v[1][2], v[2][2]);
+}
+glm::vec3 upOf(const scene::Camera& c) {
+    const glm::mat4 v = c.view();
+    return glm::vec3(v[0][1], v[1][1], v[2][1]);
+}
+
+void expectNear(glm::vec3 a, glm::vec3 b, float tolerance, const std::string& what) {
+    EXPECT_LT(glm::length(a - b), tolerance)
+        << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", " << b.y
+        << ", " << b.z << ")";
+}
+
+// Every corner of `bounds` projects inside the image and the depth range.
+void expectContains(const scene::Camera& camera, const scene::Bounds& bounds, float aspect,
+                    const std::string& what) {
+    const glm::mat4 viewProj = camera.viewProjection(aspect);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
+                          (corner & 2) ? bounds.max.y : bounds.min.y,
+                          (corner & 4) ? bounds.max.z : bounds.min.z);
+        const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+        ASSERT_GT(clip.w, 0.0f) << what;
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        EXPECT_LE(std::abs(ndc.x), 1.0f + 1e-4f) << what << ", corner " << corner;
+        EXPECT_LE(std::abs(ndc.y), 1.0f + 1e-4f) << what << ", corner " << corner;
+        EXPECT_GE(ndc.z, -1e-5f) << what << ", corner " << corner;
+        EXPECT_LE(ndc.z, 1.0f + 1e-5f) << what << ", corner " << corner;
+    }
+}
+
+scene::Camera opening(const scene::Bounds& bounds, float aspect) {
+    return scene::fitCamera(bounds, glm::vec3(0.9f, -1.6f, 1.2f), {0, 0, 1}, glm::radians(40.0f),
+                            aspect);
+}
+
+} // namespace
+
+TEST(StandardView, EveryViewLooksAsFreeCADsCamera) {
+    ASSERT_EQ(scene::standardViews().size(), freecadRotations().size());
+    const scene::Bounds bounds = box({-1, -2, -3}, {4, 5, 6});
+    const scene::Camera start = opening(bounds, 1.5f);
+    for (const scene::StandardView& view : scene::standardViews()) {
+        const glm::quat q = freecadRotations().at(view.name);
+        const scene::Camera turned = scene::turnedTo(start, view, {0, 0, 1});
+        expectNear(forwardOf(turned), q * glm::vec3(0, 0, -1), 1e-5f, view.name);
+        expectNear(upOf(turned), q * glm::vec3(0, 1, 0), 1e-5f, view.name);
+        // Around the same target at the same distance: a fitted view stays fitted.
+        EXPECT_EQ(turned.target, start.target) << view.name;
+        EXPECT_NEAR(glm::length(turned.eye - turned.target), glm::length(start.eye - start.target),
+                    1e-4f)
+            << view.name;
+    }
+    EXPECT_EQ(scene::findStandardView("sideways"), nullptr);
+    std::string names;
+    for (const scene::StandardView& view : scene::standardViews())
+        names += (names.empty() ? "" : ", ") + std::string(view.name);
+    EXPECT_EQ(scene::standardViewNames(), names);
+}
+
+// A Y-up model (glTF): FreeCAD's Z becomes Y and its Y becomes -Z, so front looks along -Z
+// (glTF's front faces +Z), top down -Y, right along -X.
+TEST(StandardView, AYUpModelKeepsItsUpAxisUp) {
+    const scene::Camera start =
+        scene::fitCamera(box({-1, -1, -1}, {1, 1, 1}), {1, 1, 1}, {0, 1, 0}, 0.7f, 1.0f);
+    auto turned = [&](const char* name) {
+        return scene::turnedTo(start, *scene::findStandardView(name), {0, 1, 0});
+    };
+    expectNear(forwardOf(turned("front")), {0, 0, -1}, 1e-5f, "front");
+    expectNear(upOf(turned("front")), {0, 1, 0}, 1e-5f, "front up");
+    expectNear(forwardOf(turned("top")), {0, -1, 0}, 1e-5f, "top");
+    expectNear(upOf(turned("top")), {0, 0, -1}, 1e-5f, "top up");
+    expectNear(forwardOf(turned("right")), {-1, 0, 0}, 1e-5f, "right");
+    expectNear(forwardOf(turned("isometric")), glm::normalize(glm::vec3(-1, -1, -1)), 1e-5f,
+               "isometric");
+}
+
+// Fitted from any standard view, in either projection and any window shape, the whole box is
+// in view, depth range included.
+TEST(Camera, FitKeepsTheBoundsInViewInBothProjections) {
+    for (float size : {1e-3f, 1.0f, 5e3f})
+        for (float aspect : {0.5f, 1.6f, 3.0f})
+            for (const scene::StandardView& view : scene::standardViews())
+                for (bool ortho : {false, true}) {
+                    const scene::Bounds bounds =
+                        box(glm::vec3(10, -3, 2) * size, glm::vec3(12, 1, 2.5f) * size);
+                    scene::Camera camera =
+                        scene::turnedTo(opening(bounds, aspect), view, {0, 0, 1});
+                    camera.ortho = ortho;
+                    scene::fitPlanes(camera, bounds);
+                    expectContains(camera, bounds, aspect,
+                                   std::string(view.name) + (ortho ? " ortho" : "") + " size " +
+                                       std::to_string(size) + " aspect " + std::to_string(aspect));
+                }
+}
+
+// In ortho the planes take in the whole sphere even with the eye among the parts (behind it
+// too), which perspective cannot.
+TEST(Camera, OrthoPlanesReachBehindAnEyeInsideTheBounds) {
+    const scene::Bounds bounds = box({-10, -10, -10}, {10, 10, 10});
+    scene::Camera camera;
+    camera.eye = {0, -2, 0};
+    camera.target = {0, 0, 0};
+    camera.ortho = true;
+    scene::fitPlanes(camera, bounds);
+    EXPECT_LT(camera.nearPlane, 0.0f);
+    const glm::mat4 viewProj = camera.viewProjection(1.0f);
+    const glm::vec4 behind = viewProj * glm::vec4(0, -15, 0, 1); // behind the eye, inside
+    EXPECT_GE(behind.z / behind.w, 0.0f);
+    EXPECT_EQ(behind.w, 1.0f);
+}
+
+// Switching keeps the target's apparent size: points on the plane through the target,
+// facing the camera, land on the same pixels in both projections.
+TEST(Camera, SwitchingProjectionKeepsTheTargetsSize) {
+    scene::Camera camera = opening(box({-1, -1, -1}, {1, 1, 1}), 1.6f);
+    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    for (glm::vec2 offset :
+         {glm::vec2(0.3f, 0.0f), glm::vec2(-0.2f, 0.45f), glm::vec2(0.6f, -0.5f)}) {
+        const glm::vec4 p(camera.target + offset.x * right + offset.y * up, 1.0f);
+        camera.ortho = false;
+        const glm::vec4 perspective = camera.viewProjection(1.6f) * p;
+        camera.ortho = true;
+        const glm::vec4 ortho = camera.viewProjection(1.6f) * p;
+        EXPECT_EQ(ortho.w, 1.0f);
+        expectNear(glm::vec3(glm::vec2(perspective) / perspective.w, 0),
+                   glm::vec3(glm::vec2(ortho), 0), 1e-5f, "projected");
+    }
+    // And the view is as tall as the perspective one at the target: 2 d tan(fov / 2).
+    EXPECT_FLOAT_EQ(camera.orthoHeight(),
+                    2.0f * glm::length(camera.target - camera.eye) * std::tan(0.5f * camera.fovY));
+}
+
+// In ortho every pixel's ray has the view's direction, starts on the near plane under the
+// pixel and passes through what projects there; unprojecting a pixel's depth gives the point.
+TEST(Camera, OrthoPixelRaysAreParallelAndUnprojectRoundTrips) {
+    scene::Camera camera = scene::turnedTo(opening(box({-2, -1, 0}, {3, 2, 1}), 1.5f),
+                                           *scene::findStandardView("isometric"), {0, 0, 1});
+    camera.ortho = true;
+    scene::fitPlanes(camera, box({-2, -1, 0}, {3, 2, 1}));
+    const glm::vec2 size(300, 200);
+    const glm::mat4 viewProj = camera.viewProjection(size.x / size.y);
+    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    for (const glm::vec3 point : {glm::vec3(0.5f, 0.2f, 0.3f), glm::vec3(-1.7f, 1.5f, 0.9f),
+                                  glm::vec3(2.5f, -0.8f, 0.1f)}) {
+        const glm::vec4 clip = viewProj * glm::vec4(point, 1.0f);
+        const glm::vec2 pixel = (glm::vec2(clip) * 0.5f + 0.5f) * size;
+        const scene::Ray ray = scene::pixelRay(viewProj, size, pixel);
+        expectNear(glm::normalize(ray.direction), forward, 1e-5f, "ray direction");
+        const glm::vec4 origin = viewProj * glm::vec4(ray.origin, 1.0f);
+        EXPECT_NEAR(origin.z, 0.0f, 1e-5f); // on the near plane
+        const glm::vec3 toPoint = point - ray.origin;
+        const float along = glm::dot(toPoint, forward);
+        EXPECT_LT(glm::length(toPoint - along * forward), 1e-4f);
+        expectNear(scene::unprojectPixel(viewProj, size, pixel, clip.z), point, 1e-4f,
+                   "unprojected");
+    }
+}
+
+// F fits the world box of the selected parts' triangles: two tiles of makeTiles, placed by
+// their sheets (generator.cpp: tiles of 0.8 on a 1.0 grid, sheets at x -4 and 0.2, y -0.4).
+TEST(Camera, SelectedPartsWorldBounds) {
+    const scene::Scene s = scene::makeTiles();
+    scene::PartSet parts(s.uniquePartCount());
+    EXPECT_TRUE(scene::isEmpty(scene::partsWorldBounds(s, parts)));
+    parts.insert(12 + 1 * 4 + 2); // sheet 2, row 1, column 2
+    scene::Bounds b = scene::partsWorldBounds(s, parts);
+    expectNear(b.min, {2.2f, 0.6f, 0.0f}, 1e-5f, "min");
+    expectNear(b.max, {3.0f, 1.4f, 0.0f}, 1e-5f, "max");
+    parts.insert(0); // sheet 1, row 0, column 0
+    b = scene::partsWorldBounds(s, parts);
+    expectNear(b.min, {-4.0f, -0.4f, 0.0f}, 1e-5f, "min");
+    expectNear(b.max, {3.0f, 1.4f, 0.0f}, 1e-5f, "max");
+}
