@@ -139,6 +139,13 @@ TEST(InputScript, BadLinesNameFileAndLine) {
     EXPECT_NE(errorOf("1 section w,0\n").find("s.txt:1: 'section' expects AXIS,VALUE"),
               std::string::npos);
     EXPECT_NE(errorOf("1 section on\n").find(", or off"), std::string::npos);
+    EXPECT_EQ(errorOf("1 dblclick 3 4\n2 level solid\n3 level assembly\n4 level face\n"),
+              "(no error)");
+    EXPECT_EQ(errorOf("1 level body\n"),
+              "s.txt:1: 'level' takes face, solid or assembly, not 'body'");
+    EXPECT_EQ(errorOf("1 dblclick -1 4\n"), "s.txt:1: window coordinates cannot be negative");
+    EXPECT_EQ(errorOf("1 node hide\n2 node select a/b c\n"), "(no error)");
+    EXPECT_NE(errorOf("1 node drop a\n").find("not 'drop'"), std::string::npos);
 }
 
 TEST(InputScript, MissingFileIsAnError) {

@@ -385,6 +385,17 @@ both=$(node_parts "gearbox module" "gearbox module/base plate")
     at frames 2
     at node add gearbox module
     at frames 2
+    at key ESC
+    at move 470 260
+    at level solid
+    at click 470 260
+    at frames 6
+    at level assembly
+    at click 470 260
+    at frames 6
+    at level face
+    at dblclick 470 260
+    at frames 6
     at quit
 } >"$work/tree.txt"
 xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
@@ -393,9 +404,23 @@ xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
 rc=$?
 [[ $rc -eq 0 ]] || { fail "tree session: exit code $rc"; head -c 3000 "$work/tree.err"; }
 tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | tr '\n' '|')
-want="idview: hidden: $gearbox parts|idview: hidden: 0 parts|idview: selected: $plate parts|idview: selected: $both parts|"
-if [[ $gearbox -gt $plate && $plate -gt 0 && $tree_events == "$want" ]]; then
-    echo "ok   assembly tree: hide, show, select and add nodes ($gearbox and $plate parts)"
+# The click at 470,260 lands on the base plate, object 0 (headless --pick says so): level
+# solid selects its parts, assembly every part under its group, a double-click the object.
+object0=$("$idview" --tree --scene procedural:preset=small | python3 -c '
+import json, sys
+def find(node):
+    if node.get("object") == 0:
+        return node["parts"][1]
+    return next((n for n in map(find, node.get("children", [])) if n is not None), None)
+print(find(json.load(sys.stdin)))')
+picked=$("$idview" --headless --scene procedural:preset=small --size 720x450 --frames 1 \
+    --pick 470,260 2>/dev/null | sed -n 's/.*"object":\([0-9]*\),.*/\1/p')
+[[ $picked == 0 ]] || fail "the click point shows object '$picked', not the base plate"
+want="idview: hidden: $gearbox parts|idview: hidden: 0 parts|idview: selected: $plate parts|"
+want+="idview: selected: $both parts|idview: selected: none|idview: selected: $object0 parts|"
+want+="idview: selected: $gearbox parts|idview: selected: $object0 parts|"
+if [[ $gearbox -gt $plate && $plate -gt $object0 && $object0 -gt 1 && $tree_events == "$want" ]]; then
+    echo "ok   assembly tree and selection levels: hide, show, select and add nodes; solid, assembly, double-click ($gearbox, $plate, $object0 parts)"
 else
     fail "assembly tree events '$tree_events', expected '$want'"
 fi

@@ -137,8 +137,16 @@ void Input::onButton(int button, int action, int mods) {
             // The parts come from the ID image of a frame after the release.
             box_ = Box{done.start, cursor_, done.mode, viewer_.nextFrame()};
         } else if (done.kind == DragKind::Orbit && done.moved < clickSlop) {
-            // The pick of the next frame (at this cursor position) decides what it hits.
+            // The pick of the next frame (at this cursor position) decides what it hits. A
+            // second click soon at the same place selects the object (a CAD solid) at least.
+            const double now = glfwGetTime();
+            const bool twice = now - lastClickTime_ < doubleClickSeconds &&
+                               glm::length(cursor_ - lastClickAt_) < clickSlop;
+            lastClickTime_ = now;
+            lastClickAt_ = cursor_;
             pendingClick_ = viewer_.nextFrame();
+            pendingLevel_ =
+                twice ? std::max(1u, viewer_.view().selectLevel) : viewer_.view().selectLevel;
         }
     }
 }
@@ -204,6 +212,13 @@ bool Input::readPick(const std::optional<render::PickReading>& pick) {
         viewer_.measured(*pick); // measure mode: the click places a point, selects nothing
         pendingClick_.reset();
         return false;
+    }
+    if (pendingClick_ && pick && pick->frame >= *pendingClick_ && pendingLevel_ > 0 &&
+        selection_.hovered()) {
+        selection_.clickAround(viewer_.partsAround(*selection_.hovered(), pendingLevel_));
+        selectedDepth_ = hoveredDepth_;
+        pendingClick_.reset();
+        return true;
     }
     if (pendingClick_ && pick && pick->frame >= *pendingClick_) {
         selection_.click();
@@ -298,6 +313,23 @@ void Input::queue(const ScriptCommand& c) {
         step([this, v] { onCursor(v[0], v[1]); }, true);
         step(press(GLFW_PRESS), false);
         step(press(GLFW_RELEASE), true);
+        break;
+    case ScriptOp::DoubleClick: // both clicks in one step: well within doubleClickSeconds
+        step([this, v] { onCursor(v[0], v[1]); }, true);
+        step(
+            [this, press] {
+                for (int i = 0; i < 2; ++i) {
+                    press(GLFW_PRESS)();
+                    press(GLFW_RELEASE)();
+                }
+            },
+            true);
+        break;
+    case ScriptOp::Level:
+        step([this, level = c.text == "face"    ? 0u
+                            : c.text == "solid" ? 1u
+                                                : 2u] { viewer_.view().selectLevel = level; },
+             true);
         break;
     case ScriptOp::Drag:
     case ScriptOp::Box: // the same hand movement, with the modifier held at the press

@@ -36,6 +36,7 @@ class Input {
     void onScroll(double dx, double dy);
     void onDrop(const std::string& path); // opened between frames (takeDrops)
     void fail(std::exception_ptr error);  // a handler threw inside a GLFW callback
+    static constexpr double doubleClickSeconds = 0.4;
 
     // Between frames: plays the script commands due at `seconds`, a frame's worth of steps.
     void runScript(double seconds);
@@ -108,6 +109,9 @@ class Input {
     Selection selection_;
     float hoveredDepth_ = 1.0f, selectedDepth_ = 1.0f;
     std::optional<uint64_t> pendingClick_; // the frame whose pick the click selects from
+    uint32_t pendingLevel_ = 0;            // what it selects (ViewSettings::selectLevel)
+    double lastClickTime_ = -1.0;          // glfwGetTime of the last click, for double-clicks
+    glm::dvec2 lastClickAt_{-1.0, -1.0};
     std::optional<uint64_t> pickingSince_; // first frame of the current run of picks
     std::vector<std::string> drops_;
     ScriptPlayer script_;

@@ -330,8 +330,14 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::Text("  %u triangles, depth %.6f", p.triangleCount, double(line.depth));
 }
 
-void picking(const PanelInfo& info, PanelActions& actions) {
+void picking(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
     ImGui::Text("visible parts  %u", info.visibleParts);
+    ImGui::TextUnformatted("click selects");
+    const char* levels[] = {"face/part", "solid/object", "assembly"};
+    for (uint32_t level = 0; level < 3; ++level) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(levels[level], view.selectLevel == level)) view.selectLevel = level;
+    }
     partLine("hovered", info.hovered);
     if (info.selectedCount > 1)
         ImGui::Text("selected: %u parts", info.selectedCount);
@@ -396,7 +402,8 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
     if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
-    if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen)) picking(info, actions);
+    if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen))
+        picking(view, info, actions);
     if (ImGui::CollapsingHeader("Assembly tree")) assemblyTree(view, info, actions);
     if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);

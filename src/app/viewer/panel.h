@@ -31,6 +31,10 @@ struct ViewSettings {
     // filter keeps, worked out again only when the filter text changes.
     std::vector<uint8_t> treeOpen, treeShown;
     std::string treeFilterFor;
+    // What a click selects around the part under the cursor (scene::partsAround's level): 0
+    // the part (a CAD face), 1 its object (a CAD solid), 2 the assembly node above that. A
+    // double-click selects at least the object.
+    uint32_t selectLevel = 0;
     std::array<char, 512> openPath{}; // the panel's "open" field
 };
 

@@ -31,6 +31,8 @@ const CommandSpec commandSpecs[] = {
     {"key", ScriptOp::Key, 0, "key NAME"},
     {"move", ScriptOp::Move, 2, "move X Y"},
     {"click", ScriptOp::Click, 2, "click X Y"},
+    {"dblclick", ScriptOp::DoubleClick, 2, "dblclick X Y"},
+    {"level", ScriptOp::Level, 0, "level face|solid|assembly"},
     {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1"},
     {"box", ScriptOp::Box, 4, "box X0 Y0 X1 Y1 [add|remove]"},
     {"object", ScriptOp::Object, 0, "object NAME"},
@@ -94,7 +96,8 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Mode || spec->op == ScriptOp::Culling ||
                            spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Section ||
                            spec->op == ScriptOp::Screenshot || spec->op == ScriptOp::Drop ||
-                           spec->op == ScriptOp::View || spec->op == ScriptOp::Ortho;
+                           spec->op == ScriptOp::View || spec->op == ScriptOp::Ortho ||
+                           spec->op == ScriptOp::Level;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool fits = spec->op == ScriptOp::Object || spec->op == ScriptOp::Node ? !args.empty()
@@ -151,8 +154,13 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             command.values[0] != std::floor(command.values[0]))
             fail("frames takes a whole number from 1 to 1000");
         break;
+    case ScriptOp::Level:
+        if (command.text != "face" && command.text != "solid" && command.text != "assembly")
+            fail("'level' takes face, solid or assembly, not '" + command.text + "'");
+        break;
     case ScriptOp::Move:
     case ScriptOp::Click:
+    case ScriptOp::DoubleClick:
     case ScriptOp::Drag:
     case ScriptOp::Box:
         for (size_t i = 0; i < spec->numbers; ++i)

@@ -7,6 +7,9 @@
 //                           HOME), with modifiers as in shift+H, ctrl+A or alt+X
 //   1   move 320 200        cursor to window coordinates (top-left origin)
 //   1.2 click 320 200       move there, press and release the left button
+//   1.3 dblclick 320 200    move there and click twice at once (a double-click)
+//   1.4 level solid         what a click selects: face, solid or assembly (the panel's radio
+//                           buttons; face is a part of any model, solid its object)
 //   1.5 drag 100 100 300 120  left-button drag (orbit) from the first point to the second
 //   1.6 box 10 10 200 150   box selection: Shift + left drag between the corners; `box ... add`
 //                           holds Ctrl (adds), `box ... remove` Alt (removes)
@@ -53,6 +56,8 @@ enum class ScriptOp {
     Key,
     Move,
     Click,
+    DoubleClick,
+    Level,
     Drag,
     Box,
     Object,

@@ -32,6 +32,12 @@ class Selection {
         if (hovered_) selected_.insert(*hovered_);
         primary_ = hovered_;
     }
+    // A click at a coarser level (solid, assembly): `parts` around the hovered part become
+    // the selection, the hovered part its primary one (the panel details the face).
+    void clickAround(const scene::PartSet& parts) {
+        selected_ = parts;
+        primary_ = hovered_;
+    }
     // A box or the object list: `parts` replace, join or leave the selection.
     void select(const scene::PartSet& parts, SelectMode mode) {
         if (mode == SelectMode::Replace) selected_.clear();

@@ -54,7 +54,7 @@ void Viewer::selectionChanged() const {
     const Selection& selection = input_.selection();
     const auto part = selection.primary();
     const auto info = part ? scene::describePart(scene_.scene(), *part) : std::nullopt;
-    if (!info) {
+    if (!info || selection.selected().size() > 1) { // a solid or assembly: its count
         const uint32_t count = selection.selected().size();
         events_.say(count ? "selected: " + std::to_string(count) + " parts" : "selected: none");
         return;
@@ -98,6 +98,11 @@ void Viewer::selectObjects(const std::string& name, SelectMode mode) {
         }
     input_.selection().select(parts, mode);
     selectionChanged();
+}
+
+scene::PartSet Viewer::partsAround(uint32_t part, uint32_t level) const {
+    const scene::Scene& scene = scene_.scene();
+    return scene::partSetOf(scene::partsAround(scene, part, level), scene.uniquePartCount());
 }
 
 bool Viewer::actOnNode(const std::string& path, NodeAction action, SelectMode mode) {

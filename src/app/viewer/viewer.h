@@ -62,6 +62,8 @@ class Viewer {
     // node has that path.
     enum class NodeAction { Select, Hide, Show };
     bool actOnNode(const std::string& path, NodeAction action, SelectMode mode);
+    // The parts a click at `level` selects around `part` (scene::partsAround).
+    scene::PartSet partsAround(uint32_t part, uint32_t level) const;
     void quit() { window_.close(); }
     // Measure mode (M): clicks place points instead of selecting.
     void toggleMeasure();
