@@ -116,15 +116,11 @@ struct FrameData {
     // Occlusion, mesh techniques: the word of meshletBits where a second bitset starts, the
     // meshlets the late pass draws (mdi modes: lateMeshletWord, chosen by cull.comp; push
     // mode: lateDrawnWord, written by the task shader, which tests them itself), and where a
-    // third starts, the meshlets the early pass drew (a still view draws both again:
-    // CULL_PHASE_REUSED, CULL_PHASE_REUSED_LATE); 0 where unused
+    // third starts, the early pass's (a still view draws both again); 0 where unused
     uint lateMeshletWord, lateDrawnWord, earlyMeshletWord;
-    // Where the lists hold levels of detail (cull.glsl's lodChosen), the pixels an object's
-    // level may be off by; 0 elsewhere.
-    float lodErrorPixels;
+    float lodErrorPixels; // levels in the lists (cull.glsl's lodChosen): their pixels, else 0
     float eyeReach; // |eye| in either projection: cull.glsl's rounding margins grow with it
-    // Section planes (scene/section.h): a fragment is cut away where dot(plane, (p, 1)) > 0
-    // for any of them; unused ones are (0, 0, 0, -1). Read only by IDV_SECTION pipelines.
+    // IDV_SECTION (scene/section.h): cut away where dot(plane, (p, 1)) > 0; unused (0,0,0,-1)
     vec4 sectionPlanes[SECTION_PLANES_MAX];
 };
 

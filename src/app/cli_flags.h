@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "app/cli_values.h"
 
 namespace app {
 
@@ -18,8 +19,5 @@ struct Flag {
 };
 
 const std::vector<Flag>& flags();
-
-// "a,b,,c" -> {"a", "b", "", "c"}: every item, empty ones included (they are refused later).
-std::vector<std::string> commaList(const std::string& text);
 
 } // namespace app

@@ -19,43 +19,30 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[8] = {'i', 'd', 'v', 'i', 'e', 'w', 'T', 'C'};
 
-void putKey(ByteWriter& out, const CadCacheKey& key) {
-    out.putString(key.path);
-    out.put(key.fileSize);
-    out.put(key.contentHash);
-    out.put(key.deflection);
-    out.put(key.angularDeflection);
-    out.put(key.levels);
+// The key's fields and the load's, in the order they are stored (`io`: a ByteWriter or a
+// ByteReader, see scene_codec.h).
+template <typename IO, typename K>
+void keyFields(IO& io, K& key) {
+    fields(io, key.path, key.fileSize, key.contentHash, key.deflection, key.angularDeflection,
+           key.levels);
+}
+
+template <typename IO, typename R>
+void resultFields(IO& io, R& r) {
+    io.records(r.warnings, [](auto& io, auto& w) { io(w); });
+    fields(io, r.deflection, r.faces, r.facesFailed);
 }
 
 CadCacheKey getKey(ByteReader& in) {
     CadCacheKey key;
-    key.path = in.getString();
-    key.fileSize = in.get<uint64_t>();
-    key.contentHash = in.get<uint64_t>();
-    key.deflection = in.get<double>();
-    key.angularDeflection = in.get<double>();
-    key.levels = in.get<uint32_t>();
+    keyFields(in, key);
     return key;
-}
-
-void putResult(ByteWriter& out, const CadLoadResult& r) {
-    encodeScene(r.scene, out);
-    out.put(uint64_t(r.warnings.size()));
-    for (const std::string& w : r.warnings) out.putString(w);
-    out.put(r.deflection);
-    out.put(r.faces);
-    out.put(r.facesFailed);
 }
 
 CadLoadResult getResult(ByteReader& in) {
     CadLoadResult r;
     r.scene = decodeScene(in);
-    const uint64_t warnings = in.get<uint64_t>();
-    for (uint64_t i = 0; i < warnings; ++i) r.warnings.push_back(in.getString());
-    r.deflection = in.get<double>();
-    r.faces = in.get<uint32_t>();
-    r.facesFailed = in.get<uint32_t>();
+    resultFields(in, r);
     if (!in.done()) throw std::runtime_error("bytes after the load");
     return r;
 }
@@ -179,8 +166,9 @@ std::optional<CadLoadResult> readCadCache(const fs::path& entry, const CadCacheK
 std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
                           const CadLoadResult& result) {
     ByteWriter keyBytes, payload, head, tail;
-    putKey(keyBytes, key);
-    putResult(payload, result);
+    keyFields(keyBytes, key);
+    encodeScene(result.scene, payload);
+    resultFields(payload, result);
     for (char c : kMagic) head.put(c);
     head.put(kCadCacheVersion);
     head.putString(keyBytes.bytes());

@@ -17,116 +17,51 @@ static_assert(sizeof(Geometry) == 160 && sizeof(Object) == 144 && sizeof(Materia
                   sizeof(SurfaceInfo) == 104,
               "a scene record changed: encode its fields and bump kCadCacheVersion");
 
-void putSurface(ByteWriter& out, const SurfaceInfo& s) {
-    out.put(uint8_t(s.kind));
-    out.put(s.area);
-    out.put(s.normal);
-    out.put(s.d);
-    out.put(s.radius);
-    out.put(s.axisOrigin);
-    out.put(s.axisDirection);
+// The records' fields in the order they are stored: `io` is a ByteWriter (records const) or
+// a ByteReader (records to fill).
+template <typename IO, typename S>
+void surfaceFields(IO& io, S& s) {
+    fields(io, s.kind, s.area, s.normal, s.d, s.radius, s.axisOrigin, s.axisDirection);
 }
 
-SurfaceInfo getSurface(ByteReader& in) {
-    SurfaceInfo s;
-    const uint8_t kind = in.get<uint8_t>();
-    if (kind > uint8_t(SurfaceKind::Other)) throw std::runtime_error("unknown surface kind");
-    s.kind = SurfaceKind(kind);
-    s.area = in.get<double>();
-    s.normal = in.get<glm::dvec3>();
-    s.d = in.get<double>();
-    s.radius = in.get<double>();
-    s.axisOrigin = in.get<glm::dvec3>();
-    s.axisDirection = in.get<glm::dvec3>();
-    return s;
+template <typename IO, typename G>
+void geometryFields(IO& io, G& g) {
+    fields(io, g.name, g.firstVertex, g.vertexCount, g.firstIndex, g.triangleCount, g.firstPart,
+           g.partCount, g.level, g.lodError, g.partFaces);
+    io.records(g.partSurfaces, [](auto& io, auto& s) { surfaceFields(io, s); });
+    fields(io, g.partMaterials, g.levels);
 }
 
-void putGeometry(ByteWriter& out, const Geometry& g) {
-    out.putString(g.name);
-    for (uint32_t v : {g.firstVertex, g.vertexCount, g.firstIndex, g.triangleCount, g.firstPart,
-                       g.partCount, g.level})
-        out.put(v);
-    out.put(g.lodError);
-    out.putArray(g.partFaces);
-    out.put(uint64_t(g.partSurfaces.size()));
-    for (const SurfaceInfo& s : g.partSurfaces) putSurface(out, s);
-    out.putArray(g.partMaterials);
-    out.putArray(g.levels);
-}
-
-Geometry getGeometry(ByteReader& in) {
-    Geometry g;
-    g.name = in.getString();
-    for (uint32_t* v : {&g.firstVertex, &g.vertexCount, &g.firstIndex, &g.triangleCount,
-                        &g.firstPart, &g.partCount, &g.level})
-        *v = in.get<uint32_t>();
-    g.lodError = in.get<float>();
-    g.partFaces = in.getArray<uint32_t>();
-    const uint64_t surfaces = in.get<uint64_t>();
-    // Each part's lists are empty or one per part; checking first bounds the allocation.
-    if (surfaces != 0 && surfaces != g.partCount) throw std::runtime_error("surface count");
-    for (uint64_t i = 0; i < surfaces; ++i) g.partSurfaces.push_back(getSurface(in));
-    g.partMaterials = in.getArray<uint32_t>();
-    g.levels = in.getArray<uint32_t>();
-    for (size_t size : {g.partFaces.size(), g.partMaterials.size()})
-        if (size != 0 && size != g.partCount) throw std::runtime_error("per-part list length");
-    return g;
+template <typename IO, typename S>
+void sceneFields(IO& io, S& scene) {
+    fields(io, scene.vertices, scene.indices, scene.parts);
+    io.records(scene.geometries, [](auto& io, auto& g) { geometryFields(io, g); });
+    io.records(scene.materials, [](auto& io, auto& m) { fields(io, m.name, m.color); });
+    io.records(scene.objects, [](auto& io, auto& o) {
+        fields(io, o.geometry, o.material, o.world, o.uniquePartOffset, o.name, o.path);
+    });
 }
 
 } // namespace
 
 void encodeScene(const Scene& scene, ByteWriter& out) {
-    out.putArray(scene.vertices);
-    out.putArray(scene.indices);
-    out.putArray(scene.parts);
-    out.put(uint64_t(scene.geometries.size()));
-    for (const Geometry& g : scene.geometries) putGeometry(out, g);
-    out.put(uint64_t(scene.materials.size()));
-    for (const Material& m : scene.materials) {
-        out.putString(m.name);
-        out.put(m.color);
-    }
-    out.put(uint64_t(scene.objects.size()));
-    for (const Object& o : scene.objects) {
-        out.put(o.geometry);
-        out.put(o.material);
-        out.put(o.world);
-        out.put(o.uniquePartOffset);
-        out.putString(o.name);
-        out.putString(o.path);
-    }
+    sceneFields(out, scene);
 }
 
 Scene decodeScene(ByteReader& in) {
     Scene scene;
-    scene.vertices = in.getArray<Vertex>();
-    scene.indices = in.getArray<uint32_t>();
-    scene.parts = in.getArray<Part>();
-    // Counts of variable-size records are bounded by their smallest encoding, 8 bytes.
-    auto count = [&in] {
-        const uint64_t n = in.get<uint64_t>();
-        if (n > (uint64_t(1) << 32)) throw std::runtime_error("count too large");
-        return n;
-    };
-    for (uint64_t i = count(); i > 0; --i) scene.geometries.push_back(getGeometry(in));
-    for (uint64_t i = count(); i > 0; --i) {
-        Material& m = scene.materials.emplace_back();
-        m.name = in.getString();
-        m.color = in.get<glm::vec4>();
-    }
-    for (uint64_t i = count(); i > 0; --i) {
-        Object& o = scene.objects.emplace_back();
-        o.geometry = in.get<uint32_t>();
-        o.material = in.get<uint32_t>();
-        o.world = in.get<glm::mat4>();
-        o.uniquePartOffset = in.get<uint32_t>();
-        o.name = in.getString();
-        o.path = in.getString();
-    }
-    // validate() checks the rest (ranges, parts, indices, materials, unique IDs).
-    for (const Geometry& g : scene.geometries)
+    sceneFields(in, scene);
+    // What the bytes may hold that no scene does; validate() checks the rest (ranges, parts,
+    // indices, materials, unique IDs).
+    for (const Geometry& g : scene.geometries) {
+        for (size_t size : {g.partFaces.size(), g.partSurfaces.size(), g.partMaterials.size()})
+            if (size != 0 && size != g.partCount) throw std::runtime_error("per-part list length");
+        for (const SurfaceInfo& s : g.partSurfaces)
+            if (uint8_t(s.kind) > uint8_t(SurfaceKind::Other))
+                throw std::runtime_error("unknown surface kind");
         for (uint32_t l : g.levels)
             if (l >= scene.geometries.size()) throw std::runtime_error("level out of range");
+    }
     try {
         validate(scene);
     } catch (const std::invalid_argument& e) {

@@ -36,6 +36,24 @@ class ByteWriter {
     }
     std::string& bytes() { return bytes_; }
 
+    // One field, however it is stored: the record layouts below are written once, as
+    // functions of `io(field)` that serve the writer and the reader alike.
+    template <typename T>
+    void operator()(const T& value) {
+        put(value);
+    }
+    void operator()(const std::string& text) { putString(text); }
+    template <typename T>
+    void operator()(const std::vector<T>& values) {
+        putArray(values);
+    }
+    // A list of records, each written by fields(*this, record).
+    template <typename T, typename Fields>
+    void records(const std::vector<T>& values, Fields fields) {
+        put(uint64_t(values.size()));
+        for (const T& value : values) fields(*this, value);
+    }
+
   private:
     std::string bytes_;
 };
@@ -74,6 +92,25 @@ class ByteReader {
     }
     bool done() const { return at_ == bytes_.size(); }
 
+    template <typename T>
+    void operator()(T& value) {
+        value = get<T>();
+    }
+    void operator()(std::string& text) { text = getString(); }
+    template <typename T>
+    void operator()(std::vector<T>& values) {
+        values = getArray<T>();
+    }
+    // A list of records, each read by fields(*this, record). Records take a byte at least, so
+    // a damaged count stops at the end of the bytes, not at an allocation.
+    template <typename T, typename Fields>
+    void records(std::vector<T>& values, Fields fields) {
+        const uint64_t count = get<uint64_t>();
+        if (count > bytes_.size() - at_) throw std::runtime_error("count too large");
+        values.clear();
+        for (uint64_t i = 0; i < count; ++i) fields(*this, values.emplace_back());
+    }
+
   private:
     void need(uint64_t size) const {
         if (size > bytes_.size() - at_) throw std::runtime_error("ends early");
@@ -81,6 +118,13 @@ class ByteReader {
     std::string_view bytes_;
     size_t at_ = 0;
 };
+
+// A record's fields in the order they are stored, for a ByteWriter or a ByteReader alike:
+// fields(io, r.a, r.b, r.c).
+template <typename IO, typename... Fields>
+void fields(IO& io, Fields&... each) {
+    (io(each), ...);
+}
 
 void encodeScene(const Scene& scene, ByteWriter& out);
 // Throws std::runtime_error where the bytes do not make a scene that scene::validate accepts
