@@ -73,6 +73,7 @@ void Viewer::drawPanel() {
 
 void Viewer::act(const PanelActions& actions) {
     if (actions.open) input_.onDrop(*actions.open); // opened like a dropped file
+    if (actions.view) turnTo(*actions.view);
     if (actions.cancelLoad) cancelLoads();
     Selection& selection = input_.selection();
     if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);

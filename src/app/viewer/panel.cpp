@@ -201,7 +201,8 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     }
 }
 
-void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
+void rendering(Options& settings, ViewSettings& view, const PanelInfo& info,
+               PanelActions& actions) {
     render::RenderSettings& s = settings.render;
     render::PipelineKey& key = s.pipeline;
     techniqueCombo(key.technique, info);
@@ -240,6 +241,11 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info) {
     ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
     ImGui::Checkbox("vsync (V)", &view.vsync);
     ImGui::Checkbox("orthographic (O)", &settings.camera.ortho);
+    // The standard views, as their keys turn to them (1, 3, 7, Ctrl, 0).
+    for (const scene::StandardView& standard : scene::standardViews()) {
+        if (&standard != scene::standardViews().data()) ImGui::SameLine();
+        if (ImGui::SmallButton(standard.name)) actions.view = &standard;
+    }
     // What the last switch cost: a cached pipeline makes it a lookup.
     const render::SwitchReport& last = info.lastSwitch;
     ImGui::Text("last switch %.2f ms, pipeline %s%s", last.ms,
@@ -390,7 +396,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         if (ImGui::Button("Cancel")) actions.cancelLoad = true;
     }
     if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen))
-        rendering(settings, view, info);
+        rendering(settings, view, info, actions);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
         sceneSection(settings.scene, view, info, actions);
     if (info.measuring &&

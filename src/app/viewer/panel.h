@@ -18,6 +18,7 @@
 #include "scene/assembly_tree.h"
 #include "scene/part_data.h"
 #include "scene/scene.h"
+#include "scene/standard_view.h"
 #include "scene/surface_info.h"
 
 namespace app {
@@ -44,6 +45,7 @@ struct PanelActions {
     std::optional<scene::PartRanges> selectParts;          // a tree node's parts (a row click)
     SelectMode mode = SelectMode::Replace;                 // Ctrl+click adds
     std::optional<scene::PartRanges> hideParts, showParts; // a tree row's checkbox
+    const scene::StandardView* view = nullptr;             // a standard view's button
     bool hide = false, isolate = false, showAll = false;
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
     bool cancelLoad = false;         // stop the model loading (and those queued behind it)
