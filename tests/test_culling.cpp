@@ -45,6 +45,9 @@ struct PathCase {
     // would keep the view's size: the frustum's planes and the pyramid with w 1 everywhere,
     // and a near plane behind the eye.
     bool ortho = false;
+    // Cut by a section plane through the middle, on the camera's side: the caps and what the
+    // cut opens to view are culled as everything else.
+    bool section = false;
     // Frustum culling decides by boxes against the view, whatever the sample count: over the
     // default model it is tested at 1x (on the CAD file at both), which keeps the suite's
     // heaviest rendering to what can differ.
@@ -57,7 +60,7 @@ const char* pipelinesName(Pipelines p) {
 
 void PrintTo(const PathCase& c, std::ostream* os) {
     *os << c.scene << " msaa " << c.msaa << " " << pipelinesName(c.pipelines)
-        << (c.still ? " still" : "") << (c.ortho ? " ortho" : "");
+        << (c.still ? " still" : "") << (c.ortho ? " ortho" : "") << (c.section ? " section" : "");
 }
 
 // Where two images first differ, for the failure message.
@@ -113,7 +116,22 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
                 configs.back().culling.mode = mode;
             }
     }
-    for (render::RenderSettings& s : configs) s.pipeline.msaa = c.msaa;
+    scene::Section section;
+    if (c.section) { // across the axis the camera looks along most, the camera's side cut away
+        const glm::vec3 look = camera.target - camera.eye;
+        const glm::vec3 size = glm::abs(look);
+        const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+        section.planes[0] = scene::axisPlane(axis, camera.target[axis], look[axis] > 0.0f);
+    }
+    for (render::RenderSettings& s : configs) {
+        s.pipeline.msaa = c.msaa;
+        s.section = section;
+    }
+    // The section case also draws the first reference uncut: the plane must cut something.
+    if (c.section) {
+        configs.push_back(configs.front());
+        configs.back().section = {};
+    }
     app::Options o = testing_support::headlessOptions(W, H, kFrames);
     o.cameraPath = c.still   ? scene::CameraPath::None
                    : c.ortho ? scene::CameraPath::Orbit
@@ -178,6 +196,9 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
             EXPECT_LT(drawn, total) << name << ": culling left nothing out along the path";
         }
     }
+    if (c.section) {
+        EXPECT_NE(results.back().frames.back().ids, results.front().frames.back().ids);
+    }
     // Without culling every frame draws everything.
     for (size_t i = 0; i < configs.size(); ++i) {
         if (referenceOf.count(i)) continue;
@@ -191,25 +212,24 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Lavapipe, CullingExact,
-                         ::testing::Values(PathCase{"default", 1, Pipelines::Vertex},
-                                           PathCase{"default", 1, Pipelines::Mesh},
-                                           PathCase{"default", 4, Pipelines::Vertex},
-                                           PathCase{"default", 4, Pipelines::Mesh},
-                                           PathCase{"cad", 1, Pipelines::All},
-                                           PathCase{"cad", 4, Pipelines::All},
-                                           PathCase{"default", 1, Pipelines::Vertex, true},
-                                           PathCase{"cad", 1, Pipelines::All, true},
-                                           PathCase{"cad", 4, Pipelines::All, true},
-                                           PathCase{"default", 1, Pipelines::Vertex, false, true},
-                                           PathCase{"default", 1, Pipelines::Mesh, false, true}),
-                         [](const ::testing::TestParamInfo<PathCase>& info) {
-                             return std::string(info.param.scene) + "_msaa" +
-                                    std::to_string(info.param.msaa) + "_" +
-                                    pipelinesName(info.param.pipelines) +
-                                    (info.param.still ? "_still" : "") +
-                                    (info.param.ortho ? "_ortho" : "");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Lavapipe, CullingExact,
+    ::testing::Values(
+        PathCase{"default", 1, Pipelines::Vertex}, PathCase{"default", 1, Pipelines::Mesh},
+        PathCase{"default", 4, Pipelines::Vertex}, PathCase{"default", 4, Pipelines::Mesh},
+        PathCase{"cad", 1, Pipelines::All}, PathCase{"cad", 4, Pipelines::All},
+        PathCase{"default", 1, Pipelines::Vertex, true}, PathCase{"cad", 1, Pipelines::All, true},
+        PathCase{"cad", 4, Pipelines::All, true},
+        PathCase{"cad", 1, Pipelines::All, false, false, true},
+        PathCase{"cad", 4, Pipelines::All, false, false, true},
+        PathCase{"cad", 1, Pipelines::All, true, false, true},
+        PathCase{"default", 1, Pipelines::Vertex, false, true},
+        PathCase{"default", 1, Pipelines::Mesh, false, true}),
+    [](const ::testing::TestParamInfo<PathCase>& info) {
+        return std::string(info.param.scene) + "_msaa" + std::to_string(info.param.msaa) + "_" +
+               pipelinesName(info.param.pipelines) + (info.param.still ? "_still" : "") +
+               (info.param.ortho ? "_ortho" : "") + (info.param.section ? "_section" : "");
+    });
 
 // In a still view cluster runs draw first just the clusters that passed the last frame's
 // test: fewer triangles than an object's first clusters up to the last that passed (what a
