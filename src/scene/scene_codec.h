@@ -77,7 +77,8 @@ class ByteReader {
         const uint64_t count = get<uint64_t>();
         if (count > (bytes_.size() - at_) / sizeof(T)) throw std::runtime_error("array too long");
         std::vector<T> values(count);
-        std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
+        // An empty vector's data() may be null, which memcpy must not get even for 0 bytes.
+        if (count) std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
         at_ += count * sizeof(T);
         return values;
     }
