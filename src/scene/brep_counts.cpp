@@ -1,6 +1,7 @@
 // brep_counts.cpp - section counts of BREP text against the bytes left (brep_counts.h).
 #include "scene/brep_counts.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <utility>
@@ -22,8 +23,14 @@ std::optional<std::string> implausibleBrepCount(std::istream& in, uint64_t fileB
     }};
     std::string line;
     uint64_t read = 0;
+    std::optional<uint64_t> shapes; // the TShapes count, once seen
+    uint64_t shapeEnds = 0;         // the '*' after it: each shape's sub-shape list ends in one
     while (std::getline(in, line)) {
         read += line.size() + 1;
+        if (shapes) {
+            shapeEnds += uint64_t(std::count(line.begin(), line.end(), '*'));
+            continue;
+        }
         while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
         const size_t space = line.find(' ');
         if (space == std::string::npos) continue;
@@ -40,9 +47,16 @@ std::optional<std::string> implausibleBrepCount(std::istream& in, uint64_t fileB
                 return "its header announces " + std::string(first, last) + " " +
                        std::string(what) + ", more than the " + std::to_string(left) +
                        " bytes after it can hold (a damaged or truncated file)";
+            if (name == "TShapes") shapes = count;
             break;
         }
     }
+    // A shorter list leaves Open CASCADE's shape reader looping on the stream's end, adding
+    // sub-shapes until memory runs out (seen under AddressSanitizer; which way it goes depends
+    // on an uninitialised value in the reader).
+    if (shapes && shapeEnds < *shapes)
+        return "its header announces " + std::to_string(*shapes) + " shapes, but only " +
+               std::to_string(shapeEnds) + " end in the file (a damaged or truncated file)";
     return std::nullopt;
 }
 

@@ -3,7 +3,8 @@
 // end of a file that holds fewer entries, goes on reading nothing for as many: a count of
 // 4e8 in a 48 kB file kept it busy for minutes at full CPU. No entry of any section takes
 // under two bytes (a digit and a line end), so a count above half the bytes after it cannot
-// be the file's.
+// be the file's. Every shape of the last section ends its list of sub-shapes with a '*', so
+// fewer of those than shapes announced means a cut-off file, on which the reader loops.
 #pragma once
 
 #include <cstdint>

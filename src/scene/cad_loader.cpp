@@ -2,12 +2,14 @@
 // distinct shape sewn where the format needs it, tessellated once (in parallel) and turned
 // into a geometry with one part per triangulated face.
 #include "scene/cad_loader.h"
+#include "scene/cad_check.h"
 
 #include "scene/cad_mesh.h"
 #include "scene/cad_read.h"
 #include "scene/cad_reader_losses.h"
 #include "scene/cad_sew.h"
 #include "scene/cad_surface.h"
+#include "scene/fault_guard.h"
 
 #include <algorithm>
 #include <cctype>
@@ -106,6 +108,16 @@ std::string hex(const Rgba& color) {
     return text;
 }
 
+// Open CASCADE crashes on some damaged files (7.6's IGES reader on a B-spline surface whose
+// parameter lines are blank dereferences a null array): such a crash on this thread is
+// refused in words that name the stage. Faults on the mesher's worker threads are not caught.
+template <typename Body>
+void guarded(const char* stage, Body&& body) {
+    if (const int signal = runGuarded(body))
+        throw Bad(std::string("Open CASCADE crashed while ") + stage + " (" + faultName(signal) +
+                  "): the file is damaged or holds something its reader does not handle");
+}
+
 CadLoadResult load(const std::string& path, const CadOptions& options, const CadProgress& progress,
                    uint32_t levels, const std::atomic<bool>* cancel) {
     const Format format = formatOf(path);
@@ -125,9 +137,11 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     double sewTolerance = 0.0;
     {
         const CoutCapture quiet;
-        leaves = format == Format::Brep
-                     ? readBrep(path, stem, progress, cancel)
-                     : readXde(path, format, progress, losses, sewTolerance, cancel);
+        guarded("reading the file", [&] {
+            leaves = format == Format::Brep
+                         ? readBrep(path, stem, progress, cancel)
+                         : readXde(path, format, progress, losses, sewTolerance, cancel);
+        });
     }
     leaves = splitSolids(std::move(leaves), stem);
     result.readMs = msSince(start);
@@ -200,7 +214,9 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     result.deflection = deflection;
     start = Clock::now();
     // Colours were matched above by the faces as read; sewing keeps their order.
-    for (Distinct& d : distinct) sewFaces(d.shape, d.faces, sewTolerance);
+    guarded("sewing the faces", [&] {
+        for (Distinct& d : distinct) sewFaces(d.shape, d.faces, sewTolerance);
+    });
     TopoDS_Compound all;
     BRep_Builder builder;
     builder.MakeCompound(all);
@@ -215,8 +231,12 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     MeshBudget budget;
     budget.maxTriangles = options.maxTriangles;
     budget.cancel = cancel;
-    meshCounted(all, parameters, budget,
-                startStage(relay, progress, "tessellating", [&budget] { return budget.stop(); }));
+    guarded("checking the faces", [&] { budget.skipped = facesLeavingTheirSurface(all); });
+    guarded("tessellating", [&] {
+        meshCounted(all, parameters, budget, startStage(relay, progress, "tessellating", [&budget] {
+                        return budget.stop();
+                    }));
+    });
     if (cancel && *cancel) throw Bad("cancelled");
     if (budget.over) {
         // What the whole would have come to, at the rate of the faces counted so far.
@@ -288,7 +308,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
         for (const Distinct& d : distinct)
             if (d.geometry >= 0) shapes.push_back({&d.faces, uint32_t(d.geometry)});
         addCadLevels(scene, all, shapes, deflection, options.angularDeflection, levels,
-                     LodOptions{}, [&](double fraction) {
+                     LodOptions{}, budget.skipped, [&](double fraction) {
                          if (cancel && *cancel) throw Bad("cancelled");
                          if (progress) progress("levels of detail", fraction);
                      });
@@ -297,6 +317,10 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     if (const auto dropped =
             lossWarning(losses, result.faces, format == Format::Step ? "STEP" : "IGES"))
         result.warnings.push_back(*dropped);
+    if (!budget.skipped.empty())
+        result.warnings.push_back(std::to_string(budget.skipped.size()) +
+                                  " faces have edges that run off their surface (a damaged "
+                                  "file) and are not meshed");
     if (result.facesFailed)
         result.warnings.push_back(std::to_string(result.facesFailed) + " of " +
                                   std::to_string(result.faces) +

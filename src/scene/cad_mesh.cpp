@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -73,7 +74,9 @@ class CountingAlgo : public IMeshTools_MeshAlgo {
         : inner_(inner), budget_(budget) {}
     void Perform(const IMeshData::IFaceHandle& face, const IMeshTools_Parameters& parameters,
                  const Message_ProgressRange& range) override {
-        if (budget_.stop() || inner_.IsNull()) return;
+        if (budget_.stop() || inner_.IsNull() ||
+            budget_.skipped.count(face->GetFace().TShape().get()))
+            return;
         // A triangulation the face had (read from a BREP file) was counted before meshing
         // began, and this one replaces it.
         const uint64_t before = trianglesOf(face->GetFace());
@@ -229,7 +232,8 @@ void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& paramet
 
 void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
                   double deflection, double angularDeflection, uint32_t levels,
-                  const LodOptions& lod, const std::function<void(double)>& progress) {
+                  const LodOptions& lod, const std::set<const void*>& skipped,
+                  const std::function<void(double)>& progress) {
     for (uint32_t level = 1; level < levels; ++level) {
         if (progress) progress(double(level - 1) / double(levels - 1));
         const double scale = std::pow(4.0, double(level));
@@ -240,7 +244,10 @@ void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadSh
         parameters.Relative = false;
         parameters.InParallel = true;
         BRepTools::Clean(all); // so that the mesher starts over instead of keeping finer ones
-        BRepMesh_IncrementalMesh mesher(all, parameters);
+        MeshBudget unlimited;
+        unlimited.maxTriangles = std::numeric_limits<uint64_t>::max();
+        unlimited.skipped = skipped;
+        meshCounted(all, parameters, unlimited, {});
         for (const CadShapeFaces& shape : shapes) {
             const Geometry& full = scene.geometries[shape.geometry];
             // Only shapes that have every level so far go on.

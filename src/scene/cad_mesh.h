@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <set>
 #include <vector>
 
 #include <IMeshTools_Parameters.hxx>
@@ -31,6 +32,8 @@ struct MeshBudget {
     std::atomic<uint64_t> triangles{0};
     std::atomic<uint32_t> facesMeshed{0}; // faces counted, with triangles kept or new
     std::atomic<bool> over{false};
+    // Faces (by TShape) the mesher is not given; they stay without triangles.
+    std::set<const void*> skipped;
     bool stop() const { return over || (cancel && *cancel); }
 };
 
@@ -58,9 +61,10 @@ struct CadShapeFaces {
 // level where a face of its would have no triangles, where the level keeps more than
 // `lod.keepAtMost` of the triangles of the one before, or where its levels together would
 // take more than `lod.memory` of its full detail's bytes. `all` keeps the coarsest
-// triangulation. `progress` gets 0..1.
+// triangulation. `progress` gets 0..1. The faces in `skipped` are not meshed.
 void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
                   double deflection, double angularDeflection, uint32_t levels,
-                  const LodOptions& lod, const std::function<void(double)>& progress);
+                  const LodOptions& lod, const std::set<const void*>& skipped,
+                  const std::function<void(double)>& progress);
 
 } // namespace scene

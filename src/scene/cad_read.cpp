@@ -313,9 +313,19 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
     BRep_Builder builder;
     const CoutCapture capture;
     Handle(ProgressRelay) relay;
-    if (!BRepTools::Read(shape, path.c_str(), builder,
-                         startStage(relay, progress, "reading", cancelled(cancel))) ||
-        shape.IsNull()) {
+    // Open CASCADE's reader goes on reading a stream that has failed, where every read leaves
+    // its value as it was, and some damaged files keep it looping on one for ever: the first
+    // read that fails throws instead.
+    in.clear();
+    in.seekg(0);
+    in.exceptions(std::ios::failbit | std::ios::badbit);
+    try {
+        BRepTools::Read(shape, in, builder,
+                        startStage(relay, progress, "reading", cancelled(cancel)));
+    } catch (const std::ios_base::failure&) {
+        throw Bad("not a readable BREP file: it ends, or breaks off, where a value was expected");
+    }
+    if (shape.IsNull()) {
         const std::string said = capture.firstLine();
         throw Bad("not a readable BREP file" + (said.empty() ? "" : " (" + said + ")"));
     }
