@@ -15,7 +15,7 @@
 #include <thread>
 #include <unistd.h>
 
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_loader.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace {
 

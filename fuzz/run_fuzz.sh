@@ -20,7 +20,7 @@ cad)
     replay=/usr/share/opencascade/data # occt-misc; the small files, the sanitizers are slow
     pattern=('(' -name '*.brep' -o -name '*.step' -o -name '*.iges' ')' -size -100k)
     # Open CASCADE leaks by design when a read fails (objects of a half-built model, and those
-    # a converted fault leaves on the stack it jumps over; see src/scene/fault_guard.h), so
+    # a converted fault leaves on the stack it jumps over; see src/scene/cad/fault_guard.h), so
     # leak detection would report every damaged input: it is off for this target only.
     export ASAN_OPTIONS=detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}
     ;;

@@ -9,7 +9,7 @@
 
 #include "app/scene_source.h"
 #include "scene/assembly_tree.h"
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 using namespace scene;
 

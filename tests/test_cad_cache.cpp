@@ -1,4 +1,4 @@
-// test_cad_cache.cpp - the CAD tessellation cache (scene/cad_cache.h) in a private
+// test_cad_cache.cpp - the CAD tessellation cache (scene/cad/cad_cache.h) in a private
 // XDG_CACHE_HOME: a second load is a hit with the very scene of the first; --no-cache neither
 // reads nor writes; a truncated entry, a flipped payload byte, another format version and a
 // changed file are each a miss whose entry is written anew and then valid. And --max-triangles
@@ -27,9 +27,9 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
-#include "scene/cad_cache.h"
-#include "scene/cad_mesh.h"
-#include "scene/hash64.h"
+#include "scene/cad/cad_cache.h"
+#include "scene/cad/cad_mesh.h"
+#include "scene/cad/hash64.h"
 
 namespace {
 

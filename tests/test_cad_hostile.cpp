@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/brep_counts.h"
-#include "scene/cad_loader.h"
+#include "scene/cad/brep_counts.h"
+#include "scene/cad/cad_loader.h"
 
 namespace {
 

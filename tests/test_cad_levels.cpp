@@ -1,4 +1,4 @@
-// test_cad_levels.cpp - CAD levels of detail (scene/cad_mesh.h): coarser tessellations of the
+// test_cad_levels.cpp - CAD levels of detail (scene/cad/cad_mesh.h): coarser tessellations of the
 // same faces, one part each, as close to full detail as their recorded error says, and as
 // free of cracks between faces as full detail.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <map>
 #include <tuple>
 
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_loader.h"
 #include "scene/lod.h"
 
 namespace fs = std::filesystem;

@@ -31,8 +31,9 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Ax1.hxx>
 
-#include "scene/cad_loader.h"
-#include "scene/gltf_writer.h"
+#include "scene/cad/cad_loader.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_writer.h"
 
 namespace {
 

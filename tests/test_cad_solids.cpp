@@ -1,5 +1,5 @@
 // test_cad_solids.cpp - a shape that holds several solids loads as an object per solid
-// (scene/cad_read.h, splitSolids): Motor-c.brep against Open CASCADE's own solids and faces,
+// (scene/cad/cad_read.h, splitSolids): Motor-c.brep against Open CASCADE's own solids and faces,
 // a BREP written here with a repeated solid and a face of no solid, and a STEP product whose
 // shape is a compound with a solid coloured of its own; and partsAround on such a scene.
 #include <filesystem>
@@ -28,7 +28,7 @@
 #include <gp_Pln.hxx>
 
 #include "scene/assembly_tree.h"
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_loader.h"
 
 namespace {
 

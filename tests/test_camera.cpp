@@ -9,7 +9,7 @@
 
 #include "scene/bounds.h"
 #include "scene/camera.h"
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 #include "scene/standard_view.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "scene/copies.h"
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 
 using namespace scene;
 

@@ -11,11 +11,11 @@
 #include <set>
 
 #include "scene/copies.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 #include "scene/meshlets.h"
 #include "scene/part_data.h"
 #include "scene/part_vertices.h"
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 #include "shared_vertex_gltf.h"
 
 namespace {

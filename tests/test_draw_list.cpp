@@ -8,7 +8,7 @@
 
 #include "render/draw_list.h"
 #include "scene/copies.h"
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 using namespace render;
 

@@ -25,10 +25,10 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/face_info.h"
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 namespace {
 

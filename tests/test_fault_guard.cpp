@@ -16,7 +16,7 @@
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 
-#include "scene/fault_guard.h"
+#include "scene/cad/fault_guard.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 namespace {
 

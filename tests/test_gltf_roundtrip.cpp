@@ -6,9 +6,9 @@
 #include <unistd.h>
 
 #include "scene/copies.h"
-#include "scene/generator.h"
-#include "scene/gltf_loader.h"
-#include "scene/gltf_writer.h"
+#include "scene/procedural/generator.h"
+#include "scene/gltf/gltf_loader.h"
+#include "scene/gltf/gltf_writer.h"
 
 using namespace scene;
 

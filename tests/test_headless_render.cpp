@@ -11,7 +11,7 @@
 
 #include "app/headless.h"
 #include "app/scene_source.h"
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 #include "scene/raycast.h"
 #include "test_support.h"
 

@@ -12,7 +12,7 @@
 #include <tuple>
 
 #include "scene/lod.h"
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 using namespace scene;
 

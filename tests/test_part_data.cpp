@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/copies.h"
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 #include "scene/mesh_builder.h"
 #include "scene/part_data.h"
 

@@ -9,7 +9,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 namespace {
 

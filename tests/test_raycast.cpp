@@ -3,7 +3,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 #include "scene/raycast.h"
 
 using namespace scene;

@@ -4,7 +4,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 #include "scene/mesh_builder.h"
 
 using namespace scene;

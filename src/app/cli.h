@@ -14,10 +14,10 @@
 #include "render/culling.h"
 #include "render/pick.h"
 #include "render/settings.h"
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_loader.h"
 #include "scene/camera_path.h"
 #include "scene/copies.h"
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 #include "scene/standard_view.h"
 
 namespace app {
@@ -28,7 +28,7 @@ struct SceneSettings {
     std::string builtin; // built-in or procedural scene spec (scene_source.h)
     scene::PartMode parts = scene::PartMode::Primitives; // glTF: what one part is
     scene::CadOptions cad;                               // STEP, IGES, BREP: the tessellation
-    // STEP, IGES, BREP: read and write the tessellation cache (scene/cad_cache.h).
+    // STEP, IGES, BREP: read and write the tessellation cache (scene/cad/cad_cache.h).
     bool cadCache = true;
     uint32_t copies = 1;
     uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans

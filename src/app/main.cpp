@@ -13,7 +13,7 @@
 #include "app/viewer/viewer.h"
 #include "render/culling.h"
 #include "render/technique.h"
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_writer.h"
 #include "vk/context.h"
 
 namespace {

@@ -16,14 +16,14 @@
 #include "app/json.h"
 #include "render/draw_list.h"
 #include "scene/assembly_tree.h"
-#include "scene/cad_cache.h"
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_cache.h"
+#include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
-#include "scene/generator.h"
-#include "scene/gltf_loader.h"
+#include "scene/procedural/generator.h"
+#include "scene/gltf/gltf_loader.h"
 #include "scene/lod.h"
 #include "scene/part_data.h"
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 namespace app {
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -138,6 +139,11 @@ class NameCounter {
 
   private:
     std::map<std::string, uint32_t> counts_;
+};
+
+// A model that cannot be loaded, from any importer. what() is one line: "<path>: <reason>".
+struct ModelError : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 // Throws std::invalid_argument naming the first inconsistency (index out of range, parts not

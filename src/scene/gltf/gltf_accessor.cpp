@@ -3,7 +3,7 @@
 // the data tinygltf loaded.
 #include <cstring>
 
-#include "scene/gltf_detail.h"
+#include "scene/gltf/gltf_detail.h"
 
 namespace scene::gltf {
 namespace {

@@ -1,6 +1,6 @@
 // gltf_writer.cpp - Scene to .glb through tinygltf. Each part gets its own accessors over the
 // vertex range it uses, so parts stay separate primitives and indices can often be 16-bit.
-#include "scene/gltf_writer.h"
+#include "scene/gltf/gltf_writer.h"
 
 #include <algorithm>
 #include <cmath>

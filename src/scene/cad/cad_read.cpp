@@ -1,6 +1,6 @@
 // cad_read.cpp - the readers behind cad_read.h: XDE documents walked down to their leaves,
 // BREP files checked before Open CASCADE reads them.
-#include "scene/cad_read.h"
+#include "scene/cad/cad_read.h"
 
 #include <algorithm>
 #include <cctype>
@@ -26,7 +26,7 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 
-#include "scene/brep_counts.h"
+#include "scene/cad/brep_counts.h"
 
 namespace scene::cad {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <tiny_gltf.h>
 
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 #include "scene/mesh_builder.h"
 
 namespace scene::gltf {

@@ -1,4 +1,4 @@
-// scene_codec.h - a Scene as bytes and back, for the CAD cache (scene/cad_cache.h): every
+// scene_codec.h - a Scene as bytes and back, for the CAD cache (scene/cad/cad_cache.h): every
 // array and name, the parts' faces, surfaces and materials, the levels of detail, the
 // objects' placements and paths. Little-endian as the host lays it out; the cache's format
 // version changes with the layout. Plain C++.

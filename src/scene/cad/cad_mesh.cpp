@@ -1,5 +1,5 @@
 // cad_mesh.cpp - Open CASCADE triangulations into scene geometry, at full detail and coarser.
-#include "scene/cad_mesh.h"
+#include "scene/cad/cad_mesh.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // brep_counts.cpp - section counts of BREP text against the bytes left (brep_counts.h).
-#include "scene/brep_counts.h"
+#include "scene/cad/brep_counts.h"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 // shapes.cpp - tessellation of turned profiles, hex prisms, gears, holed plates and tubes.
 // Triangles take their winding from the vertex normals, so no shape has to get it right by hand.
-#include "scene/shapes.h"
+#include "scene/procedural/shapes.h"
 
 #include <cmath>
 #include <vector>

@@ -1,15 +1,15 @@
 // cad_loader.cpp - loadCad: the file read down to its leaf instances (cad_read.h); every
 // distinct shape sewn where the format needs it, tessellated once (in parallel) and turned
 // into a geometry with one part per triangulated face.
-#include "scene/cad_loader.h"
-#include "scene/cad_check.h"
+#include "scene/cad/cad_loader.h"
+#include "scene/cad/cad_check.h"
 
-#include "scene/cad_mesh.h"
-#include "scene/cad_read.h"
-#include "scene/cad_reader_losses.h"
-#include "scene/cad_sew.h"
-#include "scene/cad_surface.h"
-#include "scene/fault_guard.h"
+#include "scene/cad/cad_mesh.h"
+#include "scene/cad/cad_read.h"
+#include "scene/cad/cad_reader_losses.h"
+#include "scene/cad/cad_sew.h"
+#include "scene/cad/cad_surface.h"
+#include "scene/cad/fault_guard.h"
 
 #include <algorithm>
 #include <cctype>

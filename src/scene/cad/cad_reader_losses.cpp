@@ -1,5 +1,5 @@
 // cad_reader_losses.cpp - the entities and faces a reader dropped (cad_reader_losses.h).
-#include "scene/cad_reader_losses.h"
+#include "scene/cad/cad_reader_losses.h"
 
 #include <IGESData_IGESEntity.hxx>
 #include <Interface_Check.hxx>

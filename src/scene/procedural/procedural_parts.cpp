@@ -1,10 +1,10 @@
 // procedural_parts.cpp - the geometries of the procedural scenes' parts catalogue.
-#include "scene/procedural_parts.h"
+#include "scene/procedural/procedural_parts.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "scene/shapes.h"
+#include "scene/procedural/shapes.h"
 
 namespace scene::procedural {
 

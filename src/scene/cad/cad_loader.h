@@ -19,7 +19,6 @@
 #include <string>
 #include <vector>
 
-#include "scene/gltf_loader.h" // ModelError
 #include "scene/scene.h"
 
 namespace scene {
@@ -58,7 +57,7 @@ struct CadLoadResult {
     double deflection = 0.0;     // the linear deflection used
     uint32_t faces = 0;          // faces over all distinct shapes
     uint32_t facesFailed = 0;    // of those, the ones without triangles (left out)
-    // The tessellation cache (scene/cad_cache.h): "off" (not asked, or no folder), "hit" or
+    // The tessellation cache (scene/cad/cad_cache.h): "off" (not asked, or no folder), "hit" or
     // "miss"; for misses and "off" what happened ("no entry", "checksum mismatch", ...); the
     // time spent reading (hit) or writing (miss) the entry.
     std::string cache = "off";

@@ -1,6 +1,6 @@
 // gltf_loader.cpp - loadGltf: parses a .gltf/.glb with tinygltf, walks the node hierarchy of
 // the default scene and builds a Scene; every failure becomes one ModelError line.
-#include "scene/gltf_loader.h"
+#include "scene/gltf/gltf_loader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,7 +16,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene/gltf_detail.h"
+#include "scene/gltf/gltf_detail.h"
 
 namespace scene {
 namespace {

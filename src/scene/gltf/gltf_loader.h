@@ -31,11 +31,6 @@ struct LoadResult {
     std::vector<std::string> warnings; // e.g. "mesh 3 primitive 1: lines skipped"
 };
 
-// A model that cannot be loaded. what() is one line: "<path>: <reason>".
-struct ModelError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
 // Loads the whole default scene of the file (all scenes' nodes if none is marked default).
 // The result passes scene::validate(). Throws ModelError; never returns a half-built scene.
 LoadResult loadGltf(const std::string& path, const LoadOptions& options = {});

@@ -1,5 +1,5 @@
 // cad_check.cpp - faces whose edges leave their surface (cad_check.h).
-#include "scene/cad_check.h"
+#include "scene/cad/cad_check.h"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // generator.cpp - the built-in procedural scenes.
-#include "scene/generator.h"
+#include "scene/procedural/generator.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>

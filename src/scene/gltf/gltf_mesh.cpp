@@ -7,7 +7,7 @@
 #include <map>
 #include <numeric>
 
-#include "scene/gltf_detail.h"
+#include "scene/gltf/gltf_detail.h"
 
 namespace scene::gltf {
 namespace {

@@ -1,5 +1,5 @@
 // hash64.h - a small 64-bit hash of bytes, for the CAD cache's file contents, names and
-// checksums (scene/cad_cache.h). Not for adversaries: it tells changed or damaged data
+// checksums (scene/cad/cad_cache.h). Not for adversaries: it tells changed or damaged data
 // from the data it was computed on. Plain C++.
 #pragma once
 

@@ -1,6 +1,6 @@
 // scene_codec.cpp - Scene to bytes and back (scene_codec.h), field by field so that no
 // padding byte is written and every count read is checked.
-#include "scene/scene_codec.h"
+#include "scene/cad/scene_codec.h"
 
 namespace scene {
 

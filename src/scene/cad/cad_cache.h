@@ -18,7 +18,7 @@
 #include <optional>
 #include <string>
 
-#include "scene/cad_loader.h"
+#include "scene/cad/cad_loader.h"
 
 namespace scene {
 

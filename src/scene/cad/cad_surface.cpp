@@ -1,5 +1,5 @@
 // cad_surface.cpp - surface type, exact area, plane, axis and radius of a B-rep face.
-#include "scene/cad_surface.h"
+#include "scene/cad/cad_surface.h"
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>

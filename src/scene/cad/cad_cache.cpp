@@ -1,6 +1,6 @@
 // cad_cache.cpp - the CAD tessellation cache (cad_cache.h): keys, entries, and loadCad
 // through them.
-#include "scene/cad_cache.h"
+#include "scene/cad/cad_cache.h"
 
 #include <chrono>
 #include <cstdio>
@@ -8,8 +8,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "scene/hash64.h"
-#include "scene/scene_codec.h"
+#include "scene/cad/hash64.h"
+#include "scene/cad/scene_codec.h"
 
 namespace scene {
 

@@ -1,5 +1,5 @@
 // cad_sew.cpp - sewing a shape's faces, keeping their order (cad_sew.h).
-#include "scene/cad_sew.h"
+#include "scene/cad/cad_sew.h"
 
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <TopExp.hxx>

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string_view>
 
-#include "scene/gltf_detail.h"
+#include "scene/gltf/gltf_detail.h"
 
 namespace scene::gltf {
 

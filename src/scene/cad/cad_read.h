@@ -19,8 +19,8 @@
 #include <TopoDS_Shape.hxx>
 #include <gp_Trsf.hxx>
 
-#include "scene/cad_loader.h"
-#include "scene/cad_reader_losses.h"
+#include "scene/cad/cad_loader.h"
+#include "scene/cad/cad_reader_losses.h"
 
 namespace scene::cad {
 

@@ -5,12 +5,13 @@
 #ifndef OCC_CONVERT_SIGNALS
 #define OCC_CONVERT_SIGNALS
 #endif
-#include "scene/fault_guard.h"
+#include "scene/cad/fault_guard.h"
 
 #include <atomic>
 #include <csignal>
 #include <cstring>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include <Standard_ErrorHandler.hxx>
@@ -138,18 +139,13 @@ int runGuarded(const std::function<void()>& body) {
 }
 
 const char* faultName(int signal) {
-    switch (signal) {
-    case SIGSEGV:
-        return "segmentation fault";
-    case SIGBUS:
-        return "bus error";
-    case SIGFPE:
-        return "arithmetic fault";
-    case SIGILL:
-        return "illegal instruction";
-    default:
-        return "fault";
-    }
+    static constexpr std::pair<int, const char*> names[] = {{SIGSEGV, "segmentation fault"},
+                                                            {SIGBUS, "bus error"},
+                                                            {SIGFPE, "arithmetic fault"},
+                                                            {SIGILL, "illegal instruction"}};
+    for (const auto& [number, name] : names)
+        if (number == signal) return name;
+    return "fault";
 }
 
 } // namespace scene

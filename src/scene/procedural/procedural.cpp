@@ -1,14 +1,14 @@
 // procedural.cpp - seeded machine-like assemblies: a ladder frame with wheels, engine, gearbox,
 // radiator, hoses and fasteners (car-like), or one gearbox module (small).
-#include "scene/procedural.h"
+#include "scene/procedural/procedural.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
 
-#include "scene/procedural_parts.h"
-#include "scene/shapes.h"
+#include "scene/procedural/procedural_parts.h"
+#include "scene/procedural/shapes.h"
 
 namespace scene {
 
