@@ -173,3 +173,37 @@ TEST(AssemblyTree, PartsAroundAPartGrowWithTheLevel) {
     EXPECT_EQ(partsAround(s, 5, 2), (R{{5, 1}}));
     EXPECT_TRUE(partsAround(s, 6, 1).empty()); // no such part
 }
+
+TEST(AssemblyTree, NaturalOrderComparesNumbersAsNumbers) {
+    EXPECT_TRUE(naturalLess("solid 2", "solid 10"));
+    EXPECT_FALSE(naturalLess("solid 10", "solid 2"));
+    EXPECT_TRUE(naturalLess("Bolt", "nut")); // letters without case
+    EXPECT_TRUE(naturalLess("part 007", "part 8"));
+    EXPECT_TRUE(naturalLess("part", "part 1")); // a prefix first
+    EXPECT_FALSE(naturalLess("same", "same"));
+    EXPECT_NE(naturalLess("a", "A"), naturalLess("A", "a")); // a total order still
+}
+
+TEST(AssemblyTree, SortedRowsTellSameNamesApartAndNameASelection) {
+    // Two objects of one path are two nodes of one name; siblings come out sorted.
+    const Scene s = withPaths({"box/solid 10", "box/solid 2", "box/solid 2", "box/Bolt"});
+    AssemblyNode root = assemblyTree(s, "model");
+    sortNatural(root);
+    const std::vector<TreeRow> rows = treeRows(root);
+    std::vector<std::string> labels;
+    for (const TreeRow& row : rows) labels.push_back(row.label);
+    EXPECT_EQ(labels, (std::vector<std::string>{"model", "box", "Bolt", "solid 2 #1", "solid 2 #2",
+                                                "solid 10"}));
+    // The selection of exactly one row's parts is named by it, the deepest such row.
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const auto found = rowOfParts(rows, partSetOf(rows[i].parts, s.uniquePartCount()));
+        ASSERT_TRUE(found) << i;
+        // The root and "box" hold the same parts: the deeper "box" names them.
+        EXPECT_EQ(*found, i == 0 ? 1u : i) << labels[i];
+    }
+    PartSet two(s.uniquePartCount());
+    two.insert(rows[2].parts[0].first);
+    two.insert(rows[5].parts[0].first); // parts of two rows, no one row's: unnamed
+    EXPECT_FALSE(rowOfParts(rows, two));
+    EXPECT_FALSE(rowOfParts(rows, PartSet(s.uniquePartCount())));
+}

@@ -199,3 +199,12 @@ TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     const std::string unknown = errorOf("1 jump\n");
     EXPECT_NE(unknown.find(", view, ortho,"), std::string::npos) << unknown;
 }
+
+TEST(InputScript, TypeTakesTheRestOfTheLine) {
+    const auto commands = app::parseScript("1 type /tmp/a model.glb \n2 key ctrl+O\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Type);
+    EXPECT_EQ(commands[0].text, "/tmp/a model.glb");
+    EXPECT_EQ(commands[1].key, GLFW_KEY_O);
+    EXPECT_THROW(app::parseScript("1 type\n", "s.txt"), app::ScriptError);
+}

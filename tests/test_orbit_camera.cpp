@@ -195,3 +195,46 @@ TEST(OrbitCamera, FitFramesTheSelectionInBothProjections) {
         }
     }
 }
+
+TEST(OrbitCamera, FreeSpanIsTheWiderSideOfThePanel) {
+    const app::FreeSpan right = app::freeSpan(1280.0f, 8.0f, 348.0f); // a left column
+    EXPECT_FLOAT_EQ(right.left, 348.0f / 1280.0f);
+    EXPECT_FLOAT_EQ(right.right, 1.0f);
+    const app::FreeSpan left = app::freeSpan(1280.0f, 932.0f, 1272.0f); // moved to the right
+    EXPECT_FLOAT_EQ(left.left, 0.0f);
+    EXPECT_FLOAT_EQ(left.right, 932.0f / 1280.0f);
+    const app::FreeSpan none = app::freeSpan(1280.0f, 0.0f, 0.0f); // hidden
+    EXPECT_FLOAT_EQ(none.left, 0.0f);
+    EXPECT_FLOAT_EQ(none.right, 1.0f);
+    const app::FreeSpan covered = app::freeSpan(400.0f, 8.0f, 348.0f); // too little left
+    EXPECT_FLOAT_EQ(covered.right - covered.left, 1.0f);
+}
+
+TEST(OrbitCamera, FitBesideThePanelCentresTheBoundsInTheFreeSpan) {
+    const float aspect = 1280.0f / 720.0f;
+    const scene::Bounds bounds = box({-1.0f, -2.0f, 0.0f}, {3.0f, 1.0f, 2.0f});
+    for (bool ortho : {false, true}) {
+        app::OrbitCamera camera(opening(bounds, {0, 0, 1}, aspect), bounds);
+        const app::FreeSpan span{0.3f, 1.0f};
+        camera.fit(bounds, aspect, span);
+        const scene::Camera c = camera.camera(1.0f, ortho);
+        const glm::mat4 viewProj = camera.shiftMatrix() * c.viewProjection(aspect);
+        auto ndc = [&](glm::vec3 p) {
+            const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+            return glm::vec2(clip) / clip.w;
+        };
+        // The centre shows in the middle of the span (device x from -1 to 1)...
+        EXPECT_NEAR(ndc(bounds.center()).x, span.left + span.right - 1.0f, 1e-4f) << ortho;
+        // ...and every corner inside it.
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
+                              (corner & 2) ? bounds.max.y : bounds.min.y,
+                              (corner & 4) ? bounds.max.z : bounds.min.z);
+            EXPECT_GE(ndc(p).x, 2.0f * span.left - 1.0f - 1e-4f) << ortho << " " << corner;
+            EXPECT_LE(ndc(p).x, 1.0f + 1e-4f) << ortho << " " << corner;
+            EXPECT_LE(std::abs(ndc(p).y), 1.0f + 1e-4f) << ortho << " " << corner;
+        }
+        camera.resetView(); // Home takes the shift back
+        EXPECT_EQ(camera.shift(), 0.0f);
+    }
+}

@@ -3,7 +3,8 @@
 # on lavapipe with validation (synchronization validation too), fed a --script that switches
 # through every renderer (the floors included) and mode, changes MSAA, presses V twice,
 # orbits, zooms, resizes, clicks the model, takes a screenshot and drops files on the window.
-# Then the standard views, the projection and F on the selection (a session of its own).
+# Then the standard views, the projection and F on the selection (a session of its own), and
+# paths typed into the panel's open field.
 # Checks the exit code (3 means validation messages), the title following the renderer and
 # vsync, the click selecting a part, the drops, and that the screenshot shows a picture; and
 # that without --print-events the viewer writes nothing to stdout. Exit 77: skipped.
@@ -492,7 +493,11 @@ t=0.5
     at frames 3
     at key F
     at frames 6
+    at key I
     at key ESC
+    at key F
+    at frames 6
+    at key shift+H
     at key F
     at frames 6
     at quit
@@ -503,10 +508,10 @@ xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
 rc=$?
 [[ $rc -eq 0 ]] || { fail "views session: exit code $rc"; head -c 3000 "$work/views.err"; }
 said=$(grep -E '^idview: (view|projection|fit):' "$work/views.out" | sed 's/^idview: //' | paste -sd'|' -)
-expected='view: front|view: bottom|view: isometric|projection: orthographic|view: top|projection: perspective|view: front|fit: selection|fit: scene'
+expected='view: front|view: bottom|view: isometric|projection: orthographic|view: top|projection: perspective|view: front|fit: selection|fit: shown parts|fit: scene'
 [[ $said == "$expected" ]] && echo "ok   views session: $said" || fail "views session said '$said', expected '$expected'"
-# F on the base plate frames it (another set of parts shows); F with nothing selected frames
-# the scene as the front view did (the views keep the fitted distance).
+# F on the base plate frames it (another set of parts shows); F with the plate isolated frames
+# it alone; F with nothing selected or hidden frames the whole scene beside the panel.
 visible_after() { # the last visible part count after the event line $1, before the next event
     awk -v e="idview: $1" '$0 == e {on=1; next} on && /^idview: (view|projection|fit|selected):/{exit} on' \
         "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1
@@ -514,7 +519,7 @@ visible_after() { # the last visible part count after the event line $1, before 
 front=$(visible_after "view: front")
 on_plate=$(visible_after "fit: selection")
 whole=$(visible_after "fit: scene")
-[[ -n $front && -n $on_plate && $on_plate != "$front" && $whole == "$front" ]] &&
+[[ -n $front && -n $on_plate && $on_plate != "$front" && -n $whole && $whole != "$on_plate" ]] &&
     echo "ok   F: selection shows $on_plate parts, then the scene $whole (front view: $front)" ||
     fail "F: selection '$on_plate', scene '$whole', front view '$front'"
 top_viewer=$(awk '/^idview: view: top/{on=1} on && /^idview: projection: perspective/{exit} on' \
@@ -526,6 +531,39 @@ iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: or
 [[ -n $top_viewer && $top_viewer == "$top_headless" && $top_viewer != "$iso_count" ]] &&
     echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
     fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
+
+session() { # session NAME: the small scene driven by $work/NAME.txt, out in NAME.out and .err
+    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+        --scene procedural:preset=small --script "$work/$1.txt" --print-events \
+        >"$work/$1.out" 2>"$work/$1.err"
+    local rc=$?
+    [[ $rc -eq 0 ]] || { fail "$1 session: exit code $rc"; head -c 2000 "$work/$1.err"; }
+}
+# The open field as a newcomer types into it: Ctrl+O, a path, Enter pressed and released
+# between two frames (a script's key always is), the model opens; the field is then empty,
+# so the next path typed opens as it is, not joined to the last one.
+cp "$work/small.glb" "$work/again.glb"
+t=0.5
+{
+    at key ctrl+O
+    at frames 3
+    at type "$work/small.glb"
+    at key ENTER
+    at loaded
+    at frames 3
+    at key ctrl+O
+    at frames 3
+    at type "$work/again.glb"
+    at key ENTER
+    at loaded
+    at frames 3
+    at screenshot "$work/typed.png"
+    at quit
+} >"$work/typed.txt"
+session typed
+opened=$(sed -n 's/^idview: opened: \([^ ]*\) .*/\1/p' "$work/typed.out" | paste -sd' ' -)
+[[ $opened == "$work/small.glb $work/again.glb" ]] && echo "ok   typed paths opened: Enter kept, field emptied" ||
+    fail "typed paths opened '$opened' ($(head -c 300 "$work/typed.err"))"
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
 echo "viewer test passed"

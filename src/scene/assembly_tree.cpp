@@ -2,6 +2,7 @@
 #include "scene/assembly_tree.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 namespace scene {
@@ -83,13 +84,23 @@ std::vector<PartRange> partsAround(const Scene& scene, uint32_t id, uint32_t lev
 namespace {
 
 void addRows(const AssemblyNode& node, const std::string& path, uint32_t depth,
-             std::vector<TreeRow>& rows) {
+             std::vector<TreeRow>& rows, std::string label) {
     const size_t index = rows.size();
-    rows.push_back({node.name, path, depth, 0, node.object, {}});
+    rows.push_back({node.name, path, depth, 0, node.object, {}, std::move(label)});
     PartRanges parts;
     if (node.object && node.partCount) parts.push_back({node.firstPart, node.partCount});
-    for (const AssemblyNode& child : node.children)
-        addRows(child, path.empty() ? child.name : path + "/" + child.name, depth + 1, rows);
+    for (size_t c = 0; c < node.children.size(); ++c) {
+        const AssemblyNode& child = node.children[c];
+        // Siblings of one name (objects of one path) are told apart by their number.
+        size_t same = 0, before = 0;
+        for (size_t o = 0; o < node.children.size(); ++o)
+            if (node.children[o].name == child.name) {
+                ++same;
+                before += o < c;
+            }
+        addRows(child, path.empty() ? child.name : path + "/" + child.name, depth + 1, rows,
+                same > 1 ? child.name + " #" + std::to_string(before + 1) : child.name);
+    }
     // The children's rows are done: gather their ranges (each child's row is the first of
     // its subtree), sort and merge touching ones.
     for (size_t r = index + 1; r < rows.size(); r = rows[r].end)
@@ -120,8 +131,60 @@ PartSet partSetOf(const PartRanges& ranges, uint32_t partCount) {
 
 std::vector<TreeRow> treeRows(const AssemblyNode& root) {
     std::vector<TreeRow> rows;
-    addRows(root, "", 0, rows);
+    addRows(root, "", 0, rows, root.name);
     return rows;
+}
+
+bool naturalLess(const std::string& a, const std::string& b) {
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (digit(a[i]) && digit(b[j])) {
+            // Compare the runs as numbers: skip leading zeros, then the longer run is larger,
+            // then the first differing digit decides.
+            size_t ei = i, ej = j;
+            while (ei < a.size() && digit(a[ei])) ++ei;
+            while (ej < b.size() && digit(b[ej])) ++ej;
+            size_t si = i, sj = j;
+            while (si + 1 < ei && a[si] == '0') ++si;
+            while (sj + 1 < ej && b[sj] == '0') ++sj;
+            if (ei - si != ej - sj) return ei - si < ej - sj;
+            const int order = a.compare(si, ei - si, b, sj, ej - sj);
+            if (order != 0) return order < 0;
+            i = ei;
+            j = ej;
+            continue;
+        }
+        const int x = std::tolower(static_cast<unsigned char>(a[i]));
+        const int y = std::tolower(static_cast<unsigned char>(b[j]));
+        if (x != y) return x < y;
+        ++i;
+        ++j;
+    }
+    if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
+    return a < b;
+}
+
+void sortNatural(AssemblyNode& node) {
+    std::stable_sort(
+        node.children.begin(), node.children.end(),
+        [](const AssemblyNode& x, const AssemblyNode& y) { return naturalLess(x.name, y.name); });
+    for (AssemblyNode& child : node.children) sortNatural(child);
+}
+
+std::optional<size_t> rowOfParts(const std::vector<TreeRow>& rows, const PartSet& selected) {
+    const uint32_t wanted = selected.size();
+    std::optional<size_t> found;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        uint32_t total = 0, in = 0;
+        for (const auto& [first, count] : rows[i].parts) {
+            total += count;
+            in += selected.countIn(first, count);
+        }
+        // Deeper rows come later in their subtree: the last match is the deepest.
+        if (wanted > 0 && total == wanted && in == wanted) found = i;
+    }
+    return found;
 }
 
 } // namespace scene

@@ -54,8 +54,18 @@ struct TreeRow {
     uint32_t end = 0;
     std::optional<uint32_t> object;
     PartRanges parts; // every unique part of the subtree
+    // What the panel shows: the name, and " #k" when siblings share it (the k-th of them).
+    std::string label;
 };
 std::vector<TreeRow> treeRows(const AssemblyNode& root);
 PartSet partSetOf(const PartRanges& ranges, uint32_t partCount);
+
+// Names in natural order: runs of digits compare as numbers ("solid 2" before "solid 10"),
+// letters without case; ties fall back to plain comparison, so the order is total.
+bool naturalLess(const std::string& a, const std::string& b);
+// Sorts every node's children by name in natural order (stable: equal names keep theirs).
+void sortNatural(AssemblyNode& node);
+// The deepest row whose parts are exactly `selected`: what names a selection in the panel.
+std::optional<size_t> rowOfParts(const std::vector<TreeRow>& rows, const PartSet& selected);
 
 } // namespace scene

@@ -59,7 +59,13 @@ void Viewer::drawFrame(double seconds) {
 
 // The panel first: what it changes applies before this frame records anything.
 void Viewer::drawPanel() {
+    input_.feedPanelKeys(); // before ImGui's frame starts: its share of the key events
     presenter_.beginPanel(input_.cursorInWindow());
+    // The tree row the selection makes up, found again only when the selection changes.
+    if (input_.selection().selected() != namedSelection_) {
+        namedSelection_ = input_.selection().selected();
+        selectedRow_ = scene::rowOfParts(tree_, namedSelection_);
+    }
     if (view_.panelVisible) act(app::drawPanel(settings_, view_, panelInfo()));
     // The box being dragged, over everything.
     if (const auto box = input_.boxInWindow())
@@ -120,13 +126,18 @@ void Viewer::follow(SceneState::Change change) {
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
-    tree_ = scene::treeRows(scene::assemblyTree(scene, treeRootName(scene_.loaded())));
+    scene::AssemblyNode root = scene::assemblyTree(scene, treeRootName(scene_.loaded()));
+    scene::sortNatural(root); // the panel lists siblings by name, --tree in scene order
+    tree_ = scene::treeRows(root);
+    namedSelection_ = {};
+    selectedRow_.reset();
     view_.treeOpen.clear();
     view_.treeShown.clear();
     if (change == SceneState::Change::Copies) {
         camera_.setBounds(scene.bounds()); // more copies: same view, planes follow
         return;
     }
+    remember(scene_.loaded().source);
     scene::Camera initial = initialCamera(scene_.loaded(), aspect());
     if (scene_.loaded().settings.copies > 1) // copy 0's opening view, drawn back to take in all
         initial = scene::fitCamera(scene.bounds(), initial.eye - initial.target, initial.up,
@@ -135,12 +146,23 @@ void Viewer::follow(SceneState::Change change) {
     camera_ = OrbitCamera(initial, scene.bounds(), settings_.camera.standard);
 }
 
+// A model file that opened joins the recent files, and the open field empties for the next.
+void Viewer::remember(const std::string& source) {
+    if (!isGltf(source) && !scene::isCadPath(source)) return; // a generated scene
+    auto& recent = view_.recentFiles;
+    std::erase(recent, source);
+    recent.insert(recent.begin(), source);
+    if (recent.size() > 10) recent.pop_back();
+    view_.openPath.fill('\0');
+}
+
 render::FrameParams Viewer::frameParams(double seconds) {
     const VkExtent2D extent = scene_.targets()->extent();
     const bool animate = settings_.animation.animate;
     // The exploded view pushes objects out to twice their distance from the centre.
     render::FrameParams params =
         cameraFrame(camera_.camera(animate ? 2.0f : 1.0f, settings_.camera.ortho), extent);
+    params.viewProj = camera_.shiftMatrix() * params.viewProj; // F's fit beside the panel
     params.time = float(seconds);
     viewProj_ = params.viewProj;
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
@@ -227,6 +249,8 @@ PanelInfo Viewer::panelInfo() const {
         if (const auto face = scene::faceReport(scene_.scene(), *selection.primary()))
             if (face->surface.kind == scene::SurfaceKind::Plane) info.selectedPlane = face->surface;
     info.selectedCount = selection.selected().size();
+    info.selectedParts = &selection.selected();
+    info.selectedRow = selectedRow_;
     info.hiddenCount = selection.hidden().size();
     info.visibleParts = input_.visibleParts();
     info.idPassMs = mean(slots_.idPassMilliseconds(), 30);

@@ -41,15 +41,35 @@ const scene::StandardView* viewOfKey(int key, int mods) {
     return nullptr;
 }
 
+// The keys a chord's modifier bits stand for.
+constexpr std::pair<int, int> modifierKeys[] = {{GLFW_MOD_SHIFT, GLFW_KEY_LEFT_SHIFT},
+                                                {GLFW_MOD_CONTROL, GLFW_KEY_LEFT_CONTROL},
+                                                {GLFW_MOD_ALT, GLFW_KEY_LEFT_ALT}};
+
 } // namespace
+
+void Input::chord(int key, int mods) {
+    for (const auto& [bit, modifier] : modifierKeys)
+        if (mods & bit) onKey(modifier, glfwGetKeyScancode(modifier), GLFW_PRESS, mods);
+    const int code = glfwGetKeyScancode(key);
+    onKey(key, code, GLFW_PRESS, mods);
+    onKey(key, code, GLFW_RELEASE, mods);
+    for (const auto& [bit, modifier] : modifierKeys)
+        if (mods & bit) onKey(modifier, glfwGetKeyScancode(modifier), GLFW_RELEASE, 0);
+}
 
 Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
     : viewer_(viewer), window_(window), script_(std::move(script)) {}
 
 void Input::onKey(int key, int scancode, int action, int mods) {
-    ImGui_ImplGlfw_KeyCallback(window_, key, scancode, action, mods);
+    if (action != GLFW_REPEAT) panelKeys_.push({key, scancode, action == GLFW_PRESS, mods});
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
     ViewSettings& view = viewer_.view();
+    if (key == GLFW_KEY_O && (mods & GLFW_MOD_CONTROL)) {
+        view.focusOpen = true; // Ctrl+O: the panel's open field, ready to type a path
+        view.panelVisible = true;
+        return;
+    }
     if (const scene::StandardView* standard = viewOfKey(key, mods)) {
         viewer_.turnTo(*standard);
         return;
@@ -101,6 +121,12 @@ void Input::onKey(int key, int scancode, int action, int mods) {
     default:
         break;
     }
+}
+
+void Input::feedPanelKeys() {
+    for (const KeyEvent& e : panelKeys_.takeFrame())
+        ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.down ? GLFW_PRESS : GLFW_RELEASE,
+                                   e.mods);
 }
 
 void Input::onCursor(double x, double y) {
@@ -297,13 +323,18 @@ void Input::queue(const ScriptCommand& c) {
     };
     switch (c.op) {
     case ScriptOp::Key:
+        // Pressed and released at once, modifiers held around it: what a quick hand gives a
+        // slow frame. A frame between key presses (V twice must show off).
+        step([this, key = c.key, mods = c.mods] { chord(key, mods); }, true);
+        break;
+    case ScriptOp::Type:
         step(
-            [this, key = c.key, mods = c.mods] {
-                const int code = glfwGetKeyScancode(key);
-                onKey(key, code, GLFW_PRESS, mods);
-                onKey(key, code, GLFW_RELEASE, mods);
+            [this, text = c.text] {
+                for (const char ch : text)
+                    if (static_cast<unsigned char>(ch) < 0x80)
+                        ImGui_ImplGlfw_CharCallback(window_, static_cast<unsigned char>(ch));
             },
-            true); // a frame between key presses, as a hand gives (V twice must show off)
+            true);
         break;
     case ScriptOp::Move:
         step([this, v] { onCursor(v[0], v[1]); }, true);

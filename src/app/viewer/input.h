@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
+#include "app/viewer/key_queue.h"
 #include "app/viewer/script.h"
 #include "app/viewer/selection.h"
 #include "render/pick.h"
@@ -35,7 +36,9 @@ class Input {
     void onButton(int button, int action, int mods);
     void onScroll(double dx, double dy);
     void onDrop(const std::string& path); // opened between frames (takeDrops)
-    void fail(std::exception_ptr error);  // a handler threw inside a GLFW callback
+    // Before the panel's frame starts: this frame's share of the key events for ImGui.
+    void feedPanelKeys();
+    void fail(std::exception_ptr error); // a handler threw inside a GLFW callback
     static constexpr double doubleClickSeconds = 0.4;
 
     // Between frames: plays the script commands due at `seconds`, a frame's worth of steps.
@@ -93,6 +96,7 @@ class Input {
         bool endsFrame; // the next step waits for a frame
     };
     void queue(const ScriptCommand& command);
+    void chord(int key, int mods); // a script's key: modifiers down, the key, modifiers up
     void step(std::function<void()> run, bool endsFrame) {
         steps_.push_back({std::move(run), endsFrame});
     }
@@ -114,6 +118,7 @@ class Input {
     glm::dvec2 lastClickAt_{-1.0, -1.0};
     std::optional<uint64_t> pickingSince_; // first frame of the current run of picks
     std::vector<std::string> drops_;
+    KeyQueue panelKeys_; // for ImGui, a change per key a frame (key_queue.h)
     ScriptPlayer script_;
     std::deque<Step> steps_;
     std::exception_ptr failure_;

@@ -19,7 +19,18 @@ float usableRadius(const scene::Bounds& bounds) {
     return std::isfinite(radius) && radius > 0.0f ? radius : 1.0f;
 }
 
+// Less free than this (a fraction of the width) and F uses the whole window after all.
+constexpr float narrowestSpan = 0.25f;
+
 } // namespace
+
+FreeSpan freeSpan(float windowWidth, float panelLeft, float panelRight) {
+    if (!(windowWidth > 0.0f) || !(panelRight > panelLeft)) return {};
+    const float left = std::clamp(panelLeft / windowWidth, 0.0f, 1.0f);
+    const float right = std::clamp(panelRight / windowWidth, 0.0f, 1.0f);
+    const FreeSpan span = 1.0f - right >= left ? FreeSpan{right, 1.0f} : FreeSpan{0.0f, left};
+    return span.right - span.left < narrowestSpan ? FreeSpan{} : span;
+}
 
 OrbitCamera::OrbitCamera(const scene::Camera& initial, const scene::Bounds& bounds,
                          const scene::StandardView* opening)
@@ -36,6 +47,7 @@ void OrbitCamera::setFrom(const scene::Camera& camera) {
     b_ = glm::cross(up_, a_);
     target_ = camera.target;
     fovY_ = camera.fovY;
+    shift_ = 0.0f;
     const glm::vec3 offset = camera.eye - camera.target;
     distance_ = glm::length(offset);
     if (!(distance_ > 0.0f)) {
@@ -86,18 +98,28 @@ void OrbitCamera::zoom(float steps) {
     distance_ = std::clamp(distance_ * std::pow(zoomPerStep, steps), radius * 1e-5f, radius * 1e4f);
 }
 
-void OrbitCamera::fit(float aspect) {
-    fit(bounds_, aspect);
+void OrbitCamera::fit(float aspect, FreeSpan span) {
+    fit(bounds_, aspect, span);
 }
 
-void OrbitCamera::fit(const scene::Bounds& what, float aspect) {
+void OrbitCamera::fit(const scene::Bounds& what, float aspect, FreeSpan span) {
     const float radius = usableRadius(what);
+    const float width = std::clamp(span.right - span.left, 1e-3f, 1.0f);
+    aspect *= width;                        // the span's own aspect decides the distance
+    shift_ = span.left + span.right - 1.0f; // the span's middle, in device coordinates
     // The narrower of the two fields of view decides, as in scene::fitCamera; the
     // orthographic view of that distance is taller than the sphere (Camera::orthoHeight).
     const float halfFov =
         0.5f * std::min(fovY_, 2.0f * std::atan(std::tan(0.5f * fovY_) * std::max(aspect, 1e-3f)));
     target_ = what.center();
     distance_ = radius / std::sin(halfFov);
+}
+
+glm::mat4 OrbitCamera::shiftMatrix() const {
+    // x' = x + shift * w: in clip space, so perspective and ortho both move by `shift`.
+    glm::mat4 m(1.0f);
+    m[3][0] = shift_;
+    return m;
 }
 
 void OrbitCamera::turnTo(const scene::StandardView& view) {

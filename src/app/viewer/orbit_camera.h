@@ -13,6 +13,14 @@
 
 namespace app {
 
+// The horizontal span of a window that a panel over [panelLeft, panelRight) (window x
+// coordinates) leaves free, as fractions of the width: the wider side of the panel; the whole
+// window when there is no panel, or too little is left beside it.
+struct FreeSpan {
+    float left = 0.0f, right = 1.0f;
+};
+FreeSpan freeSpan(float windowWidth, float panelLeft, float panelRight);
+
 class OrbitCamera {
   public:
     // Radians of orbit per pixel dragged, and the zoom factor per wheel step.
@@ -37,9 +45,11 @@ class OrbitCamera {
     // reaches or crosses it.
     void zoom(float steps);
     // Keeps the view direction and frames the whole scene, or `what` (F: the selection), in
-    // either projection (scene::fitCamera's distance).
-    void fit(float aspect);
-    void fit(const scene::Bounds& what, float aspect);
+    // either projection (scene::fitCamera's distance), inside `span` of the window's width
+    // (the area beside the panel): the distance fits that narrower view, and the projection
+    // shifts sideways so the target shows in the middle of the span (shift()).
+    void fit(float aspect, FreeSpan span = {});
+    void fit(const scene::Bounds& what, float aspect, FreeSpan span = {});
     // Turns to a standard view around the target, at the same distance (1, 3, 7, 0).
     void turnTo(const scene::StandardView& view);
     // Back to the initial view (Home).
@@ -49,6 +59,12 @@ class OrbitCamera {
     glm::vec3 target() const { return target_; }
     float distance() const { return distance_; }
     const scene::Bounds& bounds() const { return bounds_; }
+    // How far right the picture moves, in normalised device coordinates (2 is the window's
+    // width): a lens shift set by fit and kept by orbit, pan, zoom and the standard views, so
+    // they turn around the target where it shows. Home (resetView) takes it back to 0.
+    float shift() const { return shift_; }
+    // The projection's lens shift as a matrix to apply after the view-projection.
+    glm::mat4 shiftMatrix() const;
     // The camera for this frame, near and far planes fitted to the bounds. `reach` is how
     // far from the centre the scene may extend, in bounding radii (an exploded view: 2).
     scene::Camera camera(float reach = 1.0f, bool ortho = false) const;
@@ -66,6 +82,7 @@ class OrbitCamera {
     float distance_ = 10.0f;
     float yaw_ = 0.0f, pitch_ = 0.0f; // radians, pitch in (-pi/2, pi/2)
     float fovY_ = glm::radians(40.0f);
+    float shift_ = 0.0f;
     scene::Bounds bounds_;
     scene::Camera initial_;
     const scene::StandardView* opening_ = nullptr;

@@ -1,4 +1,5 @@
-// panel.cpp - the panel: renderer settings, scene, statistics, timing, picking, help.
+// panel.cpp - the panel: the open field, view toggles, renderer settings, scene, statistics,
+// timing and help; its layout, the part a newcomer needs first at the top.
 #include "app/viewer/panel.h"
 
 #include <algorithm>
@@ -7,10 +8,12 @@
 #include <cmath>
 #include <cstdio>
 #include <type_traits>
+#include <utility>
 
 #include <imgui.h>
 
 #include "app/viewer/panel_section.h"
+#include "app/viewer/panel_selection.h"
 #include "app/viewer/panel_tree.h"
 #include "render/culling.h"
 #include "render/technique.h"
@@ -30,8 +33,8 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "E                  part edges on/off\n"
                                  "M                  measure: click points and faces\n"
                                  "Esc                clear selection; if none, quit\n"
-                                 "F                  fit the view to the selection,\n"
-                                 "                   or the scene when none\n"
+                                 "F                  fit the selection (or the shown\n"
+                                 "                   parts) beside the panel\n"
                                  "1 / 3 / 7          front / right / top view\n"
                                  "ctrl + 1 / 3 / 7   back / left / bottom view\n"
                                  "0                  isometric view\n"
@@ -43,7 +46,7 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "F1                 hide/show this panel\n"
                                  "drop a file        open it (.gltf .glb .step .stp .iges\n"
                                  "                   .igs .brep); or type its path in\n"
-                                 "                   Scene > open";
+                                 "                   the open field (ctrl + O)";
 
 // When to choose which technique, from the H100 figures in docs/benchmarks.md.
 const char* const techniqueHelp =
@@ -201,8 +204,7 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     }
 }
 
-void rendering(Options& settings, ViewSettings& view, const PanelInfo& info,
-               PanelActions& actions) {
+void rendering(Options& settings, const PanelInfo& info) {
     render::RenderSettings& s = settings.render;
     render::PipelineKey& key = s.pipeline;
     techniqueCombo(key.technique, info);
@@ -224,28 +226,20 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info,
         }
         ImGui::EndCombo();
     }
+    // Edge settings stay in place, greyed while edges are off: E moves nothing below.
     render::EdgeSettings& edges = s.edges;
-    ImGui::Checkbox("edges (E)", &edges.on);
-    if (edges.on) {
-        const render::Range widths = render::edgeWidthRange;
-        ImGui::SliderScalar("edge width", ImGuiDataType_U32, &edges.width, &widths.min,
-                            &widths.max);
-        ImGui::ColorEdit3("edge colour", &edges.color.x, ImGuiColorEditFlags_NoInputs);
-        ImGui::SameLine();
-        ImGui::ColorEdit3("selected", &edges.selectColor.x, ImGuiColorEditFlags_NoInputs);
-        ImGui::SameLine();
-        ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
-    }
+    ImGui::BeginDisabled(!edges.on);
+    const render::Range widths = render::edgeWidthRange;
+    ImGui::SliderScalar("edge width", ImGuiDataType_U32, &edges.width, &widths.min, &widths.max);
+    ImGui::ColorEdit3("edge colour", &edges.color.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("selected", &edges.selectColor.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::EndDisabled();
     culling(s.culling, info);
     levelsOfDetail(settings, info);
     ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
-    ImGui::Checkbox("vsync (V)", &view.vsync);
-    ImGui::Checkbox("orthographic (O)", &settings.camera.ortho);
-    // The standard views, as their keys turn to them (1, 3, 7, Ctrl, 0).
-    for (const scene::StandardView& standard : scene::standardViews()) {
-        if (&standard != scene::standardViews().data()) ImGui::SameLine();
-        if (ImGui::SmallButton(standard.name)) actions.view = &standard;
-    }
     // What the last switch cost: a cached pipeline makes it a lookup.
     const render::SwitchReport& last = info.lastSwitch;
     ImGui::Text("last switch %.2f ms, pipeline %s%s", last.ms,
@@ -253,14 +247,7 @@ void rendering(Options& settings, ViewSettings& view, const PanelInfo& info,
     ImGui::Text("pipelines cached %zu (R clears)", info.cachedPipelines);
 }
 
-void sceneSection(SceneSettings& s, ViewSettings& view, const PanelInfo& info,
-                  PanelActions& actions) {
-    ImGui::TextWrapped("%s", info.source.c_str());
-    if (ImGui::InputTextWithHint("open", ".gltf .glb .step .iges .brep, Enter",
-                                 view.openPath.data(), view.openPath.size(),
-                                 ImGuiInputTextFlags_EnterReturnsTrue) &&
-        view.openPath[0])
-        actions.open = std::string(view.openPath.data());
+void sceneSection(SceneSettings& s, const PanelInfo& info) {
     int copies = int(s.copies);
     if (ImGui::InputInt("model copies", &copies, 1, 4, ImGuiInputTextFlags_EnterReturnsTrue))
         s.copies = uint32_t(std::clamp(copies, 1, 256));
@@ -306,7 +293,6 @@ void sceneSection(SceneSettings& s, ViewSettings& view, const PanelInfo& info,
 }
 
 void timing(const PanelInfo& info) {
-    ImGui::Text("%.0f fps", info.fps);
     ImGui::Text("Render GPU [ms]  %.3f", info.gpuMs);
     ImGui::Text("ID passes  [ms]  %.3f", info.idPassMs);
     if (ImGui::IsItemHovered())
@@ -322,60 +308,57 @@ void timing(const PanelInfo& info) {
                          "scene pass GPU ms", 0.0f, FLT_MAX, ImVec2(310, 60));
 }
 
-void partLine(const char* what, const PartLine& line) {
-    if (!line.part) {
-        ImGui::Text("%s: none", what);
-        return;
+// The model path field, the width of the panel so its hint shows whole, with the recent
+// files beside it. Clicking it, or Ctrl+O, selects what it holds: typing replaces it.
+void openField(ViewSettings& view, PanelActions& actions) {
+    const float recentWidth = ImGui::GetFrameHeight();
+    if (std::exchange(view.focusOpen, false)) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - recentWidth -
+                            ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::InputTextWithHint("##open", "open .gltf .glb .step .iges .brep",
+                                 view.openPath.data(), view.openPath.size(),
+                                 ImGuiInputTextFlags_EnterReturnsTrue |
+                                     ImGuiInputTextFlags_AutoSelectAll) &&
+        view.openPath[0])
+        actions.open = std::string(view.openPath.data());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("type or paste a model's path, Enter opens it (Ctrl+O comes here); "
+                          "or drop the file on the window");
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::BeginDisabled(view.recentFiles.empty());
+    if (ImGui::BeginCombo("##recent", nullptr, ImGuiComboFlags_NoPreview)) {
+        for (const std::string& path : view.recentFiles)
+            if (ImGui::Selectable(path.c_str())) actions.open = path;
+        ImGui::EndCombo();
     }
-    const scene::PartInfo& p = *line.part;
-    ImGui::Text("%s: part %u", what, p.uniquePartId);
-    ImGui::TextWrapped("  %s", p.name.c_str());
-    ImGui::TextDisabled("  %s", p.path.c_str());
-    if (p.face) ImGui::Text("  B-rep face %u (of the shape's faces, 0-based)", *p.face);
-    ImGui::Text("  object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
-    ImGui::Text("  %u triangles, depth %.6f", p.triangleCount, double(line.depth));
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", view.recentFiles.empty() ? "recent files: none yet this session"
+                                                         : "recent files");
 }
 
-void picking(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
-    ImGui::Text("visible parts  %u", info.visibleParts);
-    ImGui::TextUnformatted("click selects");
-    const char* levels[] = {"face/part", "solid/object", "assembly"};
-    for (uint32_t level = 0; level < 3; ++level) {
-        ImGui::SameLine();
-        if (ImGui::RadioButton(levels[level], view.selectLevel == level)) view.selectLevel = level;
+// What a newcomer reaches for first, always in view: edges, projection, vsync, the views.
+void viewRow(Options& settings, ViewSettings& view, PanelActions& actions) {
+    ImGui::Checkbox("edges (E)", &settings.render.edges.on);
+    ImGui::SameLine();
+    ImGui::Checkbox("ortho (O)", &settings.camera.ortho);
+    ImGui::SameLine();
+    ImGui::Checkbox("vsync (V)", &view.vsync);
+    // The standard views, as their keys turn to them (1, 3, 7, Ctrl, 0), wrapped to the
+    // panel's width.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    for (const scene::StandardView& standard : scene::standardViews()) {
+        const float width = ImGui::CalcTextSize(standard.name).x + 2.0f * style.FramePadding.x;
+        if (&standard != scene::standardViews().data()) {
+            ImGui::SameLine();
+            if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+        }
+        if (ImGui::SmallButton(standard.name)) actions.view = &standard;
     }
-    partLine("hovered", info.hovered);
-    if (info.selectedCount > 1)
-        ImGui::Text("selected: %u parts", info.selectedCount);
-    else
-        partLine("selected", info.selected);
-    ImGui::BeginDisabled(info.selectedCount == 0);
-    actions.hide = ImGui::Button("hide (H)");
-    ImGui::SameLine();
-    actions.isolate = ImGui::Button("isolate (I)");
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::BeginDisabled(info.hiddenCount == 0);
-    actions.showAll = ImGui::Button("show all (shift+H)");
-    ImGui::EndDisabled();
-    if (info.hiddenCount) ImGui::Text("hidden parts   %u", info.hiddenCount);
 }
 
-} // namespace
-
-PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
-    PanelActions actions;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    // As tall as its contents, but never taller than the window (it scrolls then).
-    const float maxHeight = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(340, maxHeight));
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    if (!ImGui::Begin("idview (F1 hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-        ImGui::End();
-        return actions;
-    }
-    ImGui::PushItemWidth(-120.0f); // room for the labels right of the widgets
-    ImGui::TextDisabled("%s", info.device.c_str());
+void status(const PanelInfo& info, PanelActions& actions) {
+    ImGui::TextDisabled("%s, %.0f fps", info.device.c_str(), info.fps);
     if (!info.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", info.error.c_str());
@@ -395,22 +378,48 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         // CAD loads stop at their next face or progress step; glTF loads run to their end.
         if (ImGui::Button("Cancel")) actions.cancelLoad = true;
     }
-    if (ImGui::CollapsingHeader("Rendering", ImGuiTreeNodeFlags_DefaultOpen))
-        rendering(settings, view, info, actions);
-    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
-        sceneSection(settings.scene, view, info, actions);
+}
+
+} // namespace
+
+PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
+    PanelActions actions;
+    view.panelLeft = view.panelRight = 0.0f; // until it is drawn, uncollapsed
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    // As tall as its contents, but never taller than the window (it scrolls then).
+    const float maxHeight = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(340, maxHeight));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (!ImGui::Begin("idview (F1 hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::End();
+        return actions;
+    }
+    ImGui::PushItemWidth(-120.0f); // room for the labels right of the widgets
+    // Where the panel lies, for F to fit the scene beside it.
+    view.panelLeft = ImGui::GetWindowPos().x;
+    view.panelRight = view.panelLeft + ImGui::GetWindowSize().x;
+    status(info, actions);
+    openField(view, actions);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", info.source.c_str());
+    ImGui::PopStyleColor();
+    viewRow(settings, view, actions);
     if (info.measuring &&
         ImGui::CollapsingHeader("Measure (M to leave)", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (info.measureLines.empty())
             ImGui::TextWrapped("Click a part for its face; two clicks for their distance.");
-        for (const std::string& line : info.measureLines) ImGui::TextUnformatted(line.c_str());
+        for (const std::string& line : info.measureLines) ImGui::TextWrapped("%s", line.c_str());
     }
+    // The parts first, open; the rarely used sections closed, so the details stay in view.
+    if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
+        selectionSection(view, info, actions);
+    if (ImGui::CollapsingHeader("Assembly tree", ImGuiTreeNodeFlags_DefaultOpen))
+        assemblyTree(view, info, actions);
+    if (ImGui::CollapsingHeader("Rendering")) rendering(settings, info);
+    if (ImGui::CollapsingHeader("Scene")) sceneSection(settings.scene, info);
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
-    if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing(info);
-    if (ImGui::CollapsingHeader("Parts", ImGuiTreeNodeFlags_DefaultOpen))
-        picking(view, info, actions);
-    if (ImGui::CollapsingHeader("Assembly tree")) assemblyTree(view, info, actions);
+    if (ImGui::CollapsingHeader("Timing")) timing(info);
     if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     ImGui::PopItemWidth();

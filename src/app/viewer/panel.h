@@ -36,7 +36,12 @@ struct ViewSettings {
     // the part (a CAD face), 1 its object (a CAD solid), 2 the assembly node above that. A
     // double-click selects at least the object.
     uint32_t selectLevel = 0;
-    std::array<char, 512> openPath{}; // the panel's "open" field
+    std::array<char, 512> openPath{};     // the panel's "open" field, emptied when a model opens
+    bool focusOpen = false;               // Ctrl+O: the open field takes the keys next frame
+    std::vector<std::string> recentFiles; // models opened this session, newest first
+    // Where the panel lay in the last frame, window x coordinates (both 0 while hidden): F
+    // fits the scene in the area beside it.
+    float panelLeft = 0.0f, panelRight = 0.0f;
 };
 
 // What the user asked of the parts through the panel, for the viewer to carry out.
@@ -88,6 +93,9 @@ struct PanelInfo {
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
     uint32_t selectedCount = 0, hiddenCount = 0;
+    const scene::PartSet* selectedParts = nullptr; // the tree highlights rows all selected
+    // The deepest tree row whose parts are exactly the selection (scene::rowOfParts).
+    std::optional<size_t> selectedRow;
     uint32_t visibleParts = 0; // counted on the GPU in the newest completed frame
     double idPassMs = 0.0;     // GPU time of the edge and part set passes
     // Culling: what the technique and mode get of the mode chosen, what the newest completed

@@ -33,6 +33,14 @@ namespace {
 
 // Whether none, some or all of the ranges' parts are hidden.
 enum class Shown { All, Some, None };
+bool allIn(const scene::PartRanges& parts, const scene::PartSet& set) {
+    bool any = false;
+    for (const auto& [first, count] : parts) {
+        if (!set.allIn(first, count)) return false;
+        any = any || count > 0;
+    }
+    return any;
+}
 Shown shownOf(const scene::PartRanges& parts, const scene::PartSet& hidden) {
     bool anyHidden = false, anyShown = false;
     for (const auto& [first, count] : parts) {
@@ -67,7 +75,11 @@ void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actio
         i = (filtering || view.treeOpen[i] || i == 0) ? i + 1 : rows[i].end;
     }
     ImGui::Text("%zu rows of %zu nodes", shown.size(), rows.size());
-    if (!ImGui::BeginChild("##tree", ImVec2(-1, 240), true)) {
+    // As tall as its rows, up to ten: a small tree leaves the room below it to the rest.
+    const float rowsHeight =
+        float(std::clamp<size_t>(shown.size(), 2, 10)) * ImGui::GetFrameHeightWithSpacing();
+    const float height = rowsHeight + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    if (!ImGui::BeginChild("##tree", ImVec2(-1, height), true)) {
         ImGui::EndChild();
         return;
     }
@@ -97,7 +109,10 @@ void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actio
                 (state == Shown::All ? actions.hideParts : actions.showParts) = row.parts;
             if (state == Shown::Some) ImGui::PopStyleVar();
             ImGui::SameLine();
-            if (ImGui::Selectable(row.name.c_str())) {
+            // Highlighted: every part under the row is selected (a row click, a solid, a box).
+            const bool selected = info.selectedParts && allIn(row.parts, *info.selectedParts);
+            if (ImGui::Selectable(row.label.empty() ? row.name.c_str() : row.label.c_str(),
+                                  selected)) {
                 actions.selectParts = row.parts;
                 actions.mode = ImGui::GetIO().KeyCtrl ? SelectMode::Add : SelectMode::Replace;
             }

@@ -29,6 +29,7 @@ struct CommandSpec {
 
 const CommandSpec commandSpecs[] = {
     {"key", ScriptOp::Key, 0, "key NAME"},
+    {"type", ScriptOp::Type, 0, "type TEXT"},
     {"move", ScriptOp::Move, 2, "move X Y"},
     {"click", ScriptOp::Click, 2, "click X Y"},
     {"dblclick", ScriptOp::DoubleClick, 2, "dblclick X Y"},
@@ -100,12 +101,13 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Level;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
-    const bool fits = spec->op == ScriptOp::Object || spec->op == ScriptOp::Node ? !args.empty()
+    const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
+    const bool fits = restOfLine || spec->op == ScriptOp::Node ? !args.empty()
                       : spec->op == ScriptOp::Box ? args.size() == 4 || args.size() == 5
                                                   : args.size() == expected;
     if (!fits) fail(std::string("'") + spec->name + "' takes: " + spec->usage);
-    if (spec->op == ScriptOp::Object) {
-        const auto start = line.find("object") + 6;
+    if (restOfLine) {
+        const auto start = line.find(spec->name) + std::string(spec->name).size();
         command.text = line.substr(line.find_first_not_of(" \t", start));
         command.text.erase(command.text.find_last_not_of(" \t") + 1);
     }

@@ -4,7 +4,10 @@
 // handlers as real keys, mouse and panel widgets. Parsing is plain C++ and unit-tested.
 //
 //   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB,
-//                           HOME), with modifiers as in shift+H, ctrl+A or alt+X
+//                           HOME), with modifiers as in shift+H, ctrl+A or alt+X (held
+//                           as their own keys around it, as a hand does)
+//   0.6 type /tmp/a b.glb   characters typed into the panel's focused field (the rest of the
+//                           line, ASCII), as GLFW hands them over
 //   1   move 320 200        cursor to window coordinates (top-left origin)
 //   1.2 click 320 200       move there, press and release the left button
 //   1.3 dblclick 320 200    move there and click twice at once (a double-click)
@@ -54,6 +57,7 @@ namespace app {
 
 enum class ScriptOp {
     Key,
+    Type,
     Move,
     Click,
     DoubleClick,

@@ -2,6 +2,8 @@
 // asks of the viewer as a whole.
 #include "app/viewer/viewer.h"
 
+#include <imgui.h>
+
 #include "app/headless.h" // exitCode
 #include "scene/bounds.h"
 #include "scene/part_data.h"
@@ -65,13 +67,28 @@ void Viewer::selectionChanged() const {
 }
 
 void Viewer::fitView() {
-    const scene::Bounds selected =
-        scene::partsWorldBounds(scene_.scene(), input_.selection().selected());
-    if (scene::isEmpty(selected))
-        camera_.fit(aspect());
-    else
-        camera_.fit(selected, aspect());
-    events_.say(scene::isEmpty(selected) ? "fit: scene" : "fit: selection");
+    // The selection; else the parts not hidden (isolated ones); else the whole scene; framed
+    // in the area the panel leaves free.
+    const Selection& selection = input_.selection();
+    const scene::Scene& scene = scene_.scene();
+    const float width = ImGui::GetIO().DisplaySize.x;
+    const FreeSpan span =
+        view_.panelVisible ? freeSpan(width, view_.panelLeft, view_.panelRight) : FreeSpan{};
+    scene::Bounds bounds = scene::partsWorldBounds(scene, selection.selected());
+    const char* what = "selection";
+    if (scene::isEmpty(bounds) && !selection.hidden().empty()) {
+        scene::PartSet shown = selection.hidden();
+        shown.invert();
+        bounds = scene::partsWorldBounds(scene, shown);
+        what = "shown parts";
+    }
+    if (scene::isEmpty(bounds)) {
+        camera_.fit(aspect(), span);
+        what = "scene";
+    } else {
+        camera_.fit(bounds, aspect(), span);
+    }
+    events_.say(std::string("fit: ") + what);
 }
 
 void Viewer::turnTo(const scene::StandardView& view) {

@@ -46,7 +46,8 @@ class Viewer {
     float aspect() const;
     uint64_t nextFrame() const { return frameNumber_; }
     void reloadShaders(); // R
-    // F: frames the selected parts when there are some, else the whole scene.
+    // F: frames the selected parts when there are some, else those not hidden, else the
+    // whole scene, in the area beside the panel.
     void fitView();
     // 1, 3, 7, 0 (and a script's `view`): a standard view, at the same distance. O (and a
     // script's `ortho`): the projection, a setting (Options::camera) the panel edits too.
@@ -82,6 +83,7 @@ class Viewer {
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);
+    void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
     void showParts();
     void recordScene(render::FrameSlot& slot, const render::FrameParams& params);
@@ -104,7 +106,9 @@ class Viewer {
     OrbitCamera camera_;
     Measure measure_;
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
-    glm::mat4 viewProj_{1.0f};         // of the newest frame: where measure points come from
+    scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
+    std::optional<size_t> selectedRow_;
+    glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
 
     // Frame timing and the title.
     uint64_t frameNumber_ = 0;

@@ -1,0 +1,88 @@
+// panel_selection.cpp - hovered and selected part details, wrapped to the panel's width.
+#include "app/viewer/panel_selection.h"
+
+#include <imgui.h>
+
+namespace app {
+namespace {
+
+// Lines each details box holds: a part's name, path, face, object and triangles, with room
+// for a long name to wrap once. Fixed, so what lies below never jumps as the hover changes.
+constexpr float detailLines = 6.0f;
+
+void partLine(const char* what, const PartLine& line) {
+    if (!line.part) {
+        ImGui::TextDisabled("%s: none", what);
+        return;
+    }
+    const scene::PartInfo& p = *line.part;
+    ImGui::TextWrapped("%s: part %u, %s", what, p.uniquePartId, p.name.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", p.path.c_str());
+    ImGui::PopStyleColor();
+    if (p.face) ImGui::TextWrapped("B-rep face %u of its shape (0-based)", *p.face);
+    ImGui::TextWrapped("object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
+    ImGui::TextWrapped("%u triangles, depth %.6f", p.triangleCount, double(line.depth));
+}
+
+// More than one part: the tree node they make up, if they are exactly one node's parts.
+void selectionLine(const PanelInfo& info) {
+    if (info.selectedCount <= 1) {
+        partLine("selected", info.selected);
+        return;
+    }
+    const scene::TreeRow* row =
+        info.tree && info.selectedRow && *info.selectedRow < info.tree->size()
+            ? &(*info.tree)[*info.selectedRow]
+            : nullptr;
+    if (row) {
+        ImGui::TextWrapped("selected: %s (%u parts)", row->label.c_str(), info.selectedCount);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        if (!row->path.empty()) ImGui::TextWrapped("%s", row->path.c_str());
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::TextWrapped("selected: %u parts", info.selectedCount);
+    }
+    // The first selected part says where the selection starts (several nodes, a box).
+    if (info.selected.part)
+        ImGui::TextWrapped("first: part %u, %s", info.selected.part->uniquePartId,
+                           info.selected.part->path.c_str());
+}
+
+void detailsBox(const char* id, auto&& draw) {
+    const float height = detailLines * ImGui::GetTextLineHeightWithSpacing();
+    if (ImGui::BeginChild(id, ImVec2(-1, height), true)) draw();
+    ImGui::EndChild();
+}
+
+} // namespace
+
+void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
+    ImGui::Text("visible parts %u", info.visibleParts);
+    if (info.hiddenCount) {
+        ImGui::SameLine();
+        ImGui::Text(", hidden %u", info.hiddenCount);
+    }
+    ImGui::TextUnformatted("click selects");
+    const char* levels[] = {"face", "solid", "assembly"};
+    for (uint32_t level = 0; level < 3; ++level) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(levels[level], view.selectLevel == level)) view.selectLevel = level;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("face: the part (a CAD face); solid: its object; assembly: the "
+                          "node above it. A double-click selects the solid at least.");
+    detailsBox("##selected", [&] { selectionLine(info); });
+    detailsBox("##hovered", [&] { partLine("hovered", info.hovered); });
+    ImGui::BeginDisabled(info.selectedCount == 0);
+    actions.hide = ImGui::Button("hide (H)");
+    ImGui::SameLine();
+    actions.isolate = ImGui::Button("isolate (I)");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(info.hiddenCount == 0);
+    actions.showAll = ImGui::Button("show all (shift+H)");
+    ImGui::EndDisabled();
+}
+
+} // namespace app
