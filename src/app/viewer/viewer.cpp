@@ -2,7 +2,7 @@
 // asks of the viewer as a whole.
 #include "app/viewer/viewer.h"
 
-#include "app/headless.h" // exitCode
+#include "app/headless.h" // exitCode, savePipelineCache
 #include "scene/bounds.h"
 #include "scene/part_data.h"
 #include "vk/check.h"
@@ -136,6 +136,7 @@ void Viewer::run() {
     }
     slots_.finish();
     if (input_.failure()) std::rethrow_exception(input_.failure());
+    savePipelineCache(scene_.renderer());
 }
 
 int runViewer(const Options& options) {

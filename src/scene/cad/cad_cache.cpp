@@ -4,10 +4,9 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
-#include <unistd.h>
 
+#include "scene/cad/cache_file.h"
 #include "scene/cad/hash64.h"
 #include "scene/cad/scene_codec.h"
 
@@ -45,18 +44,6 @@ CadLoadResult getResult(ByteReader& in) {
     resultFields(in, r);
     if (!in.done()) throw std::runtime_error("bytes after the load");
     return r;
-}
-
-// The whole file in one read: entries of large models run to hundreds of megabytes.
-std::optional<std::string> readWhole(const fs::path& file) {
-    std::error_code ec;
-    const uintmax_t size = fs::file_size(file, ec);
-    std::ifstream in(file, std::ios::binary);
-    if (ec || !in) return std::nullopt;
-    std::string bytes(size_t(size), '\0');
-    in.read(bytes.data(), std::streamsize(bytes.size()));
-    if (size_t(in.gcount()) != bytes.size()) return std::nullopt;
-    return bytes;
 }
 
 std::optional<CadLoadResult> parseEntry(const std::string& bytes, const CadCacheKey& key,
@@ -100,14 +87,6 @@ double msSince(std::chrono::steady_clock::time_point start) {
 }
 
 } // namespace
-
-fs::path cadCacheFolder() {
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && fs::path(xdg).is_absolute())
-        return fs::path(xdg) / "idview";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".cache" / "idview";
-    return {};
-}
 
 std::optional<CadCacheKey> cadCacheKey(const std::string& path, const CadOptions& options,
                                        uint32_t levels) {
@@ -155,7 +134,7 @@ std::optional<CadLoadResult> readCadCache(const fs::path& entry, const CadCacheK
         why = "no entry";
         return std::nullopt;
     }
-    const std::optional<std::string> bytes = readWhole(entry);
+    const std::optional<std::string> bytes = readWholeFile(entry);
     if (!bytes) {
         why = "entry unreadable";
         return std::nullopt;
@@ -175,37 +154,14 @@ std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
     head.put(uint64_t(payload.bytes().size())); // the payload's length prefix
     tail.put(hash64(payload.bytes().data(), payload.bytes().size()));
 
-    std::error_code ec;
-    fs::create_directories(entry.parent_path(), ec);
-    if (ec) return entry.parent_path().string() + ": " + ec.message();
-    // Unique per process and call, in the entry's folder so that the rename stays atomic.
-    static std::atomic<uint32_t> serial{0};
-    fs::path temporary = entry;
-    temporary += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        for (const std::string* part : {&head.bytes(), &payload.bytes(), &tail.bytes()})
-            file.write(part->data(), std::streamsize(part->size()));
-        file.close();
-        if (!file) {
-            fs::remove(temporary, ec);
-            return temporary.string() + ": write failed";
-        }
-    }
-    fs::rename(temporary, entry, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        return entry.string() + ": " + ec.message();
-    }
-    return {};
+    return writeFileAtomically(entry, {head.bytes(), payload.bytes(), tail.bytes()});
 }
 
 CadLoadResult loadCadCached(const std::string& path, const CadOptions& options,
                             const CadProgress& progress, uint32_t levels,
                             const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
-    const fs::path folder = cadCacheFolder();
+    const fs::path folder = cacheFolder();
     const std::optional<CadCacheKey> key =
         folder.empty() ? std::nullopt : cadCacheKey(path, options, levels);
     if (!key) {
