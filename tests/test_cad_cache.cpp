@@ -29,7 +29,7 @@
 
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_mesh.h"
-#include "scene/cad/hash64.h"
+#include "util/hash64.h"
 
 namespace {
 
@@ -125,18 +125,18 @@ void expectSameScene(const Scene& a, const Scene& b) {
 TEST(Hash64, EveryBitOfTheInputCounts) {
     std::vector<unsigned char> bytes(67); // whole words and a tail
     for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 37);
-    const uint64_t base = hash64(bytes.data(), bytes.size());
+    const uint64_t base = util::hash64(bytes.data(), bytes.size());
     std::set<uint64_t> seen{base};
     for (size_t bit = 0; bit < 8 * bytes.size(); ++bit) {
         bytes[bit / 8] ^= static_cast<unsigned char>(1u << (bit % 8));
-        EXPECT_TRUE(seen.insert(hash64(bytes.data(), bytes.size())).second) << "bit " << bit;
+        EXPECT_TRUE(seen.insert(util::hash64(bytes.data(), bytes.size())).second) << "bit " << bit;
         bytes[bit / 8] ^= static_cast<unsigned char>(1u << (bit % 8));
     }
     // The top bits of two words flipped together: plain word-wise FNV-1a cancels them.
     bytes[7] ^= 0x80;
     bytes[15] ^= 0x80;
-    EXPECT_NE(hash64(bytes.data(), bytes.size()), base);
-    EXPECT_NE(hash64(bytes.data(), bytes.size() - 1), base); // length counts
+    EXPECT_NE(util::hash64(bytes.data(), bytes.size()), base);
+    EXPECT_NE(util::hash64(bytes.data(), bytes.size() - 1), base); // length counts
 }
 
 TEST_F(CadCache, SecondLoadIsAHitWithTheSameScene) {
@@ -268,7 +268,7 @@ TEST_F(CadCache, DamageBehindAGoodChecksumNeverGivesABrokenScene) {
         // The first bytes hold the counts and sizes that steer the decoding.
         const size_t at = payloadAt + (trial < 150 ? random() % 64 : random() % payloadSize);
         bad[at] = static_cast<char>(random());
-        const uint64_t checksum = hash64(bad.data() + payloadAt, payloadSize);
+        const uint64_t checksum = util::hash64(bad.data() + payloadAt, payloadSize);
         std::memcpy(bad.data() + payloadAt + payloadSize, &checksum, 8);
         writeBytes(entry, bad);
         std::string why;

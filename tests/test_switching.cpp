@@ -142,8 +142,9 @@ TEST(PipelineCache, SwitchingBackIsALookupAndRClearsEveryLevel) {
             EXPECT_FALSE(rig.renderer.lastSwitch().pipelineCached);
         }
 
-        // R: the pipelines, the SPIR-V and the driver's cache are forgotten; only the
-        // current pipeline is built again, and going back to b compiles anew.
+        // R: the pipelines and the SPIR-V are forgotten (the driver's cache stays: it is
+        // keyed by the shaders' code); only the current pipeline is built again, and going
+        // back to b compiles anew.
         rig.renderer.configure(tiles.scene, a);
         const uint64_t beforeReload = rig.compiler.compilations();
         rig.renderer.reloadShaders();

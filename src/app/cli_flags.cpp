@@ -132,8 +132,9 @@ const std::vector<Flag>& flags() {
                      parseCount("--max-triangles", v, 1, std::numeric_limits<uint32_t>::max());
              }},
             {"--no-cache", nullptr,
-             "CAD files: neither read nor write the tessellation cache ($XDG_CACHE_HOME/idview, "
-             "else ~/.cache/idview)",
+             "neither read nor write the caches in $XDG_CACHE_HOME/idview (else "
+             "~/.cache/idview): CAD files' tessellations, and the driver's compiled pipelines "
+             "(then kept in memory only)",
              [](Options& o, auto&) { o.scene.cadCache = false; }},
             {"--scene", "SPEC",
              "built-in scene instead of a model: assembly, tiles (the test layout) or "
@@ -230,7 +231,9 @@ const std::vector<Flag>& flags() {
             on("--stats",
                "print the scene's statistics as one JSON object (objects, geometries, parts, "
                "triangles, load_ms, ID buffer bytes) and, for the chosen renderer and mode, draws, "
-               "pipelines and the bytes of each buffer; then exit",
+               "pipelines and the bytes of each buffer; then exit. With --headless it renders "
+               "first and adds first_frame_ms (from creating the device to the first frame's "
+               "fence) and pipeline_cache (hit, miss, off, or rejected: why); null without",
                &Options::stats),
             on("--tree",
                "print the scene's assembly tree as one JSON object, nested "

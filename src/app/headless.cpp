@@ -2,8 +2,10 @@
 #include "app/headless.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "app/image_io.h"
@@ -16,6 +18,7 @@
 #include "scene/camera_path.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
+#include "util/cache_file.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
@@ -80,6 +83,11 @@ struct RectResult {
     uint32_t count;
 };
 
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
 double median(std::vector<double> values) {
     if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
@@ -87,6 +95,15 @@ double median(std::vector<double> values) {
 }
 
 } // namespace
+
+std::filesystem::path pipelineCacheFolder(const Options& options) {
+    return options.scene.cadCache ? util::cacheFolder() : std::filesystem::path{};
+}
+
+void savePipelineCache(const render::Renderer& renderer) {
+    if (const std::string error = renderer.driverCache().save(); !error.empty())
+        std::fprintf(stderr, "idview: warning: pipeline cache not saved: %s\n", error.c_str());
+}
 
 render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent) {
     render::FrameParams params;
@@ -124,6 +141,13 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
         // Picks and selections see the last frame's view, which the images hold.
         render::FrameParams params = frameCamera(options.frames - 1);
         uint64_t frameNumber = 0;
+        // Waits for the run's first frame, whichever kind it is, to time it.
+        std::optional<double> firstFrameMs;
+        auto firstFrameDone = [&] {
+            if (firstFrameMs) return;
+            slots.finish();
+            firstFrameMs = msSince(rig.start);
+        };
         // One frame that picks `pixel`, waited for: headless has nothing else to overlap.
         auto pickFrame = [&](const Options::Pixel& pixel) {
             render::FrameParams pickParams = params;
@@ -133,6 +157,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             renderer.record(slot, rig.targets, pickParams);
             slots.submit(slot);
             slots.finish();
+            firstFrameDone();
             return *slots.latestPick();
         };
         // One frame that collects the parts in `rect`, waited for.
@@ -144,6 +169,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             renderer.record(slot, rig.targets, rectParams);
             slots.submit(slot);
             slots.finish();
+            firstFrameDone();
             const render::PartSetReading& reading = *slots.latestPartSets();
             return RectResult{reading.sets.front(), reading.counts.front()};
         };
@@ -211,6 +237,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 renderer.record(slot, rig.targets, frameParams);
                 if (lastFrame || options.keepEveryFrame) readback.record(slot.cmd, *rig.targets);
                 slots.submit(slot);
+                firstFrameDone();
                 if (options.keepEveryFrame) {
                     slots.finish();
                     result.frames.push_back({readback.idValues(), readback.colorBytes()});
@@ -234,7 +261,10 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             result.reusedFrames = renderer.reusedFrames() - reusedBefore;
             result.color = readback.colorBytes();
             result.ids = readback.idValues();
+            result.pipelineCache = renderer.driverCache().status();
         }
+        for (HeadlessResult& result : results) result.firstFrameMs = firstFrameMs.value_or(0.0);
+        savePipelineCache(renderer);
     }
     for (HeadlessResult& result : results)
         result.validationMessages = instance.validationMessages();
@@ -271,10 +301,14 @@ int runHeadless(const Options& options) {
     if (result.visibleParts)
         std::printf("%s\n",
                     partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
+    if (options.stats)
+        std::printf("%s\n", statsJson(loaded, options.render,
+                                      FirstFrame{result.firstFrameMs, result.pipelineCache})
+                                .c_str());
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
     const bool json = !options.picks.empty() || options.measure || !options.faceInfos.empty() ||
-                      result.rectParts || result.visibleParts;
+                      result.rectParts || result.visibleParts || options.stats;
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()

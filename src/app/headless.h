@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,10 @@ struct HeadlessResult {
     render::CullCounts cullTotals;
     uint64_t reusedFrames = 0; // timed frames that drew the last culled lists again (still view)
     std::string deviceName;
+    // From just before the device was created to the first frame's fence (all of the
+    // sequence's results hold the same), and the pipeline cache's status when it was read.
+    double firstFrameMs = 0.0;
+    std::string pipelineCache;
     render::RenderStats stats;
     uint32_t validationMessages = 0; // counted until the device is destroyed
 };
@@ -62,7 +67,8 @@ std::string measureJson(const HeadlessResult& result);
 std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
                         const std::array<std::optional<uint32_t>, 2>& parts);
 
-// Renders options.frames frames of `scene` seen by `camera` and reads back the last one.
+// Renders options.frames frames of `scene` seen by `camera` and reads back the last one, and
+// saves the pipeline cache (pipelineCacheFolder) at the end.
 // Options::hide / isolate apply first. Then the picks: Options::selects (one frame, its part
 // becomes the selection), Options::selectRect (one frame, its parts become the selection),
 // then one frame per Options::picks entry, then one per Options::measure point; the timed frames
@@ -77,6 +83,13 @@ std::vector<HeadlessResult>
 renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                        const scene::Camera& camera,
                        const std::vector<render::RenderSettings>& settings);
+
+// Where the driver's pipeline cache is kept between runs: scene::cacheFolder(), nothing
+// (memory only) with --no-cache.
+std::filesystem::path pipelineCacheFolder(const Options& options);
+// At exit (headless and the viewer), so that the next start finds what this run compiled: a
+// file that cannot be written is a warning on stderr, as it costs only the next start time.
+void savePipelineCache(const render::Renderer& renderer);
 
 // The frame of `camera` for `extent`, as headless, the benchmark and the viewer draw it.
 render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent);

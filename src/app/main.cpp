@@ -88,7 +88,10 @@ int main(int argc, char** argv) {
     try {
         if (options.listRenderers) return listRenderers();
         if (options.listDevices) return listDevices(options);
-        if (options.stats || options.tree || !options.exportPath.empty()) {
+        // --stats with --headless renders first, to say how long the first frame took.
+        const bool renderedStats = options.stats && options.headless && !options.benchmark &&
+                                   !options.tree && options.exportPath.empty();
+        if (!renderedStats && (options.stats || options.tree || !options.exportPath.empty())) {
             const app::LoadedScene loaded = app::loadScene(options.scene);
             if (!options.exportPath.empty()) scene::writeGlb(loaded.scene, options.exportPath);
             if (options.stats) std::printf("%s\n", app::statsJson(loaded, options.render).c_str());

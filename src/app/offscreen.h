@@ -5,11 +5,13 @@
 // count read after destruction includes teardown.
 #pragma once
 
+#include <chrono>
 #include <cstring>
 #include <memory>
 #include <vector>
 
 #include "app/cli.h"
+#include "app/headless.h"
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
@@ -59,9 +61,12 @@ struct Readback {
 
 struct Offscreen {
     Offscreen(vk::Instance& instance, const Options& options)
-        : device(instance, vk::chooseDevice(instance.devices(), options.device)),
+        : start(std::chrono::steady_clock::now()),
+          device(instance, vk::chooseDevice(instance.devices(), options.device)),
           compiler(vk::ShaderCompiler::locate(options.shaderDir)),
-          renderer(device, compiler), extent{options.width, options.height}, slots(device) {
+          renderer(device, compiler, pipelineCacheFolder(options)), extent{options.width,
+                                                                           options.height},
+          slots(device) {
         useMsaa(options.render.pipeline.msaa);
     }
 
@@ -71,6 +76,7 @@ struct Offscreen {
         targets = std::make_shared<render::SceneTargets>(device, renderer.pass(msaa), extent);
     }
 
+    std::chrono::steady_clock::time_point start; // before the device: time to the first frame
     vk::Device device;
     vk::ShaderCompiler compiler;
     render::Renderer renderer;

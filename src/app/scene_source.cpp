@@ -19,10 +19,10 @@
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
-#include "scene/procedural/generator.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/lod.h"
 #include "scene/part_data.h"
+#include "scene/procedural/generator.h"
 #include "scene/procedural/procedural.h"
 
 namespace app {
@@ -244,7 +244,8 @@ std::string levelStatsJson(const std::vector<scene::LevelStats>& levels) {
     return json.str();
 }
 
-std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings) {
+std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,
+                      const std::optional<FirstFrame>& first) {
     const scene::Scene& s = loaded.scene;
     const render::PipelineKey& key = settings.pipeline;
     const scene::IdDataBytes bytes = scene::idDataBytes(s, key.searchBatch);
@@ -283,7 +284,12 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
     json << ",\"warnings\":[";
     for (size_t i = 0; i < loaded.warnings.size(); ++i)
         json << (i ? "," : "") << jsonString(loaded.warnings[i]);
-    json << "]}";
+    json << "]";
+    if (first)
+        json << ",\"first_frame_ms\":" << first->ms
+             << ",\"pipeline_cache\":" << jsonString(first->pipelineCache) << "}";
+    else
+        json << ",\"first_frame_ms\":null,\"pipeline_cache\":null}";
     return json.str();
 }
 

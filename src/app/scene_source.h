@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -85,10 +86,20 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect,
                             const CameraSettings& view = {});
 
+// How a headless run's first frame went, for --stats --headless: milliseconds from just
+// before the device was created to the first frame's fence, and the pipeline cache's status
+// (render::DiskPipelineCache::status).
+struct FirstFrame {
+    double ms = 0.0;
+    std::string pipelineCache;
+};
+
 // One JSON object for --stats: objects, geometries, parts, triangles, load_ms, read_ms,
 // tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), ... and what
-// the renderer `settings` choose would draw and upload.
-std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings);
+// the renderer `settings` choose would draw and upload; last first_frame_ms and
+// pipeline_cache from `first`, null without it (nothing rendered).
+std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,
+                      const std::optional<FirstFrame>& first = std::nullopt);
 // What each level of detail holds (scene::levelStats), as a JSON array for --stats and the
 // benchmark.
 std::string levelStatsJson(const std::vector<scene::LevelStats>& levels);

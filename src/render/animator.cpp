@@ -27,10 +27,12 @@ void requireCompute(const vk::Device& device) {
 
 } // namespace
 
-Animator::Animator(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
+Animator::Animator(vk::Device& device, const vk::ShaderCompiler& compiler,
+                   const DiskPipelineCache& cache)
+    : device_(device) {
     requireCompute(device);
     ComputePipeline built =
-        createComputePipeline(device, compiler, "animate.comp", sizeof(gpu::AnimationPush),
+        createComputePipeline(device, compiler, cache, "animate.comp", sizeof(gpu::AnimationPush),
                               VK_NULL_HANDLE, "animate objects");
     layout_ = std::move(built.layout);
     pipeline_ = std::move(built.pipeline);

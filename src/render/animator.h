@@ -4,6 +4,7 @@
 // them where they are drawn.
 #pragma once
 
+#include "render/disk_pipeline_cache.h"
 #include "render/scene_gpu.h"
 #include "vk/handle.h"
 #include "vk/shader_compiler.h"
@@ -13,7 +14,8 @@ namespace render {
 class Animator {
   public:
     // Builds the compute pipeline (shaders/animate.comp). Throws vk::Error / vk::ShaderError.
-    Animator(vk::Device& device, const vk::ShaderCompiler& compiler);
+    Animator(vk::Device& device, const vk::ShaderCompiler& compiler,
+             const DiskPipelineCache& cache);
 
     // Outside a render pass, before the scene pass: records the dispatch that writes the
     // scene's world matrices for `explode` (clamped to 0..1), with the barriers around it.

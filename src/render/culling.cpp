@@ -163,8 +163,10 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                                  "meshlet visibility bits");
 }
 
-CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
-    cull_ = createComputePipeline(device, compiler, "cull.comp", sizeof(gpu::CullPush),
+CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
+                       const DiskPipelineCache& cache)
+    : device_(device) {
+    cull_ = createComputePipeline(device, compiler, cache, "cull.comp", sizeof(gpu::CullPush),
                                   VK_NULL_HANDLE, "cull draws");
     VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                          VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
@@ -181,7 +183,7 @@ CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler) :
         VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler_ = vk::make(device, vkCreateSampler, sampler, "depth pyramid sampler");
     for (int msaa = 0; msaa < 2; ++msaa)
-        pyramid_[msaa] = createComputePipeline(device, compiler, "depth_pyramid.comp",
+        pyramid_[msaa] = createComputePipeline(device, compiler, cache, "depth_pyramid.comp",
                                                sizeof(gpu::PyramidPush), depthLayout_.get(),
                                                msaa ? "depth pyramid (MSAA)" : "depth pyramid",
                                                {{"IDV_PYRAMID_MSAA", msaa ? "1" : "0"}});

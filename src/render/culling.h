@@ -117,7 +117,8 @@ struct CullBuffers {
 // The compute pipelines: the cull and the depth pyramid.
 class CullPasses {
   public:
-    CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler);
+    CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
+               const DiskPipelineCache& cache);
 
     // One pass of cull.comp over the whole list: decide (then, in the frustum and late
     // phases, test the draws of several clusters cluster by cluster and count again), then

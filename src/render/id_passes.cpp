@@ -16,7 +16,9 @@ uint32_t groups(uint32_t pixels) {
 
 } // namespace
 
-IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : device_(device) {
+IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
+                   const DiskPipelineCache& cache)
+    : device_(device) {
     std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
     for (uint32_t i = 0; i < bindings.size(); ++i)
         bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT,
@@ -27,10 +29,10 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : dev
     info.bindingCount = static_cast<uint32_t>(bindings.size());
     info.pBindings = bindings.data();
     images_ = vk::make(device, vkCreateDescriptorSetLayout, info, "ID pass images");
-    edges_ = createComputePipeline(device, compiler, "edges.comp", sizeof(gpu::EdgePush),
+    edges_ = createComputePipeline(device, compiler, cache, "edges.comp", sizeof(gpu::EdgePush),
                                    images_.get(), "part edges");
-    partSet_ = createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
-                                     images_.get(), "part sets");
+    partSet_ = createComputePipeline(device, compiler, cache, "part_set.comp",
+                                     sizeof(gpu::PartSetPush), images_.get(), "part sets");
     VkDescriptorSetLayoutBinding samples{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1,
                                          VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     info.bindingCount = 1;
@@ -38,10 +40,10 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler) : dev
     samples_ = vk::make(device, vkCreateDescriptorSetLayout, info, "multisampled IDs");
     // Culling's: the parts without their count, of the resolved IDs or of every sample.
     visibleParts_[0] =
-        createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
+        createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
                               images_.get(), "visible parts", {{"IDV_PART_SET_COUNT", "0"}});
     visibleParts_[1] =
-        createComputePipeline(device, compiler, "part_set.comp", sizeof(gpu::PartSetPush),
+        createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
                               samples_.get(), "visible parts, every sample",
                               {{"IDV_PART_SET_COUNT", "0"}, {"IDV_PART_SET_SAMPLES", "1"}});
 }

@@ -16,7 +16,8 @@ namespace render {
 
 class IdPasses {
   public:
-    IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler);
+    IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
+             const DiskPipelineCache& cache);
 
     // Both images from TRANSFER_SRC_OPTIMAL (the scene pass's final layout) to GENERAL and
     // back around the passes; `edges` null draws none. The part sets write `results` (one

@@ -33,8 +33,9 @@ vk::Handle<VkPipelineLayout> createScenePipelineLayout(vk::Device& device) {
 }
 
 ComputePipeline
-createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler, const char* file,
-                      uint32_t pushBytes, VkDescriptorSetLayout set, const std::string& name,
+createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
+                      const DiskPipelineCache& cache, const char* file, uint32_t pushBytes,
+                      VkDescriptorSetLayout set, const std::string& name,
                       const std::vector<std::pair<std::string, std::string>>& defines) {
     ComputePipeline out;
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
@@ -57,17 +58,12 @@ createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler, co
     info.stage.module = module.get();
     info.stage.pName = "main";
     info.layout = out.layout.get();
-    vk::faultPoint(name.c_str());
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk::check(
-        vkCreateComputePipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-        ("creating compute pipeline '" + name + "'").c_str());
-    out.pipeline = vk::Handle<VkPipeline>(device.handle(), pipeline);
-    device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
+    out.pipeline = cache.create(info, name);
     return out;
 }
 
-vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& scene,
+vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
+                                           const ScenePipelineInfo& scene,
                                            const std::vector<ShaderStage>& stages,
                                            const std::string& name) {
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
@@ -164,13 +160,7 @@ vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipeli
     info.layout = scene.layout;
     info.renderPass = scene.pass;
     info.subpass = 0;
-    vk::faultPoint(name.c_str());
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    vk::check(vkCreateGraphicsPipelines(device.handle(), scene.cache, 1, &info, nullptr, &pipeline),
-              ("creating pipeline '" + name + "'").c_str());
-    vk::Handle<VkPipeline> owned(device.handle(), pipeline);
-    device.name(VK_OBJECT_TYPE_PIPELINE, pipeline, name);
-    return owned;
+    return cache.create(info, name);
 }
 
 void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,

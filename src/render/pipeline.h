@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "render/disk_pipeline_cache.h"
 #include "vk/context.h"
 #include "vk/handle.h"
 #include "vk/shader_compiler.h"
@@ -28,7 +29,6 @@ struct ScenePipelineInfo {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkRenderPass pass = VK_NULL_HANDLE;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    VkPipelineCache cache = VK_NULL_HANDLE; // the driver's cache of compiled pipelines
     bool drawIndexAttribute = false; // the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute)
     bool mesh = false;               // a mesh shader: no vertex input at all
     bool writeIds = true;            // false masks the ID attachment (the floors)
@@ -41,14 +41,16 @@ struct ComputePipeline {
     vk::Handle<VkPipeline> pipeline;
 };
 ComputePipeline
-createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler, const char* file,
-                      uint32_t pushBytes, VkDescriptorSetLayout set, const std::string& name,
+createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
+                      const DiskPipelineCache& cache, const char* file, uint32_t pushBytes,
+                      VkDescriptorSetLayout set, const std::string& name,
                       const std::vector<std::pair<std::string, std::string>>& defines = {});
 // Binds `pass` and pushes `image` as its binding 0 (a push descriptor set of one image).
 void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
                    VkDescriptorType type, const VkDescriptorImageInfo& image);
 
-vk::Handle<VkPipeline> createScenePipeline(vk::Device& device, const ScenePipelineInfo& info,
+vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
+                                           const ScenePipelineInfo& info,
                                            const std::vector<ShaderStage>& stages,
                                            const std::string& name);
 

@@ -9,18 +9,10 @@
 
 namespace render {
 
-PipelineCache::PipelineCache(vk::Device& device, const vk::ShaderCompiler& compiler)
-    : device_(device), compiler_(compiler), layout_(createScenePipelineLayout(device)) {
-    createDriverCache();
-}
-
-void PipelineCache::createDriverCache() {
-    // Kept in memory for the session; idview does not write it to disk.
-    driverCache_ =
-        vk::make(device_, vkCreatePipelineCache,
-                 vk::init<VkPipelineCacheCreateInfo>(VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO),
-                 "scene pipeline cache");
-}
+PipelineCache::PipelineCache(vk::Device& device, const vk::ShaderCompiler& compiler,
+                             const std::filesystem::path& cacheFolder)
+    : device_(device), compiler_(compiler), layout_(createScenePipelineLayout(device)),
+      driverCache_(device, cacheFolder) {}
 
 std::shared_ptr<const Pipeline> PipelineCache::get(const PipelineKey& key, const ScenePass& pass,
                                                    bool& cached) {
@@ -41,7 +33,6 @@ std::shared_ptr<const Pipeline> PipelineCache::get(const PipelineKey& key, const
 void PipelineCache::clear() {
     pipelines_.clear();
     compiler_.forget();
-    createDriverCache();
 }
 
 std::shared_ptr<const Pipeline> PipelineCache::build(const PipelineKey& key,
@@ -55,7 +46,6 @@ std::shared_ptr<const Pipeline> PipelineCache::build(const PipelineKey& key,
     info.layout = layout_.get();
     info.pass = pass.handle();
     info.samples = pass.samples();
-    info.cache = driverCache_.get();
     // Mesh pipelines have no vertex input: the mode's draw index arrives another way.
     info.mesh = key.technique->usesMeshShader();
     info.drawIndexAttribute = key.mode->drawIndexAttribute && !info.mesh;
@@ -64,7 +54,7 @@ std::shared_ptr<const Pipeline> PipelineCache::build(const PipelineKey& key,
                              std::to_string(key.msaa) + "x)";
     auto pipeline = std::make_shared<Pipeline>();
     pipeline->key = key;
-    pipeline->handle = createScenePipeline(device_, info, stages, name);
+    pipeline->handle = createScenePipeline(driverCache_, info, stages, name);
     pipeline->buildMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return pipeline;

@@ -35,11 +35,13 @@ std::shared_ptr<const vk::Buffer> partSetBuffer(vk::UploadBatch& upload, const s
 
 } // namespace
 
-Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler)
+Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler,
+                   const std::filesystem::path& pipelineCacheFolder)
     : device_(device), compiler_(compiler), pushStages_(pushStages(device)),
-      pipelines_(device, compiler), animator_(std::make_shared<Animator>(device, compiler)),
-      idPasses_(std::make_shared<IdPasses>(device, compiler)),
-      culler_(std::make_shared<CullPasses>(device, compiler)) {
+      pipelines_(device, compiler, pipelineCacheFolder),
+      animator_(std::make_shared<Animator>(device, compiler, pipelines_.driverCache())),
+      idPasses_(std::make_shared<IdPasses>(device, compiler, pipelines_.driverCache())),
+      culler_(std::make_shared<CullPasses>(device, compiler, pipelines_.driverCache())) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -150,9 +152,10 @@ void Renderer::reloadShaders() {
     if (!pipeline_) return; // nothing configured yet
     const PipelineKey key = pipeline_->key;
     pipelines_.clear();
-    auto animator = std::make_shared<Animator>(device_, compiler_);
-    auto idPasses = std::make_shared<IdPasses>(device_, compiler_);
-    auto culler = std::make_shared<CullPasses>(device_, compiler_);
+    const DiskPipelineCache& cache = pipelines_.driverCache();
+    auto animator = std::make_shared<Animator>(device_, compiler_, cache);
+    auto idPasses = std::make_shared<IdPasses>(device_, compiler_, cache);
+    auto culler = std::make_shared<CullPasses>(device_, compiler_, cache);
     bool cached = false;
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
     animator_ = std::move(animator);

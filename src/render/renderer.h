@@ -63,7 +63,10 @@ struct SwitchReport {
 
 class Renderer {
   public:
-    Renderer(vk::Device& device, const vk::ShaderCompiler& compiler);
+    // `pipelineCacheFolder`: where the driver's pipeline cache is kept between runs (empty:
+    // in memory only); see render/disk_pipeline_cache.h.
+    Renderer(vk::Device& device, const vk::ShaderCompiler& compiler,
+             const std::filesystem::path& pipelineCacheFolder = {});
 
     // The scene pass for `msaa` samples per pixel, made on first use (the targets the
     // frames render into are made with it). Throws vk::Error naming the counts the device
@@ -103,6 +106,8 @@ class Renderer {
     const RenderStats& stats() const { return stats_; }
     const SwitchReport& lastSwitch() const { return lastSwitch_; }
     size_t cachedPipelines() const { return pipelines_.size(); }
+    // The driver's pipeline cache: its status and save() at exit.
+    const DiskPipelineCache& driverCache() const { return pipelines_.driverCache(); }
     VkPipeline pipeline() const { return pipeline_ ? pipeline_->handle.get() : VK_NULL_HANDLE; }
 
     // What culling the drawn configuration gets (cullPlan of its technique and mode).

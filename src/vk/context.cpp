@@ -171,6 +171,8 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
     if (info.geometryShaderPassthrough)
         extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
+    if (info.pipelineCreationFeedback)
+        extensions.push_back(VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
     // Mesh shaders, and task shaders for culling their meshlets (shaders/scene.task).
     auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);

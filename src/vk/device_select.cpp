@@ -36,6 +36,8 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     info.pushDescriptor = hasDeviceExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
     info.geometryShaderPassthrough =
         hasDeviceExtension(device, VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
+    info.pipelineCreationFeedback =
+        hasDeviceExtension(device, VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
 
     const bool vulkan12 = props.apiVersion >= VK_API_VERSION_1_2;
     if (vulkan12) {

@@ -40,6 +40,8 @@ struct DeviceInfo {
 
     // Optional, used when present.
     bool geometryShaderPassthrough = false; // VK_NV_geometry_shader_passthrough
+    // VK_EXT_pipeline_creation_feedback: whether a pipeline came from the pipeline cache
+    bool pipelineCreationFeedback = false;
     // VK_EXT_mesh_shader with its meshShader and taskShader features (mesh-*)
     bool meshShader = false;
     uint32_t maxDrawIndirectCount = 1;

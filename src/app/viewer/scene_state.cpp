@@ -2,6 +2,7 @@
 // opening scenes. A failure keeps what worked before.
 #include "app/viewer/scene_state.h"
 
+#include "app/headless.h" // pipelineCacheFolder
 #include "scene/copies.h"
 #include "vk/check.h"
 
@@ -9,7 +10,7 @@ namespace app {
 
 SceneState::SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, const Events& events,
                        const Options& settings, VkExtent2D extent)
-    : device_(device), events_(events), renderer_(device, compiler),
+    : device_(device), events_(events), renderer_(device, compiler, pipelineCacheFolder(settings)),
       sampleCounts_(render::supportedSampleCounts(device)) {
     const uint32_t msaa = settings.render.pipeline.msaa;
     targets_ = std::make_shared<render::SceneTargets>(device, renderer_.pass(msaa), extent);

@@ -4,7 +4,7 @@
 
 #include <imgui.h>
 
-#include "app/headless.h" // exitCode
+#include "app/headless.h" // exitCode, savePipelineCache
 #include "scene/bounds.h"
 #include "scene/part_data.h"
 #include "vk/check.h"
@@ -153,6 +153,7 @@ void Viewer::run() {
     }
     slots_.finish();
     if (input_.failure()) std::rethrow_exception(input_.failure());
+    savePipelineCache(scene_.renderer());
 }
 
 int runViewer(const Options& options) {

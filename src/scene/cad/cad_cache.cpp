@@ -4,12 +4,11 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
-#include <unistd.h>
 
-#include "scene/cad/hash64.h"
 #include "scene/cad/scene_codec.h"
+#include "util/cache_file.h"
+#include "util/hash64.h"
 
 namespace scene {
 
@@ -47,18 +46,6 @@ CadLoadResult getResult(ByteReader& in) {
     return r;
 }
 
-// The whole file in one read: entries of large models run to hundreds of megabytes.
-std::optional<std::string> readWhole(const fs::path& file) {
-    std::error_code ec;
-    const uintmax_t size = fs::file_size(file, ec);
-    std::ifstream in(file, std::ios::binary);
-    if (ec || !in) return std::nullopt;
-    std::string bytes(size_t(size), '\0');
-    in.read(bytes.data(), std::streamsize(bytes.size()));
-    if (size_t(in.gcount()) != bytes.size()) return std::nullopt;
-    return bytes;
-}
-
 std::optional<CadLoadResult> parseEntry(const std::string& bytes, const CadCacheKey& key,
                                         std::string& why) {
     ByteReader in(bytes);
@@ -82,7 +69,7 @@ std::optional<CadLoadResult> parseEntry(const std::string& bytes, const CadCache
         const std::string_view payload = in.getBytes();
         const uint64_t checksum = in.get<uint64_t>();
         if (!in.done()) throw std::runtime_error("bytes after the checksum");
-        if (hash64(payload.data(), payload.size()) != checksum) {
+        if (util::hash64(payload.data(), payload.size()) != checksum) {
             why = "checksum mismatch";
             return std::nullopt;
         }
@@ -101,14 +88,6 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 } // namespace
 
-fs::path cadCacheFolder() {
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && fs::path(xdg).is_absolute())
-        return fs::path(xdg) / "idview";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return fs::path(home) / ".cache" / "idview";
-    return {};
-}
-
 std::optional<CadCacheKey> cadCacheKey(const std::string& path, const CadOptions& options,
                                        uint32_t levels) {
     std::error_code ec;
@@ -119,12 +98,12 @@ std::optional<CadCacheKey> cadCacheKey(const std::string& path, const CadOptions
     if (!in) return std::nullopt;
     // A megabyte at a time, each chunk's hash seeding the next.
     std::string chunk(size_t(1) << 20, '\0');
-    uint64_t hash = kHashSeed;
+    uint64_t hash = util::kHashSeed;
     while (in) {
         in.read(chunk.data(), std::streamsize(chunk.size()));
         const auto got = size_t(in.gcount());
         if (got == 0) break;
-        hash = hash64(chunk.data(), got, hash);
+        hash = util::hash64(chunk.data(), got, hash);
         key.fileSize += got;
     }
     if (in.bad()) return std::nullopt;
@@ -144,7 +123,7 @@ fs::path cadCacheEntry(const fs::path& folder, const CadCacheKey& key) {
     char hex[32];
     std::snprintf(
         hex, sizeof hex, "%016llx.tess",
-        static_cast<unsigned long long>(hash64(name.bytes().data(), name.bytes().size())));
+        static_cast<unsigned long long>(util::hash64(name.bytes().data(), name.bytes().size())));
     return folder / hex;
 }
 
@@ -155,7 +134,7 @@ std::optional<CadLoadResult> readCadCache(const fs::path& entry, const CadCacheK
         why = "no entry";
         return std::nullopt;
     }
-    const std::optional<std::string> bytes = readWhole(entry);
+    const std::optional<std::string> bytes = util::readWholeFile(entry);
     if (!bytes) {
         why = "entry unreadable";
         return std::nullopt;
@@ -173,39 +152,16 @@ std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
     head.put(kCadCacheVersion);
     head.putString(keyBytes.bytes());
     head.put(uint64_t(payload.bytes().size())); // the payload's length prefix
-    tail.put(hash64(payload.bytes().data(), payload.bytes().size()));
+    tail.put(util::hash64(payload.bytes().data(), payload.bytes().size()));
 
-    std::error_code ec;
-    fs::create_directories(entry.parent_path(), ec);
-    if (ec) return entry.parent_path().string() + ": " + ec.message();
-    // Unique per process and call, in the entry's folder so that the rename stays atomic.
-    static std::atomic<uint32_t> serial{0};
-    fs::path temporary = entry;
-    temporary += ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        for (const std::string* part : {&head.bytes(), &payload.bytes(), &tail.bytes()})
-            file.write(part->data(), std::streamsize(part->size()));
-        file.close();
-        if (!file) {
-            fs::remove(temporary, ec);
-            return temporary.string() + ": write failed";
-        }
-    }
-    fs::rename(temporary, entry, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        return entry.string() + ": " + ec.message();
-    }
-    return {};
+    return util::writeFileAtomically(entry, {head.bytes(), payload.bytes(), tail.bytes()});
 }
 
 CadLoadResult loadCadCached(const std::string& path, const CadOptions& options,
                             const CadProgress& progress, uint32_t levels,
                             const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
-    const fs::path folder = cadCacheFolder();
+    const fs::path folder = util::cacheFolder();
     const std::optional<CadCacheKey> key =
         folder.empty() ? std::nullopt : cadCacheKey(path, options, levels);
     if (!key) {

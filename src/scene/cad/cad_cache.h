@@ -1,6 +1,6 @@
 // cad_cache.h - CAD tessellations kept on disk, so that a file opened again skips Open
-// CASCADE: one entry per file path and tessellation settings in cadCacheFolder(), holding
-// what loadCad returned (the scene with its levels of detail, the warnings, the deflection
+// CASCADE: one entry per file path and tessellation settings in util::cacheFolder() (util/cache_file.h),
+// holding what loadCad returned (the scene with its levels of detail, the warnings, the deflection
 // used, the face counts). An entry is used only when its magic, format version, key (the
 // path, the file's size and content hash, the deflections and levels asked for) and the
 // checksum of its payload all match and the payload decodes to a valid scene; anything else
@@ -34,10 +34,6 @@ struct CadCacheKey {
     uint32_t levels = 1;
     bool operator==(const CadCacheKey&) const = default;
 };
-
-// $XDG_CACHE_HOME/idview where that variable holds an absolute path (as the XDG base
-// directory specification asks), else $HOME/.cache/idview; empty where neither is set.
-std::filesystem::path cadCacheFolder();
 
 // Reads and hashes the file; nullopt where it cannot be read (loadCad then says why).
 std::optional<CadCacheKey> cadCacheKey(const std::string& path, const CadOptions& options,

@@ -1,5 +1,5 @@
 // hash64.h - a small 64-bit hash of bytes, for the CAD cache's file contents, names and
-// checksums (scene/cad/cad_cache.h). Not for adversaries: it tells changed or damaged data
+// checksums (scene/cad/cad_cache.h) and the pipeline cache (render/pipeline_file.h). Not for adversaries: it tells changed or damaged data
 // from the data it was computed on. Plain C++.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace scene {
+namespace util {
 
 constexpr uint64_t kHashSeed = 0xcbf29ce484222325ull; // FNV-1a's offset basis
 constexpr uint64_t kHashPrime = 0x100000001b3ull;     // FNV-1a's 64-bit prime
@@ -33,4 +33,4 @@ inline uint64_t hash64(const void* data, size_t size, uint64_t seed = kHashSeed)
     return h;
 }
 
-} // namespace scene
+} // namespace util
