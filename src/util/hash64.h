@@ -1,6 +1,6 @@
 // hash64.h - a small 64-bit hash of bytes, for the CAD cache's file contents, names and
-// checksums (scene/cad/cad_cache.h) and the pipeline cache (render/pipeline_file.h). Not for adversaries: it tells changed or damaged data
-// from the data it was computed on. Plain C++.
+// checksums (scene/cad/cad_cache.h) and the pipeline cache (render/pipeline_file.h). Not for
+// adversaries: it tells changed or damaged data from the data it was computed on. Plain C++.
 #pragma once
 
 #include <cstddef>
