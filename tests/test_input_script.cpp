@@ -179,6 +179,18 @@ TEST(InputScript, FramesWaitsAWholeNumberOfFrames) {
 
 // `view NAME` takes every standard view the registry lists, and nothing else; `ortho` takes
 // on or off.
+// The panel's sort draws once and Reset to defaults as script lines.
+TEST(InputScript, SortAndDefaults) {
+    const auto commands = app::parseScript("1 sort off\n2 sort on\n3 defaults\n", "s.txt");
+    ASSERT_EQ(commands.size(), 3u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Sort);
+    EXPECT_EQ(commands[0].text, "off");
+    EXPECT_EQ(commands[1].text, "on");
+    EXPECT_EQ(commands[2].op, app::ScriptOp::Defaults);
+    EXPECT_EQ(errorOf("1 sort maybe\n"), "s.txt:1: 'sort' takes on or off, not 'maybe'");
+    EXPECT_THROW(app::parseScript("1 defaults now\n", "s.txt"), app::ScriptError);
+}
+
 TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     for (const scene::StandardView& view : scene::standardViews()) {
         const auto commands = app::parseScript("1 view " + std::string(view.name) + "\n", "s.txt");

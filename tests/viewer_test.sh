@@ -8,26 +8,10 @@
 # Checks the exit code (3 means validation messages), the title following the renderer and
 # vsync, the click selecting a part, the drops, and that the screenshot shows a picture; and
 # that without --print-events the viewer writes nothing to stdout. Exit 77: skipped.
-set -uo pipefail
-idview=$1
-icd=$2
-# ctest passes the ICD of build/lavapipe-25 (Mesa 25) and sets LD_LIBRARY_PATH to its lib
-# folder, for the newer libdrm (tests/CMakeLists.txt).
-export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
-if ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; then
-    echo "SKIP: xvfb-run and xauth are needed (Debian packages xvfb, xauth)"
-    exit 77
-fi
-work=$(mktemp -d)
-# CAD tessellations are cached here, never in the cache of the user running the test.
-export XDG_CACHE_HOME=$work/xdg-cache-home
-# VIEWER_TEST_KEEP=1 keeps the script, output and screenshot for a look.
-[[ ${VIEWER_TEST_KEEP:-} == 1 ]] && echo "keeping $work" || trap 'rm -rf "$work"' EXIT
-failures=0
-fail() {
-    echo "FAIL $*"
-    failures=$((failures + 1))
-}
+# The lavapipe environment, the Xvfb check, $work, fail and at: viewer_lib.sh. Each session
+# opens on the viewer's defaults (--no-saved-settings), whatever the last one closed with;
+# viewer_settings_test.sh tests the settings kept between runs.
+source "$(dirname "$0")/viewer_lib.sh"
 
 # The renderers and modes idview lists, so a new technique is covered without editing this.
 renderers=$("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}')
@@ -40,10 +24,6 @@ renderers="$renderers $floors" # the viewer draws the floors too
 # Commands queue behind slow ones (a pipeline compile), so the times are only an order.
 # The window is 720x450; the procedural small preset sits in the middle, right of the panel.
 t=0.5
-at() { # at COMMAND...: one script line, 0.1 s after the previous one
-    echo "$t $*"
-    t=$(awk -v t="$t" 'BEGIN{print t + 0.1}')
-}
 # A STEP, an IGES and a BREP file to drop, from Debian's occt-misc where it is installed.
 cad_files=()
 for f in step/screw.step iges/bearing.iges occ/bottle.brep; do
@@ -102,7 +82,8 @@ echo "not a model" >"$work/broken.glb"
 
 start=$(date +%s)
 # It opens on the floor, as --renderer asks: the first title names it.
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --sync-validation --size 720x450 \
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --sync-validation --size 720x450 \
     --scene procedural:preset=small --renderer "$floor" --script "$work/script.txt" \
     --print-events >"$work/out.txt" 2>"$work/err.txt"
 rc=$?
@@ -241,7 +222,8 @@ t=0.5
     at screenshot "$work/quiet.png"
     at quit
 } >"$work/quiet.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
     --scene procedural:preset=small --script "$work/quiet.txt" >"$work/quiet.out" 2>"$work/quiet.err"
 rc=$?
 [[ $rc -eq 0 ]] || { fail "quiet run: exit code $rc"; head -c 2000 "$work/quiet.err"; }
@@ -304,7 +286,8 @@ visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=s
     done
     at quit
 } >"$work/parts.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
     --scene procedural:preset=small --script "$work/parts.txt" --print-events \
     >"$work/parts.out" 2>"$work/parts.err"
 rc=$?
@@ -399,7 +382,8 @@ both=$(node_parts "gearbox module" "gearbox module/base plate")
     at frames 6
     at quit
 } >"$work/tree.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
     --scene procedural:preset=small --script "$work/tree.txt" --print-events \
     >"$work/tree.out" 2>"$work/tree.err"
 rc=$?
@@ -449,7 +433,8 @@ if [[ -f $motor && -f $terrain ]]; then
         at quit
     } >"$work/refuse.txt"
     start=$(date +%s)
-    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+        --validation --size 720x450 \
         --scene procedural:preset=small --max-triangles 1000 --no-cache \
         --script "$work/refuse.txt" --print-events >"$work/refuse.out" 2>"$work/refuse.err"
     rc=$?
@@ -502,7 +487,8 @@ t=0.5
     at frames 6
     at quit
 } >"$work/views.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
     --scene procedural:preset=small --script "$work/views.txt" --print-events \
     >"$work/views.out" 2>"$work/views.err"
 rc=$?

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "app/cli_flags.h"
 #include "render/culling.h"
@@ -56,8 +57,28 @@ std::vector<const render::CullModeEntry*> cullingList(const std::string& value) 
                                                [](const render::CullModeEntry&) { return true; });
 }
 
-Options parseArgs(const std::vector<std::string>& args) {
+Options viewerDefaults() {
     Options options;
+    options.render.pipeline.technique = render::findTechnique("vertex-fs");
+    options.render.pipeline.mode = render::findDrawMode("mdi-baseinstance");
+    return options;
+}
+
+std::vector<std::string> ignoredByViewer(const Options& options) {
+    std::vector<std::string> ignored;
+    for (const Flag& flag : flags())
+        if (flag.headlessOnly &&
+            std::find(options.given.begin(), options.given.end(), flag.name) != options.given.end())
+            ignored.push_back(flag.name);
+    return ignored;
+}
+
+Options parseArgs(const std::vector<std::string>& args) {
+    return parseArgs(args, Options{});
+}
+
+Options parseArgs(const std::vector<std::string>& args, Options start) {
+    Options options = std::move(start);
     for (size_t i = 0; i < args.size(); ++i) {
         std::string name = args[i], value;
         bool inlineValue = false;

@@ -123,11 +123,14 @@ struct Options {
     // and the event lines (title, selection, opened, screenshot, reload) on stdout.
     std::string script;
     bool printEvents = false;
+    // Viewer: read the settings kept between runs at start and write them at exit
+    // (saved_settings.h); --no-saved-settings does neither.
+    bool savedSettings = true;
 
     std::vector<std::string> given; // flags on the command line, for mode-specific defaults
 };
 
-// A bad command line: main() prints the message and the usage, and exits 2.
+// A bad command line: main() prints the message and a pointer to --help, and exits 2.
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
@@ -137,6 +140,17 @@ struct UsageError : std::runtime_error {
 // 2560x1440, 4x MSAA, 3 copies, 200 frames, all renderers, modes and culling modes).
 Options parseArgs(const std::vector<std::string>& args);
 Options parseArgs(int argc, char** argv);
+// The same, the flags applied over `start` instead of the settings structs' defaults.
+Options parseArgs(const std::vector<std::string>& args, Options start);
+
+// What the viewer opens on before its saved settings and the command line: the settings
+// structs' defaults, but the technique and per-draw mode README's "Which technique?"
+// recommends. Headless runs and the benchmark keep the registries' first rows, which their
+// tests and scripted comparisons rely on.
+Options viewerDefaults();
+// The flags given that only headless runs read (Flag::headlessOnly), for the viewer to say
+// it ignores them.
+std::vector<std::string> ignoredByViewer(const Options& options);
 
 // The registry entries a --renderer or --mode value names: a comma list, or "all" (every
 // one; for --renderer every part-ID technique, the benchmark adds the no-id floor itself).

@@ -50,14 +50,21 @@ Flag on(const char* name, std::string help, bool Options::*field) {
             [field](Options& o, const std::string&) { o.*field = true; }};
 }
 
+// A flag only headless runs read.
+Flag headless(Flag flag) {
+    flag.headlessOnly = true;
+    return flag;
+}
+
 // --renderer or --mode: one registry entry into the pipeline key, or with --benchmark a list.
 template <typename Entry>
-Flag registryFlag(const char* name, const char* help, const char* value,
+Flag registryFlag(const char* name, const char* help, const char* value, const char* viewer,
                   std::vector<const Entry*> (*list)(const std::string&),
                   std::vector<const Entry*> Options::*benchmarkList,
                   const Entry* render::PipelineKey::*field) {
     return {name, "NAME",
-            help + byDefault(value) + "; with --benchmark a comma list or all (default)",
+            help + byDefault(value) + ", the viewer opens on " + viewer +
+                "; with --benchmark a comma list or all (default)",
             [=](Options& o, const std::string& v) {
                 o.*benchmarkList = list(v);
                 o.render.pipeline.*field = (o.*benchmarkList).front();
@@ -77,6 +84,7 @@ const std::vector<Flag>& flags() {
     static const std::vector<Flag> table = [] {
         const Options d; // the defaults, as the settings structs define them
         const render::PipelineKey& key = d.render.pipeline;
+        const render::PipelineKey viewer = viewerDefaults().render.pipeline;
         const render::NarySearch& nary = key.nsearch;
         return std::vector<Flag>{
             on("--help", "print this text", &Options::help),
@@ -92,16 +100,18 @@ const std::vector<Flag>& flags() {
                  msaa = parseCount("--msaa", v, 1, 8);
                  if (msaa & (msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
              }},
-            {"--frames", "N",
-             "frames to render headless" + byDefault(d.frames) + "; files hold the last one",
-             [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }},
-            text("--screenshot", "FILE", "write the last frame's colour image as PNG",
-                 &Options::screenshot),
-            text("--id-image", "FILE",
-                 "write the last frame's part IDs: W*H little-endian uint32, row-major, top row "
-                 "first, "
-                 "0xFFFFFFFF where no part is",
-                 &Options::idImage),
+            headless(
+                {"--frames", "N",
+                 "frames to render headless" + byDefault(d.frames) + "; files hold the last one",
+                 [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }}),
+            headless(text("--screenshot", "FILE", "write the last frame's colour image as PNG",
+                          &Options::screenshot)),
+            headless(text(
+                "--id-image", "FILE",
+                "write the last frame's part IDs: W*H little-endian uint32, row-major, top row "
+                "first, "
+                "0xFFFFFFFF where no part is",
+                &Options::idImage)),
             {"--model", "FILE",
              "open a glTF model (.gltf, .glb) or a CAD file (.step, .stp, .iges, .igs, .brep; "
              "one part per B-rep face); default: assets/default.glb",
@@ -244,10 +254,10 @@ const std::vector<Flag>& flags() {
             text("--export", "FILE", "write the scene (after copies) as binary glTF and exit",
                  &Options::exportPath),
             registryFlag("--renderer", "part-ID technique (see --list-renderers)",
-                         key.technique->name, techniqueList, &Options::benchmarkTechniques,
-                         &render::PipelineKey::technique),
-            registryFlag("--mode", "per-draw parameter mode", key.mode->name, modeList,
-                         &Options::benchmarkModes, &render::PipelineKey::mode),
+                         key.technique->name, viewer.technique->name, techniqueList,
+                         &Options::benchmarkTechniques, &render::PipelineKey::technique),
+            registryFlag("--mode", "per-draw parameter mode", key.mode->name, viewer.mode->name,
+                         modeList, &Options::benchmarkModes, &render::PipelineKey::mode),
             {"--culling", "MODE",
              "leave out what cannot show, the images unchanged: off, frustum or occlusion "
              "(two-phase, against the last ID image and a depth pyramid)" +
@@ -262,17 +272,18 @@ const std::vector<Flag>& flags() {
              "keep the draw lists of the first culled frame in every later one (what the "
              "panel's freeze culling does), so the camera can move and show what was left out",
              [](Options& o, auto&) { o.render.culling.freeze = true; }},
-            {"--camera-path", "PATH",
-             "headless and --benchmark: move the camera every frame, orbit (around the scene "
-             "at the fitted distance) or dolly (from the fitted view into the middle of the "
-             "assembly and back), over --frames frames; the images hold the last",
-             [](Options& o, auto& v) {
-                 const auto path = scene::findCameraPath(v);
-                 if (!path)
-                     throw UsageError("--camera-path expects " + scene::cameraPathNames() +
-                                      ", not '" + v + "'");
-                 o.cameraPath = *path;
-             }},
+            headless(
+                {"--camera-path", "PATH",
+                 "headless and --benchmark: move the camera every frame, orbit (around the scene "
+                 "at the fitted distance) or dolly (from the fitted view into the middle of the "
+                 "assembly and back), over --frames frames; the images hold the last",
+                 [](Options& o, auto& v) {
+                     const auto path = scene::findCameraPath(v);
+                     if (!path)
+                         throw UsageError("--camera-path expects " + scene::cameraPathNames() +
+                                          ", not '" + v + "'");
+                     o.cameraPath = *path;
+                 }}),
             {"--view", "NAME",
              "open on a standard view of the fitted scene, as FreeCAD shows them (front looks "
              "along +Y of a Z-up model): " +
@@ -292,9 +303,9 @@ const std::vector<Flag>& flags() {
              "no-id-mesh with mesh techniques); defaults 2560x1440, "
              "--msaa 4, --copies 3, --frames 200 (each flag overrides)",
              [](Options& o, auto&) { o.benchmark = o.headless = true; }},
-            text("--benchmark-out", "FILE",
-                 "write the benchmark as JSON (CSV when FILE ends in .csv)",
-                 &Options::benchmarkOut),
+            headless(text("--benchmark-out", "FILE",
+                          "write the benchmark as JSON (CSV when FILE ends in .csv)",
+                          &Options::benchmarkOut)),
             {"--part-weight", "F",
              "blend of part colour over material colour, 0 to 1" +
                  byDefault(d.render.shading.partWeight),
@@ -314,41 +325,48 @@ const std::vector<Flag>& flags() {
              "gs renderers: use an ordinary geometry shader even where "
              "VK_NV_geometry_shader_passthrough is offered",
              [](Options& o, auto&) { o.render.pipeline.gsPassthrough = false; }},
-            {"--pick", "X,Y",
-             "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
-             "{x,y,part,object,local_part,name,path,depth} (name: the object's, path: its node "
-             "path from the root; all but x,y null on background; CAD files add face, the "
-             "part's B-rep face); repeatable; the last point "
-             "stays hovered in the images",
-             [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }},
-            {"--select", "X,Y", "headless: select the part at pixel X,Y as a click there would",
-             [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }},
-            {"--select-rect", "X0,Y0,X1,Y1",
-             "headless: select every part visible in the pixel rectangle (corners included) "
-             "as a box selection would, and print one JSON line {rect,parts,count}",
-             [](Options& o, auto& v) { o.selectRect = parseRect("--select-rect", v); }},
-            {"--measure", "X0,Y0,X1,Y1",
-             "headless: pick both pixels and print one JSON line "
-             "{p0,p1,distance,delta,parts}: the world points under them (from the depth the "
-             "pick reads), their distance and dX,dY,dZ, and the unique part at each; null "
-             "where a pixel shows no part",
-             [](Options& o, auto& v) { o.measure = parseMeasure(v); }},
-            {"--face-info", "X,Y",
-             "headless: pick the pixel and print one JSON line of its part's face "
-             "{part,object,face,surface,area,...,bbox}: for CAD files the B-rep surface type "
-             "(plane, cylinder, cone, sphere, torus, bspline, bezier, revolution, extrusion, "
-             "offset, other) and exact area, with normal and d for planes, radius and axis for "
-             "cylinders, radius and center for spheres; for other parts surface mesh and the "
-             "area of its triangles; {\"part\":null} on background; repeatable",
-             [](Options& o, auto& v) { o.faceInfos.push_back(parsePixel("--face-info", v)); }},
-            {"--hide", "ID,...", "headless: do not draw these unique parts (nor pick them)",
-             [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }},
-            {"--isolate", "ID,...", "headless: draw only these unique parts",
-             [](Options& o, auto& v) { o.isolate = parseIds("--isolate", v); }},
-            on("--visible-parts",
-               "headless: print one JSON line {count,parts} of the unique parts the last frame "
-               "shows, counted on the GPU; with --benchmark every frame counts them",
-               &Options::visibleParts),
+            headless(
+                {"--pick", "X,Y",
+                 "headless: pick the part at pixel X,Y (top-left origin) and print one JSON line "
+                 "{x,y,part,object,local_part,name,path,depth} (name: the object's, path: its node "
+                 "path from the root; all but x,y null on background; CAD files add face, the "
+                 "part's B-rep face); repeatable; the last point "
+                 "stays hovered in the images",
+                 [](Options& o, auto& v) { o.picks.push_back(parsePixel("--pick", v)); }}),
+            headless({"--select", "X,Y",
+                      "headless: select the part at pixel X,Y as a click there would",
+                      [](Options& o, auto& v) { o.selects = {parsePixel("--select", v)}; }}),
+            headless(
+                {"--select-rect", "X0,Y0,X1,Y1",
+                 "headless: select every part visible in the pixel rectangle (corners included) "
+                 "as a box selection would, and print one JSON line {rect,parts,count}",
+                 [](Options& o, auto& v) { o.selectRect = parseRect("--select-rect", v); }}),
+            headless(
+                {"--measure", "X0,Y0,X1,Y1",
+                 "headless: pick both pixels and print one JSON line "
+                 "{p0,p1,distance,delta,parts}: the world points under them (from the depth the "
+                 "pick reads), their distance and dX,dY,dZ, and the unique part at each; null "
+                 "where a pixel shows no part",
+                 [](Options& o, auto& v) { o.measure = parseMeasure(v); }}),
+            headless(
+                {"--face-info", "X,Y",
+                 "headless: pick the pixel and print one JSON line of its part's face "
+                 "{part,object,face,surface,area,...,bbox}: for CAD files the B-rep surface type "
+                 "(plane, cylinder, cone, sphere, torus, bspline, bezier, revolution, extrusion, "
+                 "offset, other) and exact area, with normal and d for planes, radius and axis for "
+                 "cylinders, radius and center for spheres; for other parts surface mesh and the "
+                 "area of its triangles; {\"part\":null} on background; repeatable",
+                 [](Options& o, auto& v) { o.faceInfos.push_back(parsePixel("--face-info", v)); }}),
+            headless({"--hide", "ID,...",
+                      "headless: do not draw these unique parts (nor pick them)",
+                      [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }}),
+            headless({"--isolate", "ID,...", "headless: draw only these unique parts",
+                      [](Options& o, auto& v) { o.isolate = parseIds("--isolate", v); }}),
+            headless(
+                on("--visible-parts",
+                   "headless: print one JSON line {count,parts} of the unique parts the last frame "
+                   "shows, counted on the GPU; with --benchmark every frame counts them",
+                   &Options::visibleParts)),
             {"--section", "AXIS,VALUE[,flip]",
              "cut the scene: keep where coordinate AXIS (x, y or z) is at most VALUE (model "
              "units), flip keeps the other side; caps show where a cut opens a solid; up to " +
@@ -368,11 +386,11 @@ const std::vector<Flag>& flags() {
              "distance and back every 4 s, their matrices written on the GPU each frame; headless "
              "at --time, else at frame / 60 s",
              [](Options& o, auto&) { o.animation.animate = true; }},
-            {"--time", "SECONDS",
-             "with --animate: the moment of the loop to render (default: frame / 60)",
-             [](Options& o, auto& v) {
-                 o.animation.time = parseNumber("--time", v, 1e6f, "seconds");
-             }},
+            headless({"--time", "SECONDS",
+                      "with --animate: the moment of the loop to render (default: frame / 60)",
+                      [](Options& o, auto& v) {
+                          o.animation.time = parseNumber("--time", v, 1e6f, "seconds");
+                      }}),
             on("--list-renderers", "print the renderers and modes, then exit",
                &Options::listRenderers),
             on("--validation", "enable the Khronos validation layer; messages make exit 3",
@@ -389,13 +407,18 @@ const std::vector<Flag>& flags() {
             text(
                 "--script", "FILE",
                 "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
-                "drag, scroll, resize, renderer, mode, msaa, copies, frames, screenshot, drop, "
-                "quit)",
+                "drag, scroll, resize, renderer, mode, msaa, sort, defaults, copies, frames, "
+                "screenshot, drop, quit)",
                 &Options::script),
             on("--print-events",
                "viewer: print one 'idview: ...' line on stdout per event (title, selection, opened "
                "model, screenshot, shader reload), for scripts and tests; quiet otherwise",
                &Options::printEvents),
+            {"--no-saved-settings", nullptr,
+             "viewer: open on the defaults, neither reading nor writing the settings kept "
+             "between runs ($XDG_CONFIG_HOME/idview/viewer.conf, else "
+             "~/.config/idview/viewer.conf)",
+             [](Options& o, auto&) { o.savedSettings = false; }},
         };
     }();
     return table;

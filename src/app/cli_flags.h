@@ -16,6 +16,8 @@ struct Flag {
     const char* value; // nullptr for a switch
     std::string help;
     std::function<void(Options&, const std::string&)> apply;
+    // Read only by headless runs: the viewer says it ignores them (ignoredByViewer).
+    bool headlessOnly = false;
 };
 
 const std::vector<Flag>& flags();

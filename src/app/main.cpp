@@ -9,6 +9,7 @@
 #include "app/benchmark.h"
 #include "app/cli.h"
 #include "app/headless.h"
+#include "app/saved_settings.h"
 #include "app/scene_source.h"
 #include "app/viewer/viewer.h"
 #include "render/culling.h"
@@ -71,14 +72,34 @@ int listDevices(const app::Options& options) {
     return 0;
 }
 
+void warn(const std::string& line) {
+    std::fprintf(stderr, "idview: %s\n", line.c_str());
+}
+
+// The viewer's options: its defaults, the settings it kept, then the command line; and one
+// line naming the flags it does not read.
+app::Options viewerOptions(const std::vector<std::string>& args) {
+    app::Options options = app::viewerOptions(args, app::savedSettingsPath(), warn);
+    std::string ignored;
+    for (const std::string& flag : app::ignoredByViewer(options))
+        ignored += (ignored.empty() ? "" : ", ") + flag;
+    if (!ignored.empty()) warn(ignored + ": only read with --headless; ignored");
+    return options;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
     app::Options options;
     try {
-        options = app::parseArgs(argc, argv);
+        options = app::parseArgs(args);
+        if (!options.help && !options.listRenderers && !options.listDevices && !options.stats &&
+            !options.tree && options.exportPath.empty() && !options.headless)
+            options = viewerOptions(args);
     } catch (const app::UsageError& e) {
-        std::fprintf(stderr, "idview: %s\n\n%s", e.what(), app::usage().c_str());
+        // One line and where to look: the usage would scroll it away.
+        std::fprintf(stderr, "idview: %s\nsee idview --help\n", e.what());
         return 2;
     }
     if (options.help) {

@@ -81,6 +81,7 @@ void Viewer::act(const PanelActions& actions) {
     if (actions.open) input_.onDrop(*actions.open); // opened like a dropped file
     if (actions.view) turnTo(*actions.view);
     if (actions.cancelLoad) cancelLoads();
+    if (actions.resetSettings) resetSettings();
     Selection& selection = input_.selection();
     if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);
     const uint32_t partCount = scene_.scene().uniquePartCount();

@@ -416,6 +416,12 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Freeze:
         step(settings([on = c.text == "on"](Options& s) { s.render.culling.freeze = on; }), true);
         break;
+    case ScriptOp::Sort:
+        step(settings([on = c.text == "on"](Options& s) { s.render.draws.sortDraws = on; }), true);
+        break;
+    case ScriptOp::Defaults:
+        step([this] { viewer_.resetSettings(); }, true);
+        break;
     case ScriptOp::Section: // checked when the script was parsed
         step(settings([text = c.text](Options& s) {
                  scene::Section& section = s.render.section;

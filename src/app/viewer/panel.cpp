@@ -216,6 +216,10 @@ void rendering(Options& settings, const PanelInfo& info) {
     ImGui::SliderFloat("part weight", &s.shading.partWeight, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("colorize draws", &s.shading.colorizeDraws);
     ImGui::Checkbox("ignore materials", &s.shading.ignoreMaterials);
+    ImGui::Checkbox("sort draws once", &s.draws.sortDraws);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("sort the draw list by geometry, then material, when it is built "
+                          "(--no-sort-draws: scene order)");
     char label[8];
     std::snprintf(label, sizeof label, "%ux", key.msaa);
     if (ImGui::BeginCombo("MSAA", label)) {
@@ -245,6 +249,10 @@ void rendering(Options& settings, const PanelInfo& info) {
     ImGui::Text("last switch %.2f ms, pipeline %s%s", last.ms,
                 last.pipelineCached ? "cached" : "built", last.drawsKept ? ", draws kept" : "");
     ImGui::Text("pipelines cached %zu (R clears)", info.cachedPipelines);
+    actions.resetSettings = ImGui::Button("Reset to defaults");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the settings kept between runs (renderer, mode, MSAA, edges, "
+                          "culling, levels of detail, projection) back to the defaults");
 }
 
 void sceneSection(SceneSettings& s, const PanelInfo& info) {

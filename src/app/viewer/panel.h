@@ -54,6 +54,7 @@ struct PanelActions {
     bool hide = false, isolate = false, showAll = false;
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
     bool cancelLoad = false;         // stop the model loading (and those queued behind it)
+    bool resetSettings = false;      // the kept settings back to the defaults
 };
 
 // A part under the cursor or selected, as the pick reported it.

@@ -44,6 +44,8 @@ const CommandSpec commandSpecs[] = {
     {"mode", ScriptOp::Mode, 0, "mode NAME"},
     {"culling", ScriptOp::Culling, 0, "culling off|frustum|occlusion"},
     {"freeze", ScriptOp::Freeze, 0, "freeze on|off"},
+    {"sort", ScriptOp::Sort, 0, "sort on|off"},
+    {"defaults", ScriptOp::Defaults, 0, "defaults"},
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
     {"copies", ScriptOp::Copies, 1, "copies N"},
     {"section", ScriptOp::Section, 0, "section AXIS,VALUE[,flip] | off"},
@@ -95,10 +97,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     for (std::string word; in >> word;) args.push_back(word);
     const bool takesText = spec->op == ScriptOp::Key || spec->op == ScriptOp::Renderer ||
                            spec->op == ScriptOp::Mode || spec->op == ScriptOp::Culling ||
-                           spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Section ||
-                           spec->op == ScriptOp::Screenshot || spec->op == ScriptOp::Drop ||
-                           spec->op == ScriptOp::View || spec->op == ScriptOp::Ortho ||
-                           spec->op == ScriptOp::Level;
+                           spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Sort ||
+                           spec->op == ScriptOp::Section || spec->op == ScriptOp::Screenshot ||
+                           spec->op == ScriptOp::Drop || spec->op == ScriptOp::View ||
+                           spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Level;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
@@ -200,6 +202,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             }
         break;
     case ScriptOp::Freeze:
+    case ScriptOp::Sort:
     case ScriptOp::Ortho:
         if (command.text != "on" && command.text != "off")
             fail("'" + name + "' takes on or off, not '" + command.text + "'");

@@ -27,6 +27,8 @@
 //   3   renderer tri-fs     switch technique (no-id too), as the panel's combo box does
 //   3   mode push           switch per-draw mode
 //   3.5 msaa 4              samples per pixel
+//   3.5 sort off            draws in scene order (on: sorted once), as the panel's checkbox
+//   3.5 defaults            the panel's Reset to defaults: the kept settings back to defaults
 //   3.6 copies 3            model copies, as the panel's field does
 //   3.7 section y,0,flip    a section plane as --section gives it, in the first free slot of
 //                           the panel's three (a fourth replaces the third); `section off`
@@ -72,6 +74,8 @@ enum class ScriptOp {
     Mode,
     Culling,
     Freeze,
+    Sort,
+    Defaults,
     Msaa,
     Copies,
     Section,

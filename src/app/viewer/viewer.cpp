@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "app/headless.h" // exitCode, savePipelineCache
+#include "app/saved_settings.h"
 #include "scene/bounds.h"
 #include "scene/part_data.h"
 #include "vk/check.h"
@@ -165,8 +166,18 @@ int runViewer(const Options& options) {
     {
         Viewer viewer(options, window, instance, std::move(script));
         viewer.run();
+        if (options.savedSettings)
+            writeSavedSettings(savedSettingsPath(), viewer.settings(), Events::problem);
     }
     return exitCode(instance.validationMessages());
+}
+
+void Viewer::resetSettings() {
+    resetSavedSettings(settings_);
+    if (settings_.savedSettings)
+        writeSavedSettings(savedSettingsPath(), settings_,
+                           [this](const std::string& message) { scene_.fail(message); });
+    events_.say("settings: defaults");
 }
 
 void Viewer::toggleMeasure() {

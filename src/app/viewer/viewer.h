@@ -25,7 +25,8 @@
 namespace app {
 
 // Opens the window on the options' scene and runs until it is closed (window close button,
-// Esc with nothing selected, or a script's quit). Returns the exit code: 0, or 3 when the
+// Esc with nothing selected, or a script's quit), then keeps its settings for the next run
+// unless --no-saved-settings (saved_settings.h). Returns the exit code: 0, or 3 when the
 // validation layer reported anything. Throws vk::Error and friends with a message for people
 // (no display, no device that can present, a model that cannot be loaded at start).
 int runViewer(const Options& options);
@@ -69,7 +70,10 @@ class Viewer {
     // Measure mode (M): clicks place points instead of selecting.
     void toggleMeasure();
     bool measuring() const { return measure_.on(); }
-    void measured(const render::PickReading& pick);               // a click's pick in measure mode
+    void measured(const render::PickReading& pick); // a click's pick in measure mode
+    // The panel's Reset to defaults: the settings kept between runs back to the viewer's
+    // defaults, in the viewer and in the file (saved_settings.h).
+    void resetSettings();
     void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
     bool loading() const { return scene_.loading().has_value(); } // a dropped model
 

@@ -1,0 +1,42 @@
+// saved_settings.h - the viewer's settings kept between runs: a small text file of
+// command-line flags, one per line, read when the viewer starts (the command line, read
+// after it, wins) and written when it closes. The flag table parses each line, so a setting
+// is defined once, as its flag, and reaches the viewer as the command line would give it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+
+namespace app {
+
+using Warn = std::function<void(const std::string&)>; // one line for people
+
+// $XDG_CONFIG_HOME/idview/viewer.conf, else $HOME/.config/idview/viewer.conf; "" when
+// neither variable is set.
+std::string savedSettingsPath();
+
+// The kept settings of `options` that differ from viewerDefaults(), one flag per line.
+std::string savedSettingsText(const Options& options);
+
+// The arguments the lines of `text` hold. A line that names no kept setting or that its flag
+// refuses is left out, with one warning naming `name`:line and why; blank lines and lines
+// starting with '#' are skipped.
+std::vector<std::string> savedArgs(const std::string& text, const std::string& name,
+                                   const Warn& warn);
+
+// The viewer's options: viewerDefaults(), then the settings kept at `path` (unless `args`
+// hold --no-saved-settings, or no file is there), then `args`. Kept settings that `args`
+// contradict are all left out, with one warning. Throws UsageError for bad `args` alone.
+Options viewerOptions(const std::vector<std::string>& args, const std::string& path,
+                      const Warn& warn);
+
+// The kept settings of `options` back to viewerDefaults()' (the panel's Reset to defaults).
+void resetSavedSettings(Options& options);
+
+// Writes savedSettingsText(options) to `path`, making its folder; a failure is one warning.
+void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn);
+
+} // namespace app
