@@ -204,7 +204,7 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     }
 }
 
-void rendering(Options& settings, const PanelInfo& info) {
+void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) {
     render::RenderSettings& s = settings.render;
     render::PipelineKey& key = s.pipeline;
     techniqueCombo(key.technique, info);
@@ -423,7 +423,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         selectionSection(view, info, actions);
     if (ImGui::CollapsingHeader("Assembly tree", ImGuiTreeNodeFlags_DefaultOpen))
         assemblyTree(view, info, actions);
-    if (ImGui::CollapsingHeader("Rendering")) rendering(settings, info);
+    if (ImGui::CollapsingHeader("Rendering")) rendering(settings, info, actions);
     if (ImGui::CollapsingHeader("Scene")) sceneSection(settings.scene, info);
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
