@@ -1,0 +1,333 @@
+#!/usr/bin/env bash
+# viewer_parts_test.sh IDVIEW LAVAPIPE_ICD - the viewer under Xvfb on lavapipe with validation,
+# as a user selects and looks: box selections, hide, isolate and show (with every renderer's
+# box), the assembly tree's checkboxes and rows, the selection levels and the double-click,
+# loads refused past --max-triangles and cancelled, the standard views, the projection and F,
+# and paths typed into the panel's open field. Each session's counts are checked against
+# headless runs of the same view or --tree. Exit 77: skipped. The lavapipe environment, the
+# Xvfb check, $work, fail, at and session: viewer_lib.sh; each session opens on the
+# viewer's defaults (--no-saved-settings).
+source "$(dirname "$0")/viewer_lib.sh"
+
+# The scene to open by typing its path, as glTF.
+"$idview" --scene procedural:preset=small --export "$work/small.glb" >/dev/null ||
+    fail "could not export the small scene"
+
+# The parts session: box selections (Shift, Ctrl and Alt + drag), H, Shift+H, I and the object
+# list's selection by name, with edges on, checked against what headless rendering of the
+# same view (720x450, no camera move) reports for the same rectangles; then a box with every
+# renderer. The panel covers the left of the window, the boxes lie right of it.
+t=0.5
+parts() { # the sorted part IDs headless --select-rect finds in X0,Y0,X1,Y1, one per line
+    "$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
+        --select-rect "$1" "${@:2}" 2>/dev/null | sed -n 's/.*"parts":\[\([0-9,]*\)\].*/\1/p' |
+        tr ',' '\n' | sed '/^$/d' | sort -n
+}
+big=$(parts 420,150,600,330)
+cut=$(parts 420,150,500,200)
+extra=$(parts 380,300,560,440)
+after_remove=$(comm -23 <(echo "$big" | sort) <(echo "$cut" | sort) | sort -n)
+after_add=$( (echo "$after_remove"; echo "$extra") | sed '/^$/d' | sort -nu)
+count() { echo -n "$1" | grep -c .; }
+hidden_ids=$(echo "$after_add" | paste -sd, -)
+visible_all=$("$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
+    --visible-parts 2>/dev/null | sed -n 's/^{"count":\([0-9]*\).*/\1/p')
+visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
+    --visible-parts --hide "$hidden_ids" 2>/dev/null | sed -n 's/^{"count":\([0-9]*\).*/\1/p')
+[[ $(count "$big") -gt 10 && $(count "$after_remove") -gt 0 && -n $visible_all &&
+    $(count "$after_add") -gt $(count "$after_remove") ]] ||
+    fail "headless --select-rect / --visible-parts gave nothing to compare with"
+{
+    at key E
+    at box 420 150 600 330
+    at frames 6
+    at box 420 150 500 200 remove
+    at frames 6
+    at box 380 300 560 440 add
+    at frames 6
+    at key H
+    at frames 8
+    at key shift+H
+    at frames 8
+    at box 420 150 600 330
+    at frames 6
+    at key I
+    at frames 8
+    at key shift+H
+    at object base plate
+    at frames 4
+    for r in $("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}'); do
+        at renderer "$r"
+        at key ESC
+        at box 420 150 600 330
+        at frames 6
+    done
+    at quit
+} >"$work/parts.txt"
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/parts.txt" --print-events \
+    >"$work/parts.out" 2>"$work/parts.err"
+rc=$?
+[[ $rc -eq 0 ]] || { fail "parts session: exit code $rc"; head -c 3000 "$work/parts.err"; }
+events=$(grep -E '^idview: (selected|hidden):' "$work/parts.out")
+expect_event() { # expect_event N LINE: the Nth selected/hidden event is LINE
+    local got
+    got=$(echo "$events" | sed -n "${1}p")
+    if [[ $got == "idview: $2" ]]; then echo "ok   $2"; else fail "event $1: '$got', expected '$2'"; fi
+}
+expect_event 1 "selected: $(count "$big") parts"
+expect_event 2 "selected: $(count "$after_remove") parts"
+expect_event 3 "selected: $(count "$after_add") parts"
+expect_event 4 "selected: none"
+expect_event 5 "hidden: $(count "$after_add") parts"
+expect_event 6 "hidden: 0 parts"
+expect_event 7 "selected: $(count "$big") parts"
+partcount=$("$idview" --stats --scene procedural:preset=small 2>/dev/null |
+    sed -n 's/.*"parts":\([0-9]*\),.*/\1/p')
+[[ -n $partcount ]] || fail "--stats gave no part count"
+expect_event 8 "hidden: $((partcount - $(count "$big"))) parts"
+expect_event 9 "hidden: 0 parts"
+line=$(echo "$events" | sed -n 10p)
+[[ $line =~ ^idview:\ selected:\ (part\ [0-9]+|[0-9]+\ parts) ]] && echo "ok   object list: $line" ||
+    fail "selecting the object 'base plate' by name gave: $line"
+# Every renderer's box: Esc clears, then the same parts as headless.
+n=0
+for r in $("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}'); do
+    n=$((n + 1))
+    got=$(echo "$events" | grep -v 'selected: none' | sed -n "$((9 + n))p")
+    [[ $got == "idview: selected: $(count "$big") parts" ]] || fail "box with $r: '$got'"
+done
+echo "ok   box selection with each of $n renderers"
+# The visible part count the panel shows: at first the headless count of the same view;
+# with the parts hidden fewer (not compared with headless: parts revealed behind the hidden
+# ones are seen through a camera the viewer rebuilds from its orbit, which can differ from
+# headless's in the last bits, enough to show or not a sliver); isolated, exactly the parts
+# of the box (all of them were visible in it); and after Shift+H the first count again.
+counts=$(sed -n 's/^idview: visible parts: //p' "$work/parts.out")
+first_seen=$(echo "$counts" | sed -n '/^[1-9]/{p;q}')
+[[ $first_seen == "$visible_all" ]] && echo "ok   visible parts: $first_seen" ||
+    fail "visible parts: viewer '$first_seen', headless '$visible_all'"
+while_hidden=$(awk '/^idview: hidden: [1-9]/{on=1} on && /^idview: hidden: 0 parts/{exit} on' \
+    "$work/parts.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+[[ -n $while_hidden && $while_hidden != "$visible_all" ]] &&
+    echo "ok   visible parts with $(count "$after_add") hidden: $while_hidden (headless: $visible_hidden)" ||
+    fail "hiding parts did not change the visible count ($while_hidden)"
+isolated=$(awk '/^idview: hidden: [1-9]/{n++} n==2{on=1} on && /^idview: hidden: 0 parts/{exit} on' \
+    "$work/parts.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+[[ $isolated == "$(count "$big")" ]] && echo "ok   visible parts isolated: $isolated" ||
+    fail "visible parts after isolating $(count "$big") parts: $isolated"
+[[ $(echo "$counts" | tail -1) == "$visible_all" ]] ||
+    fail "visible parts after showing all: $(echo "$counts" | tail -1), expected $visible_all"
+
+# The assembly tree: a node's checkbox hides every part under it and shows them again, a
+# row click selects them, Ctrl+click adds another node's; the counts are those --tree gives.
+node_parts() { # node_parts PATH...: the unique parts under these nodes, from --tree's JSON
+    "$idview" --tree --scene procedural:preset=small | python3 -c '
+import json, sys
+wanted, parts = set(sys.argv[1:]), set()
+def walk(node, path, inside):
+    inside = inside or path in wanted
+    if inside and "parts" in node:
+        parts.update(range(node["parts"][0], node["parts"][0] + node["parts"][1]))
+    for child in node.get("children", []):
+        walk(child, path + "/" + child["name"] if path else child["name"], inside)
+walk(json.load(sys.stdin), "", False)
+print(len(parts))' "$@"
+}
+gearbox=$(node_parts "gearbox module")
+plate=$(node_parts "gearbox module/base plate")
+both=$(node_parts "gearbox module" "gearbox module/base plate")
+{
+    at node hide gearbox module
+    at frames 4
+    at node show gearbox module
+    at frames 4
+    at node select gearbox module/base plate
+    at frames 2
+    at node add gearbox module
+    at frames 2
+    at key ESC
+    at move 470 260
+    at level solid
+    at click 470 260
+    at frames 6
+    at level assembly
+    at click 470 260
+    at frames 6
+    at level face
+    at dblclick 470 260
+    at frames 6
+    at quit
+} >"$work/tree.txt"
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/tree.txt" --print-events \
+    >"$work/tree.out" 2>"$work/tree.err"
+rc=$?
+[[ $rc -eq 0 ]] || { fail "tree session: exit code $rc"; head -c 3000 "$work/tree.err"; }
+tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | tr '\n' '|')
+# The click at 470,260 lands on the base plate, object 0 (headless --pick says so): level
+# solid selects its parts, assembly every part under its group, a double-click the object.
+object0=$("$idview" --tree --scene procedural:preset=small | python3 -c '
+import json, sys
+def find(node):
+    if node.get("object") == 0:
+        return node["parts"][1]
+    return next((n for n in map(find, node.get("children", [])) if n is not None), None)
+print(find(json.load(sys.stdin)))')
+picked=$("$idview" --headless --scene procedural:preset=small --size 720x450 --frames 1 \
+    --pick 470,260 2>/dev/null | sed -n 's/.*"object":\([0-9]*\),.*/\1/p')
+[[ $picked == 0 ]] || fail "the click point shows object '$picked', not the base plate"
+want="idview: hidden: $gearbox parts|idview: hidden: 0 parts|idview: selected: $plate parts|"
+want+="idview: selected: $both parts|idview: selected: none|idview: selected: $object0 parts|"
+want+="idview: selected: $gearbox parts|idview: selected: $object0 parts|"
+if [[ $gearbox -gt $plate && $plate -gt $object0 && $object0 -gt 1 && $tree_events == "$want" ]]; then
+    echo "ok   assembly tree and selection levels: hide, show, select and add nodes; solid, assembly, double-click ($gearbox, $plate, $object0 parts)"
+else
+    fail "assembly tree events '$tree_events', expected '$want'"
+fi
+
+# Loads that must not take the scene: a drop past --max-triangles fails in one line and the
+# scene stays (a click picks the very part it picked before); Cancel stops a slow CAD load
+# (terrain.brep meshes for half a minute in one face) within seconds, and the scene stays.
+motor=/usr/share/opencascade/data/occ/Motor-c.brep
+terrain=/usr/share/opencascade/data/occ/terrain.brep
+if [[ -f $motor && -f $terrain ]]; then
+    t=0.5
+    {
+        at move 420 230
+        at click 420 230
+        at frames 6
+        at drop "$motor"
+        at loaded
+        at key ESC
+        at click 420 230
+        at frames 6
+        at drop "$terrain"
+        at frames 10
+        at cancel
+        at loaded
+        at quit
+    } >"$work/refuse.txt"
+    start=$(date +%s)
+    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+        --validation --size 720x450 \
+        --scene procedural:preset=small --max-triangles 1000 --no-cache \
+        --script "$work/refuse.txt" --print-events >"$work/refuse.out" 2>"$work/refuse.err"
+    rc=$?
+    took=$(($(date +%s) - start))
+    [[ $rc -eq 0 ]] || { fail "refused loads: exit code $rc"; head -c 2000 "$work/refuse.err"; }
+    grep -q "^idview: $motor: the tessellation passes --max-triangles 1000 (about [0-9]* triangles at deflection [0-9.e+-]*); try --deflection [0-9.e+-]*$" \
+        "$work/refuse.err" && echo "ok   a drop past --max-triangles is refused in one line" ||
+        fail "no one-line refusal of $motor: $(head -c 500 "$work/refuse.err")"
+    grep -q "^idview: $terrain: cancelled$" "$work/refuse.err" && echo "ok   Cancel stopped $terrain" ||
+        fail "Cancel did not stop $terrain: $(head -c 500 "$work/refuse.err")"
+    grep -q "^idview: opened: " "$work/refuse.out" && fail "a refused or cancelled model opened"
+    picks=$(grep '^idview: selected: part' "$work/refuse.out")
+    if [[ $(wc -l <<<"$picks") -eq 2 && $(sort -u <<<"$picks" | wc -l) -eq 1 ]]; then
+        echo "ok   the scene stayed: $(head -1 <<<"$picks")"
+    else
+        fail "the two clicks picked: $picks"
+    fi
+    ((took < 25)) && echo "ok   refused and cancelled in $took s" ||
+        fail "the refused and cancelled loads took $took s"
+fi
+
+# The views session: the standard view keys (1, Ctrl+7, 0), the script's view and ortho, O, and
+# F fitting the selection, then the scene. Each says so in an event line; the top view in
+# ortho shows the parts headless --view top --ortho shows for the same window size.
+t=0.5
+{
+    at key 1
+    at frames 3
+    at key ctrl+7
+    at frames 3
+    at key 0
+    at frames 3
+    at key O
+    at view top
+    at frames 8
+    at ortho off
+    at frames 3
+    at view front
+    at frames 3
+    at object base plate
+    at frames 3
+    at key F
+    at frames 6
+    at key I
+    at key ESC
+    at key F
+    at frames 6
+    at key shift+H
+    at key F
+    at frames 6
+    at quit
+} >"$work/views.txt"
+xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
+    --validation --size 720x450 \
+    --scene procedural:preset=small --script "$work/views.txt" --print-events \
+    >"$work/views.out" 2>"$work/views.err"
+rc=$?
+[[ $rc -eq 0 ]] || { fail "views session: exit code $rc"; head -c 3000 "$work/views.err"; }
+said=$(grep -E '^idview: (view|projection|fit):' "$work/views.out" | sed 's/^idview: //' | paste -sd'|' -)
+expected='view: front|view: bottom|view: isometric|projection: orthographic|view: top|projection: perspective|view: front|fit: selection|fit: shown parts|fit: scene'
+[[ $said == "$expected" ]] && echo "ok   views session: $said" || fail "views session said '$said', expected '$expected'"
+# F on the base plate frames it (another set of parts shows); F with the plate isolated frames
+# it alone; F with nothing selected or hidden frames the whole scene beside the panel.
+visible_after() { # the last visible part count after the event line $1, before the next event
+    awk -v e="idview: $1" '$0 == e {on=1; next} on && /^idview: (view|projection|fit|selected):/{exit} on' \
+        "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1
+}
+front=$(visible_after "view: front")
+on_plate=$(visible_after "fit: selection")
+whole=$(visible_after "fit: scene")
+[[ -n $front && -n $on_plate && $on_plate != "$front" && -n $whole && $whole != "$on_plate" ]] &&
+    echo "ok   F: selection shows $on_plate parts, then the scene $whole (front view: $front)" ||
+    fail "F: selection '$on_plate', scene '$whole', front view '$front'"
+top_viewer=$(awk '/^idview: view: top/{on=1} on && /^idview: projection: perspective/{exit} on' \
+    "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+top_headless=$("$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
+    --view top --ortho --visible-parts 2>/dev/null | sed -n 's/^{"count":\([0-9]*\).*/\1/p')
+iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: orthographic/{exit} on' \
+    "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+[[ -n $top_viewer && $top_viewer == "$top_headless" && $top_viewer != "$iso_count" ]] &&
+    echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
+    fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
+
+session() { # session NAME: the small scene driven by $work/NAME.txt, out in NAME.out and .err
+    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
+        --scene procedural:preset=small --script "$work/$1.txt" --print-events \
+        >"$work/$1.out" 2>"$work/$1.err"
+    local rc=$?
+    [[ $rc -eq 0 ]] || { fail "$1 session: exit code $rc"; head -c 2000 "$work/$1.err"; }
+}
+# The open field as a newcomer types into it: Ctrl+O, a path, Enter pressed and released
+# between two frames (a script's key always is), the model opens; the field is then empty,
+# so the next path typed opens as it is, not joined to the last one.
+cp "$work/small.glb" "$work/again.glb"
+t=0.5
+{
+    at key ctrl+O
+    at frames 3
+    at type "$work/small.glb"
+    at key ENTER
+    at loaded
+    at frames 3
+    at key ctrl+O
+    at frames 3
+    at type "$work/again.glb"
+    at key ENTER
+    at loaded
+    at frames 3
+    at screenshot "$work/typed.png"
+    at quit
+} >"$work/typed.txt"
+session typed
+opened=$(sed -n 's/^idview: opened: \([^ ]*\) .*/\1/p' "$work/typed.out" | paste -sd' ' -)
+[[ $opened == "$work/small.glb $work/again.glb" ]] && echo "ok   typed paths opened: Enter kept, field emptied" ||
+    fail "typed paths opened '$opened' ($(head -c 300 "$work/typed.err"))"
+
+((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
+echo "viewer parts test passed"
