@@ -11,7 +11,8 @@ export LD_LIBRARY_PATH=$root/build/lavapipe-25/lib${LD_LIBRARY_PATH:+:$LD_LIBRAR
 occ=/usr/share/opencascade/data
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# Nothing of the user's: no saved viewer settings, no caches.
+# Nothing of the user's, and nothing kept from one viewer session to the next: no saved
+# viewer settings, no caches.
 export XDG_CONFIG_HOME=$work/config XDG_CACHE_HOME=$work/cache
 docs=$root/docs
 
@@ -27,7 +28,7 @@ viewer() {
     local out=$1 lines=$2
     shift 2
     printf '%s\n' "$lines" "9.0 screenshot $docs/$out" "9.5 quit" >"$work/script.txt"
-    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --size 1280x720 --script "$work/script.txt" \
+    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --size 1280x720 --no-saved-settings --script "$work/script.txt" \
         "$@" >/dev/null
 }
 
