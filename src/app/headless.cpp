@@ -148,28 +148,27 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             slots.finish();
             firstFrameMs = msSince(rig.start);
         };
-        // One frame that picks `pixel`, waited for: headless has nothing else to overlap.
+        // One frame with `frameParams`, waited for: headless has nothing else to overlap.
+        auto waitedFrame = [&](render::FrameParams frameParams) {
+            frameParams.explode = explodeAt(options.animation, frameNumber);
+            render::FrameSlot& slot = slots.begin(frameNumber++);
+            renderer.record(slot, rig.targets, frameParams);
+            slots.submit(slot);
+            slots.finish();
+            firstFrameDone();
+        };
+        // One frame that picks `pixel`.
         auto pickFrame = [&](const Options::Pixel& pixel) {
             render::FrameParams pickParams = params;
             pickParams.pickPixel = glm::uvec2(pixel.x, pixel.y);
-            pickParams.explode = explodeAt(options.animation, frameNumber);
-            render::FrameSlot& slot = slots.begin(frameNumber++);
-            renderer.record(slot, rig.targets, pickParams);
-            slots.submit(slot);
-            slots.finish();
-            firstFrameDone();
+            waitedFrame(pickParams);
             return *slots.latestPick();
         };
-        // One frame that collects the parts in `rect`, waited for.
+        // One frame that collects the parts in `rect`.
         auto rectFrame = [&](const render::PartSetQuery& rect) {
             render::FrameParams rectParams = params;
             rectParams.partSets = {rect};
-            rectParams.explode = explodeAt(options.animation, frameNumber);
-            render::FrameSlot& slot = slots.begin(frameNumber++);
-            renderer.record(slot, rig.targets, rectParams);
-            slots.submit(slot);
-            slots.finish();
-            firstFrameDone();
+            waitedFrame(rectParams);
             const render::PartSetReading& reading = *slots.latestPartSets();
             return RectResult{reading.sets.front(), reading.counts.front()};
         };

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "render/disk_pipeline_cache.h"
 #include "render/pipeline.h"
 #include "shared.h"
 #include "vk/check.h"

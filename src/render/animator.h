@@ -4,12 +4,13 @@
 // them where they are drawn.
 #pragma once
 
-#include "render/disk_pipeline_cache.h"
 #include "render/scene_gpu.h"
 #include "vk/handle.h"
 #include "vk/shader_compiler.h"
 
 namespace render {
+
+class DiskPipelineCache;
 
 class Animator {
   public:
