@@ -64,12 +64,7 @@ visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=s
     done
     at quit
 } >"$work/parts.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
-    --validation --size 720x450 \
-    --scene procedural:preset=small --script "$work/parts.txt" --print-events \
-    >"$work/parts.out" 2>"$work/parts.err"
-rc=$?
-[[ $rc -eq 0 ]] || { fail "parts session: exit code $rc"; head -c 3000 "$work/parts.err"; }
+session parts --no-saved-settings
 events=$(grep -E '^idview: (selected|hidden):' "$work/parts.out")
 expect_event() { # expect_event N LINE: the Nth selected/hidden event is LINE
     local got
@@ -160,12 +155,7 @@ both=$(node_parts "gearbox module" "gearbox module/base plate")
     at frames 6
     at quit
 } >"$work/tree.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
-    --validation --size 720x450 \
-    --scene procedural:preset=small --script "$work/tree.txt" --print-events \
-    >"$work/tree.out" 2>"$work/tree.err"
-rc=$?
-[[ $rc -eq 0 ]] || { fail "tree session: exit code $rc"; head -c 3000 "$work/tree.err"; }
+session tree --no-saved-settings
 tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | tr '\n' '|')
 # The click at 470,260 lands on the base plate, object 0 (headless --pick says so): level
 # solid selects its parts, assembly every part under its group, a double-click the object.
@@ -211,13 +201,8 @@ if [[ -f $motor && -f $terrain ]]; then
         at quit
     } >"$work/refuse.txt"
     start=$(date +%s)
-    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
-        --validation --size 720x450 \
-        --scene procedural:preset=small --max-triangles 1000 --no-cache \
-        --script "$work/refuse.txt" --print-events >"$work/refuse.out" 2>"$work/refuse.err"
-    rc=$?
+    session refuse --no-saved-settings --max-triangles 1000 --no-cache
     took=$(($(date +%s) - start))
-    [[ $rc -eq 0 ]] || { fail "refused loads: exit code $rc"; head -c 2000 "$work/refuse.err"; }
     grep -q "^idview: $motor: the tessellation passes --max-triangles 1000 (about [0-9]* triangles at deflection [0-9.e+-]*); try --deflection [0-9.e+-]*$" \
         "$work/refuse.err" && echo "ok   a drop past --max-triangles is refused in one line" ||
         fail "no one-line refusal of $motor: $(head -c 500 "$work/refuse.err")"
@@ -265,12 +250,7 @@ t=0.5
     at frames 6
     at quit
 } >"$work/views.txt"
-xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --no-saved-settings \
-    --validation --size 720x450 \
-    --scene procedural:preset=small --script "$work/views.txt" --print-events \
-    >"$work/views.out" 2>"$work/views.err"
-rc=$?
-[[ $rc -eq 0 ]] || { fail "views session: exit code $rc"; head -c 3000 "$work/views.err"; }
+session views --no-saved-settings
 said=$(grep -E '^idview: (view|projection|fit):' "$work/views.out" | sed 's/^idview: //' | paste -sd'|' -)
 expected='view: front|view: bottom|view: isometric|projection: orthographic|view: top|projection: perspective|view: front|fit: selection|fit: shown parts|fit: scene'
 [[ $said == "$expected" ]] && echo "ok   views session: $said" || fail "views session said '$said', expected '$expected'"
@@ -296,13 +276,6 @@ iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: or
     echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
     fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
 
-session() { # session NAME: the small scene driven by $work/NAME.txt, out in NAME.out and .err
-    xvfb-run -a -s "-screen 0 1280x800x24" "$idview" --validation --size 720x450 \
-        --scene procedural:preset=small --script "$work/$1.txt" --print-events \
-        >"$work/$1.out" 2>"$work/$1.err"
-    local rc=$?
-    [[ $rc -eq 0 ]] || { fail "$1 session: exit code $rc"; head -c 2000 "$work/$1.err"; }
-}
 # The open field as a newcomer types into it: Ctrl+O, a path, Enter pressed and released
 # between two frames (a script's key always is), the model opens; the field is then empty,
 # so the next path typed opens as it is, not joined to the last one.
@@ -324,7 +297,7 @@ t=0.5
     at screenshot "$work/typed.png"
     at quit
 } >"$work/typed.txt"
-session typed
+session typed --no-saved-settings
 opened=$(sed -n 's/^idview: opened: \([^ ]*\) .*/\1/p' "$work/typed.out" | paste -sd' ' -)
 [[ $opened == "$work/small.glb $work/again.glb" ]] && echo "ok   typed paths opened: Enter kept, field emptied" ||
     fail "typed paths opened '$opened' ($(head -c 300 "$work/typed.err"))"
