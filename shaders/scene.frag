@@ -133,8 +133,6 @@ void main() {
         uint64_t depthBits = uint64_t(floatBitsToUint(depth));
         atomicMin(pick.pick.current, (depthBits << 32) | uint64_t(uniquePartId));
     }
-    if (uniquePartId == uint(pick.pick.last)) color = highlightHovered(color, frame.time);
-    if (partInSet(frame.selectedAddress, uniquePartId)) color = highlightSelected(color);
     outColor = vec4(color, 1.0);
 #endif
 }

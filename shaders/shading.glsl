@@ -39,26 +39,6 @@ vec3 capColor(vec3 base, vec2 fragCoord) {
     return pow(linear, vec3(1.0 / 2.2));
 }
 
-// The two highlights. Hovered: the inverted colour, blinking. Selected: a steady amber tint.
-// Inverting a mid-grey gives the same grey, so where the inverse is too close the highlight
-// goes to black or white instead: a highlighted pixel always changes visibly.
-vec3 highlightHovered(vec3 color, float time) {
-    vec3 target = vec3(1.0) - color;
-    vec3 gap = abs(target - color);
-    if (max(gap.r, max(gap.g, gap.b)) < 0.25)
-        target = dot(color, vec3(0.299, 0.587, 0.114)) > 0.5 ? vec3(0.0) : vec3(1.0);
-    float blink = 0.4 + 0.6 * (0.5 + 0.5 * cos(time * 6.2831853 * 1.5)); // 1.5 Hz, never off
-    return mix(color, target, blink);
-}
-
-vec3 highlightSelected(vec3 color) {
-    vec3 amber = vec3(1.0, 0.72, 0.1);
-    vec3 tinted = mix(color, amber, 0.65);
-    // Amber parts would hardly change: shift them towards deep blue instead.
-    if (distance(tinted, color) < 0.2) tinted = mix(color, vec3(0.1, 0.2, 0.9), 0.65);
-    return tinted;
-}
-
 // FRAME_TINT_LEVELS: a colour per level of detail, full detail first (the panel's legend
 // shows the same ones), far apart in hue so that neighbouring objects read apart.
 vec3 levelTint(uint level) {

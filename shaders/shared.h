@@ -94,7 +94,7 @@ struct FrameData {
     uint64_t meshletsAddress;    // Meshlet[] (mesh techniques), or 0
     uint64_t meshletDataAddress; // uint[]: meshlet vertices, then packed triangles, or 0
     uint64_t drawIndicesAddress; // uint[]: the draw index attribute (mdi-attribute), or 0
-    uint64_t selectedAddress;    // uint[]: bitset over unique part IDs, drawn highlighted
+    uint64_t selectedAddress;    // uint[]: bitset over unique part IDs (compose.comp tints them)
     uint64_t hiddenAddress;      // uint[]: bitset over unique part IDs, never drawn (see HIDING)
     // uint[] per part of the scene (Scene::parts order): its own material, or OBJECT_MATERIAL
     // for its object's; 0 when no part has one (CAD face colours)
@@ -112,7 +112,7 @@ struct FrameData {
     uint64_t cullStateAddress; // mdi modes: per draw the CULL_* bits of this frame's first pass
     uvec2 pickPixel;           // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     vec2 sampleZero;           // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
-    float time;                // seconds, drives the blink of the hovered part
+    float time;                // seconds since the start (no shader reads it today)
     // Occlusion, mesh techniques: the word of meshletBits where a second bitset starts, the
     // meshlets the late pass draws (mdi modes: lateMeshletWord, chosen by cull.comp; push
     // mode: lateDrawnWord, written by the task shader, which tests them itself), and where a
@@ -134,8 +134,8 @@ IDV_CONST OBJECT_MATERIAL = 0xFFFFFFFFu;
 
 // The pick: during the scene pass, fragments at FrameData::pickPixel atomicMin `current` with
 // (depth bits << 32 | unique part ID); positive floats order like their bits, so the nearest
-// surface wins. After the pass `current` is copied to `last`, which the next frame's shading
-// reads to highlight the hovered part, and to the frame slot's host-visible readback.
+// surface wins. After the pass `current` is copied to `last` and to the frame slot's
+// host-visible readback. (The hovered part's highlight reads the ID image: compose.comp.)
 struct PickData {
     uint64_t current; // reset to PICK_NONE before each pass
     uint64_t last;
@@ -437,48 +437,11 @@ struct AnimationPush {
     float explode; // 0: at rest, 1: twice as far from the scene centre
 };
 
-// Passes over the resolved ID image, after the scene pass (render/id_passes.h). Both run in
-// 16x16 workgroups, one invocation per pixel.
-IDV_CONST ID_PASS_TILE = 16;
-// edges.comp: a pixel is drawn in a line colour when the square window of `width` pixels
-// starting width/2 pixels up-left of it and ending (width+1)/2 down-right holds two different
-// IDs (the background is an ID too). The selection's outline takes width + 2 and a window
-// holding selected and unselected IDs; the hovered part's outline width + 1. The tile it
-// reads holds the largest window's margin: EDGE_WIDTH_MAX + 2 wide.
-IDV_CONST EDGE_WIDTH_MAX = 3;
-IDV_CONST EDGE_LINES = 1u;    // EdgePush::flags: draw part edges
-IDV_CONST EDGE_SELECTED = 2u; // outline the selected parts
-IDV_CONST EDGE_HOVERED = 4u;  // outline the hovered part (PickData::last)
-struct EdgePush {
-    vec4 lineColor;           // display-encoded RGBA written where an edge is (the colour image's)
-    vec4 selectColor;         // the selection's outline
-    vec4 hoverColor;          // the hovered part's outline
-    uint64_t selectedAddress; // bitset, or 0
-    uint64_t pickAddress;     // PickData: `last` names the hovered part
-    uvec2 extent;
-    uint width; // 1 to EDGE_WIDTH_MAX
-    uint flags;
-};
-
-// part_set.comp: every unique part ID in an inclusive pixel rectangle of the ID image goes
-// into a bitset, and each bit set for the first time counts once: PartSetResult::count.
-struct PartSetPush {
-    uint64_t resultAddress; // PartSetResult
-    uvec2 rectMin;          // inclusive, pixels
-    uvec2 rectMax;          // inclusive
-    uint words;             // bitset words: ceil(unique parts / 32)
-    uint samples;           // IDV_PART_SET_SAMPLES: samples per pixel of the image
-};
-struct PartSetResult {
-    uint count;
-    uint unused[3];
-    // followed by `words` uints of bitset
-};
+// The passes over the resolved ID image after the scene pass: the picture's composition and
+// the part sets (their own header of this family).
+#include "shared_id_passes.h"
 
 #ifdef __cplusplus
-static_assert(sizeof(EdgePush) == 80 && offsetof(EdgePush, selectedAddress) == 48);
-static_assert(sizeof(PartSetPush) == 32);
-static_assert(sizeof(PartSetResult) == 16);
 static_assert(sizeof(Vertex) == 24);
 static_assert(sizeof(FrameData) == 336 && offsetof(FrameData, pickPixel) == 248);
 static_assert(sizeof(DrawCull) == 80 && sizeof(CullBox) == 32);

@@ -190,6 +190,17 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
         EXPECT_EQ(r.validationMessages, 0u);
         ASSERT_EQ(r.ids, f.ids) << name;
         ASSERT_EQ(r.picks.size(), o.picks.size());
+        ASSERT_EQ(r.hovers.size(), r.picks.size());
+        for (size_t i = 0; i < r.picks.size(); ++i) {
+            // The hover read from the ID and depth images is the atomicMin pick's part, and
+            // its depth as the depth attachment holds it at sample 0.
+            const render::PickReading& hover = r.hovers[i];
+            EXPECT_EQ(hover.part, r.picks[i].part) << name << " hover " << i;
+            EXPECT_EQ(hover.frame, r.picks[i].frame);
+            if (hover.part) {
+                EXPECT_NEAR(hover.depth, r.picks[i].depth, 1e-5) << name;
+            }
+        }
         for (const auto& pick : r.picks) {
             const uint32_t expected = idAt(r.ids, int(pick.pixel.x), int(pick.pixel.y));
             const std::string where =

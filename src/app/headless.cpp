@@ -204,6 +204,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             }
             for (const auto& pixel : options.picks) {
                 result.picks.push_back(pickFrame(pixel));
+                result.hovers.push_back(*slots.latestHover());
                 params.pickPixel = result.picks.back().pixel;
             }
             // The pick's depth is taken where sample 0 lies (the pixel centre without MSAA).

@@ -21,6 +21,9 @@ struct HeadlessResult {
     std::vector<uint32_t> ids;  // unique part IDs of the last frame, gpu::BACKGROUND_ID if none
     std::vector<double> gpuMs;  // scene pass time of each frame
     std::vector<render::PickReading> picks; // one per Options::picks entry, in order
+    // The same frames' composition: the part and depth it read from the ID and depth images
+    // at the picked pixel, which the hover highlight shows (render/id_passes.h).
+    std::vector<render::PickReading> hovers;
     // Options::measure: both picks, and the world points their depths give (none on
     // background).
     std::vector<render::PickReading> measured;

@@ -45,6 +45,10 @@ FrameSlots::FrameSlots(vk::Device& device) : device_(device) {
                        0, "frame data" + suffix);
         slot.pickReadback = vk::hostBuffer(
             device, sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, "pick readback" + suffix);
+        slot.hoverReadback = vk::hostBuffer(device, sizeof(uint64_t),
+                                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                            "hover readback" + suffix);
         slot.cullReadback =
             vk::hostBuffer(device, sizeof(gpu::CullStats), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            "cull counters readback" + suffix);
@@ -78,6 +82,8 @@ FrameSlot& FrameSlots::begin(uint64_t frameNumber) {
     collect(slot);
     slot.frameNumber = frameNumber;
     slot.pickPixel.reset();
+    slot.hoverPixel.reset();
+    slot.scenePass = false;
     slot.partSetQueries.clear();
     vk::check(vkResetCommandPool(dev, slot.pool.get(), 0), "vkResetCommandPool");
     auto info = vk::init<VkCommandBufferBeginInfo>(VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO);
@@ -156,9 +162,15 @@ void FrameSlots::collect(FrameSlot& slot) {
         std::memcpy(&value, slot.pickReadback.mapped(), sizeof value);
         latestPick_ = decodePick(value, slot.frameNumber, *slot.pickPixel);
     }
+    if (slot.hoverPixel && (!latestHover_ || latestHover_->frame < slot.frameNumber)) {
+        uint64_t value;
+        std::memcpy(&value, slot.hoverReadback.mapped(), sizeof value);
+        latestHover_ = decodePick(value, slot.frameNumber, *slot.hoverPixel);
+    }
     if (!slot.partSetQueries.empty() &&
         (!latestPartSets_ || latestPartSets_->frame < slot.frameNumber))
         latestPartSets_ = readPartSets(slot);
+    if (!slot.scenePass) return; // composed only: no timestamps, counters or pick
     uint64_t ticks[StampCount];
     VkResult result =
         vkGetQueryPoolResults(device_.handle(), slot.timestamps.get(), 0, StampCount, sizeof ticks,

@@ -50,10 +50,18 @@ struct FrameSlot {
     vk::Handle<VkQueryPool> timestamps; // StampCount of them
     vk::Buffer frameData;               // gpu::FrameData, written with vkCmdUpdateBuffer
     vk::Buffer pickReadback;            // host-visible uint64: the frame's PickData::current
-    vk::Buffer cullReadback;            // host-visible gpu::CullStats of the frame
-    bool submitted = false;             // has work whose timestamps are not read yet
+    // Host-visible uint64 the composition writes itself: the part and depth at the hovered
+    // pixel, encoded as PickData's (gpu::ComposePush::hoverAddress).
+    vk::Buffer hoverReadback;
+    vk::Buffer cullReadback; // host-visible gpu::CullStats of the frame
+    bool submitted = false;  // has work whose timestamps are not read yet
+    // Whether the frame ran the scene pass (Renderer::record) or only composed the picture
+    // again from the images the last one left (Renderer::recordComposition): only the first
+    // kind has timestamps, culling counters and a pick.
+    bool scenePass = false;
     uint64_t frameNumber = 0;
-    std::optional<glm::uvec2> pickPixel; // set by Renderer::record when the frame picks
+    std::optional<glm::uvec2> pickPixel;  // set by Renderer::record when the frame picks
+    std::optional<glm::uvec2> hoverPixel; // set when the frame's composition hovers a pixel
     // Part set queries of this frame (Renderer::record): PartSetResult and `partSetWords`
     // bitset words per query, on the device and copied to the host.
     std::vector<PartSetQuery> partSetQueries;
@@ -101,6 +109,9 @@ class FrameSlots {
     // The pick of the newest completed frame that picked a pixel. Read from a slot whose
     // fence has signalled, so asking never stalls the CPU.
     const std::optional<PickReading>& latestPick() const { return latestPick_; }
+    // The part and depth under the hovered pixel of the newest completed frame that hovered
+    // one, from its ID and depth images (scene pass or not); the same way.
+    const std::optional<PickReading>& latestHover() const { return latestHover_; }
     // The part sets of the newest completed frame that asked for some; the same way.
     const std::optional<PartSetReading>& latestPartSets() const { return latestPartSets_; }
     // GPU milliseconds of the passes over the ID image (edges, part sets), as above; 0 for
@@ -116,7 +127,7 @@ class FrameSlots {
     std::vector<FrameTimes> times_;
     std::vector<gpu::CullStats> cullStats_;
     uint64_t timedFrames_ = 0;
-    std::optional<PickReading> latestPick_;
+    std::optional<PickReading> latestPick_, latestHover_;
     std::optional<PartSetReading> latestPartSets_;
 };
 

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 
+#include "render/blink.h"
 #include "render/renderer.h"
 #include "vk/barrier.h"
 #include "vk/check.h"
@@ -224,19 +225,23 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
     vkCmdUpdateBuffer(cmd, stats.handle(), 0, bytes, &known);
 }
 
-// Edges and outlines (when on), and the frame's part set queries, into the slot's buffers.
+// The composition (highlights, edges and outlines when on, the part under the hovered
+// pixel) and the frame's part set queries, into the slot's buffers.
 void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
                               const FrameParams& params) const {
     const EdgeSettings& e = settings_.edges;
-    gpu::EdgePush edges{};
-    edges.lineColor = glm::vec4(e.color, 1.0f);
-    edges.selectColor = glm::vec4(e.selectColor, 1.0f);
-    edges.hoverColor = glm::vec4(e.hoverColor, 1.0f);
-    edges.selectedAddress = selected_->address();
-    edges.pickAddress = pick_->address();
-    edges.extent = {targets.extent().width, targets.extent().height};
-    edges.width = std::clamp(e.width, edgeWidthRange.min, edgeWidthRange.max);
-    edges.flags = gpu::EDGE_LINES | gpu::EDGE_SELECTED | gpu::EDGE_HOVERED;
+    gpu::ComposePush compose{};
+    compose.lineColor = glm::vec4(e.color, 1.0f);
+    compose.selectColor = glm::vec4(e.selectColor, 1.0f);
+    compose.hoverColor = glm::vec4(e.hoverColor, 1.0f);
+    compose.selectedAddress = selected_->address();
+    compose.hoverAddress = slot.hoverReadback.address();
+    compose.extent = {targets.extent().width, targets.extent().height};
+    compose.hoverPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
+    compose.width = std::clamp(e.width, edgeWidthRange.min, edgeWidthRange.max);
+    compose.flags = e.on ? gpu::EDGE_LINES | gpu::EDGE_SELECTED | gpu::EDGE_HOVERED : 0u;
+    compose.blink = blinkWeight(params.time);
+    slot.hoverPixel = params.pickPixel;
     const uint32_t words = std::max(1u, (partCount_ + 31) / 32);
     if (!params.partSets.empty()) {
         const VkDeviceSize bytes =
@@ -255,8 +260,11 @@ void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneT
         slot.partSetWords = words;
         slot.partSetParts = partCount_;
     }
-    idPasses_->record(cmd, targets, e.on ? &edges : nullptr, params.partSets, words, slot.partSets,
+    idPasses_->record(cmd, targets, compose, params.partSets, words, slot.partSets,
                       slot.partSetsReadback);
+    // The hovered part, written by the shader into the slot's host-visible buffer.
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
 }
 
 // The vertex and index buffers the draws read: the scene's, the part vertices, or none for

@@ -29,8 +29,7 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
     info.bindingCount = static_cast<uint32_t>(bindings.size());
     info.pBindings = bindings.data();
     images_ = vk::make(device, vkCreateDescriptorSetLayout, info, "ID pass images");
-    edges_ = createComputePipeline(device, compiler, cache, "edges.comp", sizeof(gpu::EdgePush),
-                                   images_.get(), "part edges");
+    createCompose(compiler, cache);
     partSet_ = createComputePipeline(device, compiler, cache, "part_set.comp",
                                      sizeof(gpu::PartSetPush), images_.get(), "part sets");
     VkDescriptorSetLayoutBinding samples{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1,
@@ -46,6 +45,57 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
         createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
                               samples_.get(), "visible parts, every sample",
                               {{"IDV_PART_SET_COUNT", "0"}, {"IDV_PART_SET_SAMPLES", "1"}});
+}
+
+void IdPasses::createCompose(const vk::ShaderCompiler& compiler, const DiskPipelineCache& cache) {
+    std::array<VkDescriptorSetLayoutBinding, 4> bindings{};
+    for (uint32_t i = 0; i < bindings.size(); ++i)
+        bindings[i] = {i,
+                       i == 3 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                              : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                       1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    auto info = vk::init<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    info.bindingCount = static_cast<uint32_t>(bindings.size());
+    info.pBindings = bindings.data();
+    composeImages_ = vk::make(device_, vkCreateDescriptorSetLayout, info, "composition images");
+    // texelFetch only: the sampler's filtering is never used.
+    auto sampler = vk::init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
+    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    depthSampler_ = vk::make(device_, vkCreateSampler, sampler, "composition depth sampler");
+    for (const bool msaa : {false, true})
+        compose_[msaa] = createComputePipeline(device_, compiler, cache, "compose.comp",
+                                               sizeof(gpu::ComposePush), composeImages_.get(),
+                                               msaa ? "composition (MSAA depth)" : "composition",
+                                               {{"IDV_COMPOSE_MSAA", msaa ? "1" : "0"}});
+}
+
+void IdPasses::compose(VkCommandBuffer cmd, const SceneTargets& targets,
+                       const gpu::ComposePush& push) const {
+    const ComputePipeline& pass = compose_[targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT];
+    const std::array<VkDescriptorImageInfo, 4> images = {
+        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL},
+        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.color().view(), VK_IMAGE_LAYOUT_GENERAL},
+        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.shaded().view(), VK_IMAGE_LAYOUT_GENERAL},
+        VkDescriptorImageInfo{depthSampler_.get(), targets.depth().view(),
+                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}};
+    std::array<VkWriteDescriptorSet, 4> writes{};
+    for (uint32_t i = 0; i < writes.size(); ++i) {
+        writes[i] = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType =
+            i == 3 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[i].pImageInfo = &images[i];
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
+    device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0,
+                                static_cast<uint32_t>(writes.size()), writes.data());
+    vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
+    vkCmdDispatch(cmd, groups(push.extent.x), groups(push.extent.y), 1);
 }
 
 void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
@@ -67,11 +117,14 @@ void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
 }
 
 // To GENERAL: after the pass's writes and its transition to the final layout (which the
-// pass's outgoing dependency orders before the transfer stage). Back: before the copies and
-// blits that read the images, and the next frame's pass that overwrites them.
+// pass's outgoing dependency orders before the transfer stage), or after the last frame's
+// passes and copies when no scene pass ran. The composed colour is written whole, so its old
+// contents go; the last frame's blit or copy of it must be done first. Back: before the
+// copies and blits that read the images, and the next frame's pass that overwrites them.
 void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const {
-    std::array<VkImageMemoryBarrier, 2> barriers{};
-    const std::array<VkImage, 2> images = {targets.ids().handle(), targets.color().handle()};
+    std::array<VkImageMemoryBarrier, 3> barriers{};
+    const std::array<VkImage, 3> images = {targets.ids().handle(), targets.shaded().handle(),
+                                           targets.color().handle()};
     for (uint32_t i = 0; i < barriers.size(); ++i) {
         VkImageMemoryBarrier& b = barriers[i];
         b = vk::init<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
@@ -79,9 +132,11 @@ void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
         b.image = images[i];
         b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         if (toGeneral) {
-            b.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+            const bool composed = images[i] == targets.color().handle();
+            b.srcAccessMask = composed ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
             b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-            b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            b.oldLayout =
+                composed ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
             b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
         } else {
             b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -90,9 +145,10 @@ void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
             b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         }
     }
-    const VkPipelineStageFlags src =
-        toGeneral ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT
-                  : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    const VkPipelineStageFlags src = toGeneral ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                                     VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT
+                                               : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     const VkPipelineStageFlags dst =
         toGeneral ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_TRANSFER_BIT;
     vkCmdPipelineBarrier(cmd, src, dst, 0, 0, nullptr, 0, nullptr,
@@ -141,10 +197,9 @@ void IdPasses::recordVisible(VkCommandBuffer cmd, const SceneTargets& targets,
     transition(cmd, targets, false);
 }
 
-void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets, const gpu::EdgePush* edges,
-                      const std::vector<PartSetQuery>& queries, uint32_t words,
-                      const vk::Buffer& results, const vk::Buffer& readback) const {
-    if (!edges && queries.empty()) return;
+void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets,
+                      const gpu::ComposePush& composition, const std::vector<PartSetQuery>& queries,
+                      uint32_t words, const vk::Buffer& results, const vk::Buffer& readback) const {
     vk::CmdLabel label(device_.debug(), cmd, "ID image passes");
     const VkDeviceSize stride = sizeof(gpu::PartSetResult) + VkDeviceSize(words) * 4;
     const VkDeviceSize bytes = stride * queries.size();
@@ -159,13 +214,7 @@ void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets, const gp
                              nullptr);
     }
     transition(cmd, targets, true);
-    const VkExtent2D extent = targets.extent();
-    if (edges) {
-        bindImages(cmd, targets, edges_);
-        vkCmdPushConstants(cmd, edges_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof *edges,
-                           edges);
-        vkCmdDispatch(cmd, groups(extent.width), groups(extent.height), 1);
-    }
+    compose(cmd, targets, composition);
     if (!queries.empty()) bindImages(cmd, targets, partSet_);
     for (size_t i = 0; i < queries.size(); ++i)
         dispatchPartSet(cmd, targets, queries[i], results.address() + stride * i, words, partSet_);

@@ -1,7 +1,9 @@
-// id_passes.h - compute passes over the scene pass's resolved ID image, recorded right after
-// it: part edges and outlines written into the colour image (edges.comp), and the set of
+// id_passes.h - compute passes over the scene pass's resolved ID image: the composition of
+// the picture shown (compose.comp: the hovered part's blink, the selection's tint, edges and
+// outlines over the shaded colour, and the part under the hovered pixel), and the set of
 // unique parts inside pixel rectangles (part_set.comp: box selection, the visible parts),
-// copied to the frame slot's readback like the pick. With MSAA they see the resolved IDs,
+// copied to the frame slot's readback like the pick. They run after the scene pass, or alone
+// over the images the last one left (a viewer at rest). With MSAA they see the resolved IDs,
 // sample 0 of each pixel, as the pick does; only culling's visible parts read every sample.
 #pragma once
 
@@ -19,10 +21,11 @@ class IdPasses {
     IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
              const DiskPipelineCache& cache);
 
-    // Both images from TRANSFER_SRC_OPTIMAL (the scene pass's final layout) to GENERAL and
-    // back around the passes; `edges` null draws none. The part sets write `results` (one
-    // PartSetResult plus `words` words per query, zeroed here) and are copied to `readback`.
-    void record(VkCommandBuffer cmd, const SceneTargets& targets, const gpu::EdgePush* edges,
+    // The composition into targets.color(), then the part sets. The images go from
+    // TRANSFER_SRC_OPTIMAL (the scene pass's final layout) to GENERAL and back around the
+    // passes. The part sets write `results` (one PartSetResult plus `words` words per query,
+    // zeroed here) and are copied to `readback`.
+    void record(VkCommandBuffer cmd, const SceneTargets& targets, const gpu::ComposePush& compose,
                 const std::vector<PartSetQuery>& queries, uint32_t words, const vk::Buffer& results,
                 const vk::Buffer& readback) const;
 
@@ -34,17 +37,24 @@ class IdPasses {
                        uint32_t words) const;
 
   private:
+    void createCompose(const vk::ShaderCompiler& compiler, const DiskPipelineCache& cache);
     void dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
                          const PartSetQuery& query, VkDeviceAddress result, uint32_t words,
                          const ComputePipeline& pass) const;
     void bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
                     const ComputePipeline& pass) const;
+    void compose(VkCommandBuffer cmd, const SceneTargets& targets,
+                 const gpu::ComposePush& push) const;
     void transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const;
 
     vk::Device& device_;
     vk::Handle<VkDescriptorSetLayout> images_;  // pushed per frame: IDs, colour
     vk::Handle<VkDescriptorSetLayout> samples_; // pushed per frame: the multisampled IDs
-    ComputePipeline edges_, partSet_;
+    // Pushed per frame: IDs, composed colour, shaded colour, depth (read with texelFetch).
+    vk::Handle<VkDescriptorSetLayout> composeImages_;
+    vk::Handle<VkSampler> depthSampler_;
+    ComputePipeline compose_[2]; // depth single-sampled, multisampled
+    ComputePipeline partSet_;
     ComputePipeline visibleParts_[2]; // culling's: of the resolved IDs, of every sample
 };
 

@@ -75,6 +75,7 @@ void Renderer::configure(const scene::Scene& scene, const RenderSettings& settin
 // Everything new is built (and its uploads submitted, in one batch) before anything is
 // replaced, so a throw leaves the previous configuration whole.
 void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene) {
+    ++changes_;
     const auto start = Clock::now();
     PipelineKey wanted = settings.pipeline;
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
@@ -150,6 +151,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
 
 void Renderer::reloadShaders() {
     if (!pipeline_) return; // nothing configured yet
+    ++changes_;
     const PipelineKey key = pipeline_->key;
     pipelines_.clear();
     const DiskPipelineCache& cache = pipelines_.driverCache();
@@ -181,6 +183,7 @@ void Renderer::setHidden(const scene::PartSet& hidden) {
     if (!sceneGpu_ || hidden.partCount() != partCount_)
         throw vk::Error("Renderer::setHidden: not a set over the current scene's parts");
     ++hiddenVersion_;
+    ++changes_;
     auto pipeline = pipeline_;
     if (hidden.empty() != hiddenSet_.empty()) {
         PipelineKey key = pipeline_->key;
@@ -242,6 +245,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
                                                             animator_, idPasses_, culler_,
                                                             selected_, hidden_, visible_, target})
         slot.keep(used);
+    slot.scenePass = true;
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
     FrameCulling culling = planFrame(params, targets);
@@ -260,6 +264,16 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(),
                         StampIdPasses);
     recordPickCopies(cmd, slot);
+}
+
+void Renderer::recordComposition(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& target,
+                                 const FrameParams& params) const {
+    if (!sceneGpu_) throw vk::Error("Renderer::recordComposition before setScene");
+    for (const std::shared_ptr<const void>& used :
+         std::initializer_list<std::shared_ptr<const void>>{idPasses_, selected_, target})
+        slot.keep(used);
+    vk::CmdLabel label(device_.debug(), slot.cmd, "composition");
+    recordIdPasses(slot.cmd, slot, *target, params);
 }
 
 // Culling, the scene pass (whole, or its two halves around the depth pyramid), and what

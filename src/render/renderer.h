@@ -33,9 +33,10 @@ struct FrameParams {
     // Orthographic: the unit direction toward the viewer, the same at every point; none in
     // perspective, where it runs from each point to the eye (FrameData::eyePosition).
     std::optional<glm::vec3> orthoToViewer;
-    float time = 0.0f; // seconds; drives the blink of the hovered part
-    // The pixel (top-left origin) whose nearest part this frame picks; the result reaches
-    // FrameSlots::latestPick() and, on the GPU, the next frame's hover highlight.
+    float time = 0.0f; // seconds; drives the blink of the hovered part (render/blink.h)
+    // The pixel (top-left origin) whose nearest part this frame picks, and hovers: the scene
+    // pass's pick reaches FrameSlots::latestPick(), the composition's read of the ID image
+    // FrameSlots::latestHover(), and the part there is highlighted in this frame's picture.
     std::optional<glm::uvec2> pickPixel;
     // Rectangles whose unique parts this frame collects from its ID image (box selection,
     // the visible parts); the result reaches FrameSlots::latestPartSets().
@@ -102,7 +103,17 @@ class Renderer {
     void record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& targets,
                 const FrameParams& params) const;
 
+    // Composes the picture again from the images the last scene pass left in `targets`
+    // (recorded before in submission order, with the settings drawn then): the hovered part
+    // at params.pickPixel, the selection and edges as they are now, and params.partSets. No
+    // scene pass, pick, culling or timestamps: what a viewer at rest records.
+    void recordComposition(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& targets,
+                           const FrameParams& params) const;
+
     const RenderSettings& settings() const { return settings_; }
+    // Counts the calls that may change what the scene pass draws beyond settings(): a scene
+    // set, a configuration applied, hidden parts, shaders reloaded (app/viewer/pacer.h).
+    uint64_t changes() const { return changes_; }
     const RenderStats& stats() const { return stats_; }
     const SwitchReport& lastSwitch() const { return lastSwitch_; }
     size_t cachedPipelines() const { return pipelines_.size(); }
@@ -174,8 +185,9 @@ class Renderer {
     // occlusion culling draws first.
     std::shared_ptr<const vk::Buffer> selected_, hidden_, visible_;
     scene::PartSet hiddenSet_;
-    uint64_t hiddenVersion_ = 0;        // counts setHidden() calls: culling asks whether it changed
-    std::vector<uint8_t> objectHidden_; // per object: all its parts are hidden
+    uint64_t hiddenVersion_ = 0; // counts setHidden() calls: culling asks whether it changed
+    uint64_t changes_ = 0;
+    std::vector<uint8_t> objectHidden_;                      // per object: all its parts are hidden
     std::vector<std::pair<uint32_t, uint32_t>> objectParts_; // per object: first ID, count
     uint32_t partCount_ = 0;
     RenderStats stats_;

@@ -91,9 +91,10 @@ vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part) co
                                                         colorAttachment(idFormat, samples_),
                                                         colorAttachment(depthFormat_, samples_)};
     VkAttachmentDescription& depth = attachments[2];
-    depth.storeOp = first ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    // Depth is kept after every part: the pyramid reads it between the halves, and the
+    // composition reads it at the hovered pixel in every frame until the next scene pass.
     depth.initialLayout = second ? sampledDepth : VK_IMAGE_LAYOUT_UNDEFINED;
-    depth.finalLayout = first ? sampledDepth : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    depth.finalLayout = sampledDepth;
     const bool resolve = msaa && !first;
     std::array<VkAttachmentReference, 2> resolveRefs = {
         VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
@@ -184,19 +185,24 @@ glm::vec2 ScenePass::sampleZero() const {
 
 SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent)
     : pass_(pass), extent_(extent) {
-    // Storage: the passes over the ID image read the IDs and draw edges into the colour.
+    // Storage: the passes over the ID image read the IDs and the shaded colour, and compose
+    // the picture into `color_`, which the pass never touches.
     const VkImageUsageFlags readable = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
-    color_ = vk::Image(device, extent, ScenePass::colorFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
-                       "scene colour");
+    shaded_ = vk::Image(device, extent, ScenePass::colorFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
+                        "scene colour, shaded");
+    color_ = vk::Image(device, extent, ScenePass::colorFormat,
+                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+                       VK_IMAGE_ASPECT_COLOR_BIT, "scene colour, composed");
     ids_ = vk::Image(device, extent, ScenePass::idFormat, readable, VK_IMAGE_ASPECT_COLOR_BIT,
                      "scene part IDs");
     const VkSampleCountFlagBits samples = pass.samples();
-    // Sampled: the depth pyramid of occlusion culling reads it.
+    // Sampled: the depth pyramid of occlusion culling reads it, and so does the composition
+    // at the hovered pixel.
     depth_ = vk::Image(device, extent, pass.depthFormat(),
                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                        VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
-    std::vector<VkImageView> views = {color_.view(), ids_.view(), depth_.view()};
+    std::vector<VkImageView> views = {shaded_.view(), ids_.view(), depth_.view()};
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
         // Rendered to and resolved within the pass; culling also reads every sample's ID.
         const VkImageUsageFlags inPass = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
@@ -204,7 +210,7 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
                              VK_IMAGE_ASPECT_COLOR_BIT, "scene colour (MSAA)", samples);
         msIds_ = vk::Image(device, extent, ScenePass::idFormat, inPass | VK_IMAGE_USAGE_SAMPLED_BIT,
                            VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs (MSAA)", samples);
-        views = {msColor_.view(), msIds_.view(), depth_.view(), color_.view(), ids_.view()};
+        views = {msColor_.view(), msIds_.view(), depth_.view(), shaded_.view(), ids_.view()};
     }
     auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
     info.renderPass = pass.handle();

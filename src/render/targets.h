@@ -53,8 +53,9 @@ class ScenePass {
     std::array<vk::Handle<VkRenderPass>, 3> passes_; // by PassPart
 };
 
-// After the pass, the single-sample colour and ID images are in TRANSFER_SRC_OPTIMAL layout.
-// The pass must outlive the targets.
+// After the pass, the single-sample shaded colour and ID images are in TRANSFER_SRC_OPTIMAL
+// layout and depth in DEPTH_STENCIL_READ_ONLY_OPTIMAL; after the composition (id_passes.h) the
+// composed colour is in TRANSFER_SRC_OPTIMAL. The pass must outlive the targets.
 class SceneTargets {
   public:
     SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D extent);
@@ -64,7 +65,12 @@ class SceneTargets {
     VkFramebuffer framebuffer(PassPart part = PassPart::Whole) const {
         return part == PassPart::First ? firstFramebuffer_.get() : framebuffer_.get();
     }
+    // The picture shown: the shaded colour with the highlights, edges and outlines composed
+    // over it (id_passes.h). Headless readbacks and the window read this one.
     const vk::Image& color() const { return color_; }
+    // What the scene pass shaded, untouched by the composition, so that a new composition
+    // (a hover, a blink, a selection) needs no scene pass.
+    const vk::Image& shaded() const { return shaded_; }
     const vk::Image& ids() const { return ids_; }
     // With MSAA, the multisampled IDs: the second half of a split pass keeps them, in
     // SHADER_READ_ONLY_OPTIMAL, for culling's visible-part pass to read every sample.
@@ -80,8 +86,8 @@ class SceneTargets {
   private:
     const ScenePass& pass_;
     VkExtent2D extent_;
-    vk::Image color_, ids_, depth_;
-    vk::Image msColor_, msIds_; // multisampled attachments, resolved into color_ and ids_
+    vk::Image shaded_, color_, ids_, depth_;
+    vk::Image msColor_, msIds_; // multisampled attachments, resolved into shaded_ and ids_
     vk::Handle<VkFramebuffer> framebuffer_, firstFramebuffer_;
     gpu::PyramidHeader pyramidHeader_{};
     // Shared with its upload, which may still be writing it when the targets go.

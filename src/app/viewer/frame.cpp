@@ -32,19 +32,30 @@ double mean(const Values& values, size_t last) {
 
 } // namespace
 
-void Viewer::drawFrame(double seconds) {
+void Viewer::drawFrame(const FrameWants& wants) {
+    const double seconds = wants.now;
     drawPanel();
     applySettings();
     render::FrameSlot& slot = slots_.begin(frameNumber_);
-    if (input_.readPick(slots_.latestPick())) selectionChanged();
-    if (input_.readPartSets(slots_.latestPartSets())) selectionChanged();
+    // The hovered part comes from the ID image of each frame, scene pass or not.
+    if (input_.readPick(slots_.latestHover())) selectionChanged();
+    if (const auto hovered = input_.selection().hovered(); hovered != saidHovered_) {
+        saidHovered_ = hovered;
+        events_.say(hovered ? "hovered: part " + std::to_string(*hovered) : "hovered: none");
+    }
+    if (input_.readPartSets(slots_.latestPartSets(), scene_.targets()->extent()))
+        selectionChanged();
     if (input_.visibleParts() != saidVisible_) {
         saidVisible_ = input_.visibleParts();
         events_.say("visible parts: " + std::to_string(saidVisible_));
     }
     const auto image = presenter_.acquire(frameNumber_);
     if (!image) return; // out of date: the next frame makes a new swapchain first
-    recordScene(slot, frameParams(seconds));
+    render::FrameParams params = frameParams(seconds);
+    const SceneKey key = sceneKey(params);
+    const bool scenePass = pacer_.needsScene(key, wants.continuous);
+    recordScene(slot, params, scenePass);
+    pacer_.drew(wants, scenePass, key);
     std::string screenshot = std::exchange(screenshotPath_, {});
     if (!screenshot.empty() && !presenter_.canCapture()) {
         scene_.fail("screenshot: this window's images cannot be copied from");
@@ -167,8 +178,7 @@ render::FrameParams Viewer::frameParams(double seconds) {
     params.time = float(seconds);
     viewProj_ = params.viewProj;
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
-    // Every frame counts the visible parts for the panel; a released box asks for its parts.
-    params.partSets = {{{0, 0}, {extent.width - 1, extent.height - 1}}};
+    // A released box asks for its parts (recordScene adds the visible parts' count).
     if (const auto box = input_.boxQuery(extent)) params.partSets.push_back(*box);
     showParts();
     params.explode = animate ? scene::explodeLoop(float(seconds)) : 0.0f;
@@ -196,7 +206,16 @@ void Viewer::showParts() {
     }
 }
 
-void Viewer::recordScene(render::FrameSlot& slot, const render::FrameParams& params) {
+// The scene pass, or the picture composed again over the images the last one left. Only a
+// scene pass can change which parts show, so only it counts them for the panel.
+void Viewer::recordScene(render::FrameSlot& slot, render::FrameParams params, bool scenePass) {
+    if (!scenePass) {
+        scene_.renderer().recordComposition(slot, scene_.targets(), params);
+        return;
+    }
+    const VkExtent2D extent = scene_.targets()->extent();
+    params.partSets.insert(params.partSets.begin(),
+                           render::PartSetQuery{{0, 0}, {extent.width - 1, extent.height - 1}});
     const auto start = Clock::now();
     scene_.renderer().record(slot, scene_.targets(), params);
     cpuRecordMs_.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
@@ -274,19 +293,27 @@ PanelInfo Viewer::panelInfo() const {
     return info;
 }
 
-// A few times a second for fps and GPU time; at once when what it names changes.
+// A few times a second for fps and GPU time; at once when what it names changes. With vsync
+// on the viewer draws on change, so a frame rate would only count changes: the title gives
+// the scene pass's time alone.
 void Viewer::updateTitle(double seconds, bool now) {
     const render::PipelineKey& key = scene_.renderer().settings().pipeline;
+    const bool continuous = !presenter_.vsync();
     const std::string what = std::string(key.technique->name) + " + " + key.mode->name +
-                             " - vsync " + presenter_.vsyncState();
+                             " - vsync " + presenter_.vsyncState() +
+                             (continuous ? ", continuous" : ", draws on change");
     now = now || title_.find("idview - " + what + " - ") != 0;
     if (!now && seconds - titleTime_ < 0.25) return;
     if (seconds > titleTime_) fps_ = double(frameNumber_ - titleFrame_) / (seconds - titleTime_);
     titleTime_ = seconds;
     titleFrame_ = frameNumber_;
     char text[256];
-    std::snprintf(text, sizeof text, "idview - %s - %.0f fps - GPU %.2f ms", what.c_str(), fps_,
-                  mean(slots_.gpuMilliseconds(), 30));
+    const double gpuMs = mean(slots_.gpuMilliseconds(), 30);
+    if (continuous)
+        std::snprintf(text, sizeof text, "idview - %s - %.0f fps - GPU %.2f ms", what.c_str(), fps_,
+                      gpuMs);
+    else
+        std::snprintf(text, sizeof text, "idview - %s - GPU %.2f ms", what.c_str(), gpuMs);
     if (title_ == text) return;
     title_ = text;
     window_.setTitle(title_);

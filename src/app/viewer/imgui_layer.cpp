@@ -71,6 +71,8 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, const vk::Instance& instance, vk::Dev
     ImGui::CreateContext();
     backends_.context = true;
     ImGui::GetIO().IniFilename = nullptr; // no imgui.ini left in the working directory
+    // A blinking text cursor would need frames while the viewer rests.
+    ImGui::GetIO().ConfigInputTextCursorBlink = false;
     ImGui::StyleColorsDark();
     // The viewer forwards GLFW's events itself (and injects scripted ones the same way).
     backends_.glfw = ImGui_ImplGlfw_InitForVulkan(window, false);

@@ -275,14 +275,21 @@ std::optional<render::PartSetQuery> Input::boxQuery(VkExtent2D extent) const {
     return render::spanning(pixel(box_->a), pixel(box_->b));
 }
 
-bool Input::readPartSets(const std::optional<render::PartSetReading>& reading) {
-    if (!reading || reading->frame <= partSetsFrame_) return false;
-    partSetsFrame_ = reading->frame;
-    if (!reading->counts.empty()) visibleParts_ = reading->counts.front();
-    if (!box_ || reading->frame < box_->since || reading->sets.size() < 2) return false;
-    selection_.select(reading->sets[1], box_->mode);
-    box_.reset();
-    return true;
+bool Input::readPartSets(const std::optional<render::PartSetReading>& reading, VkExtent2D extent) {
+    if (!reading || reading->frame < partSetsFrom_) return false;
+    partSetsFrom_ = reading->frame + 1;
+    const render::PartSetQuery whole{{0, 0}, {extent.width - 1, extent.height - 1}};
+    const auto box = boxQuery(extent);
+    bool changed = false;
+    for (size_t i = 0; i < reading->queries.size(); ++i) {
+        if (reading->queries[i] == whole) visibleParts_ = reading->counts[i];
+        if (box && box_ && reading->frame >= box_->since && reading->queries[i] == *box) {
+            selection_.select(reading->sets[i], box_->mode);
+            box_.reset();
+            changed = true;
+        }
+    }
+    return changed;
 }
 
 void Input::forgetParts(uint32_t partCount) {
@@ -290,21 +297,24 @@ void Input::forgetParts(uint32_t partCount) {
     pendingClick_.reset();
     pickingSince_.reset();
     box_.reset();
-    partSetsFrame_ = 0;
+    partSetsFrom_ = viewer_.nextFrame(); // earlier frames counted the old scene's parts
     visibleParts_ = 0;
 }
 
 void Input::runScript(double seconds) {
     for (const ScriptCommand& command : script_.due(seconds)) queue(command);
-    while (!steps_.empty()) {
+    scriptNow_ = seconds;
+    while (!steps_.empty() && !resting()) {
         const Step next = std::move(steps_.front());
         steps_.pop_front();
         next.run();
+        ++stepsRun_;
         if (next.endsFrame) break;
     }
 }
 
 std::optional<double> Input::wakeIn(double seconds) const {
+    if (resting()) return std::max(*restUntil_ - seconds, 0.0);
     if (!steps_.empty()) return 0.05;
     if (auto next = script_.nextTime()) return std::clamp(*next - seconds, 0.01, 1.0);
     return std::nullopt;
@@ -460,6 +470,9 @@ void Input::queue(const ScriptCommand& c) {
         break;
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
+        break;
+    case ScriptOp::Rest: // the steps after it wait, and the loop with them
+        step([this, s = v[0]] { restUntil_ = scriptNow_ + s; }, false);
         break;
     case ScriptOp::Quit:
         step([this] { viewer_.quit(); }, true);

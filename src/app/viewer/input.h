@@ -47,6 +47,11 @@ class Input {
     // an event comes.
     std::optional<double> wakeIn(double seconds) const;
     std::vector<std::string> takeDrops();
+    // Script steps run so far: scripted input counts as input for the frames it needs.
+    uint64_t stepsRun() const { return stepsRun_; }
+    // Whether something waits for frames: script steps, a click for its pick, a box for its
+    // parts.
+    bool waiting() const { return (!steps_.empty() && !resting()) || pendingClick_ || box_; }
     std::exception_ptr failure() const { return failure_; }
 
     // The cursor in window coordinates, nullopt outside the window.
@@ -61,9 +66,9 @@ class Input {
     // The released box, as scene image pixels, until its parts have arrived: each frame asks
     // for it (after the whole image, see Viewer::frameParams).
     std::optional<render::PartSetQuery> boxQuery(VkExtent2D extent) const;
-    // The visible parts (query 0) and a released box's parts (query 1) from the newest
-    // completed part sets. True when the selection changed.
-    bool readPartSets(const std::optional<render::PartSetReading>& reading);
+    // The visible parts (the query of the whole image, `extent`) and a released box's parts
+    // from the newest completed part sets. True when the selection changed.
+    bool readPartSets(const std::optional<render::PartSetReading>& reading, VkExtent2D extent);
     uint32_t visibleParts() const { return visibleParts_; }
     // The scene changed: part IDs and picks in flight name parts of the old one.
     void forgetParts(uint32_t partCount);
@@ -108,7 +113,7 @@ class Input {
     glm::dvec2 cursor_{-1.0, -1.0};
     std::optional<Drag> drag_;
     std::optional<Box> box_;
-    uint64_t partSetsFrame_ = 0; // newest part sets read
+    uint64_t partSetsFrom_ = 0; // the first frame whose part sets are still to be read
     uint32_t visibleParts_ = 0;
     Selection selection_;
     float hoveredDepth_ = 1.0f, selectedDepth_ = 1.0f;
@@ -121,6 +126,11 @@ class Input {
     KeyQueue panelKeys_; // for ImGui, a change per key a frame (key_queue.h)
     ScriptPlayer script_;
     std::deque<Step> steps_;
+    uint64_t stepsRun_ = 0;
+    // A script's `rest`: no step runs before this time (script seconds, as runScript's).
+    std::optional<double> restUntil_;
+    double scriptNow_ = 0.0;
+    bool resting() const { return restUntil_ && scriptNow_ < *restUntil_; }
     std::exception_ptr failure_;
 };
 

@@ -53,6 +53,8 @@ class Presenter {
     VkExtent2D extent() const { return swapchain_.extent(); }
     // "on", "off", or "off (FIFO only)" where the surface offers nothing but FIFO.
     std::string vsyncState() const;
+    // What the swapchain was made with (ready()'s last `vsync`).
+    bool vsync() const { return vsync_; }
 
   private:
     Window& window_;

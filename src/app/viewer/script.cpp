@@ -56,6 +56,7 @@ const CommandSpec commandSpecs[] = {
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
     {"cancel", ScriptOp::Cancel, 0, "cancel"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
+    {"rest", ScriptOp::Rest, 1, "rest SECONDS"},
     {"quit", ScriptOp::Quit, 0, "quit"},
 };
 
@@ -157,6 +158,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (command.values[0] < 1.0 || command.values[0] > 1000.0 ||
             command.values[0] != std::floor(command.values[0]))
             fail("frames takes a whole number from 1 to 1000");
+        break;
+    case ScriptOp::Rest:
+        if (command.values[0] <= 0.0 || command.values[0] > 60.0)
+            fail("rest takes seconds, more than 0 and at most 60");
         break;
     case ScriptOp::Level:
         if (command.text != "face" && command.text != "solid" && command.text != "assembly")

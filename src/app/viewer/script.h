@@ -42,6 +42,9 @@
 //   4.7 cancel              the panel's Cancel: stop the model loading and those queued
 //   4.8 frames 5            let 5 frames pass before the next command (results of a pick
 //                           arrive a frame or two later, however slow the frames are)
+//   4.9 rest 4              leave the viewer alone for 4 seconds from when the command runs:
+//                           what follows waits, and nothing scripted asks for a frame
+//                           meanwhile (however late the command ran on a slow machine)
 //   5   quit
 //
 // Blank lines and lines starting with '#' are ignored.
@@ -86,6 +89,7 @@ enum class ScriptOp {
     Loaded,
     Cancel,
     Frames,
+    Rest,
     Quit
 };
 

@@ -150,11 +150,53 @@ void Viewer::run() {
         if (!start_) start_ = Clock::now();
         input_.runScript(elapsed());
         if (window_.closing() || input_.failure()) break;
-        drawFrame(elapsed());
+        const FrameWants wants = frameWants();
+        if (pacer_.due(wants)) {
+            drawFrame(wants);
+            rested_ = false;
+            continue;
+        }
+        rest();
+        window_.waitEvents(pacer_.rest(wants));
     }
     slots_.finish();
     if (input_.failure()) std::rethrow_exception(input_.failure());
     savePipelineCache(scene_.renderer());
+}
+
+FrameWants Viewer::frameWants() const {
+    FrameWants wants;
+    wants.now = elapsed();
+    wants.events = window_.events() + input_.stepsRun(); // scripted input counts as input
+    wants.continuous = !view_.vsync;
+    wants.busy = input_.waiting() || !screenshotPath_.empty();
+    wants.loading = loading();
+    wants.hovering = input_.selection().hovered().has_value();
+    wants.scriptWake = input_.wakeIn(wants.now);
+    return wants;
+}
+
+SceneKey Viewer::sceneKey(const render::FrameParams& params) const {
+    const render::Renderer& renderer = scene_.renderer();
+    SceneKey key;
+    key.viewProj = params.viewProj;
+    key.eye =
+        params.orthoToViewer ? glm::vec4(*params.orthoToViewer, 0.0f) : glm::vec4(params.eye, 1.0f);
+    key.explode = params.explode;
+    key.targets = scene_.targets().get();
+    key.renderer = renderer.changes();
+    key.pipeline = renderer.pipeline();
+    key.settings = renderer.settings();
+    key.settings.edges = {}; // composed over the scene pass's images
+    return key;
+}
+
+// The tests read this line to count the scene passes while nothing moves.
+void Viewer::rest() {
+    if (rested_) return;
+    rested_ = true;
+    events_.say("rest: " + std::to_string(pacer_.scenePasses()) + " scene passes, " +
+                std::to_string(pacer_.compositions()) + " compositions");
 }
 
 int runViewer(const Options& options) {

@@ -1,7 +1,8 @@
 // viewer.h - the interactive window: idview without --headless. The Viewer puts together
 // the window and presentation (window.h, presenter.h), the scene and its settings
 // (scene_state.h), the user's input (input.h) and the panel (panel.h), and runs the frames:
-// each one a short recipe of named steps (frame.cpp).
+// each one a short recipe of named steps (frame.cpp), when there is something new to show
+// (pacer.h): at rest it sleeps in the window's event wait.
 #pragma once
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include "app/viewer/input.h"
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
+#include "app/viewer/pacer.h"
 #include "app/viewer/panel.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/scene_state.h"
@@ -80,8 +82,14 @@ class Viewer {
   private:
     using Clock = std::chrono::steady_clock;
 
+    // What asks for frames now, and what the scene pass would draw with `params`.
+    FrameWants frameWants() const;
+    SceneKey sceneKey(const render::FrameParams& params) const;
+    // Before the loop sleeps: one event line with the passes drawn so far.
+    void rest();
+
     // frame.cpp: the steps of one frame.
-    void drawFrame(double seconds);
+    void drawFrame(const FrameWants& wants);
     void drawPanel();
     void act(const PanelActions& actions);
     void applySettings();
@@ -90,7 +98,7 @@ class Viewer {
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
     void showParts();
-    void recordScene(render::FrameSlot& slot, const render::FrameParams& params);
+    void recordScene(render::FrameSlot& slot, render::FrameParams params, bool scenePass);
     void saveScreenshot(const std::string& path);
     void updateTitle(double seconds, bool now);
     PanelInfo panelInfo() const;
@@ -115,6 +123,8 @@ class Viewer {
     glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
 
     // Frame timing and the title.
+    FramePacer pacer_;
+    bool rested_ = false; // the loop slept since the last frame
     uint64_t frameNumber_ = 0;
     std::optional<Clock::time_point> start_;
     std::deque<double> cpuRecordMs_;
@@ -123,7 +133,8 @@ class Viewer {
     std::string title_, screenshotPath_;
     // The selection and hidden parts last handed to the renderer.
     scene::PartSet shownSelected_, shownHidden_;
-    uint32_t saidVisible_ = UINT32_MAX; // the visible part count last told
+    uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
+    std::optional<uint32_t> saidHovered_; // the hovered part last told
 };
 
 } // namespace app

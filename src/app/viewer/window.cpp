@@ -14,6 +14,9 @@ namespace app {
 namespace {
 
 std::string glfwProblem = "unknown GLFW error";
+// Events the window has had (input, focus, exposure, resize): the viewer draws a frame after
+// each, so that the panel and the picture follow, and otherwise rests (Window::events).
+uint64_t windowEvents = 0;
 
 Input& inputOf(GLFWwindow* window) {
     return *static_cast<Input*>(glfwGetWindowUserPointer(window));
@@ -22,6 +25,7 @@ Input& inputOf(GLFWwindow* window) {
 // Exceptions must not cross GLFW's C frames: keep them for the loop to rethrow.
 template <typename Fn>
 void guarded(GLFWwindow* window, Fn&& handler) {
+    ++windowEvents;
     try {
         handler(inputOf(window));
     } catch (...) {
@@ -88,9 +92,24 @@ void Window::listen(Input& input) {
             for (int i = 0; i < count; ++i) in.onDrop(paths[i]);
         });
     });
-    glfwSetCharCallback(w, ImGui_ImplGlfw_CharCallback);
-    glfwSetWindowFocusCallback(w, ImGui_ImplGlfw_WindowFocusCallback);
-    glfwSetCursorEnterCallback(w, ImGui_ImplGlfw_CursorEnterCallback);
+    glfwSetCharCallback(w, [](GLFWwindow* w, unsigned int c) {
+        ++windowEvents;
+        ImGui_ImplGlfw_CharCallback(w, c);
+    });
+    glfwSetWindowFocusCallback(w, [](GLFWwindow* w, int focused) {
+        ++windowEvents;
+        ImGui_ImplGlfw_WindowFocusCallback(w, focused);
+    });
+    glfwSetCursorEnterCallback(w, [](GLFWwindow* w, int entered) {
+        ++windowEvents;
+        ImGui_ImplGlfw_CursorEnterCallback(w, entered);
+    });
+    glfwSetWindowRefreshCallback(w, [](GLFWwindow*) { ++windowEvents; });
+    glfwSetFramebufferSizeCallback(w, [](GLFWwindow*, int, int) { ++windowEvents; });
+}
+
+uint64_t Window::events() const {
+    return windowEvents;
 }
 
 void Window::stopListening() {
@@ -103,6 +122,8 @@ void Window::stopListening() {
     glfwSetCharCallback(window_, nullptr);
     glfwSetWindowFocusCallback(window_, nullptr);
     glfwSetCursorEnterCallback(window_, nullptr);
+    glfwSetWindowRefreshCallback(window_, nullptr);
+    glfwSetFramebufferSizeCallback(window_, nullptr);
 }
 
 VkExtent2D Window::framebufferSize() const {

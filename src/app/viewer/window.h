@@ -38,6 +38,8 @@ class Window {
     bool closing() const;
     void close();
     void setTitle(const std::string& title);
+    // How many events the window has had since it opened (input, focus, exposure, resize).
+    uint64_t events() const;
     void pollEvents();
     // Sleeps until an event comes, or `timeout` seconds at most.
     void waitEvents(std::optional<double> timeout);

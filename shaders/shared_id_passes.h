@@ -1,0 +1,60 @@
+// shared_id_passes.h - the passes over the resolved ID image, recorded after the scene pass
+// (render/id_passes.h); part of shared.h's family, included by it inside namespace gpu. Both
+// run in 16x16 workgroups, one invocation per pixel.
+#ifndef IDVIEW_SHARED_ID_PASSES_H
+#define IDVIEW_SHARED_ID_PASSES_H
+
+IDV_CONST ID_PASS_TILE = 16;
+// compose.comp writes the picture shown from the scene pass's shaded colour, its ID image
+// and its depth, which the pass leaves as they are:
+// - the hovered part (the ID at hoverPixel) is turned towards its inverted colour by `blink`
+//   (0: not at all), then the selected parts are tinted;
+// - edges (EDGE_LINES): a pixel is drawn in a line colour when the square window of `width`
+//   pixels starting width/2 pixels up-left of it and ending (width+1)/2 down-right holds two
+//   different IDs (the background is an ID too). The selection's outline (EDGE_SELECTED)
+//   takes width + 2 and a window holding selected and unselected IDs; the hovered part's
+//   (EDGE_HOVERED) width + 1. The tile it reads holds the largest window's margin:
+//   EDGE_WIDTH_MAX + 2 wide;
+// - the part and depth at hoverPixel go to hoverAddress, encoded as the scene pass's pick
+//   (PickData), so a viewer at rest learns what the cursor is over without a scene pass.
+IDV_CONST EDGE_WIDTH_MAX = 3;
+IDV_CONST EDGE_LINES = 1u;    // ComposePush::flags: draw part edges
+IDV_CONST EDGE_SELECTED = 2u; // outline the selected parts
+IDV_CONST EDGE_HOVERED = 4u;  // outline the hovered part
+struct ComposePush {
+    vec4 lineColor;           // display-encoded RGBA written where an edge is (the colour image's)
+    vec4 selectColor;         // the selection's outline
+    vec4 hoverColor;          // the hovered part's outline
+    uint64_t selectedAddress; // bitset, or 0
+    uint64_t hoverAddress;    // uint64_t written: the part and depth at hoverPixel
+    uvec2 extent;
+    uvec2 hoverPixel; // x NO_PICK (or outside the image): nothing hovered
+    uint width;       // 1 to EDGE_WIDTH_MAX
+    uint flags;
+    float blink; // the hovered part's highlight weight, 0..1 (render/blink.h)
+    uint unused;
+};
+
+// part_set.comp: every unique part ID in an inclusive pixel rectangle of the ID image goes
+// into a bitset, and each bit set for the first time counts once: PartSetResult::count.
+struct PartSetPush {
+    uint64_t resultAddress; // PartSetResult
+    uvec2 rectMin;          // inclusive, pixels
+    uvec2 rectMax;          // inclusive
+    uint words;             // bitset words: ceil(unique parts / 32)
+    uint samples;           // IDV_PART_SET_SAMPLES: samples per pixel of the image
+};
+struct PartSetResult {
+    uint count;
+    uint unused[3];
+    // followed by `words` uints of bitset
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(ComposePush) == 96 && offsetof(ComposePush, selectedAddress) == 48);
+static_assert(offsetof(ComposePush, blink) == 88);
+static_assert(sizeof(PartSetPush) == 32);
+static_assert(sizeof(PartSetResult) == 16);
+#endif
+
+#endif
