@@ -104,17 +104,23 @@ uint64_t hoverValue(uint id) {
 
 void main() {
     const bool outline = (compose.flags & EDGE_SELECTED) != 0u;
+    // Without lines no pixel looks at its neighbours, so the tile is not loaded: a viewer at
+    // rest composes the blink of the hovered part a few times a second, on a CPU device too.
+    const bool lines = compose.flags != 0u;
     const ivec2 origin = ivec2(gl_WorkGroupID.xy * ID_PASS_TILE) - ivec2(LO);
     const ivec2 last = ivec2(compose.extent) - 1;
-    // Outside the image the border pixel repeats: the image's edge is no part edge.
-    for (uint i = gl_LocalInvocationIndex; i < uint(SPAN * SPAN);
-         i += ID_PASS_TILE * ID_PASS_TILE) {
-        const ivec2 p = clamp(origin + ivec2(int(i) % SPAN, int(i) / SPAN), ivec2(0), last);
-        const uint id = imageLoad(ids, p).r;
-        tileIds[i] = id;
-        tileSelected[i] = outline && isSelected(id);
+    // Outside the image the border pixel repeats: the image's edge is no part edge. (The
+    // flags are the same for the whole dispatch, so the barrier stays in uniform flow.)
+    if (lines) {
+        for (uint i = gl_LocalInvocationIndex; i < uint(SPAN * SPAN);
+             i += ID_PASS_TILE * ID_PASS_TILE) {
+            const ivec2 p = clamp(origin + ivec2(int(i) % SPAN, int(i) / SPAN), ivec2(0), last);
+            const uint id = imageLoad(ids, p).r;
+            tileIds[i] = id;
+            tileSelected[i] = outline && isSelected(id);
+        }
+        barrier();
     }
-    barrier();
     const uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, compose.extent))) return;
 
@@ -124,11 +130,15 @@ void main() {
         HoverRef(compose.hoverAddress).value = hoverValue(hovered);
 
     const ivec2 p = ivec2(gl_LocalInvocationID.xy) + ivec2(LO);
-    const uint id = tileIds[at(p)];
+    const uint id = lines ? tileIds[at(p)] : imageLoad(ids, ivec2(pixel)).r;
     vec3 rgb = imageLoad(shaded, ivec2(pixel)).rgb;
     if (id == hovered && id != BACKGROUND_ID) rgb = highlightHovered(rgb, compose.blink);
     if (isSelected(id)) rgb = highlightSelected(rgb);
     vec4 result = vec4(rgb, 1.0);
+    if (!lines) {
+        imageStore(color, ivec2(pixel), result);
+        return;
+    }
     // The selection's outline first, then the hovered part's, then plain edges.
     const int w = int(clamp(compose.width, 1u, EDGE_WIDTH_MAX));
     const uint outlined = (compose.flags & EDGE_HOVERED) != 0u ? hovered : BACKGROUND_ID;
