@@ -314,6 +314,10 @@ void Input::waitForLoads() {
     if (viewer_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
 }
 
+void Input::waitForPipelines() {
+    if (viewer_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
+}
+
 void Input::queue(const ScriptCommand& c) {
     const auto& v = c.values;
     // Settings change in place, as the panel's widgets change them; the frame applies them.
@@ -460,6 +464,12 @@ void Input::queue(const ScriptCommand& c) {
         break;
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
+        break;
+    case ScriptOp::Pipeline:
+        if (c.text == "ready")
+            step([this] { waitForPipelines(); }, true);
+        else
+            step([this, hold = c.text == "hold"] { viewer_.holdPipelineBuilds(hold); }, true);
         break;
     case ScriptOp::Quit:
         step([this] { viewer_.quit(); }, true);

@@ -42,6 +42,10 @@
 //   4.7 cancel              the panel's Cancel: stop the model loading and those queued
 //   4.8 frames 5            let 5 frames pass before the next command (results of a pick
 //                           arrive a frame or two later, however slow the frames are)
+//   4.9 pipeline hold       pipeline builds wait on their worker until `pipeline release`, so
+//                           a test holds "a build is pending" as long as it likes; `pipeline
+//                           ready` waits until none is being built or awaited (never while
+//                           held)
 //   5   quit
 //
 // Blank lines and lines starting with '#' are ignored.
@@ -86,6 +90,7 @@ enum class ScriptOp {
     Loaded,
     Cancel,
     Frames,
+    Pipeline,
     Quit
 };
 
