@@ -74,6 +74,10 @@ class PipelineCache {
     std::optional<PipelineBuild> progress(const PipelineKey& key) const;
     // Whether any worker's result is not collected yet.
     bool building() const { return !builds_.empty(); }
+    // Moves the finished builds' pipelines into the list and their errors aside (for the next
+    // request of their key). get() and request() do it first; an owner that asks for nothing
+    // calls it to take in builds nobody waits for any more.
+    void collect();
     // Called on the worker once each build is done (successful or not) and its result can be
     // collected: the viewer passes glfwPostEmptyEvent to wake its event wait. Must be
     // thread-safe; set it before asking for builds.
@@ -100,8 +104,6 @@ class PipelineCache {
                                           VkSampleCountFlagBits samples) const;
     std::shared_ptr<const Pipeline> find(const PipelineKey& key) const;
     void checkPass(const PipelineKey& key, const ScenePass& pass) const;
-    // Moves the finished builds' pipelines into the list and their errors into failed_.
-    void collect();
 
     struct Gate { // holdBuilds()
         std::mutex mutex;

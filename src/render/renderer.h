@@ -91,9 +91,11 @@ class Renderer {
     // The same for setHidden(hidden), which switches to the variant that discards hidden parts
     // (or back) when `hidden` is the first set hidden (or the last shown).
     std::optional<PipelineBuild> prepareHidden(const scene::PartSet& hidden);
-    // Whether a pipeline is being built on a worker (or done and not collected by the next
-    // prepare or configure): a loop that waits for events keeps polling while it is.
+    // Whether a pipeline is being built on a worker (or done and not collected yet by
+    // prepare, configure or collectBuilds).
     bool building() const { return pipelines_.building(); }
+    // Takes in the builds done (PipelineCache::collect), those nobody waits for any more too.
+    void collectBuilds() { pipelines_.collect(); }
     // Called on the worker when a build is done (glfwPostEmptyEvent wakes the viewer's wait).
     void onPipelineBuilt(std::function<void()> wake) { pipelines_.onBuilt(std::move(wake)); }
     // For tests: builds started while held wait until released (PipelineCache::holdBuilds).
@@ -126,6 +128,8 @@ class Renderer {
     // The driver's pipeline cache: its status and save() at exit.
     const DiskPipelineCache& driverCache() const { return pipelines_.driverCache(); }
     VkPipeline pipeline() const { return pipeline_ ? pipeline_->handle.get() : VK_NULL_HANDLE; }
+    // describePipeline() of the pipeline drawn ("" before setScene).
+    std::string pipelineName() const { return pipeline_ ? describePipeline(pipeline_->key) : ""; }
 
     // What culling the drawn configuration gets (cullPlan of its technique and mode).
     CullPlan cullingPlan() const;

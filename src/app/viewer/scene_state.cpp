@@ -41,6 +41,7 @@ SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettin
         else
             wanted = drawn;
     }
+    renderer_.collectBuilds();
     if (render != renderer_.settings())
         configure(render);
     else
@@ -241,7 +242,11 @@ void SceneState::waitFor(std::optional<Wait>& wait, const render::PipelineBuild&
 }
 
 void SceneState::arrived(std::optional<Wait>& wait) {
-    if (!wait) return;
+    // Said only when what was awaited is drawn, not when the wish moved to a pipeline built.
+    if (!wait || wait->pipeline != renderer_.pipelineName()) {
+        wait.reset();
+        return;
+    }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wait->start).count();
     char text[32];

@@ -69,9 +69,10 @@ class SceneState {
         std::string then;     // what changes once it is ready
     };
     std::optional<Building> building() const;
-    // Whether a pipeline is awaited or any build's result is still to be collected: the
-    // viewer's loop keeps polling while it is (Renderer::onPipelineBuilt wakes it).
-    bool pipelinePending() const { return settingsWait_ || hiddenWait_ || renderer_.building(); }
+    // Whether the settings or hidden parts wait for a pipeline: the viewer's loop keeps
+    // polling while they do (Renderer::onPipelineBuilt wakes it when a build is done). Builds
+    // no longer wanted finish into the cache unawaited (apply() collects them).
+    bool pipelinePending() const { return settingsWait_ || hiddenWait_; }
 
     const scene::Scene& scene() const { return copies_ ? *copies_ : base_.scene; }
     const LoadedScene& loaded() const { return base_; }
