@@ -25,7 +25,7 @@ t=0.5
     at screenshot "$work/after.png"
     at quit
 } >"$work/builds.txt"
-session builds
+session builds --no-saved-settings
 out=$work/builds.out
 
 # The event lines in order, the screenshots among them.
@@ -52,6 +52,29 @@ titles=$(sed -n 's/^idview: title: idview - \([^ ]*\) + .*/\1/p' "$out" | uniq |
 [[ $titles == "vertex-fs|tri-fs" ]] && echo "ok   the switch landed: $titles" ||
     fail "titles: '$titles', expected vertex-fs|tri-fs"
 grep -q 'validation' "$work/builds.err" && fail "validation: $(grep -m3 validation "$work/builds.err")"
+
+# Switching again while the first build is held: the newest wish wins, the other build
+# finishes into the cache unawaited (and is never drawn), and nothing is left waiting.
+t=0.5
+{
+    at pipeline hold
+    at renderer tri-fs
+    at frames 2
+    at renderer tri-gs
+    at frames 2
+    at pipeline release
+    at pipeline ready
+    at frames 3
+    at pipeline ready
+    at quit
+} >"$work/newest.txt"
+session newest --no-saved-settings
+titles=$(sed -n 's/^idview: title: idview - \([^ ]*\) + .*/\1/p' "$work/newest.out" | uniq |
+    paste -sd'|' -)
+ready=$(sed -n 's/^idview: pipeline: ready \([^ ]*\) .*/\1/p' "$work/newest.out" | paste -sd'|' -)
+[[ $titles == "vertex-fs|tri-gs" && $ready == tri-gs ]] &&
+    echo "ok   the newest wish won: $titles" ||
+    fail "titles '$titles', ready '$ready', expected vertex-fs|tri-gs and tri-gs"
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
 echo "viewer builds test passed"
