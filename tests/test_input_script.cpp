@@ -191,6 +191,19 @@ TEST(InputScript, SortAndDefaults) {
     EXPECT_THROW(app::parseScript("1 defaults now\n", "s.txt"), app::ScriptError);
 }
 
+TEST(InputScript, PipelineHoldsReleasesAndWaits) {
+    const auto commands =
+        app::parseScript("1 pipeline hold\n2 pipeline release\n3 pipeline ready\n", "s.txt");
+    ASSERT_EQ(commands.size(), 3u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Pipeline);
+    EXPECT_EQ(commands[0].text, "hold");
+    EXPECT_EQ(commands[1].text, "release");
+    EXPECT_EQ(commands[2].text, "ready");
+    EXPECT_EQ(errorOf("1 pipeline now\n"),
+              "s.txt:1: 'pipeline' takes hold, release or ready, not 'now'");
+    EXPECT_EQ(errorOf("1 pipeline\n"), "s.txt:1: 'pipeline' takes: pipeline hold|release|ready");
+}
+
 TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     for (const scene::StandardView& view : scene::standardViews()) {
         const auto commands = app::parseScript("1 view " + std::string(view.name) + "\n", "s.txt");

@@ -46,18 +46,21 @@ visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=s
     at box 380 300 560 440 add
     at frames 6
     at key H
+    at pipeline ready # the hiding pipeline variant, built on a worker
     at frames 8
     at key shift+H
     at frames 8
     at box 420 150 600 330
     at frames 6
     at key I
+    at pipeline ready
     at frames 8
     at key shift+H
     at object base plate
     at frames 4
     for r in $("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}'); do
         at renderer "$r"
+        at pipeline ready
         at key ESC
         at box 420 150 600 330
         at frames 6

@@ -27,6 +27,7 @@ t=0.5
 {
     at frames 3
     at defaults
+    at pipeline ready # the default renderer's pipeline, built on a worker
     at frames 3
     at quit
 } >"$work/kept2.txt"

@@ -33,6 +33,7 @@ done
     at move 420 230
     for r in $renderers; do
         at renderer "$r"
+        at pipeline ready # built on a worker: drawn (and in the title) once it is done
         for m in $modes; do at mode "$m"; done
     done
     at renderer "${renderers%%[[:space:]]*}" # the first listed, and the first mode
@@ -64,6 +65,7 @@ done
     at frames 3
     at screenshot "$work/uncut.png"
     at section z,0,flip # a plane through the plates, as the panel's Section sets one
+    at pipeline ready   # its pipeline variant, built on a worker
     at frames 3
     at screenshot "$work/cut.png"
     at section off

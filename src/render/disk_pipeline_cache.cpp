@@ -43,11 +43,16 @@ std::string DiskPipelineCache::save() const {
     if (file_.empty()) return {};
     const VkDevice device = device_.handle();
     size_t size = 0;
-    VkResult result = vkGetPipelineCacheData(device, cache_.get(), &size, nullptr);
-    std::string blob(size, '\0');
-    // No pipeline is created in between, so the second call fills exactly `size` bytes.
-    if (result == VK_SUCCESS)
-        result = vkGetPipelineCacheData(device, cache_.get(), &size, blob.data());
+    std::string blob;
+    VkResult result = VK_INCOMPLETE;
+    // A pipeline built on a worker between the two calls can grow the data (VK_INCOMPLETE:
+    // `size` bytes were written, not all): ask again.
+    while (result == VK_INCOMPLETE) {
+        result = vkGetPipelineCacheData(device, cache_.get(), &size, nullptr);
+        blob.assign(size, '\0');
+        if (result == VK_SUCCESS)
+            result = vkGetPipelineCacheData(device, cache_.get(), &size, blob.data());
+    }
     if (result != VK_SUCCESS)
         return std::string("vkGetPipelineCacheData failed: ") + vk::resultName(result);
     blob.resize(size);

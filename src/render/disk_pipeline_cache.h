@@ -5,6 +5,7 @@
 // starts empty) and replaced by the next save. `--no-cache` keeps it in memory only.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -47,7 +48,8 @@ class DiskPipelineCache {
     std::filesystem::path file_;
     std::string status_;
     vk::Handle<VkPipelineCache> cache_;
-    mutable uint32_t created_ = 0, hits_ = 0; // pipelines are created from const owners
+    // Pipelines are created from const owners, and on the renderer's workers too.
+    mutable std::atomic<uint32_t> created_ = 0, hits_ = 0;
 };
 
 } // namespace render

@@ -77,23 +77,8 @@ void Renderer::configure(const scene::Scene& scene, const RenderSettings& settin
 void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene) {
     ++changes_;
     const auto start = Clock::now();
-    PipelineKey wanted = settings.pipeline;
-    wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
-    wanted.taskCulling = settings.culling.mode != CullMode::Off;
-    wanted.runOffsets = settings.culling.mode != CullMode::Off;
-    wanted.section = settings.section.any();
-    const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
+    const PipelineKey key = keyFor(scene, settings, newScene);
     const Technique& technique = *key.technique;
-    if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())
-        throw vk::Error(std::string(technique.name) + " is unavailable here: " + why);
-    // The culled lists are drawn in one indirect call each.
-    if (cullPlan(technique, *key.mode, settings.culling.mode).gpuLists &&
-        scene.uniquePartCount() > device_.info().maxDrawIndirectCount)
-        throw vk::Error("culling in " + std::string(key.mode->name) + " needs up to " +
-                        std::to_string(scene.uniquePartCount()) + " draws in one indirect call, " +
-                        device_.info().name + " allows " +
-                        std::to_string(device_.info().maxDrawIndirectCount) +
-                        ": use --culling off or push mode");
     bool cached = false;
     auto pipeline = pipelines_.get(key, pass(key.msaa), cached);
     const bool levels = settings.lod.errorPixels > 0.0f;
@@ -149,6 +134,49 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     lastSwitch_ = {msSince(start), cached, keepDraws};
 }
 
+PipelineKey Renderer::keyFor(const scene::Scene& scene, const RenderSettings& settings,
+                             bool newScene) const {
+    PipelineKey wanted = settings.pipeline;
+    wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
+    wanted.taskCulling = settings.culling.mode != CullMode::Off;
+    wanted.runOffsets = settings.culling.mode != CullMode::Off;
+    wanted.section = settings.section.any();
+    const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
+    const Technique& technique = *key.technique;
+    if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())
+        throw vk::Error(std::string(technique.name) + " is unavailable here: " + why);
+    // The culled lists are drawn in one indirect call each.
+    if (cullPlan(technique, *key.mode, settings.culling.mode).gpuLists &&
+        scene.uniquePartCount() > device_.info().maxDrawIndirectCount)
+        throw vk::Error("culling in " + std::string(key.mode->name) + " needs up to " +
+                        std::to_string(scene.uniquePartCount()) + " draws in one indirect call, " +
+                        device_.info().name + " allows " +
+                        std::to_string(device_.info().maxDrawIndirectCount) +
+                        ": use --culling off or push mode");
+    return key;
+}
+
+std::optional<PipelineBuild> Renderer::prepare(const scene::Scene& scene,
+                                               const RenderSettings& settings) {
+    if (!sceneGpu_) throw vk::Error("Renderer::prepare before setScene");
+    const PipelineKey key = keyFor(scene, settings, false);
+    if (pipelines_.request(key, pass(key.msaa))) return std::nullopt;
+    return pipelines_.progress(key);
+}
+
+PipelineKey Renderer::hidingKey(bool hiding) const {
+    PipelineKey key = pipeline_->key;
+    key.hiding = hiding;
+    return key.effective(device_.info().geometryShaderPassthrough);
+}
+
+std::optional<PipelineBuild> Renderer::prepareHidden(const scene::PartSet& hidden) {
+    if (!pipeline_ || hidden.empty() == hiddenSet_.empty()) return std::nullopt;
+    const PipelineKey key = hidingKey(!hidden.empty());
+    if (pipelines_.request(key, pass(key.msaa))) return std::nullopt;
+    return pipelines_.progress(key);
+}
+
 void Renderer::reloadShaders() {
     if (!pipeline_) return; // nothing configured yet
     ++changes_;
@@ -186,9 +214,7 @@ void Renderer::setHidden(const scene::PartSet& hidden) {
     ++changes_;
     auto pipeline = pipeline_;
     if (hidden.empty() != hiddenSet_.empty()) {
-        PipelineKey key = pipeline_->key;
-        key.hiding = !hidden.empty();
-        key = key.effective(device_.info().geometryShaderPassthrough);
+        const PipelineKey key = hidingKey(!hidden.empty());
         bool cached = false;
         pipeline = pipelines_.get(key, pass(key.msaa), cached);
     }

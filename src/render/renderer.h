@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -82,6 +83,24 @@ class Renderer {
     // depends on changed. A compile error throws vk::ShaderError; a failure leaves the
     // previous configuration drawing.
     void configure(const scene::Scene& scene, const RenderSettings& settings);
+    // The non-blocking path (the viewer, which keeps drawing meanwhile): whether configure()
+    // with these arguments would find its pipeline built. nullopt: it would, and costs no
+    // compile; else the build it needs, started on a worker unless it runs already (ask again,
+    // a frame later: the newest wish is the one asked for). Throws what configure() would
+    // refuse, and once the error of a build that failed (the next ask starts it again).
+    std::optional<PipelineBuild> prepare(const scene::Scene& scene, const RenderSettings& settings);
+    // The same for setHidden(hidden), which switches to the variant that discards hidden parts
+    // (or back) when `hidden` is the first set hidden (or the last shown).
+    std::optional<PipelineBuild> prepareHidden(const scene::PartSet& hidden);
+    // Whether a pipeline is being built on a worker (or done and not collected yet by
+    // prepare, configure or collectBuilds).
+    bool building() const { return pipelines_.building(); }
+    // Takes in the builds done (PipelineCache::collect), those nobody waits for any more too.
+    void collectBuilds() { pipelines_.collect(); }
+    // Called on the worker when a build is done (glfwPostEmptyEvent wakes the viewer's wait).
+    void onPipelineBuilt(std::function<void()> wake) { pipelines_.onBuilt(std::move(wake)); }
+    // For tests: builds started while held wait until released (PipelineCache::holdBuilds).
+    void holdPipelineBuilds(bool hold) { pipelines_.holdBuilds(hold); }
 
     // The parts drawn with the selection's highlight (and outline, with edges), and the parts
     // not drawn at all: never in the ID image, never picked, a pick finds what is behind them.
@@ -120,6 +139,8 @@ class Renderer {
     // The driver's pipeline cache: its status and save() at exit.
     const DiskPipelineCache& driverCache() const { return pipelines_.driverCache(); }
     VkPipeline pipeline() const { return pipeline_ ? pipeline_->handle.get() : VK_NULL_HANDLE; }
+    // describePipeline() of the pipeline drawn ("" before setScene).
+    std::string pipelineName() const { return pipeline_ ? describePipeline(pipeline_->key) : ""; }
 
     // What culling the drawn configuration gets (cullPlan of its technique and mode).
     CullPlan cullingPlan() const;
@@ -142,6 +163,11 @@ class Renderer {
         Issued issued;                    // push mode: the first pass's draws
     };
     void apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
+    // The effective key `settings` select; throws for what this device or scene cannot draw.
+    PipelineKey keyFor(const scene::Scene& scene, const RenderSettings& settings,
+                       bool newScene) const;
+    // The drawn pipeline's key with parts hidden or not.
+    PipelineKey hidingKey(bool hiding) const;
     void bindGeometry(VkCommandBuffer cmd) const;
     bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws, bool levels) const;
     gpu::FrameData frameData(const SceneTargets& targets, const FrameParams& params,

@@ -136,6 +136,7 @@ std::string ShaderRequest::key() const {
 std::vector<uint32_t> ShaderCompiler::compile(const ShaderRequest& request) const {
     faultPoint("shader compile");
     const std::string key = request.key();
+    std::lock_guard lock(mutex_);
     if (auto found = memo_.find(key); found != memo_.end()) {
         ++remembered_;
         return found->second;
@@ -147,6 +148,7 @@ std::vector<uint32_t> ShaderCompiler::compile(const ShaderRequest& request) cons
 }
 
 void ShaderCompiler::forget() const {
+    std::lock_guard lock(mutex_);
     memo_.clear();
 }
 

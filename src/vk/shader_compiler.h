@@ -2,9 +2,11 @@
 // #include, per-variant #defines and include aliases (how a technique plugs its own code in).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,7 +45,8 @@ class ShaderCompiler {
     const std::filesystem::path& directory() const { return dir_; }
     // SPIR-V for the request. Each distinct request is compiled once and remembered, so
     // switching back to a technique costs no glslang run; forget() drops what was kept
-    // (shaders edited on disk, the viewer's R).
+    // (shaders edited on disk, the viewer's R). Safe from several threads at once (the
+    // renderer builds pipelines on workers).
     std::vector<uint32_t> compile(const ShaderRequest& request) const;
     void forget() const;
     // glslang runs so far, and requests answered from memory (for the panel and the tests).
@@ -58,8 +61,12 @@ class ShaderCompiler {
     std::vector<uint32_t> compileNow(const ShaderRequest& request) const;
 
     std::filesystem::path dir_;
+    // One compile at a time, memo and glslang run alike. glslang's authors call parses on
+    // several threads safe once InitializeProcess has run (it has, in the constructor), but
+    // others met unguarded globals on first use; builds rarely overlap, so nothing is lost.
+    mutable std::mutex mutex_;
     mutable std::map<std::string, std::vector<uint32_t>> memo_; // by ShaderRequest::key()
-    mutable uint64_t compilations_ = 0, remembered_ = 0;
+    mutable std::atomic<uint64_t> compilations_ = 0, remembered_ = 0;
 };
 
 class Device;

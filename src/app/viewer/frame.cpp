@@ -186,7 +186,8 @@ render::FrameParams Viewer::frameParams(double seconds) {
 }
 
 // Hands the selection and the hidden parts to the renderer when they changed. Hiding the
-// first part builds the hiding pipeline variant; if that fails, nothing is hidden.
+// first part needs the hiding pipeline variant: until its worker has built it, the parts
+// stay drawn (asked again each frame); if it fails, nothing is hidden.
 void Viewer::showParts() {
     render::Renderer& renderer = scene_.renderer();
     Selection& selection = input_.selection();
@@ -194,9 +195,9 @@ void Viewer::showParts() {
         renderer.setSelection(selection.selected());
         shownSelected_ = selection.selected();
     }
-    if (selection.hidden() == shownHidden_) return;
+    if (selection.hidden() == shownHidden_ && !scene_.pipelinePending()) return;
     try {
-        renderer.setHidden(selection.hidden());
+        if (!scene_.showHidden(selection.hidden())) return;
         shownHidden_ = selection.hidden();
     } catch (const std::exception& e) {
         scene_.fail(std::string("hiding parts: ") + e.what());
@@ -242,6 +243,8 @@ PanelInfo Viewer::panelInfo() const {
     if (const auto loading = scene_.loading())
         info.loading =
             PanelInfo::Loading{loading->path, loading->seconds, loading->stage, loading->fraction};
+    if (const auto building = scene_.building())
+        info.building = PanelInfo::Building{building->pipeline, building->seconds, building->then};
     info.scene = &scene_.scene();
     info.tree = &tree_;
     info.hidden = &input_.selection().hidden();

@@ -324,6 +324,10 @@ void Input::waitForLoads() {
     if (viewer_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
 }
 
+void Input::waitForPipelines() {
+    if (viewer_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
+}
+
 void Input::queue(const ScriptCommand& c) {
     const auto& v = c.values;
     // Settings change in place, as the panel's widgets change them; the frame applies them.
@@ -473,6 +477,12 @@ void Input::queue(const ScriptCommand& c) {
         break;
     case ScriptOp::Rest: // the steps after it wait, and the loop with them
         step([this, s = v[0]] { restUntil_ = scriptNow_ + s; }, false);
+        break;
+    case ScriptOp::Pipeline:
+        if (c.text == "ready")
+            step([this] { waitForPipelines(); }, true);
+        else
+            step([this, hold = c.text == "hold"] { viewer_.holdPipelineBuilds(hold); }, true);
         break;
     case ScriptOp::Quit:
         step([this] { viewer_.quit(); }, true);

@@ -107,6 +107,8 @@ class Input {
     }
     // A step that comes back every frame while a dropped model is loading.
     void waitForLoads();
+    // The same while a pipeline is being built or awaited (`pipeline ready`).
+    void waitForPipelines();
 
     Viewer& viewer_;
     GLFWwindow* window_;

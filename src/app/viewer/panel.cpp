@@ -372,6 +372,10 @@ void status(const PanelInfo& info, PanelActions& actions) {
         ImGui::TextWrapped("%s", info.error.c_str());
         ImGui::PopStyleColor();
     }
+    if (const auto& building = info.building)
+        ImGui::TextWrapped("building pipeline %s, %.1f s: what is drawn stays until it is "
+                           "ready, then %s",
+                           building->pipeline.c_str(), building->seconds, building->then.c_str());
     if (const auto& loading = info.loading) {
         // CAD loads report their stage and how far it is; glTF loads report nothing, and the
         // bar sweeps once a second while they run.

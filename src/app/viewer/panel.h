@@ -77,6 +77,12 @@ struct PanelInfo {
         double fraction = 0.0;
     };
     std::optional<Loading> loading; // a dropped model still loading
+    struct Building {
+        std::string pipeline;
+        double seconds = 0.0;
+        std::string then; // what changes once it is ready
+    };
+    std::optional<Building> building; // a pipeline the settings wait for, built on a worker
     const scene::Scene* scene = nullptr;
     const std::vector<scene::TreeRow>* tree = nullptr; // the scene's assembly tree
     const scene::PartSet* hidden = nullptr;

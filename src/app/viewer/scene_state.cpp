@@ -2,6 +2,8 @@
 // opening scenes. A failure keeps what worked before.
 #include "app/viewer/scene_state.h"
 
+#include <cstdio>
+
 #include "app/headless.h" // pipelineCacheFolder
 #include "scene/copies.h"
 #include "vk/check.h"
@@ -39,7 +41,11 @@ SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettin
         else
             wanted = drawn;
     }
-    if (render != renderer_.settings()) configure(render);
+    renderer_.collectBuilds();
+    if (render != renderer_.settings())
+        configure(render);
+    else
+        settingsWait_.reset(); // switched back to what is drawn before its build was done
     return change;
 }
 
@@ -161,6 +167,15 @@ bool SceneState::setCopies(uint32_t copies, uint32_t axes) {
 void SceneState::configure(render::RenderSettings& render) {
     const uint32_t msaa = render.pipeline.msaa;
     try {
+        // A pipeline not built yet is built on a worker; what is drawn stays until then.
+        if (const auto build = renderer_.prepare(scene(), render)) {
+            const bool cut = render.section.any();
+            waitFor(settingsWait_, *build,
+                    cut == renderer_.settings().section.any() ? "the switch happens"
+                    : cut                                     ? "the section cut appears"
+                                                              : "the section cut goes");
+            return;
+        }
         // New targets first: the renderer switches only once everything it needs is there.
         std::shared_ptr<const render::SceneTargets> targets = targets_;
         if (uint32_t(targets->pass().samples()) != msaa)
@@ -169,10 +184,12 @@ void SceneState::configure(render::RenderSettings& render) {
         renderer_.configure(scene(), render);
         targets_ = std::move(targets);
     } catch (const std::exception& e) {
+        settingsWait_.reset();
         fail(e.what());
         render = renderer_.settings(); // what is drawn, so the panel shows it
         return;
     }
+    arrived(settingsWait_);
     idBytes_ = scene::idDataBytes(scene(), render.pipeline.searchBatch);
     error_.clear();
 }
@@ -192,6 +209,59 @@ void SceneState::reloadShaders() {
     }
     error_.clear();
     events_.say("shaders reloaded");
+}
+
+bool SceneState::showHidden(const scene::PartSet& hidden) {
+    if (hidden == renderer_.hidden()) {
+        hiddenWait_.reset(); // shown as it is, or back to it before its build was done
+        return true;
+    }
+    try {
+        if (const auto build = renderer_.prepareHidden(hidden)) {
+            waitFor(hiddenWait_, *build,
+                    hidden.empty() ? "the hidden parts reappear" : "the parts hidden vanish");
+            return false;
+        }
+        renderer_.setHidden(hidden);
+    } catch (...) {
+        hiddenWait_.reset();
+        throw;
+    }
+    arrived(hiddenWait_);
+    return true;
+}
+
+void SceneState::waitFor(std::optional<Wait>& wait, const render::PipelineBuild& build,
+                         std::string then) {
+    if (wait && wait->pipeline == build.name) return;
+    const auto start = std::chrono::steady_clock::now() -
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(build.seconds));
+    wait = Wait{build.name, start, std::move(then)};
+    events_.say("pipeline: building " + build.name);
+}
+
+void SceneState::arrived(std::optional<Wait>& wait) {
+    // Said only when what was awaited is drawn, not when the wish moved to a pipeline built.
+    if (!wait || wait->pipeline != renderer_.pipelineName()) {
+        wait.reset();
+        return;
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wait->start).count();
+    char text[32];
+    std::snprintf(text, sizeof text, " (%.2f s)", seconds);
+    events_.say("pipeline: ready " + wait->pipeline + text);
+    wait.reset();
+}
+
+std::optional<SceneState::Building> SceneState::building() const {
+    const std::optional<Wait>& wait = settingsWait_ ? settingsWait_ : hiddenWait_;
+    if (!wait) return std::nullopt;
+    return Building{
+        wait->pipeline,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wait->start).count(),
+        wait->then};
 }
 
 void SceneState::sceneChanged() {

@@ -2,7 +2,9 @@
 // the targets it renders into. apply() brings them in line with the settings the panel,
 // keys and scripts edit; a change that fails keeps what worked before, puts the settings
 // back to it and leaves its message in error(). Nothing here waits for the GPU: what frames
-// in flight still use lives on in their slots.
+// in flight still use lives on in their slots. Nor for the compiler: a pipeline not built yet
+// (a technique, mode or MSAA switch, the first hide or section cut) is built on a worker while
+// the configuration drawn goes on drawing, and the switch follows on the first frame after.
 #pragma once
 
 #include <atomic>
@@ -55,6 +57,22 @@ class SceneState {
     void resize(VkExtent2D extent);
     // R: shaders from disk, caches cleared; a compile error keeps the last good pipeline.
     void reloadShaders();
+    // Hands the hidden parts to the renderer; false while the pipeline variant they need (the
+    // first part hidden, the last shown) is being built: ask again next frame, the parts
+    // hidden before stay so until it is ready. Throws what the renderer refuses.
+    bool showHidden(const scene::PartSet& hidden);
+
+    // The pipeline the settings or hidden parts wait for, for the panel's line.
+    struct Building {
+        std::string pipeline; // render::describePipeline
+        double seconds = 0.0; // since its build started
+        std::string then;     // what changes once it is ready
+    };
+    std::optional<Building> building() const;
+    // Whether the settings or hidden parts wait for a pipeline: the viewer's loop keeps
+    // polling while they do (Renderer::onPipelineBuilt wakes it when a build is done). Builds
+    // no longer wanted finish into the cache unawaited (apply() collects them).
+    bool pipelinePending() const { return settingsWait_ || hiddenWait_; }
 
     const scene::Scene& scene() const { return copies_ ? *copies_ : base_.scene; }
     const LoadedScene& loaded() const { return base_; }
@@ -77,6 +95,15 @@ class SceneState {
     bool setCopies(uint32_t copies, uint32_t axes);
     void configure(render::RenderSettings& render);
     void sceneChanged();
+    struct Wait {
+        std::string pipeline;
+        std::chrono::steady_clock::time_point start;
+        std::string then;
+    };
+    // A wish meets a pipeline still building ("pipeline: building" once per pipeline), and
+    // the wish is drawn ("pipeline: ready").
+    void waitFor(std::optional<Wait>& wait, const render::PipelineBuild& build, std::string then);
+    void arrived(std::optional<Wait>& wait);
 
     vk::Device& device_;
     const Events& events_;
@@ -87,6 +114,7 @@ class SceneState {
     scene::IdDataBytes idBytes_;
     VkSampleCountFlags sampleCounts_;
     std::string error_;
+    std::optional<Wait> settingsWait_, hiddenWait_; // what each waits for, while it builds
     struct PendingOpen {
         std::future<LoadedScene> scene;
         SceneSettings settings;

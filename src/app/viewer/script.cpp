@@ -57,6 +57,7 @@ const CommandSpec commandSpecs[] = {
     {"cancel", ScriptOp::Cancel, 0, "cancel"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
     {"rest", ScriptOp::Rest, 1, "rest SECONDS"},
+    {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready"},
     {"quit", ScriptOp::Quit, 0, "quit"},
 };
 
@@ -101,7 +102,8 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Sort ||
                            spec->op == ScriptOp::Section || spec->op == ScriptOp::Screenshot ||
                            spec->op == ScriptOp::Drop || spec->op == ScriptOp::View ||
-                           spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Level;
+                           spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Level ||
+                           spec->op == ScriptOp::Pipeline;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
@@ -211,6 +213,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     case ScriptOp::Ortho:
         if (command.text != "on" && command.text != "off")
             fail("'" + name + "' takes on or off, not '" + command.text + "'");
+        break;
+    case ScriptOp::Pipeline:
+        if (command.text != "hold" && command.text != "release" && command.text != "ready")
+            fail("'pipeline' takes hold, release or ready, not '" + command.text + "'");
         break;
     case ScriptOp::View:
         if (!scene::findStandardView(command.text))

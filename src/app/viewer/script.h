@@ -45,6 +45,10 @@
 //   4.9 rest 4              leave the viewer alone for 4 seconds from when the command runs:
 //                           what follows waits, and nothing scripted asks for a frame
 //                           meanwhile (however late the command ran on a slow machine)
+//   4.9 pipeline hold       pipeline builds wait on their worker until `pipeline release`, so
+//                           a test holds "a build is pending" as long as it likes; `pipeline
+//                           ready` waits until none is being built or awaited (never while
+//                           held)
 //   5   quit
 //
 // Blank lines and lines starting with '#' are ignored.
@@ -90,6 +94,7 @@ enum class ScriptOp {
     Cancel,
     Frames,
     Rest,
+    Pipeline,
     Quit
 };
 

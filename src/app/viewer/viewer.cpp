@@ -33,6 +33,8 @@ Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, S
       input_(*this, window.handle(), std::move(script)) {
     follow(SceneState::Change::Model);
     window.listen(input_);
+    // A pipeline built on a worker wakes the resting loop, which then switches to it.
+    scene_.renderer().onPipelineBuilt(&Window::wake);
 }
 
 Viewer::~Viewer() {
@@ -170,7 +172,7 @@ FrameWants Viewer::frameWants() const {
     wants.events = window_.events() + input_.stepsRun(); // scripted input counts as input
     wants.continuous = !view_.vsync;
     wants.busy = input_.waiting() || !screenshotPath_.empty();
-    wants.loading = loading();
+    wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = input_.selection().hovered().has_value();
     wants.scriptWake = input_.wakeIn(wants.now);
     return wants;

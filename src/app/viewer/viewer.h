@@ -78,6 +78,9 @@ class Viewer {
     void resetSettings();
     void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
     bool loading() const { return scene_.loading().has_value(); } // a dropped model
+    bool pipelinePending() const { return scene_.pipelinePending(); }
+    // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
+    void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
 
   private:
     using Clock = std::chrono::steady_clock;

@@ -108,6 +108,10 @@ void Window::listen(Input& input) {
     glfwSetFramebufferSizeCallback(w, [](GLFWwindow*, int, int) { ++windowEvents; });
 }
 
+void Window::wake() {
+    glfwPostEmptyEvent();
+}
+
 uint64_t Window::events() const {
     return windowEvents;
 }

@@ -38,6 +38,8 @@ class Window {
     bool closing() const;
     void close();
     void setTitle(const std::string& title);
+    // Wakes a loop sleeping in waitEvents(); any thread may call it.
+    static void wake();
     // How many events the window has had since it opened (input, focus, exposure, resize).
     uint64_t events() const;
     void pollEvents();

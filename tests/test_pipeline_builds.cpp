@@ -1,0 +1,227 @@
+// test_pipeline_builds.cpp - the viewer's non-blocking path (Renderer::prepare, prepareHidden)
+// on lavapipe with validation on: while a pipeline is being built on a worker, frames go on
+// being recorded and submitted with the configuration drawn before, whose ID image they keep;
+// once the build is done, the switch draws what a synchronous configure draws. The worker is
+// held (Renderer::holdPipelineBuilds) for as long as the test wants "pending", and its end is
+// waited for through the wake callback, never through time.
+#include <gtest/gtest.h>
+
+#include <condition_variable>
+#include <mutex>
+
+#include "app/offscreen.h"
+#include "app/scene_source.h"
+#include "render/technique.h"
+#include "scene/section.h"
+#include "test_support.h"
+#include "vk/check.h"
+
+namespace {
+
+using testing_support::settingsFor;
+
+app::LoadedScene tiles() {
+    app::SceneSettings source;
+    source.builtin = "tiles";
+    return app::loadScene(source);
+}
+
+// Counts the wake callbacks of the workers (called on them), and waits for a count.
+class Wakes {
+  public:
+    std::function<void()> callback() {
+        return [this] {
+            {
+                std::lock_guard lock(mutex_);
+                ++count_;
+            }
+            woken_.notify_all();
+        };
+    }
+    void waitFor(int count) {
+        std::unique_lock lock(mutex_);
+        woken_.wait(lock, [&] { return count_ >= count; });
+    }
+
+  private:
+    std::mutex mutex_;
+    std::condition_variable woken_;
+    int count_ = 0;
+};
+
+struct Rig {
+    explicit Rig(vk::Instance& instance)
+        : rig(instance, testing_support::headlessOptions(64, 48)) {}
+    // Records and submits a frame without waiting for it (as the viewer's loop does).
+    void submit() {
+        render::FrameParams params;
+        params.viewProj = glm::mat4(1.0f);
+        render::FrameSlot& slot = rig.slots.begin(frame++);
+        rig.renderer.record(slot, rig.targets, params);
+        rig.slots.submit(slot);
+    }
+    std::vector<uint32_t> ids() { return testing_support::renderIds(rig, frame); }
+
+    app::Offscreen rig;
+    uint64_t frame = 0;
+};
+
+// What a synchronous configure (headless, the benchmark) of `settings` with `hidden` draws.
+std::vector<uint32_t> synchronousIds(vk::Instance& instance, const scene::Scene& scene,
+                                     const render::RenderSettings& settings,
+                                     const scene::PartSet& hidden) {
+    Rig sync(instance);
+    sync.rig.renderer.setScene(scene, settings);
+    sync.rig.renderer.setHidden(hidden);
+    return sync.ids();
+}
+
+render::RenderSettings withSection(render::RenderSettings settings) {
+    settings.section.add(scene::axisPlane(0, 0.0f)); // through the middle of the tiles
+    return settings;
+}
+
+TEST(PipelineBuilds, FramesGoOnWithTheOldPipelineWhileTheFirstSectionCutBuilds) {
+    const app::LoadedScene scene = tiles();
+    vk::Instance instance({true, {}});
+    {
+        const render::RenderSettings plain;
+        const render::RenderSettings cut = withSection(plain);
+        Rig r(instance);
+        Wakes wakes;
+        render::Renderer& renderer = r.rig.renderer;
+        renderer.onPipelineBuilt(wakes.callback());
+        renderer.setScene(scene.scene, plain);
+        const std::vector<uint32_t> before = r.ids();
+        const VkPipeline old = renderer.pipeline();
+
+        renderer.holdPipelineBuilds(true);
+        const auto build = renderer.prepare(scene.scene, cut);
+        ASSERT_TRUE(build.has_value()) << "the section variant was not built yet";
+        EXPECT_NE(build->name.find("section"), std::string::npos) << build->name;
+        for (int i = 0; i < 6; ++i) {
+            EXPECT_TRUE(renderer.prepare(scene.scene, cut).has_value())
+                << "asked again, frame " << i;
+            EXPECT_TRUE(renderer.building());
+            r.submit(); // frames in flight, as the viewer's
+            EXPECT_EQ(r.ids(), before) << "frame " << i << " draws the configuration before";
+            EXPECT_EQ(renderer.pipeline(), old);
+            EXPECT_EQ(renderer.settings(), plain);
+        }
+
+        renderer.holdPipelineBuilds(false);
+        wakes.waitFor(1);
+        EXPECT_FALSE(renderer.prepare(scene.scene, cut).has_value()) << "built: ready to switch";
+        EXPECT_FALSE(renderer.building()) << "its result was collected";
+        renderer.configure(scene.scene, cut);
+        EXPECT_TRUE(renderer.lastSwitch().pipelineCached) << "the worker's pipeline is used";
+        EXPECT_NE(renderer.pipeline(), old);
+        const std::vector<uint32_t> after = r.ids();
+        EXPECT_NE(after, before) << "the cut shows in the ID image";
+        EXPECT_EQ(after, synchronousIds(instance, scene.scene, cut,
+                                        scene::PartSet(scene.scene.uniquePartCount())));
+    }
+    EXPECT_EQ(instance.validationMessages(), 0u);
+}
+
+TEST(PipelineBuilds, HiddenPartsVanishOnlyOnceTheHidingVariantIsBuilt) {
+    const app::LoadedScene scene = tiles();
+    vk::Instance instance({true, {}});
+    {
+        const render::RenderSettings settings;
+        scene::PartSet hidden(scene.scene.uniquePartCount());
+        for (uint32_t id = 0; id < scene.scene.uniquePartCount(); id += 2) hidden.insert(id);
+        ASSERT_FALSE(hidden.empty());
+        Rig r(instance);
+        Wakes wakes;
+        render::Renderer& renderer = r.rig.renderer;
+        renderer.onPipelineBuilt(wakes.callback());
+        renderer.setScene(scene.scene, settings);
+        const std::vector<uint32_t> before = r.ids();
+
+        renderer.holdPipelineBuilds(true);
+        ASSERT_TRUE(renderer.prepareHidden(hidden).has_value());
+        for (int i = 0; i < 4; ++i) {
+            r.submit();
+            EXPECT_EQ(r.ids(), before) << "frame " << i;
+            EXPECT_TRUE(renderer.hidden().empty());
+            EXPECT_TRUE(renderer.prepareHidden(hidden).has_value());
+        }
+        renderer.holdPipelineBuilds(false);
+        wakes.waitFor(1);
+        EXPECT_FALSE(renderer.prepareHidden(hidden).has_value());
+        renderer.setHidden(hidden);
+        const std::vector<uint32_t> after = r.ids();
+        EXPECT_NE(after, before) << "half the parts are hidden";
+        EXPECT_EQ(after, synchronousIds(instance, scene.scene, settings, hidden));
+    }
+    EXPECT_EQ(instance.validationMessages(), 0u);
+}
+
+// The user switches again while a build runs: both builds finish into the cache, the newest
+// wish is what the caller asks for next, and the stale one costs no compile later.
+TEST(PipelineBuilds, AStaleBuildFinishesIntoTheCache) {
+    const app::LoadedScene scene = tiles();
+    vk::Instance instance({true, {}});
+    {
+        const auto techniques = render::partIdTechniques();
+        ASSERT_GE(techniques.size(), 3u);
+        const render::RenderSettings a = settingsFor(*techniques[0], render::drawModes()[0]);
+        const render::RenderSettings b = settingsFor(*techniques[1], render::drawModes()[0]);
+        const render::RenderSettings c = settingsFor(*techniques[2], render::drawModes()[0]);
+        Rig r(instance);
+        Wakes wakes;
+        render::Renderer& renderer = r.rig.renderer;
+        renderer.onPipelineBuilt(wakes.callback());
+        renderer.setScene(scene.scene, a);
+        renderer.holdPipelineBuilds(true);
+        ASSERT_TRUE(renderer.prepare(scene.scene, b).has_value());
+        ASSERT_TRUE(renderer.prepare(scene.scene, c).has_value());
+        r.submit();
+        renderer.holdPipelineBuilds(false);
+        wakes.waitFor(2);
+        EXPECT_FALSE(renderer.prepare(scene.scene, c).has_value());
+        EXPECT_EQ(renderer.cachedPipelines(), 3u) << "a, and both builds";
+        renderer.configure(scene.scene, c);
+        EXPECT_TRUE(renderer.lastSwitch().pipelineCached);
+        const uint64_t compiled = r.rig.compiler.compilations();
+        renderer.configure(scene.scene, b);
+        EXPECT_TRUE(renderer.lastSwitch().pipelineCached);
+        EXPECT_EQ(r.rig.compiler.compilations(), compiled);
+    }
+    EXPECT_EQ(instance.validationMessages(), 0u);
+}
+
+// A build that fails on its worker reports its error through the next prepare, once; the
+// pipeline drawn stays, and asking again builds it anew.
+TEST(PipelineBuilds, AFailedBuildKeepsTheLastGoodPipeline) {
+    const app::LoadedScene scene = tiles();
+    vk::Instance instance({true, {}});
+    {
+        const render::RenderSettings plain;
+        const render::RenderSettings cut = withSection(plain);
+        Rig r(instance);
+        Wakes wakes;
+        render::Renderer& renderer = r.rig.renderer;
+        renderer.onPipelineBuilt(wakes.callback());
+        renderer.setScene(scene.scene, plain);
+        const std::vector<uint32_t> before = r.ids();
+        const VkPipeline old = renderer.pipeline();
+
+        renderer.holdPipelineBuilds(true);
+        ASSERT_TRUE(renderer.prepare(scene.scene, cut).has_value());
+        vk::failAfter(1); // the worker's first fault point: its first shader compile
+        renderer.holdPipelineBuilds(false);
+        wakes.waitFor(1);
+        vk::failAfter(0);
+        EXPECT_THROW(renderer.prepare(scene.scene, cut), vk::Error);
+        EXPECT_EQ(renderer.pipeline(), old);
+        EXPECT_EQ(r.ids(), before);
+        EXPECT_TRUE(renderer.prepare(scene.scene, cut).has_value()) << "built again";
+        wakes.waitFor(2);
+        EXPECT_FALSE(renderer.prepare(scene.scene, cut).has_value());
+    }
+    EXPECT_EQ(instance.validationMessages(), 0u);
+}
+
+} // namespace
