@@ -74,6 +74,7 @@ void Viewer::drawPanel() {
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y));
+    drawOverlays();
     ImGui::Render();
 }
 
@@ -127,6 +128,7 @@ void Viewer::follow(SceneState::Change change) {
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
+    startClean(change); // section, history: what belonged to the model before
     scene::AssemblyNode root = scene::assemblyTree(scene, treeRootName(scene_.loaded()));
     scene::sortNatural(root); // the panel lists siblings by name, --tree in scene order
     tree_ = scene::treeRows(root);

@@ -65,6 +65,7 @@ class Input {
     // completed part sets. True when the selection changed.
     bool readPartSets(const std::optional<render::PartSetReading>& reading);
     uint32_t visibleParts() const { return visibleParts_; }
+    uint64_t partSetsFrame() const { return partSetsFrame_; } // the frame visibleParts is of
     // The scene changed: part IDs and picks in flight name parts of the old one.
     void forgetParts(uint32_t partCount);
 
@@ -72,8 +73,12 @@ class Input {
     Selection& selection() { return selection_; }
     float hoveredDepth() const { return hoveredDepth_; }
     float selectedDepth() const { return selectedDepth_; }
-    // Esc: clears the selection; false when there was none.
-    bool escape() { return selection_.escape(); }
+    // Esc's first cancel: a box being dragged is dropped; false when none was.
+    bool cancelBox() {
+        if (!drag_ || drag_->kind != DragKind::Box) return false;
+        drag_.reset();
+        return true;
+    }
 
   private:
     enum class DragKind { Orbit, Pan, Box };

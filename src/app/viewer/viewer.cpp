@@ -53,6 +53,10 @@ void Viewer::reloadShaders() {
     scene_.reloadShaders();
 }
 
+void Viewer::chooseFile() {
+    view_.focusOpen = view_.panelVisible = true;
+}
+
 void Viewer::selectionChanged() const {
     const Selection& selection = input_.selection();
     const auto part = selection.primary();

@@ -14,6 +14,7 @@
 #include "app/viewer/input.h"
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
+#include "app/viewer/overlays.h"
 #include "app/viewer/panel.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/scene_state.h"
@@ -25,7 +26,7 @@
 namespace app {
 
 // Opens the window on the options' scene and runs until it is closed (window close button,
-// Esc with nothing selected, or a script's quit), then keeps its settings for the next run
+// Ctrl+Q, or a script's quit), then keeps its settings for the next run
 // unless --no-saved-settings (saved_settings.h). Returns the exit code: 0, or 3 when the
 // validation layer reported anything. Throws vk::Error and friends with a message for people
 // (no display, no device that can present, a model that cannot be loaded at start).
@@ -76,6 +77,18 @@ class Viewer {
     void resetSettings();
     void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
     bool loading() const { return scene_.loading().has_value(); } // a dropped model
+    // Ctrl+O: a model file to open (for now: the panel's open field, ready to type a path).
+    void chooseFile();
+
+    // The command table's (commands.h; viewer_commands.cpp).
+    void say(const std::string& line) const { events_.say(line); } // an event line
+    void toggleHelp(); // F1, ?: the help overlay
+    bool helpOpen() const { return shell_.help; }
+    // Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y: the hidden parts and section planes of a step before
+    // or after.
+    void undo();
+    void redo();
+    void screenshotToPictures(); // F12: a PNG in the Pictures folder (screenshot_path.h)
 
   private:
     using Clock = std::chrono::steady_clock;
@@ -87,6 +100,9 @@ class Viewer {
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);
+    void startClean(SceneState::Change change); // viewer_commands.cpp, from follow
+    void drawOverlays();                        // help, empty view, notice; undo steps
+    void restore(const ShownState& state, const char* what); // undo, redo
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
     void showParts();
@@ -124,6 +140,7 @@ class Viewer {
     // The selection and hidden parts last handed to the renderer.
     scene::PartSet shownSelected_, shownHidden_;
     uint32_t saidVisible_ = UINT32_MAX; // the visible part count last told
+    Shell shell_; // the help, undo history and overlays (overlays.h)
 };
 
 } // namespace app
