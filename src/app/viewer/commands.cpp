@@ -107,6 +107,8 @@ std::vector<Command> table() {
          nullptr},
         {"box-select", {}, "Shift / Ctrl / Alt + left drag",
          "box selection: replace / add to / remove from the selection", nullptr},
+        {"drop-file", {}, "Drop a file",
+         "open it (.gltf .glb .step .stp .iges .igs .brep); Ctrl+O types a path", nullptr},
     };
 }
 
