@@ -21,6 +21,7 @@ struct Shell {
     bool pending = false;    // seen changed and is no undo step yet (a drag in progress)
     uint64_t changedAt = 0;  // the frame seen last changed in: older part counts are stale
     std::string empty;       // the reason the event lines last told ("" : something drawn)
+    scene::Section countedSection; // the section of the newest fresh visible count
     std::string notice;      // shown until noticeUntil (seconds since the first frame)
     double noticeUntil = 0.0;
 };

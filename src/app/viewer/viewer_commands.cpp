@@ -100,11 +100,19 @@ void Viewer::drawOverlays() {
     const float width = ImGui::GetIO().DisplaySize.x;
     const FreeSpan span =
         view_.panelVisible ? freeSpan(width, view_.panelLeft, view_.panelRight) : FreeSpan{};
-    const bool counts = !settings_.render.pipeline.technique->isFloor() &&
-                        input_.partSetsFrame() > 0 && input_.partSetsFrame() >= shell_.changedAt;
-    const auto empty =
-        whyEmpty(scene_.scene().uniquePartCount(), selection.hidden().size(), section.any(),
-                 counts ? std::optional(input_.visibleParts()) : std::nullopt);
+    // The visible count of a frame that shows the current hidden parts and section. Until
+    // one comes, planes that cut everything away still do (hiding parts or adding copies
+    // uncuts nothing), so the line does not blink off for the frames a new count takes.
+    std::optional<uint32_t> visible;
+    if (!settings_.render.pipeline.technique->isFloor() && input_.partSetsFrame() > 0 &&
+        input_.partSetsFrame() >= shell_.changedAt) {
+        visible = input_.visibleParts();
+        shell_.countedSection = section;
+    } else if (shell_.empty == "section" && section == shell_.countedSection) {
+        visible = 0;
+    }
+    const auto empty = whyEmpty(scene_.scene().uniquePartCount(), selection.hidden().size(),
+                                section.any(), visible);
     const std::string reason = empty ? empty->event : "";
     if (reason != shell_.empty) {
         shell_.empty = reason;
