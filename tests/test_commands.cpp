@@ -1,6 +1,7 @@
 // test_commands.cpp - the viewer's command table (app/viewer/commands.h): the help overlay
 // lists every binding the key dispatch knows, no chord runs two commands, and the keys this
-// issue moved are where the help says (F1 help, F9 panel, Esc cancels, Ctrl+Q quits).
+// issue moved are where the help says (F1 help, F9 panel, Esc cancels, Ctrl+Q quits); and
+// the empty view's reasons (overlays.h).
 #include <set>
 #include <utility>
 
@@ -10,6 +11,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/viewer/commands.h"
+#include "app/viewer/overlays.h"
 
 namespace {
 
@@ -83,6 +85,24 @@ TEST(Commands, ChordText) {
     EXPECT_EQ(app::chordText({GLFW_KEY_KP_1, GLFW_MOD_CONTROL}), "Ctrl+Num 1");
     EXPECT_EQ(app::chordText({GLFW_KEY_F12, 0}), "F12");
     EXPECT_EQ(app::chordText({GLFW_KEY_ESCAPE, 0}), "Esc");
+}
+
+// Why the view is empty: the hidden set and an empty model need no count; the section and
+// an empty view only a fresh count of zero (nullopt: none yet).
+TEST(Commands, WhyTheViewIsEmpty) {
+    auto event = [](uint32_t parts, uint32_t hidden, bool section,
+                    std::optional<uint32_t> visible) {
+        const auto why = app::whyEmpty(parts, hidden, section, visible);
+        return why ? why->event : std::string("drawn");
+    };
+    EXPECT_EQ(event(0, 0, false, std::nullopt), "no parts");
+    EXPECT_EQ(event(12, 12, true, 0), "all hidden");
+    EXPECT_EQ(app::whyEmpty(12, 12, false, 0)->message,
+              "All 12 parts are hidden - Shift+H shows them");
+    EXPECT_EQ(event(12, 3, true, 0), "section");
+    EXPECT_EQ(event(12, 3, false, 0), "out of view");
+    EXPECT_EQ(event(12, 3, true, std::nullopt), "drawn");
+    EXPECT_EQ(event(12, 3, true, 5), "drawn");
 }
 
 } // namespace

@@ -21,10 +21,10 @@ struct Chord {
 };
 
 struct Command {
-    const char* name;         // "hide", "view-front": a stable name for people and tests
-    std::vector<Chord> keys;  // empty for a mouse gesture
-    const char* mouse;        // the gesture ("Left drag"), nullptr for a key command
-    const char* description;  // one line, as the help overlay shows it
+    const char* name;             // "hide", "view-front": a stable name for people and tests
+    std::vector<Chord> keys;      // empty for a mouse gesture
+    const char* mouse;            // the gesture ("Left drag"), nullptr for a key command
+    const char* description;      // one line, as the help overlay shows it
     void (*run)(Viewer&, Input&); // nullptr for a mouse gesture: input.cpp's handlers do it
 };
 

@@ -14,15 +14,15 @@
 namespace app {
 
 struct Shell {
-    bool help = false;       // the help overlay is open
-    bool firstModel = true;  // the command line's model: its --section stays
+    bool help = false;      // the help overlay is open
+    bool firstModel = true; // the command line's model: its --section stays
     History history;
-    ShownState seen;         // the hidden parts and section of the newest frame
-    bool pending = false;    // seen changed and is no undo step yet (a drag in progress)
-    uint64_t changedAt = 0;  // the frame seen last changed in: older part counts are stale
-    std::string empty;       // the reason the event lines last told ("" : something drawn)
+    ShownState seen;               // the hidden parts and section of the newest frame
+    bool pending = false;          // seen changed and is no undo step yet (a drag in progress)
+    uint64_t changedAt = 0;        // the frame seen last changed in: older part counts are stale
+    std::string empty;             // the reason the event lines last told ("" : something drawn)
     scene::Section countedSection; // the section of the newest fresh visible count
-    std::string notice;      // shown until noticeUntil (seconds since the first frame)
+    std::string notice;            // shown until noticeUntil (seconds since the first frame)
     double noticeUntil = 0.0;
 };
 

@@ -45,7 +45,8 @@ std::filesystem::path picturesFolder(const Environment& env) {
     const std::filesystem::path config =
         env("XDG_CONFIG_HOME").value_or(home.empty() ? "" : home + "/.config");
     if (!config.empty())
-        if (const auto dir = userDirsPictures(config / "user-dirs.dirs", home); dir && isFolder(*dir))
+        if (const auto dir = userDirsPictures(config / "user-dirs.dirs", home);
+            dir && isFolder(*dir))
             return *dir;
     if (!home.empty() && isFolder(home + "/Pictures")) return home + "/Pictures";
     return ".";

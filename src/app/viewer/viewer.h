@@ -82,7 +82,7 @@ class Viewer {
 
     // The command table's (commands.h; viewer_commands.cpp).
     void say(const std::string& line) const { events_.say(line); } // an event line
-    void toggleHelp(); // F1, ?: the help overlay
+    void toggleHelp();                                             // F1, ?: the help overlay
     bool helpOpen() const { return shell_.help; }
     // Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y: the hidden parts and section planes of a step before
     // or after.
@@ -100,8 +100,8 @@ class Viewer {
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);
-    void startClean(SceneState::Change change); // viewer_commands.cpp, from follow
-    void drawOverlays();                        // help, empty view, notice; undo steps
+    void startClean(SceneState::Change change);              // viewer_commands.cpp, from follow
+    void drawOverlays();                                     // help, empty view, notice; undo steps
     void restore(const ShownState& state, const char* what); // undo, redo
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
@@ -140,7 +140,7 @@ class Viewer {
     // The selection and hidden parts last handed to the renderer.
     scene::PartSet shownSelected_, shownHidden_;
     uint32_t saidVisible_ = UINT32_MAX; // the visible part count last told
-    Shell shell_; // the help, undo history and overlays (overlays.h)
+    Shell shell_;                       // the help, undo history and overlays (overlays.h)
 };
 
 } // namespace app
