@@ -77,6 +77,9 @@ TEST(Commands, KeysOfThisIssue) {
     EXPECT_EQ(name(GLFW_KEY_H, GLFW_MOD_CAPS_LOCK), "hide");
     EXPECT_EQ(name(GLFW_KEY_KP_7, GLFW_MOD_NUM_LOCK), "view-top");
     EXPECT_EQ(name(GLFW_KEY_H, GLFW_MOD_ALT), "none");
+    // The panel's hide, isolate and show all buttons run these rows by name (frame.cpp).
+    for (const char* button : {"hide", "isolate", "show-all"})
+        EXPECT_NE(app::findCommand(button), nullptr) << button;
 }
 
 TEST(Commands, ChordText) {

@@ -176,6 +176,12 @@ const std::vector<Command>& commands() {
     return rows;
 }
 
+const Command* findCommand(std::string_view name) {
+    for (const Command& command : commands())
+        if (name == command.name) return &command;
+    return nullptr;
+}
+
 const Command* commandOfKey(int key, int mods) {
     const Chord pressed{key, mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL | GLFW_MOD_ALT)};
     for (const Command& command : commands())

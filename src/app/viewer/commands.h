@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace app {
@@ -30,6 +31,9 @@ struct Command {
 
 // The table, in the order the help lists it.
 const std::vector<Command>& commands();
+
+// The row of this name (panel buttons run their key's row), or nullptr.
+const Command* findCommand(std::string_view name);
 
 // The key command a key press runs (only Shift, Ctrl and Alt count; Caps Lock, Num Lock and
 // Super do not), or nullptr.

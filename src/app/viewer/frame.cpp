@@ -10,6 +10,7 @@
 
 #include "app/headless.h" // cameraFrame
 #include "app/image_io.h"
+#include "app/viewer/commands.h"
 #include "app/viewer/viewer.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
@@ -97,11 +98,11 @@ void Viewer::act(const PanelActions& actions) {
         if (selection.selected() != before) selectionChanged(); // hidden parts leave it
         partsChanged();
     }
-    if (actions.hide) selection.hideSelected();
-    if (actions.isolate) selection.isolateSelected();
-    if (actions.showAll) selection.showAll();
-    if (actions.hide) selectionChanged();
-    if (actions.hide || actions.isolate || actions.showAll) partsChanged();
+    // The panel's buttons run the rows of the command table their keys run (commands.h).
+    for (const auto& [asked, name] : {std::pair{actions.hide, "hide"},
+                                      std::pair{actions.isolate, "isolate"},
+                                      std::pair{actions.showAll, "show-all"}})
+        if (asked) findCommand(name)->run(*this, input_);
 }
 
 void Viewer::applySettings() {

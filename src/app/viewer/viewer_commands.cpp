@@ -88,9 +88,10 @@ void Viewer::drawOverlays() {
         shell_.pending = true;
         shell_.changedAt = frameNumber_;
     }
-    if (shell_.pending && shell_.history.observe(shell_.seen, !ImGui::IsAnyItemActive())) {
-        shell_.pending = false;
-        events_.say("undo step: " + describe(shell_.seen));
+    if (shell_.pending && !ImGui::IsAnyItemActive()) {
+        shell_.pending = false; // a drag that ends where it began makes no step
+        if (shell_.history.observe(shell_.seen, true))
+            events_.say("undo step: " + describe(shell_.seen));
     }
 
     if (shell_.help) {
