@@ -41,6 +41,9 @@ t=0.5
     at frames 3
     at key M
     at frames 2
+    at key F9
+    at frames 2
+    at key F9
     at key ctrl+Q
     at frames 10
     at screenshot "$work/after-quit.png"
@@ -63,6 +66,9 @@ after esc "measure: on" "measure: off" && after esc "cancel: measure" "selected:
     after esc "screenshot: $work/running.png (720x450)" "measure: on" &&
     ok "M typed into the open field measured nothing; after Esc left the field, M did" ||
     fail "measure lines after the open field: $(grep -c '^idview: measure: on$' "$work/esc.out") 'on' in all"
+[[ $(sed -n 's/^idview: panel: //p' "$work/esc.out" | paste -sd' ') == "hidden shown" ]] &&
+    ok "F9 hid the panel and showed it (F1 did not)" ||
+    fail "panel lines '$(grep '^idview: panel' "$work/esc.out" | paste -sd'|')', expected hidden, shown"
 [[ ! -e $work/after-quit.png ]] && ok "Ctrl+Q quit (exit code 0)" || fail "Ctrl+Q did not quit"
 
 # A new model starts clean: planes that cut everything away explain the empty view, stay

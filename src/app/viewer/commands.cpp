@@ -74,7 +74,10 @@ std::vector<Command> table() {
          {{GLFW_KEY_F9, 0}},
          nullptr,
          "show or hide the panel",
-         [](Viewer& v, Input&) { v.view().panelVisible = !v.view().panelVisible; }},
+         [](Viewer& v, Input&) {
+             v.view().panelVisible = !v.view().panelVisible;
+             v.say(v.view().panelVisible ? "panel: shown" : "panel: hidden");
+         }},
         {"fit",
          {{GLFW_KEY_F, 0}},
          nullptr,
