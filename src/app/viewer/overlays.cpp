@@ -32,7 +32,7 @@ void drawHelp(bool& open) {
     ImGui::SetNextWindowSize(ImVec2(std::min(680.0f, 0.95f * display.x), 0.9f * display.y),
                              ImGuiCond_Appearing);
     ImGui::SetNextWindowBgAlpha(0.94f);
-    if (!ImGui::Begin("Keys and mouse (F1 or ? closes)", &open,
+    if (!ImGui::Begin("Keys and mouse (F1, ? or Esc closes)", &open,
                       ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
         ImGui::End();
         return;
