@@ -3,8 +3,8 @@
 # lavapipe with validation, as a user presses its keys (issue 34): the help overlay (F1, ?),
 # Esc cancelling one thing at a time and never quitting, Ctrl+Q quitting with exit code 0, keys
 # typed into the open field reaching no command, a new model starting clean while new copies
-# keep the section, the empty view saying why, undo and redo of hidden parts and section, and
-# F12's screenshot in the Pictures folder. Exit 77: skipped. The lavapipe environment, the
+# keep the section, the empty view saying why, undo and redo of hidden parts and section,
+# F12's screenshot in the Pictures folder, and (with xdotool's real input) Esc during a box drag. Exit 77: skipped. The lavapipe environment, the
 # Xvfb check, $work, fail, at and session: viewer_lib.sh.
 source "$(dirname "$0")/viewer_lib.sh"
 
@@ -189,6 +189,42 @@ pngs() { # every file named is a PNG
 [[ $(echo "$shots" | sort -u | grep -c .) -eq 2 ]] && pngs $shots &&
     ok "F12 wrote two PNGs in the Pictures folder: $(basename -a $shots | paste -sd' ')" ||
     fail "F12: '$(grep '^idview: screenshot' "$work/shot.out" | paste -sd'|')'"
+
+# Esc during a box drag, with real input (xdotool's XTEST events, in the order a hand makes
+# them): Shift + left press in the view, a move, Esc, the release. The box is dropped: no
+# selection comes, though three screenshots (each a finished frame) pass after the release,
+# time enough for a box's parts to arrive. Skipped without xdotool.
+if command -v xdotool >/dev/null; then
+    mkdir -p "$work/real-shots"
+    echo "100 quit" >"$work/real.txt" # only if the hand below never comes: Ctrl+Q ends it
+    XDG_PICTURES_DIR=$work/real-shots xvfb-run -a -s "-screen 0 1280x800x24" bash -c '
+        out=$1/real.out
+        "$2" --validation --size 720x450 --scene procedural:preset=small --no-saved-settings \
+            --script "$1/real.txt" --print-events >"$out" 2>"$1/real.err" &
+        pid=$!
+        wait_for() { # N lines of the viewer matching a pattern, while it runs
+            until [[ $(grep -c "$2" "$out") -ge $1 ]]; do
+                kill -0 $pid 2>/dev/null || return 1
+                sleep 0.1
+            done
+        }
+        wait_for 1 "^idview: visible parts: [1-9]" &&
+            xdotool mousemove 430 160 keydown shift mousedown 1 mousemove 500 240 \
+                mousemove 590 320 keyup shift key Escape mouseup 1 &&
+            xdotool key F12 && wait_for 1 "^idview: screenshot:" &&
+            xdotool key F12 && wait_for 2 "^idview: screenshot:" &&
+            xdotool key F12 && wait_for 3 "^idview: screenshot:"
+        xdotool key ctrl+q
+        wait $pid' real "$work" "$idview"
+    rc=$?
+    [[ $rc -eq 0 ]] || fail "real input session: exit code $rc $(head -c 500 "$work/real.err")"
+    [[ $(grep -c '^idview: screenshot:' "$work/real.out") -eq 3 ]] && has real "cancel: box" &&
+        ! grep -q '^idview: selected:' "$work/real.out" &&
+        ok "Esc during a box drag dropped the box: nothing selected" ||
+        fail "box and Esc: '$(grep -E '^idview: (cancel|selected|screenshot)' "$work/real.out" | paste -sd'|')'"
+else
+    echo "skip Esc during a real box drag: no xdotool"
+fi
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
 echo "viewer commands test passed"
