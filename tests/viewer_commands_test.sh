@@ -196,7 +196,9 @@ pngs() { # every file named is a PNG
 # time enough for a box's parts to arrive. Skipped without xdotool.
 if command -v xdotool >/dev/null; then
     mkdir -p "$work/real-shots"
-    echo "100 quit" >"$work/real.txt" # only if the hand below never comes: Ctrl+Q ends it
+    # The script only ends a viewer the hand below never reached (no input arrived); Ctrl+Q
+    # ends it otherwise, and a broken chain of the hand's steps kills it.
+    echo "200 quit" >"$work/real.txt"
     XDG_PICTURES_DIR=$work/real-shots xvfb-run -a -s "-screen 0 1280x800x24" bash -c '
         out=$1/real.out
         "$2" --validation --size 720x450 --scene procedural:preset=small --no-saved-settings \
@@ -213,8 +215,8 @@ if command -v xdotool >/dev/null; then
                 mousemove 590 320 keyup shift key Escape mouseup 1 &&
             xdotool key F12 && wait_for 1 "^idview: screenshot:" &&
             xdotool key F12 && wait_for 2 "^idview: screenshot:" &&
-            xdotool key F12 && wait_for 3 "^idview: screenshot:"
-        xdotool key ctrl+q
+            xdotool key F12 && wait_for 3 "^idview: screenshot:" &&
+            xdotool key ctrl+q || kill $pid
         wait $pid' real "$work" "$idview"
     rc=$?
     [[ $rc -eq 0 ]] || fail "real input session: exit code $rc $(head -c 500 "$work/real.err")"
