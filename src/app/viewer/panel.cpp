@@ -402,7 +402,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
     if (ImGui::CollapsingHeader("Timing")) timing(info);
-    if (ImGui::CollapsingHeader("Controls")) // the command table's own list: never stale
+    if (ImGui::CollapsingHeader("Controls")) // the help overlay lists the command table
         ImGui::TextWrapped("F1 or ? lists every key and mouse action.");
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     ImGui::PopItemWidth();
