@@ -99,9 +99,9 @@ void Viewer::act(const PanelActions& actions) {
         partsChanged();
     }
     // The panel's buttons run the rows of the command table their keys run (commands.h).
-    for (const auto& [asked, name] : {std::pair{actions.hide, "hide"},
-                                      std::pair{actions.isolate, "isolate"},
-                                      std::pair{actions.showAll, "show-all"}})
+    for (const auto& [asked, name] :
+         {std::pair{actions.hide, "hide"}, std::pair{actions.isolate, "isolate"},
+          std::pair{actions.showAll, "show-all"}})
         if (asked) findCommand(name)->run(*this, input_);
 }
 
