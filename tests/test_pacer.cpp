@@ -103,6 +103,21 @@ TEST(FramePacer, ALoadShowsItsProgressAtItsInterval) {
     EXPECT_TRUE(pacer.due(wants));
 }
 
+TEST(FramePacer, WakesWhenThePictureChangesByItself) {
+    app::FramePacer pacer;
+    app::FrameWants wants;
+    const app::SceneKey key;
+    drawWhileDue(pacer, wants, key);
+    wants.changeAt = 4.0; // a notice that goes at 4 s
+    EXPECT_FALSE(pacer.due(wants));
+    EXPECT_EQ(pacer.rest(wants), 4.0);
+    wants.now = 4.0;
+    EXPECT_TRUE(pacer.due(wants));
+    pacer.drew(wants, false, key);
+    wants.now = 5.0;
+    EXPECT_FALSE(pacer.due(wants)); // once
+}
+
 TEST(Blink, StepsBetweenTwoWeightsTwiceAPeriod) {
     EXPECT_EQ(render::blinkWeight(0.0), render::blinkStrong);
     const double half = 0.5 / render::blinkHz;

@@ -67,14 +67,14 @@ TEST(Selection, BoxReplacesAddsAndRemoves) {
     EXPECT_EQ(s.selected().ids(), std::vector<uint32_t>{5});
 }
 
-TEST(Selection, EscapeClearsFirstAndOnlyThenMeansClose) {
+TEST(Selection, EscapeClearsAndSaysWhetherThereWasOne) {
     app::Selection s;
     s.reset(10);
     s.hover(3u);
     s.click();
     EXPECT_TRUE(s.escape()); // consumed: cleared the selection
     EXPECT_TRUE(s.selected().empty());
-    EXPECT_FALSE(s.escape()); // nothing selected: the viewer may close
+    EXPECT_FALSE(s.escape()); // nothing selected: Esc had nothing to cancel (commands.h)
     s.hover(5u);
     s.click();
     s.reset(10);

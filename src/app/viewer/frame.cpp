@@ -10,6 +10,7 @@
 
 #include "app/headless.h" // cameraFrame
 #include "app/image_io.h"
+#include "app/viewer/commands.h"
 #include "app/viewer/viewer.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
@@ -85,6 +86,7 @@ void Viewer::drawPanel() {
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y));
+    drawOverlays();
     ImGui::Render();
 }
 
@@ -107,11 +109,11 @@ void Viewer::act(const PanelActions& actions) {
         if (selection.selected() != before) selectionChanged(); // hidden parts leave it
         partsChanged();
     }
-    if (actions.hide) selection.hideSelected();
-    if (actions.isolate) selection.isolateSelected();
-    if (actions.showAll) selection.showAll();
-    if (actions.hide) selectionChanged();
-    if (actions.hide || actions.isolate || actions.showAll) partsChanged();
+    // The panel's buttons run the rows of the command table their keys run (commands.h).
+    for (const auto& [asked, name] :
+         {std::pair{actions.hide, "hide"}, std::pair{actions.isolate, "isolate"},
+          std::pair{actions.showAll, "show-all"}})
+        if (asked) findCommand(name)->run(*this, input_);
 }
 
 void Viewer::applySettings() {
@@ -138,6 +140,7 @@ void Viewer::follow(SceneState::Change change) {
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
+    startClean(change); // section, history: what belonged to the model before
     scene::AssemblyNode root = scene::assemblyTree(scene, treeRootName(scene_.loaded()));
     scene::sortNatural(root); // the panel lists siblings by name, --tree in scene order
     tree_ = scene::treeRows(root);

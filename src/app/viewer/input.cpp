@@ -9,6 +9,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
+#include "app/viewer/commands.h"
 #include "app/viewer/viewer.h"
 #include "render/culling.h"
 
@@ -17,29 +18,6 @@ namespace {
 
 // A left click is a press and release this close together; farther is a drag.
 constexpr double clickSlop = 4.0;
-
-// The standard views' keys: 1 front, 3 right, 7 top, with Ctrl the opposite side (the numpad
-// habit Blender made common), 0 isometric, and FreeCAD's own 2 top, 4 back, 5 bottom, 6 left
-// (its 1, 3 and 0 agree), on the number row and the keypad.
-struct ViewKey {
-    int key;
-    bool ctrl;
-    const char* view; // scene::findStandardView's name
-};
-constexpr ViewKey viewKeys[] = {
-    {GLFW_KEY_1, false, "front"},     {GLFW_KEY_1, true, "back"},  {GLFW_KEY_3, false, "right"},
-    {GLFW_KEY_3, true, "left"},       {GLFW_KEY_7, false, "top"},  {GLFW_KEY_7, true, "bottom"},
-    {GLFW_KEY_0, false, "isometric"}, {GLFW_KEY_2, false, "top"},  {GLFW_KEY_4, false, "back"},
-    {GLFW_KEY_5, false, "bottom"},    {GLFW_KEY_6, false, "left"},
-};
-
-const scene::StandardView* viewOfKey(int key, int mods) {
-    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) key = GLFW_KEY_0 + (key - GLFW_KEY_KP_0);
-    for (const ViewKey& k : viewKeys)
-        if (k.key == key && k.ctrl == ((mods & GLFW_MOD_CONTROL) != 0))
-            return scene::findStandardView(k.view);
-    return nullptr;
-}
 
 // The keys a chord's modifier bits stand for.
 constexpr std::pair<int, int> modifierKeys[] = {{GLFW_MOD_SHIFT, GLFW_KEY_LEFT_SHIFT},
@@ -61,66 +39,13 @@ void Input::chord(int key, int mods) {
 Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
     : viewer_(viewer), window_(window), script_(std::move(script)) {}
 
+// Every key command is a row of the command table (commands.h). Keys typed into a panel
+// field are ImGui's alone (WantCaptureKeyboard): typing "h" in a path hides nothing, and Esc
+// there leaves the field.
 void Input::onKey(int key, int scancode, int action, int mods) {
     if (action != GLFW_REPEAT) panelKeys_.push({key, scancode, action == GLFW_PRESS, mods});
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
-    ViewSettings& view = viewer_.view();
-    if (key == GLFW_KEY_O && (mods & GLFW_MOD_CONTROL)) {
-        view.focusOpen = true; // Ctrl+O: the panel's open field, ready to type a path
-        view.panelVisible = true;
-        return;
-    }
-    if (const scene::StandardView* standard = viewOfKey(key, mods)) {
-        viewer_.turnTo(*standard);
-        return;
-    }
-    switch (key) {
-    case GLFW_KEY_V:
-        view.vsync = !view.vsync; // the next frame makes a swapchain with it
-        break;
-    case GLFW_KEY_F:
-        viewer_.fitView();
-        break;
-    case GLFW_KEY_O:
-        viewer_.setOrtho(!viewer_.settings().camera.ortho);
-        break;
-    case GLFW_KEY_R:
-        viewer_.reloadShaders();
-        break;
-    case GLFW_KEY_HOME:
-        viewer_.camera().resetView();
-        break;
-    case GLFW_KEY_F1:
-        view.panelVisible = !view.panelVisible;
-        break;
-    case GLFW_KEY_M:
-        viewer_.toggleMeasure();
-        break;
-    case GLFW_KEY_E:
-        viewer_.settings().render.edges.on = !viewer_.settings().render.edges.on;
-        break;
-    case GLFW_KEY_H:
-        if (mods & GLFW_MOD_SHIFT) {
-            selection_.showAll();
-        } else {
-            selection_.hideSelected();
-            viewer_.selectionChanged(); // hidden parts are not selected
-        }
-        viewer_.partsChanged();
-        break;
-    case GLFW_KEY_I:
-        selection_.isolateSelected();
-        viewer_.partsChanged();
-        break;
-    case GLFW_KEY_ESCAPE:
-        if (selection_.escape())
-            viewer_.selectionChanged();
-        else
-            viewer_.quit(); // nothing selected: Esc closes
-        break;
-    default:
-        break;
-    }
+    if (const Command* command = commandOfKey(key, mods)) command->run(viewer_, *this);
 }
 
 void Input::feedPanelKeys() {
@@ -282,7 +207,10 @@ bool Input::readPartSets(const std::optional<render::PartSetReading>& reading, V
     const auto box = boxQuery(extent);
     bool changed = false;
     for (size_t i = 0; i < reading->queries.size(); ++i) {
-        if (reading->queries[i] == whole) visibleParts_ = reading->counts[i];
+        if (reading->queries[i] == whole) {
+            visibleParts_ = reading->counts[i];
+            visibleFrame_ = reading->frame;
+        }
         if (box && box_ && reading->frame >= box_->since && reading->queries[i] == *box) {
             selection_.select(reading->sets[i], box_->mode);
             box_.reset();
@@ -299,6 +227,7 @@ void Input::forgetParts(uint32_t partCount) {
     box_.reset();
     partSetsFrom_ = viewer_.nextFrame(); // earlier frames counted the old scene's parts
     visibleParts_ = 0;
+    visibleFrame_ = 0;
 }
 
 void Input::runScript(double seconds) {

@@ -70,6 +70,7 @@ class Input {
     // from the newest completed part sets. True when the selection changed.
     bool readPartSets(const std::optional<render::PartSetReading>& reading, VkExtent2D extent);
     uint32_t visibleParts() const { return visibleParts_; }
+    uint64_t partSetsFrame() const { return visibleFrame_; } // the frame visibleParts is of
     // The scene changed: part IDs and picks in flight name parts of the old one.
     void forgetParts(uint32_t partCount);
 
@@ -77,8 +78,12 @@ class Input {
     Selection& selection() { return selection_; }
     float hoveredDepth() const { return hoveredDepth_; }
     float selectedDepth() const { return selectedDepth_; }
-    // Esc: clears the selection; false when there was none.
-    bool escape() { return selection_.escape(); }
+    // Esc's first cancel: a box being dragged is dropped; false when none was.
+    bool cancelBox() {
+        if (!drag_ || drag_->kind != DragKind::Box) return false;
+        drag_.reset();
+        return true;
+    }
 
   private:
     enum class DragKind { Orbit, Pan, Box };
@@ -116,6 +121,7 @@ class Input {
     std::optional<Drag> drag_;
     std::optional<Box> box_;
     uint64_t partSetsFrom_ = 0; // the first frame whose part sets are still to be read
+    uint64_t visibleFrame_ = 0; // the frame visibleParts_ was counted in
     uint32_t visibleParts_ = 0;
     Selection selection_;
     float hoveredDepth_ = 1.0f, selectedDepth_ = 1.0f;

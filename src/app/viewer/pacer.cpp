@@ -23,6 +23,8 @@ bool FramePacer::due(const FrameWants& wants) {
     }
     if (wants.continuous || wants.busy || owed_ > 0 || !lastFrame_) return true;
     if (wants.loading && wants.now - *lastFrame_ >= progressInterval) return true;
+    if (wants.changeAt && *lastFrame_ < *wants.changeAt && wants.now >= *wants.changeAt)
+        return true;
     return wants.hovering && blinkStep(wants.now) != blinkStep(*lastFrame_);
 }
 
@@ -31,6 +33,7 @@ std::optional<double> FramePacer::rest(const FrameWants& wants) const {
     auto sooner = [&](double seconds) { wait = std::min(wait.value_or(seconds), seconds); };
     if (wants.loading) sooner(progressInterval);
     if (wants.hovering) sooner(render::nextBlinkChange(wants.now) - wants.now);
+    if (wants.changeAt && *wants.changeAt > wants.now) sooner(*wants.changeAt - wants.now);
     if (wait) wait = std::max(*wait, 0.0);
     return wait;
 }

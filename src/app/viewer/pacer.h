@@ -38,6 +38,7 @@ struct FrameWants {
     bool loading = false;             // a model opening or a pipeline being built: progress shows
     bool hovering = false;            // a part under the cursor: its blink steps
     std::optional<double> scriptWake; // seconds until the script's next command
+    std::optional<double> changeAt;   // when the picture changes by itself (a notice goes)
 };
 
 class FramePacer {

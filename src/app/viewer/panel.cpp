@@ -22,32 +22,6 @@
 namespace app {
 namespace {
 
-const char* const controlsHelp = "left drag          orbit\n"
-                                 "right/middle drag  pan\n"
-                                 "wheel              zoom towards the target\n"
-                                 "left click         select the part (background: clear)\n"
-                                 "shift + left drag  select the parts in the box\n"
-                                 "ctrl/alt + drag    add them / remove them\n"
-                                 "H / I              hide / isolate the selection\n"
-                                 "shift + H          show all parts\n"
-                                 "E                  part edges on/off\n"
-                                 "M                  measure: click points and faces\n"
-                                 "Esc                clear selection; if none, quit\n"
-                                 "F                  fit the selection (or the shown\n"
-                                 "                   parts) beside the panel\n"
-                                 "1 / 3 / 7          front / right / top view\n"
-                                 "ctrl + 1 / 3 / 7   back / left / bottom view\n"
-                                 "0                  isometric view\n"
-                                 "2 / 4 / 5 / 6      FreeCAD's top / back / bottom / left\n"
-                                 "O                  orthographic / perspective\n"
-                                 "Home               reset the view\n"
-                                 "R                  reload shaders, clear pipeline caches\n"
-                                 "V                  vsync on/off\n"
-                                 "F1                 hide/show this panel\n"
-                                 "drop a file        open it (.gltf .glb .step .stp .iges\n"
-                                 "                   .igs .brep); or type its path in\n"
-                                 "                   the open field (ctrl + O)";
-
 // When to choose which technique, from the H100 figures in docs/benchmarks.md.
 const char* const techniqueHelp =
     "On an H100 at 1440p, against drawing with no part IDs:\n"
@@ -402,7 +376,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     const float maxHeight = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(340, maxHeight));
     ImGui::SetNextWindowBgAlpha(0.85f);
-    if (!ImGui::Begin("idview (F1 hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (!ImGui::Begin("idview (F9 hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
         return actions;
     }
@@ -432,7 +406,8 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane);
     if (ImGui::CollapsingHeader("Timing")) timing(info);
-    if (ImGui::CollapsingHeader("Controls")) ImGui::TextUnformatted(controlsHelp);
+    if (ImGui::CollapsingHeader("Controls")) // the help overlay lists the command table
+        ImGui::TextWrapped("F1 or ? lists every key and mouse action.");
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     ImGui::PopItemWidth();
     ImGui::End();

@@ -149,7 +149,8 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             std::tie(command.key, command.mods) = *chord;
         else
             fail("unknown key '" + command.text +
-                 "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB, HOME; shift+, ctrl+, alt+)");
+                 "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB, HOME, /; shift+, ctrl+, "
+                 "alt+)");
         break;
     case ScriptOp::Copies:
         if (command.values[0] < 1.0 || command.values[0] > 1e6 ||
@@ -245,6 +246,7 @@ std::optional<int> scriptKeyCode(const std::string& name) {
     if (key == "ENTER") return GLFW_KEY_ENTER;
     if (key == "TAB") return GLFW_KEY_TAB;
     if (key == "HOME") return GLFW_KEY_HOME;
+    if (key == "/" || key == "SLASH") return GLFW_KEY_SLASH; // shift+/ is ?, the help
     return std::nullopt;
 }
 

@@ -4,8 +4,9 @@
 // handlers as real keys, mouse and panel widgets. Parsing is plain C++ and unit-tested.
 //
 //   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB,
-//                           HOME), with modifiers as in shift+H, ctrl+A or alt+X (held
-//                           as their own keys around it, as a hand does)
+//                           HOME, /), with modifiers as in shift+H, ctrl+A or alt+X (held
+//                           as their own keys around it, as a hand does): any row of the
+//                           command table (commands.h), ctrl+Z undoes, ctrl+Q quits
 //   0.6 type /tmp/a b.glb   characters typed into the panel's focused field (the rest of the
 //                           line, ASCII), as GLFW hands them over
 //   1   move 320 200        cursor to window coordinates (top-left origin)

@@ -48,8 +48,8 @@ class Selection {
         primary_.reset();
         if (selected_.size() == 1) primary_ = selected_.ids().front();
     }
-    // Esc clears the selection. Returns false when nothing was selected, so the caller may
-    // give Esc its other meaning (closing the viewer).
+    // Esc clears the selection (after what else it cancels, commands.h). Returns false when
+    // nothing was selected.
     bool escape() {
         const bool had = !selected_.empty();
         selected_.clear();

@@ -55,6 +55,10 @@ void Viewer::reloadShaders() {
     scene_.reloadShaders();
 }
 
+void Viewer::chooseFile() {
+    view_.focusOpen = view_.panelVisible = true;
+}
+
 void Viewer::selectionChanged() const {
     const Selection& selection = input_.selection();
     const auto part = selection.primary();
@@ -175,6 +179,7 @@ FrameWants Viewer::frameWants() const {
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = input_.selection().hovered().has_value();
     wants.scriptWake = input_.wakeIn(wants.now);
+    if (!shell_.notice.empty()) wants.changeAt = shell_.noticeUntil; // the notice goes then
     return wants;
 }
 

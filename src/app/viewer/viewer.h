@@ -16,6 +16,7 @@
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/pacer.h"
+#include "app/viewer/overlays.h"
 #include "app/viewer/panel.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/scene_state.h"
@@ -27,7 +28,7 @@
 namespace app {
 
 // Opens the window on the options' scene and runs until it is closed (window close button,
-// Esc with nothing selected, or a script's quit), then keeps its settings for the next run
+// Ctrl+Q, or a script's quit), then keeps its settings for the next run
 // unless --no-saved-settings (saved_settings.h). Returns the exit code: 0, or 3 when the
 // validation layer reported anything. Throws vk::Error and friends with a message for people
 // (no display, no device that can present, a model that cannot be loaded at start).
@@ -81,6 +82,18 @@ class Viewer {
     bool pipelinePending() const { return scene_.pipelinePending(); }
     // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
     void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
+    // Ctrl+O: a model file to open (for now: the panel's open field, ready to type a path).
+    void chooseFile();
+
+    // The command table's (commands.h; viewer_commands.cpp).
+    void say(const std::string& line) const { events_.say(line); } // an event line
+    void toggleHelp();                                             // F1, ?: the help overlay
+    bool helpOpen() const { return shell_.help; }
+    // Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y: the hidden parts and section planes of a step before
+    // or after.
+    void undo();
+    void redo();
+    void screenshotToPictures(); // F12: a PNG in the Pictures folder (screenshot_path.h)
 
   private:
     using Clock = std::chrono::steady_clock;
@@ -98,6 +111,9 @@ class Viewer {
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);
+    void startClean(SceneState::Change change);              // viewer_commands.cpp, from follow
+    void drawOverlays();                                     // help, empty view, notice; undo steps
+    void restore(const ShownState& state, const char* what); // undo, redo
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
     void showParts();
@@ -138,6 +154,7 @@ class Viewer {
     scene::PartSet shownSelected_, shownHidden_;
     uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
     std::optional<uint32_t> saidHovered_; // the hovered part last told
+    Shell shell_; // the help, undo history and overlays (overlays.h)
 };
 
 } // namespace app

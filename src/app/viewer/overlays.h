@@ -1,0 +1,42 @@
+// overlays.h - what the viewer draws over the view besides the panel: the help overlay (the
+// command table, F1 or ?), a quiet line in the middle of the free area saying why nothing is
+// drawn, and a short notice (the screenshot's file). The state they keep, with the undo
+// history they watch, is the Viewer's Shell.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/viewer/history.h"
+#include "app/viewer/orbit_camera.h"
+
+namespace app {
+
+struct Shell {
+    bool help = false;      // the help overlay is open
+    bool firstModel = true; // the command line's model: its --section stays
+    History history;
+    ShownState seen;               // the hidden parts and section of the newest frame
+    bool pending = false;          // seen changed and is no undo step yet (a drag in progress)
+    uint64_t changedAt = 0;        // the frame seen last changed in: older part counts are stale
+    std::string empty;             // the reason the event lines last told ("" : something drawn)
+    scene::Section countedSection; // the section of the newest fresh visible count
+    std::string notice;            // shown until noticeUntil (seconds since the first frame)
+    double noticeUntil = 0.0;
+};
+
+// Why the view is empty: a word for the event line ("empty: all hidden") and a sentence for
+// people. `visible`: the visible part count of a frame that shows the current hidden parts
+// and section, nullopt when there is none yet or the renderer counts no parts (a floor).
+struct EmptyReason {
+    std::string event, message;
+};
+std::optional<EmptyReason> whyEmpty(uint32_t partCount, uint32_t hiddenCount, bool sectionOn,
+                                    std::optional<uint32_t> visible);
+
+// Each frame, inside the ImGui frame. drawHelp clears `open` when its window is closed.
+void drawHelp(bool& open);
+void drawCentred(const std::string& text, FreeSpan span, float heightFraction);
+
+} // namespace app
