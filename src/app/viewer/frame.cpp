@@ -73,7 +73,7 @@ void Viewer::drawPanel() {
                                                 ImVec2(box->second.x, box->second.y),
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y));
+    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
     ImGui::Render();
 }
 
@@ -215,6 +215,8 @@ void Viewer::saveScreenshot(const std::string& path) {
 PanelInfo Viewer::panelInfo() const {
     PanelInfo info;
     info.device = device_.info().name;
+    info.cpuDevice = device_.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    info.events = &events_;
     for (const render::Technique& t : render::techniques())
         info.unavailable.push_back(render::unavailableReason(t, device_.info()));
     info.source = scene_.loaded().source;
@@ -238,7 +240,8 @@ PanelInfo Viewer::panelInfo() const {
     for (size_t i = gpu.size() - std::min<size_t>(gpu.size(), 200); i < gpu.size(); ++i)
         info.gpuHistory.push_back(float(gpu[i]));
     auto describe = [&](std::optional<uint32_t> part, float depth) {
-        return PartLine{part ? scene::describePart(scene_.scene(), *part) : std::nullopt, depth};
+        const PartDetails& details = partDetails_.get(scene_.scene(), part);
+        return PartLine{details.part, depth, details.face};
     };
     info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
     const Selection& selection = input_.selection();
@@ -285,8 +288,10 @@ void Viewer::updateTitle(double seconds, bool now) {
     titleTime_ = seconds;
     titleFrame_ = frameNumber_;
     char text[256];
-    std::snprintf(text, sizeof text, "idview - %s - %.0f fps - GPU %.2f ms", what.c_str(), fps_,
-                  mean(slots_.gpuMilliseconds(), 30));
+    // A CPU device's timestamps time the CPU rendering (lavapipe).
+    const bool cpu = device_.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    std::snprintf(text, sizeof text, "idview - %s - %.0f fps - %s %.2f ms", what.c_str(), fps_,
+                  cpu ? "render (CPU device)" : "GPU", mean(slots_.gpuMilliseconds(), 30));
     if (title_ == text) return;
     title_ = text;
     window_.setTitle(title_);

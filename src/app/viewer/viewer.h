@@ -15,6 +15,7 @@
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/panel.h"
+#include "app/viewer/part_details.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/scene_state.h"
 #include "app/viewer/window.h"
@@ -113,6 +114,7 @@ class Viewer {
     scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
     std::optional<size_t> selectedRow_;
     glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
+    mutable PartDetailsCache partDetails_; // the hovered and selected parts, worked out once
 
     // Frame timing and the title.
     uint64_t frameNumber_ = 0;
