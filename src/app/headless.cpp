@@ -67,8 +67,8 @@ std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
         return parts[i] ? std::to_string(*parts[i]) : std::string("null");
     };
     return "{\"p0\":" + point(p0) + ",\"p1\":" + point(p1) + ",\"distance\":" + distance +
-           ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) +
-           "]," + scene::unitJsonMember(unit) + "}";
+           ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) + "]," +
+           scene::unitJsonMember(unit) + "}";
 }
 
 std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& unit) {

@@ -262,9 +262,8 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
          << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
          << ",\"faces_failed\":" << loaded.facesFailed << "," << scene::unitJsonMember(s.unit)
-         << ",\"deflection\":" << std::defaultfloat
-         << std::setprecision(6) << loaded.deflection << std::fixed << std::setprecision(3)
-         << ",\"cache\":" << jsonString(loaded.cache)
+         << ",\"deflection\":" << std::defaultfloat << std::setprecision(6) << loaded.deflection
+         << std::fixed << std::setprecision(3) << ",\"cache\":" << jsonString(loaded.cache)
          << ",\"cache_note\":" << jsonString(loaded.cacheNote) << ",\"cache_ms\":" << loaded.cacheMs
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds

@@ -65,10 +65,10 @@ void Viewer::selectionChanged() const {
     }
     // Named as the assembly names it (its path ends with the object's name), then for a CAD
     // part its face: "...: board/R1, face 3: cylinder r 0.5 mm, area 3.14159 mm²".
-    const std::string face = details.face && info->face
-                                 ? ", face " + std::to_string(*info->face) + ": " +
-                                       scene::describeSurface(*details.face)
-                                 : "";
+    const std::string face =
+        details.face && info->face
+            ? ", face " + std::to_string(*info->face) + ": " + scene::describeSurface(*details.face)
+            : "";
     events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
                 std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
                 "): " + info->path + face);

@@ -353,7 +353,7 @@ LengthUnit cadUnit(const std::string& path) {
                            : nullptr;
     const std::string value = name && *name ? name : "MM";
     static const std::pair<const char*, const char*> symbols[] = {
-        {"MM", "mm"}, {"M", "m"},     {"CM", "cm"},   {"KM", "km"},   {"UM", "\u00b5m"},
+        {"MM", "mm"},   {"M", "m"},   {"CM", "cm"}, {"KM", "km"},   {"UM", "\u00b5m"},
         {"INCH", "in"}, {"FT", "ft"}, {"MI", "mi"}, {"MIL", "mil"}, {"UIN", "\u00b5in"}};
     for (const auto& [occt, symbol] : symbols)
         if (value == occt)
