@@ -20,7 +20,6 @@ PanelLayout::PanelLayout(PanelLayoutState& state) : state_(state) {
         state_.roomAbove = state_.roomBelow = 0.0f;
     }
     scroll_ = ImGui::GetScrollY();
-    scrollMax_ = ImGui::GetScrollMaxY();
     roomAbove_ = state_.roomAbove;
     if (state_.roomAbove > 0.0f) ImGui::SetCursorPosY(ImGui::GetCursorPosY() + state_.roomAbove);
 }
@@ -60,8 +59,13 @@ void PanelLayout::finish(const Events* events) {
             const float take = std::min(state_.roomAbove, shift_);
             state_.roomAbove -= take;
             scroll += shift_ - take;
-            // Room below so the scroll reaches, also once the room above is gone.
-            below += std::max(0.0f, scroll - scrollMax_ + take);
+            // Room below so that the scroll can reach, also once the room above has gone: the
+            // farthest ImGui scrolls is the content's height less the window's inside.
+            ImGuiWindow* window = ImGui::GetCurrentWindow();
+            const float content = window->DC.CursorMaxPos.y - window->DC.CursorStartPos.y - take;
+            const float reach =
+                content + 2.0f * window->WindowPadding.y - window->InnerRect.GetHeight();
+            below = std::max(below, scroll - reach);
         } else { // rows went: scroll up, and where the top is reached, room above
             scroll += shift_;
             if (scroll < 0.0f) {

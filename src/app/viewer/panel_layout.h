@@ -50,8 +50,8 @@ class PanelLayout {
     std::vector<std::string> clipped_;
     bool hovered_ = false;
     void tell(const Events* events);
-    float scroll_ = 0.0f, scrollMax_ = 0.0f, roomAbove_ = 0.0f; // as the frame started
-    float shift_ = 0.0f; // how far the anchor moved since the last frame
+    float scroll_ = 0.0f, roomAbove_ = 0.0f; // as the frame started
+    float shift_ = 0.0f;                     // how far the anchor moved since the last frame
 };
 
 } // namespace app
