@@ -3,11 +3,9 @@
 #include "app/viewer/panel.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
-#include <type_traits>
 #include <utility>
 
 #include <imgui.h>

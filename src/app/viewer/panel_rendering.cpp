@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <type_traits>
 
 #include <imgui.h>
@@ -157,8 +158,8 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     for (uint32_t l = 0; l < info.drawn.levelTriangles.size(); ++l) {
         ImGui::TextColored(tints[l], "level %u", l);
         ImGui::SameLine();
-        ImGui::Text("%llu triangles",
-                    static_cast<unsigned long long>(info.drawn.levelTriangles[l]));
+        ImGui::TextWrapped("%llu triangles",
+                           static_cast<unsigned long long>(info.drawn.levelTriangles[l]));
     }
 }
 
@@ -222,21 +223,21 @@ void sceneSection(SceneSettings& s, const PanelInfo& info) {
     if (ImGui::InputInt(fitLabel("model copies").c_str(), &copies, 1, 4,
                         ImGuiInputTextFlags_EnterReturnsTrue))
         s.copies = uint32_t(std::clamp(copies, 1, 256));
-    ImGui::Text("copies along");
+    ImGui::TextUnformatted("copies along");
     for (uint32_t bit = 0; bit < 3; ++bit) {
-        ImGui::SameLine();
         bool on = s.copyAxes & (1u << bit);
         const char* names[] = {"x", "y", "z"};
+        sameLineIfFits(checkboxWidth(names[bit]));
         // At least one axis stays on: unticking the last one is ignored.
         if (ImGui::Checkbox(names[bit], &on) && (on || (s.copyAxes & ~(1u << bit))))
             s.copyAxes = on ? (s.copyAxes | (1u << bit)) : (s.copyAxes & ~(1u << bit));
     }
     if (info.gltf) {
         int parts = int(s.parts);
-        ImGui::Text("parts");
-        ImGui::SameLine();
+        ImGui::TextUnformatted("parts");
+        sameLineIfFits(checkboxWidth("primitives"));
         ImGui::RadioButton("primitives", &parts, int(scene::PartMode::Primitives));
-        ImGui::SameLine();
+        sameLineIfFits(checkboxWidth("components"));
         ImGui::RadioButton("components", &parts, int(scene::PartMode::Components));
         s.parts = scene::PartMode(parts);
     }
