@@ -7,7 +7,8 @@
 # width nor at the narrowest, 320 px (the window made narrow enough to clamp it there); the
 # row under the pointer stays where it was while a section plane's rows and the measure
 # section come and go above it; a selected CAD face's event line carries its name, surface
-# type and area in mm²; on lavapipe the title says its times are a CPU device's.
+# type and area in mm², and a measured distance its unit; on lavapipe the title says its
+# times are a CPU device's.
 # A validation message fails a session (exit code 3). Exit 77: skipped (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 screw=/usr/share/opencascade/data/step/screw.step
@@ -95,6 +96,12 @@ t=1
     at screenshot "$work/wide.png"
     at click 500 850
     at frames 5
+    at key M
+    at click 500 850
+    at frames 3
+    at click 500 950
+    at frames 5
+    at key M
     at resize 533 1700
     at frames 8
     at screenshot "$work/narrow.png"
@@ -119,6 +126,9 @@ if [[ $selected =~ :\ .*the\ product\ name.*,\ face\ [0-9]+:\ [a-z]+.*,\ area\ [
 else
     fail "the selected face's line lacks name, surface or area in mm²: ${selected:-none}"
 fi
+measured=$(grep '^idview: measure: {' "$work/clip.out" | tail -1)
+[[ $measured == *'"distance":'[0-9]*'"unit":"mm"}' ]] && echo "ok   the measure line in mm: $measured" ||
+    fail "the measure line: ${measured:-none}"
 grep -q '^idview: title: .* - render (CPU device) [0-9.]* ms$' "$work/clip.out" &&
     echo "ok   the title says lavapipe's times are CPU time" ||
     fail "title: $(grep -m1 '^idview: title:' "$work/clip.out")"
