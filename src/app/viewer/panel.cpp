@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <utility>
 
 #include <imgui.h>
@@ -146,9 +147,17 @@ void viewRow(Options& settings, ViewSettings& view, PanelActions& actions) {
 }
 
 void status(const PanelInfo& info, PanelActions& actions) {
-    char line[160];
-    std::snprintf(line, sizeof line, "%s, %.0f fps", info.device.c_str(), info.fps);
-    textDisabledWrapped(line);
+    // The frame rate on the device's line where the widest rate would fit there too, else on
+    // a line of its own: a rate gaining a digit never wraps the line and moves what follows.
+    char fps[32];
+    std::snprintf(fps, sizeof fps, "%.0f fps", info.fps);
+    const std::string widest = info.device + ", 99999 fps";
+    if (ImGui::CalcTextSize(widest.c_str()).x <= ImGui::GetContentRegionAvail().x) {
+        textDisabledWrapped((info.device + ", " + fps).c_str());
+    } else {
+        textDisabledWrapped(info.device.c_str());
+        textDisabledWrapped(fps);
+    }
     if (!info.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", info.error.c_str());
