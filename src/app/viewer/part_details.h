@@ -24,11 +24,13 @@ class PartDetailsCache {
     const PartDetails& get(const scene::Scene& scene, std::optional<uint32_t> part);
 
   private:
-    // A scene is told apart by where its arrays lie: a new scene is built while the one
-    // before still exists, so it never starts at the same addresses.
+    // A scene is told apart by where its arrays lie and how long they are: a new scene is
+    // built while the one before still exists, so it never starts at the same addresses; the
+    // lengths tell apart copies made after earlier ones were freed.
     struct Entry {
         const void* vertices = nullptr;
         const void* objects = nullptr;
+        size_t vertexCount = 0, objectCount = 0;
         std::optional<uint32_t> part;
         PartDetails details;
     };
