@@ -249,9 +249,9 @@ PanelInfo Viewer::panelInfo() const {
     info.bounds = camera_.bounds();
     info.measuring = measure_.on();
     info.measureLines = measureLines(scene_.scene(), measure_.points());
-    if (selection.primary())
-        if (const auto face = scene::faceReport(scene_.scene(), *selection.primary()))
-            if (face->surface.kind == scene::SurfaceKind::Plane) info.selectedPlane = face->surface;
+    if (const auto& face = info.selected.face;
+        face && face->surface.kind == scene::SurfaceKind::Plane)
+        info.selectedPlane = face->surface;
     info.selectedCount = selection.selected().size();
     info.selectedParts = &selection.selected();
     info.selectedRow = selectedRow_;
