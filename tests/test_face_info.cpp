@@ -2,10 +2,12 @@
 // here with known dimensions (a 40 x 30 x 20 box with a hole of radius 5 through it), the
 // planes' normals, distances and areas and the hole's radius and axis, also for a copy moved
 // away; on occt-misc's files, every face's surface type and area as Open CASCADE itself gives
-// them; on a mesh part, the area of its triangles.
+// them, also in the panel's line for a face (area with its unit); on a mesh part, the area of
+// its triangles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <numbers>
 #include <unistd.h>
@@ -264,4 +266,33 @@ TEST(FaceInfo, AMeshPartHasTheAreaOfItsTriangles) {
     EXPECT_GT(area, 0.0);
     EXPECT_NEAR(r->surface.area, area, 1e-5 * area);
     EXPECT_NE(faceReportJson(*r).find("\"surface\":\"mesh\""), std::string::npos);
+}
+
+// What the panel and the selection's event line say of each face of screw.step (one shape,
+// so its faces are numbered as TopExp::MapShapes orders them): the area, read back from the
+// text, is Open CASCADE's own for that face, in mm².
+TEST(FaceInfo, EachFaceLineGivesOpenCascadesAreaInMillimetres) {
+    const char* path = "/usr/share/opencascade/data/step/screw.step";
+    Scene s = loadCad(path, {}).scene;
+    s.unit = cadUnit(path); // as app::loadScene sets it (test_units.cpp checks that)
+    STEPControl_Reader reader;
+    ASSERT_EQ(reader.ReadFile(path), IFSelect_RetDone);
+    reader.TransferRoots();
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(reader.OneShape(), TopAbs_FACE, faces);
+    ASSERT_GT(s.uniquePartCount(), 0u);
+    for (uint32_t part = 0; part < s.uniquePartCount(); ++part) {
+        const auto report = faceReport(s, part);
+        ASSERT_TRUE(report && report->face);
+        const std::string line = describeSurface(*report);
+        const size_t at = line.find(", area ");
+        ASSERT_NE(at, std::string::npos) << line;
+        char* end = nullptr;
+        const double area = std::strtod(line.c_str() + at + 7, &end);
+        EXPECT_EQ(std::string(end), " mm\u00b2") << line;
+        GProp_GProps props;
+        BRepGProp::SurfaceProperties(faces(int(*report->face) + 1), props);
+        EXPECT_NEAR(area, props.Mass(), 1e-5 * props.Mass()) << line;
+        EXPECT_EQ(line.rfind(surfaceName(report->surface.kind), 0), 0u) << line;
+    }
 }

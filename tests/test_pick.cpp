@@ -288,7 +288,7 @@ TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
         EXPECT_GT(glm::length(delta), 0.0f);
         char expected[64];
         std::snprintf(expected, sizeof expected, "\"distance\":%.9g,", double(glm::length(delta)));
-        const std::string line = app::measureJson(r);
+        const std::string line = app::measureJson(r, f.loaded.scene.unit);
         EXPECT_NE(line.find(expected), std::string::npos) << line;
         EXPECT_NE(line.find("\"parts\":[" + std::to_string(*r.measured[0].part) + "," +
                             std::to_string(*r.measured[1].part) + "]"),
@@ -299,7 +299,7 @@ TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
         const app::HeadlessResult off = app::renderHeadless(o, f.loaded.scene, f.camera);
         EXPECT_FALSE(off.measuredPoints[0].has_value());
         ASSERT_TRUE(off.measuredPoints[1].has_value());
-        const std::string nulls = app::measureJson(off);
+        const std::string nulls = app::measureJson(off, f.loaded.scene.unit);
         EXPECT_EQ(nulls.rfind("{\"p0\":null,", 0), 0u) << nulls;
         EXPECT_NE(nulls.find("\"distance\":null,\"delta\":null,\"parts\":[null,"),
                   std::string::npos)

@@ -45,7 +45,8 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
 }
 
 std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
-                        const std::array<std::optional<uint32_t>, 2>& parts) {
+                        const std::array<std::optional<uint32_t>, 2>& parts,
+                        const scene::LengthUnit& unit) {
     auto point = [](const std::optional<glm::vec3>& p) {
         if (!p) return std::string("null");
         char text[96];
@@ -66,13 +67,14 @@ std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
         return parts[i] ? std::to_string(*parts[i]) : std::string("null");
     };
     return "{\"p0\":" + point(p0) + ",\"p1\":" + point(p1) + ",\"distance\":" + distance +
-           ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) + "]}";
+           ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) + "]," +
+           scene::unitJsonMember(unit) + "}";
 }
 
-std::string measureJson(const HeadlessResult& result) {
+std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& unit) {
     std::array<std::optional<uint32_t>, 2> parts;
     for (size_t i = 0; i < 2 && i < result.measured.size(); ++i) parts[i] = result.measured[i].part;
-    return measureJson(result.measuredPoints, parts);
+    return measureJson(result.measuredPoints, parts, unit);
 }
 
 namespace {
@@ -293,7 +295,7 @@ int runHeadless(const Options& options) {
         std::printf("%s\n",
                     partSetJson(*result.rectParts, result.rectCount, options.selectRect).c_str());
     for (const auto& pick : result.picks) std::printf("%s\n", pickJson(scene, pick).c_str());
-    if (options.measure) std::printf("%s\n", measureJson(result).c_str());
+    if (options.measure) std::printf("%s\n", measureJson(result, scene.unit).c_str());
     for (const auto& pick : result.faceInfoPicks) {
         const auto report = pick.part ? scene::faceReport(scene, *pick.part) : std::nullopt;
         std::printf("%s\n", report ? scene::faceReportJson(*report).c_str() : "{\"part\":null}");

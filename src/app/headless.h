@@ -63,12 +63,14 @@ struct HeadlessResult {
 // nulls for every field but x and y on background.
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
 
-// --measure's line: {"p0":[x,y,z],"p1":[x,y,z],"distance":D,"delta":[dx,dy,dz],"parts":[A,B]},
-// null where a point shows no part (and the distance and delta then).
-std::string measureJson(const HeadlessResult& result);
+// --measure's line: {"p0":[x,y,z],"p1":[x,y,z],"distance":D,"delta":[dx,dy,dz],"parts":[A,B],
+// "unit":"mm"}, null where a point shows no part (and the distance and delta then); the
+// points and lengths are in `unit` (the scene's).
+std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& unit);
 // The same line for any two points (the viewer's measure mode prints it too).
 std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
-                        const std::array<std::optional<uint32_t>, 2>& parts);
+                        const std::array<std::optional<uint32_t>, 2>& parts,
+                        const scene::LengthUnit& unit);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one, and
 // saves the pipeline cache (pipelineCacheFolder) at the end.

@@ -141,10 +141,12 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
             loaded.cache = result.cache;
             loaded.cacheNote = settings.cadCache ? result.cacheNote : "--no-cache";
             loaded.cacheMs = result.cacheMs;
+            loaded.scene.unit = scene::cadUnit(loaded.source);
         } else {
             scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
+            loaded.scene.unit = scene::gltfUnit();
         }
     } else {
         const SceneSpec spec = parseSceneSpec(settings.builtin);
@@ -259,9 +261,9 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
          << ",\"unique_triangles\":" << s.indices.size() / 3
          << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
          << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
-         << ",\"faces_failed\":" << loaded.facesFailed << ",\"deflection\":" << std::defaultfloat
-         << std::setprecision(6) << loaded.deflection << std::fixed << std::setprecision(3)
-         << ",\"cache\":" << jsonString(loaded.cache)
+         << ",\"faces_failed\":" << loaded.facesFailed << "," << scene::unitJsonMember(s.unit)
+         << ",\"deflection\":" << std::defaultfloat << std::setprecision(6) << loaded.deflection
+         << std::fixed << std::setprecision(3) << ",\"cache\":" << jsonString(loaded.cache)
          << ",\"cache_note\":" << jsonString(loaded.cacheNote) << ",\"cache_ms\":" << loaded.cacheMs
          << ",\"search_batch\":" << key.searchBatch
          << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds

@@ -95,7 +95,8 @@ struct FirstFrame {
 };
 
 // One JSON object for --stats: objects, geometries, parts, triangles, load_ms, read_ms,
-// tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), ... and what
+// tessellation_ms, faces_failed, deflection (those four 0 unless a CAD file), "unit" (the
+// scene's: of the deflection and each level's max_error), ... and what
 // the renderer `settings` choose would draw and upload; last first_frame_ms and
 // pipeline_cache from `first`, null without it (nothing rendered).
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,

@@ -22,6 +22,7 @@ std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId) 
     FaceReport report;
     report.part = uniquePartId;
     report.object = ref->object;
+    report.unit = scene.unit;
     if (ref->localPart < g.partFaces.size()) report.face = g.partFaces[ref->localPart];
     const glm::dmat4 world(object.world);
     const glm::dmat3 linear(world);
@@ -91,7 +92,23 @@ std::string faceReportJson(const FaceReport& r) {
     if (s.kind == SurfaceKind::Sphere)
         json += ",\"radius\":" + number(s.radius) + ",\"center\":" + vec(s.axisOrigin);
     return json + ",\"bbox\":{\"min\":" + vec(glm::dvec3(r.bbox.min)) +
-           ",\"max\":" + vec(glm::dvec3(r.bbox.max)) + "}}";
+           ",\"max\":" + vec(glm::dvec3(r.bbox.max)) + "}," + unitJsonMember(r.unit) + "}";
+}
+
+std::string describeSurface(const FaceReport& r) {
+    const SurfaceInfo& s = r.surface;
+    std::string line = surfaceName(s.kind);
+    if (s.kind == SurfaceKind::Cylinder || s.kind == SurfaceKind::Sphere)
+        line += " r " + formatLength(s.radius, r.unit);
+    if (s.kind == SurfaceKind::Plane) {
+        char normal[96];
+        std::snprintf(normal, sizeof normal, " n (%.4g, %.4g, %.4g)", s.normal.x, s.normal.y,
+                      s.normal.z);
+        line += normal;
+    }
+    // Without a B-rep face the area is its triangles' (mesh parts).
+    return line + (s.kind == SurfaceKind::Mesh ? ", triangle area " : ", area ") +
+           formatArea(s.area, r.unit);
 }
 
 std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b) {

@@ -17,6 +17,7 @@ struct FaceReport {
     std::optional<uint32_t> face; // CAD files: the B-rep face
     SurfaceInfo surface;          // world coordinates
     Bounds bbox;                  // world, of the part's triangles
+    LengthUnit unit;              // the scene's: of the coordinates, radius and area
 };
 
 // Objects place geometry rigidly, or scaled alike on every axis: areas and radii scale by the
@@ -33,8 +34,14 @@ struct PlanePair {
 // nullopt unless both are planes.
 std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b);
 
-// {"part","object","face","surface","area",...,"bbox"}: "normal" and "d" for planes,
-// "radius" and "axis" {origin, direction} for cylinders, "radius" and "center" for spheres.
+// {"part","object","face","surface","area",...,"bbox","unit"}: "normal" and "d" for planes,
+// "radius" and "axis" {origin, direction} for cylinders, "radius" and "center" for spheres;
+// lengths and coordinates in "unit", the area in it squared.
 std::string faceReportJson(const FaceReport& report);
+
+// What the panel and the event lines say of a face, with units: "cylinder r 5 mm, area
+// 628.319 mm²", "plane n (0, 0, 1), area 200 mm²"; a mesh part (no B-rep face) gives "mesh,
+// triangle area 0.5 m²".
+std::string describeSurface(const FaceReport& report);
 
 } // namespace scene

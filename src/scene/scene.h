@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/surface_info.h"
+#include "scene/units.h"
 #include "shared.h"
 
 namespace scene {
@@ -100,6 +101,9 @@ struct Scene {
     std::vector<Geometry> geometries;
     std::vector<Material> materials;
     std::vector<Object> objects;
+    // What the coordinates are in: set where the scene is loaded (app::loadScene), for every
+    // length the viewer and the JSON show.
+    LengthUnit unit = generatedUnit();
 
     const Part& part(const Object& object, uint32_t localPart) const {
         return parts[geometries[object.geometry].firstPart + localPart];

@@ -85,7 +85,8 @@ void Viewer::drawPanel() {
                                                 ImVec2(box->second.x, box->second.y),
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y));
+    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y),
+                scene_.scene().unit);
     drawOverlays();
     ImGui::Render();
 }
@@ -238,6 +239,8 @@ void Viewer::saveScreenshot(const std::string& path) {
 PanelInfo Viewer::panelInfo() const {
     PanelInfo info;
     info.device = device_.info().name;
+    info.cpuDevice = device_.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    info.events = &events_;
     for (const render::Technique& t : render::techniques())
         info.unavailable.push_back(render::unavailableReason(t, device_.info()));
     info.source = scene_.loaded().source;
@@ -263,7 +266,8 @@ PanelInfo Viewer::panelInfo() const {
     for (size_t i = gpu.size() - std::min<size_t>(gpu.size(), 200); i < gpu.size(); ++i)
         info.gpuHistory.push_back(float(gpu[i]));
     auto describe = [&](std::optional<uint32_t> part, float depth) {
-        return PartLine{part ? scene::describePart(scene_.scene(), *part) : std::nullopt, depth};
+        const PartDetails& details = partDetails_.get(scene_.scene(), part);
+        return PartLine{details.part, depth, details.face};
     };
     info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
     const Selection& selection = input_.selection();
@@ -271,9 +275,9 @@ PanelInfo Viewer::panelInfo() const {
     info.bounds = camera_.bounds();
     info.measuring = measure_.on();
     info.measureLines = measureLines(scene_.scene(), measure_.points());
-    if (selection.primary())
-        if (const auto face = scene::faceReport(scene_.scene(), *selection.primary()))
-            if (face->surface.kind == scene::SurfaceKind::Plane) info.selectedPlane = face->surface;
+    if (const auto& face = info.selected.face;
+        face && face->surface.kind == scene::SurfaceKind::Plane)
+        info.selectedPlane = face->surface;
     info.selectedCount = selection.selected().size();
     info.selectedParts = &selection.selected();
     info.selectedRow = selectedRow_;
@@ -314,12 +318,15 @@ void Viewer::updateTitle(double seconds, bool now) {
     titleTime_ = seconds;
     titleFrame_ = frameNumber_;
     char text[256];
-    const double gpuMs = mean(slots_.gpuMilliseconds(), 30);
+    // A CPU device's timestamps time the CPU rendering (lavapipe).
+    const bool cpu = device_.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const char* timed = cpu ? "render (CPU device)" : "GPU";
+    const double ms = mean(slots_.gpuMilliseconds(), 30);
     if (continuous)
-        std::snprintf(text, sizeof text, "idview - %s - %.0f fps - GPU %.2f ms", what.c_str(), fps_,
-                      gpuMs);
+        std::snprintf(text, sizeof text, "idview - %s - %.0f fps - %s %.2f ms", what.c_str(),
+                      fps_, timed, ms);
     else
-        std::snprintf(text, sizeof text, "idview - %s - GPU %.2f ms", what.c_str(), gpuMs);
+        std::snprintf(text, sizeof text, "idview - %s - %s %.2f ms", what.c_str(), timed, ms);
     if (title_ == text) return;
     title_ = text;
     window_.setTitle(title_);

@@ -17,17 +17,14 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
     return text;
 }
 
-// "cylinder r 5, area 628.319": what the panel says of a face.
-std::string faceLine(const scene::FaceReport& face) {
-    const scene::SurfaceInfo& s = face.surface;
+// "part 3 (bracket), face 2: cylinder r 5 mm, area 628.319 mm²": what the panel says of a
+// face, named as the assembly names its object.
+std::string faceLine(const scene::Scene& scene, const scene::FaceReport& face) {
     std::string line = "part " + std::to_string(face.part);
+    const std::string& name = scene.objects[face.object].name;
+    if (!name.empty()) line += " (" + name + ")";
     if (face.face) line += ", face " + std::to_string(*face.face);
-    line += std::string(": ") + scene::surfaceName(s.kind);
-    if (s.kind == scene::SurfaceKind::Cylinder || s.kind == scene::SurfaceKind::Sphere)
-        line += format(" r %.6g", s.radius);
-    if (s.kind == scene::SurfaceKind::Plane)
-        line += format(" n (%.4g, %.4g, %.4g)", s.normal.x, s.normal.y, s.normal.z);
-    return line + format(", area %.6g", s.area);
+    return line + ": " + scene::describeSurface(face);
 }
 
 } // namespace
@@ -40,24 +37,26 @@ std::vector<std::string> measureLines(const scene::Scene& scene,
         const auto face = scene::faceReport(scene, p.part);
         if (!face) continue;
         faces.push_back(*face);
-        lines.push_back(faceLine(*face));
-        lines.push_back(format("  at (%.6g, %.6g, %.6g)", p.world.x, p.world.y, p.world.z));
+        lines.push_back(faceLine(scene, *face));
+        lines.push_back("  at " + scene::formatPoint(glm::dvec3(p.world), scene.unit));
     }
     if (points.size() == 2) {
         const glm::vec3 d = points[1].world - points[0].world;
-        lines.push_back(format("distance %.6g", glm::length(d)));
-        lines.push_back(format("dX %.6g  dY %.6g  dZ %.6g", d.x, d.y, d.z));
+        lines.push_back("distance " + scene::formatLength(glm::length(d), scene.unit));
+        lines.push_back("dX dY dZ " + scene::formatPoint(glm::dvec3(d), scene.unit));
     }
     if (faces.size() == 2)
         if (const auto planes = scene::comparePlanes(faces[0], faces[1])) {
             lines.push_back(format("faces' normals at %.4g degrees", planes->angleDegrees));
-            if (planes->distance) lines.push_back(format("planes %.6g apart", *planes->distance));
+            if (planes->distance)
+                lines.push_back("planes " + scene::formatLength(*planes->distance, scene.unit) +
+                                " apart");
         }
     return lines;
 }
 
-void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewProj,
-                 glm::vec2 size) {
+void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewProj, glm::vec2 size,
+                 const scene::LengthUnit& unit) {
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     std::vector<ImVec2> screen;
     for (const MeasurePoint& p : points) {
@@ -70,7 +69,8 @@ void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewP
     if (screen.size() == 2) {
         draw->AddLine(screen[0], screen[1], shadow, 4.0f);
         draw->AddLine(screen[0], screen[1], colour, 2.0f);
-        const std::string label = format("%.6g", glm::length(points[1].world - points[0].world));
+        const std::string label =
+            scene::formatLength(glm::length(points[1].world - points[0].world), unit);
         const ImVec2 middle((screen[0].x + screen[1].x) * 0.5f + 8.0f,
                             (screen[0].y + screen[1].y) * 0.5f - 8.0f);
         const ImVec2 extent = ImGui::CalcTextSize(label.c_str());

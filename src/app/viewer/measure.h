@@ -39,13 +39,13 @@ class Measure {
 };
 
 // The panel's lines: each point's part, face and position, then the distance and dX/dY/dZ,
-// then the planes' angle (and distance where parallel).
+// then the planes' angle (and distance where parallel); every length in the scene's unit.
 std::vector<std::string> measureLines(const scene::Scene& scene,
                                       const std::vector<MeasurePoint>& points);
 
 // The overlay: the points, and with two the line between them labelled with the distance,
-// over the window of `size` seen through `viewProj`.
-void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewProj,
-                 glm::vec2 size);
+// over the window of `size` seen through `viewProj`, the distance in `unit` (the scene's).
+void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewProj, glm::vec2 size,
+                 const scene::LengthUnit& unit);
 
 } // namespace app

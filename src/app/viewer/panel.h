@@ -12,10 +12,13 @@
 #include <vulkan/vulkan.h>
 
 #include "app/cli.h"
+#include "app/viewer/events.h"
+#include "app/viewer/panel_layout.h"
 #include "app/viewer/selection.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"
 #include "scene/assembly_tree.h"
+#include "scene/face_info.h"
 #include "scene/part_data.h"
 #include "scene/scene.h"
 #include "scene/standard_view.h"
@@ -39,10 +42,18 @@ struct ViewSettings {
     std::array<char, 512> openPath{};     // the panel's "open" field, emptied when a model opens
     bool focusOpen = false;               // Ctrl+O: the open field takes the keys next frame
     std::vector<std::string> recentFiles; // models opened this session, newest first
+    // The panel's width in pixels, dragged by its right edge; kept between minPanelWidth and
+    // maxPanelShare of the window's width.
+    float panelWidth = 360.0f;
     // Where the panel lay in the last frame, window x coordinates (both 0 while hidden): F
     // fits the scene in the area beside it.
     float panelLeft = 0.0f, panelRight = 0.0f;
+    PanelLayoutState layout; // the row under the pointer, the clipping report
 };
+
+// The panel's narrowest width (every label fits, panel_widgets.h) and widest share of the
+// window.
+inline constexpr float minPanelWidth = 320.0f, maxPanelShare = 0.6f;
 
 // What the user asked of the parts through the panel, for the viewer to carry out.
 struct PanelActions {
@@ -61,10 +72,13 @@ struct PanelActions {
 struct PartLine {
     std::optional<scene::PartInfo> part;
     float depth = 1.0f;
+    std::optional<scene::FaceReport> face; // CAD parts: the B-rep face (part_details.h)
 };
 
 struct PanelInfo {
     std::string device;
+    bool cpuDevice = false;         // VK_PHYSICAL_DEVICE_TYPE_CPU (lavapipe): times are CPU's
+    const Events* events = nullptr; // for the panel's own event lines (panel_layout.h)
     // Per entry of render::techniques(): why the device cannot run it, or "".
     std::vector<std::string> unavailable;
     std::string source; // model file or scene spec

@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include <imgui.h>
+
+#include "app/viewer/panel_widgets.h"
 
 namespace app {
 
@@ -33,7 +36,8 @@ int axisOf(const scene::SectionPlane& plane) {
 }
 
 void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds,
-              const std::optional<scene::SurfaceInfo>& selectedPlane) {
+              const std::optional<scene::SurfaceInfo>& selectedPlane,
+              const scene::LengthUnit& unit) {
     ImGui::PushID(index);
     char label[32];
     std::snprintf(label, sizeof label, "plane %d", index + 1);
@@ -48,14 +52,14 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
     }
     const int axis = axisOf(plane);
     for (int a = 0; a < 3; ++a) {
-        ImGui::SameLine();
         const char* names[] = {"X", "Y", "Z"};
+        sameLineIfFits(checkboxWidth(names[a]));
         if (ImGui::RadioButton(names[a], axis == a) && axis != a) {
             const float middle = 0.5f * (bounds.min[a] + bounds.max[a]);
             plane = scene::axisPlane(a, middle, plane.flip);
         }
     }
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("face"));
     ImGui::BeginDisabled(!selectedPlane);
     if (ImGui::RadioButton("face", axis < 0) && selectedPlane) {
         // Flush with the selected face, keeping what lies behind it: the solid it bounds.
@@ -66,25 +70,38 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
         ImGui::SetTooltip(selectedPlane ? "on the plane of the selected face"
                                         : "select a planar face of a CAD model first");
     ImGui::EndDisabled();
-    ImGui::SameLine();
+    sameLineIfFits(checkboxWidth("flip"));
     ImGui::Checkbox("flip", &plane.flip);
     const glm::vec2 range = offsetRange(bounds, plane.normal);
     // A little past the bounds, so a plane can leave the scene whole on either side.
     const float margin = 0.02f * (range.y - range.x) + 1e-6f;
-    ImGui::SliderFloat("offset", &plane.offset, range.x - margin, range.y + margin, "%.3f");
-    if (axis < 0)
-        ImGui::TextDisabled("normal %.3f %.3f %.3f", plane.normal.x, plane.normal.y,
-                            plane.normal.z);
+    // The slider shows the offset with its unit.
+    std::string format =
+        "%.3f" + (unit.symbol.empty() ? std::string(" (no unit)") : " " + unit.symbol);
+    const std::string offsetLabel = fitLabel("offset");
+    ImGui::SliderFloat(offsetLabel.c_str(), &plane.offset, range.x - margin, range.y + margin,
+                       format.c_str());
+    if (axis < 0) {
+        char normal[96];
+        std::snprintf(normal, sizeof normal, "normal %.3f %.3f %.3f", plane.normal.x,
+                      plane.normal.y, plane.normal.z);
+        textDisabledWrapped(normal);
+    }
     ImGui::PopID();
 }
 
 } // namespace
 
 void sectionPlanes(scene::Section& section, const scene::Bounds& bounds,
-                   const std::optional<scene::SurfaceInfo>& selectedPlane) {
-    for (size_t i = 0; i < section.planes.size(); ++i)
-        onePlane(int(i), section.planes[i], bounds, selectedPlane);
-    ImGui::TextDisabled("Each plane cuts its side away; hatched caps close the cut solids.");
+                   const std::optional<scene::SurfaceInfo>& selectedPlane,
+                   const scene::LengthUnit& unit, PanelLayout& layout) {
+    const char* names[] = {"section plane 1", "section plane 2", "section plane 3"};
+    for (size_t i = 0; i < section.planes.size(); ++i) {
+        layout.mark(i < 3 ? names[i] : "section plane");
+        onePlane(int(i), section.planes[i], bounds, selectedPlane, unit);
+    }
+    layout.mark("section note");
+    textDisabledWrapped("Each plane cuts its side away; hatched caps close the cut solids.");
 }
 
 } // namespace app

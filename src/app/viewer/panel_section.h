@@ -4,16 +4,20 @@
 
 #include <optional>
 
+#include "app/viewer/panel_layout.h"
 #include "scene/bounds.h"
 #include "scene/section.h"
 #include "scene/surface_info.h"
+#include "scene/units.h"
 
 namespace app {
 
 // `bounds`: the scene's, which the offset sliders span. `selectedPlane`: the selected part's
 // surface when it is a planar B-rep face (world coordinates), which a plane can be put on.
+// Offsets are in `unit`, the scene's. Each plane is a group of rows in `layout`.
 void sectionPlanes(scene::Section& section, const scene::Bounds& bounds,
-                   const std::optional<scene::SurfaceInfo>& selectedPlane);
+                   const std::optional<scene::SurfaceInfo>& selectedPlane,
+                   const scene::LengthUnit& unit, PanelLayout& layout);
 
 // The offsets at which a plane of this normal touches the bounds: the slider's range.
 glm::vec2 offsetRange(const scene::Bounds& bounds, glm::vec3 normal);

@@ -1,14 +1,19 @@
 // panel_selection.cpp - hovered and selected part details, wrapped to the panel's width.
 #include "app/viewer/panel_selection.h"
 
+#include <string>
+
 #include <imgui.h>
+
+#include "app/viewer/panel_widgets.h"
 
 namespace app {
 namespace {
 
-// Lines each details box holds: a part's name, path, face, object and triangles, with room
-// for a long name to wrap once. Fixed, so what lies below never jumps as the hover changes.
-constexpr float detailLines = 6.0f;
+// Lines each details box holds: a part's name, path, face and its surface, object and
+// triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
+// the hover changes (it scrolls where a narrow panel wraps more).
+constexpr float detailLines = 7.0f;
 
 void partLine(const char* what, const PartLine& line) {
     if (!line.part) {
@@ -20,7 +25,13 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%s", p.path.c_str());
     ImGui::PopStyleColor();
-    if (p.face) ImGui::TextWrapped("B-rep face %u of its shape (0-based)", *p.face);
+    if (p.face) {
+        const std::string surface = line.face ? ": " + scene::describeSurface(*line.face) : "";
+        ImGui::TextWrapped("face %u%s", *p.face, surface.c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the B-rep face's number in its shape (0-based, as --face-info "
+                              "gives it); its exact area from Open CASCADE");
+    }
     ImGui::TextWrapped("object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
     ImGui::TextWrapped("%u triangles, depth %.6f", p.triangleCount, double(line.depth));
 }
@@ -49,37 +60,44 @@ void selectionLine(const PanelInfo& info) {
                            info.selected.part->path.c_str());
 }
 
-void detailsBox(const char* id, auto&& draw) {
+void detailsBox(const char* id, PanelLayout& layout, auto&& draw) {
     const float height = detailLines * ImGui::GetTextLineHeightWithSpacing();
     if (ImGui::BeginChild(id, ImVec2(-1, height), true)) draw();
+    layout.checkChild();
     ImGui::EndChild();
 }
 
 } // namespace
 
-void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
-    ImGui::Text("visible parts %u", info.visibleParts);
-    if (info.hiddenCount) {
-        ImGui::SameLine();
-        ImGui::Text(", hidden %u", info.hiddenCount);
-    }
+void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
+                      PanelLayout& layout) {
+    if (info.hiddenCount)
+        ImGui::TextWrapped("visible parts %u, hidden %u", info.visibleParts, info.hiddenCount);
+    else
+        ImGui::TextWrapped("visible parts %u", info.visibleParts);
     ImGui::TextUnformatted("click selects");
     const char* levels[] = {"face", "solid", "assembly"};
     for (uint32_t level = 0; level < 3; ++level) {
-        ImGui::SameLine();
+        sameLineIfFits(checkboxWidth(levels[level]));
         if (ImGui::RadioButton(levels[level], view.selectLevel == level)) view.selectLevel = level;
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("face: the part (a CAD face); solid: its object; assembly: the "
                           "node above it. A double-click selects the solid at least.");
-    detailsBox("##selected", [&] { selectionLine(info); });
-    detailsBox("##hovered", [&] { partLine("hovered", info.hovered); });
+    layout.mark("selected part");
+    detailsBox("##selected", layout, [&] { selectionLine(info); });
+    layout.mark("hovered part");
+    detailsBox("##hovered", layout, [&] { partLine("hovered", info.hovered); });
+    layout.mark("hide buttons");
+    auto buttonWidth = [](const char* label) {
+        return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    };
     ImGui::BeginDisabled(info.selectedCount == 0);
     actions.hide = ImGui::Button("hide (H)");
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("isolate (I)"));
     actions.isolate = ImGui::Button("isolate (I)");
     ImGui::EndDisabled();
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("show all (shift+H)"));
     ImGui::BeginDisabled(info.hiddenCount == 0);
     actions.showAll = ImGui::Button("show all (shift+H)");
     ImGui::EndDisabled();

@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
 #include <string>
 
 #include <imgui.h>
+
+#include "app/viewer/panel_widgets.h"
 
 namespace app {
 
@@ -53,10 +56,12 @@ Shown shownOf(const scene::PartRanges& parts, const scene::PartSet& hidden) {
 
 } // namespace
 
-void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
+void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
+                  PanelLayout& layout) {
     if (!info.tree || info.tree->empty() || !info.hidden) return;
     const std::vector<scene::TreeRow>& rows = *info.tree;
     if (view.treeOpen.size() != rows.size()) view.treeOpen.assign(rows.size(), 0);
+    ImGui::SetNextItemWidth(-FLT_MIN);
     ImGui::InputTextWithHint("##filter", "filter by name", view.objectFilter.data(),
                              view.objectFilter.size());
     if (view.treeFilterFor != view.objectFilter.data() || view.treeShown.size() != rows.size()) {
@@ -74,7 +79,8 @@ void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actio
         shown.push_back(i);
         i = (filtering || view.treeOpen[i] || i == 0) ? i + 1 : rows[i].end;
     }
-    ImGui::Text("%zu rows of %zu nodes", shown.size(), rows.size());
+    ImGui::TextWrapped("%zu rows of %zu nodes", shown.size(), rows.size());
+    layout.mark("tree rows");
     // As tall as its rows, up to ten: a small tree leaves the room below it to the rest.
     const float rowsHeight =
         float(std::clamp<size_t>(shown.size(), 2, 10)) * ImGui::GetFrameHeightWithSpacing();
@@ -111,16 +117,19 @@ void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actio
             ImGui::SameLine();
             // Highlighted: every part under the row is selected (a row click, a solid, a box).
             const bool selected = info.selectedParts && allIn(row.parts, *info.selectedParts);
-            if (ImGui::Selectable(row.label.empty() ? row.name.c_str() : row.label.c_str(),
-                                  selected)) {
+            // A long name is cut to the row, whole in the tooltip with its path.
+            const std::string& label = row.label.empty() ? row.name : row.label;
+            const std::string shown = elided(label, ImGui::GetContentRegionAvail().x);
+            if (ImGui::Selectable((shown + "###row").c_str(), selected)) {
                 actions.selectParts = row.parts;
                 actions.mode = ImGui::GetIO().KeyCtrl ? SelectMode::Add : SelectMode::Replace;
             }
-            if (ImGui::IsItemHovered() && !row.path.empty())
-                ImGui::SetTooltip("%s", row.path.c_str());
+            if (ImGui::IsItemHovered() && (!row.path.empty() || shown != label))
+                ImGui::SetTooltip("%s", row.path.empty() ? label.c_str() : row.path.c_str());
             if (indent > 0.0f) ImGui::Unindent(indent);
             ImGui::PopID();
         }
+    layout.checkChild();
     ImGui::EndChild();
 }
 

@@ -10,7 +10,8 @@
 
 namespace app {
 
-void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions);
+void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
+                  PanelLayout& layout);
 
 // Which rows the filter keeps: those whose name holds `filter` (any case), and every parent
 // of one; all rows for an empty filter.

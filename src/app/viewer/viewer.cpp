@@ -62,15 +62,22 @@ void Viewer::chooseFile() {
 void Viewer::selectionChanged() const {
     const Selection& selection = input_.selection();
     const auto part = selection.primary();
-    const auto info = part ? scene::describePart(scene_.scene(), *part) : std::nullopt;
+    const PartDetails& details = partDetails_.get(scene_.scene(), part);
+    const auto& info = details.part;
     if (!info || selection.selected().size() > 1) { // a solid or assembly: its count
         const uint32_t count = selection.selected().size();
         events_.say(count ? "selected: " + std::to_string(count) + " parts" : "selected: none");
         return;
     }
+    // Named as the assembly names it (its path ends with the object's name), then for a CAD
+    // part its face: "...: board/R1, face 3: cylinder r 0.5 mm, area 3.14159 mm²".
+    const std::string face =
+        details.face && info->face
+            ? ", face " + std::to_string(*info->face) + ": " + scene::describeSurface(*details.face)
+            : "";
     events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
                 std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
-                "): " + info->path);
+                "): " + info->path + face);
 }
 
 void Viewer::fitView() {
@@ -250,7 +257,7 @@ void Viewer::measured(const render::PickReading& pick) {
         at[i] = points[i].world;
         parts[i] = points[i].part;
     }
-    events_.say("measure: " + measureJson(at, parts));
+    events_.say("measure: " + measureJson(at, parts, scene_.scene().unit));
 }
 
 } // namespace app

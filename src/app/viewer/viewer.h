@@ -18,6 +18,7 @@
 #include "app/viewer/pacer.h"
 #include "app/viewer/overlays.h"
 #include "app/viewer/panel.h"
+#include "app/viewer/part_details.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/scene_state.h"
 #include "app/viewer/window.h"
@@ -139,7 +140,8 @@ class Viewer {
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
     scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
     std::optional<size_t> selectedRow_;
-    glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
+    glm::mat4 viewProj_{1.0f};             // of the newest frame: where measure points come from
+    mutable PartDetailsCache partDetails_; // the hovered and selected parts, worked out once
 
     // Frame timing and the title.
     FramePacer pacer_;

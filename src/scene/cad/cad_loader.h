@@ -84,6 +84,11 @@ struct OcctLeaksIgnored {
 // True for .step/.stp/.iges/.igs/.brep in any case.
 bool isCadPath(const std::string& path);
 
+// The unit a CAD file's coordinates come out in: STEP and IGES in the one Open CASCADE's
+// readers convert them to (its xstep.cascade.unit, millimetres unless changed), whatever
+// unit the file was written in; BREP files store none.
+LengthUnit cadUnit(const std::string& path);
+
 // Loads the whole model. The result passes scene::validate(). Throws ModelError with one
 // line "<path>: <reason>"; never returns a half-built scene. With `levels` above 1, each shape
 // also gets up to levels - 1 levels of detail (scene/lod.h): its faces tessellated again at 4,

@@ -13,6 +13,7 @@
 #include <BRep_Builder.hxx>
 #include <IGESCAFControl_Reader.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <Interface_Static.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
@@ -338,3 +339,27 @@ std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,
 }
 
 } // namespace scene::cad
+
+namespace scene {
+
+LengthUnit cadUnit(const std::string& path) {
+    if (cad::formatOf(path) == cad::Format::Brep)
+        return {"", "BREP files store no unit (Open CASCADE's modelling is in millimetres by "
+                    "habit, not by the file)"};
+    // The readers register the parameter when the first is made; a cache hit may come before
+    // any, and then the default holds.
+    const char* name = Interface_Static::IsPresent("xstep.cascade.unit")
+                           ? Interface_Static::CVal("xstep.cascade.unit")
+                           : nullptr;
+    const std::string value = name && *name ? name : "MM";
+    static const std::pair<const char*, const char*> symbols[] = {
+        {"MM", "mm"},   {"M", "m"},   {"CM", "cm"}, {"KM", "km"},   {"UM", "\u00b5m"},
+        {"INCH", "in"}, {"FT", "ft"}, {"MI", "mi"}, {"MIL", "mil"}, {"UIN", "\u00b5in"}};
+    for (const auto& [occt, symbol] : symbols)
+        if (value == occt)
+            return {symbol, "Open CASCADE converts STEP and IGES files to " + std::string(symbol) +
+                                " (xstep.cascade.unit " + value + ")"};
+    return {value, "Open CASCADE's xstep.cascade.unit " + value};
+}
+
+} // namespace scene

@@ -1,0 +1,64 @@
+// panel_widgets.cpp - labels that fit the panel (panel_widgets.h).
+#include "app/viewer/panel_widgets.h"
+
+#include <algorithm>
+#include <cfloat>
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+namespace app {
+namespace {
+
+// A label column as wide as the common labels, so widgets line up where the panel is wide;
+// and the narrowest a slider or combo is still worth using beside its label.
+constexpr float labelColumn = 130.0f, narrowestWidget = 150.0f;
+
+} // namespace
+
+std::string fitLabel(const char* label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float avail = ImGui::GetContentRegionAvail().x;
+    const float text = ImGui::CalcTextSize(label, nullptr, true).x + style.ItemInnerSpacing.x;
+    const float column = std::max(text, labelColumn);
+    if (avail - column >= narrowestWidget) {
+        ImGui::SetNextItemWidth(avail - column);
+        return label;
+    }
+    const std::string shown(label, ImGui::FindRenderedTextEnd(label));
+    ImGui::TextWrapped("%s", shown.c_str());
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    return "##" + std::string(label);
+}
+
+void sameLineIfFits(float width) {
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+}
+
+float checkboxWidth(const char* label) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+           ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+std::string elided(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+    const float dots = ImGui::CalcTextSize("...").x;
+    size_t keep = text.size();
+    // Whole UTF-8 characters only: never cut between a lead byte and its continuations.
+    while (keep > 0) {
+        do --keep;
+        while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80);
+        if (ImGui::CalcTextSize(text.c_str(), text.c_str() + keep).x + dots <= width) break;
+    }
+    return text.substr(0, keep) + "...";
+}
+
+void textDisabledWrapped(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
+} // namespace app

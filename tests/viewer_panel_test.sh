@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# viewer_panel_test.sh IDVIEW LAVAPIPE_ICD - the panel as a user meets it, under Xvfb on
+# lavapipe with validation, on occt-misc's screw.step in a tall window (every section header
+# in view). The panel's event lines (panel_layout.h) say where each group of rows starts,
+# which row is under the pointer and where it was drawn, and which groups reached past the
+# panel's right edge. Checked: with every section open, nothing is clipped at the default
+# width nor at the narrowest, 320 px (the window made narrow enough to clamp it there); the
+# row under the pointer stays where it was while a section plane's rows and the measure
+# section come and go above it; a selected CAD face's event line carries its name, surface
+# type and area in mm², and a measured distance its unit; on lavapipe the title says its
+# times are a CPU device's.
+# A validation message fails a session (exit code 3). Exit 77: skipped (viewer_lib.sh).
+source "$(dirname "$0")/viewer_lib.sh"
+screw=/usr/share/opencascade/data/step/screw.step
+[[ -r $screw ]] || { echo "SKIP: $screw is missing (Debian package occt-misc)"; exit 77; }
+
+# tall NAME: the viewer at 1000x1700 on screw.step, running $work/NAME.txt.
+tall() {
+    local name=$1
+    xvfb-run -a -s "-screen 0 1280x1800x24" "$idview" --validation --size 1000x1700 \
+        --model "$screw" --script "$work/$name.txt" --print-events \
+        >"$work/$name.out" 2>"$work/$name.err"
+    local rc=$?
+    [[ $rc -eq 0 ]] || { fail "$name session: exit code $rc"; head -c 2000 "$work/$name.err"; }
+}
+# row OUT INDEX NAME: where the group NAME starts (window y) in the INDEXth "panel: rows"
+# line of OUT (1 the first, -1 the last).
+row() {
+    grep '^idview: panel: rows ' "$1" | if [[ $2 == -1 ]]; then tail -1; else sed -n "${2}p"; fi |
+        sed 's/^idview: panel: rows //' | tr ',' '\n' | sed 's/^ //' |
+        awk -v n="$3" '{ y = $NF; $NF = ""; sub(/ $/, ""); if ($0 == n) print y }'
+}
+
+# Where the headers lie with the sections closed, and with Section open.
+t=1
+{
+    at frames 3
+    echo "2 click 100 SECTION"
+    t=2.1
+    at frames 5
+    at quit
+} >"$work/learn.txt"
+# The first run finds Section's header; the second clicks it.
+{ echo "1 frames 3"; echo "1.1 quit"; } >"$work/probe.txt"
+tall probe
+section=$(row "$work/probe.out" 1 Section)
+[[ -n $section ]] || fail "no Section row in: $(grep -m1 'panel: rows' "$work/probe.out")"
+sed "s/SECTION/$((section + 8))/" -i "$work/learn.txt"
+tall learn
+timing=$(row "$work/learn.out" -1 Timing)
+[[ -n $timing && $timing -gt $((section + 60)) ]] ||
+    fail "opening Section did not move Timing below its rows ($section, $timing)"
+
+# The row under the pointer: Section open, the pointer on Timing's header; a section plane's
+# rows come above it, then the measure section (M) comes and goes at the top.
+t=1
+{
+    at frames 3
+    echo "2 click 100 $((section + 8))"
+    echo "2.5 move 100 $((timing + 8))"
+    t=2.6
+    at frames 5
+    at section y,0
+    at frames 8
+    at key M
+    at frames 8
+    at key M
+    at frames 8
+    at quit
+} >"$work/anchor.txt"
+tall anchor
+ys=$(sed -n 's/^idview: panel: pointer row Timing at \([0-9-]*\)$/\1/p' "$work/anchor.out" | tr '\n' ' ')
+first=${ys%% *}
+last=$(awk '{print $NF}' <<<"$ys")
+moves=$(grep -c '^idview: panel: rows ' "$work/anchor.out")
+if [[ -z $first ]]; then
+    fail "the pointer was never on Timing's row: $(grep 'pointer row' "$work/anchor.out" | head -5)"
+elif [[ $first == "$last" && $first -eq $timing ]]; then
+    echo "ok   the row under the pointer stayed at y $first (drawn at: $ys)"
+else
+    fail "the row under the pointer moved: drawn at $ys (first $first, last $last, learnt $timing)"
+fi
+grep -q '^idview: measure: on' "$work/anchor.out" || fail "M did not reach the viewer"
+
+# Every section open (clicked bottom-up, so the rows above stay where they were learnt), a
+# face selected, then the window narrowed until the panel is at its narrowest.
+t=1
+{
+    at frames 3
+    for header in "Which technique?" Controls Timing Section Scene Rendering; do
+        y=$(row "$work/probe.out" 1 "$header")
+        [[ -n $y ]] && at click 100 $((y + 8))
+        at frames 2
+    done
+    at frames 5
+    at screenshot "$work/wide.png"
+    at click 500 850
+    at frames 5
+    at key M
+    at click 500 850
+    at frames 3
+    at click 500 950
+    at frames 5
+    at key M
+    at resize 533 1700
+    at frames 8
+    at screenshot "$work/narrow.png"
+    at quit
+} >"$work/clip.txt"
+tall clip
+reports=$(grep '^idview: panel: width ' "$work/clip.out")
+wide=$(grep '^idview: panel: width 360,' <<<"$reports" | tail -1)
+narrow=$(grep '^idview: panel: width 320,' <<<"$reports" | tail -1)
+[[ $wide == "idview: panel: width 360, clipped: none" ]] && echo "ok   nothing clipped at 360 px" ||
+    fail "at the default width: ${wide:-no report} (all: $reports)"
+[[ $narrow == "idview: panel: width 320, clipped: none" ]] && echo "ok   nothing clipped at 320 px" ||
+    fail "at 320 px: ${narrow:-no report} (all: $reports)"
+opened=$(row "$work/clip.out" -1 Controls)
+[[ -n $opened && $opened -gt $(row "$work/probe.out" 1 Controls) ]] ||
+    fail "the sections did not open (Controls at ${opened:-?})"
+
+# The selected face: its name in the assembly, its surface and its area with the unit.
+selected=$(grep -m1 '^idview: selected: part' "$work/clip.out")
+if [[ $selected =~ :\ .*the\ product\ name.*,\ face\ [0-9]+:\ [a-z]+.*,\ area\ [0-9.e+-]+\ mm² ]]; then
+    echo "ok   $selected"
+else
+    fail "the selected face's line lacks name, surface or area in mm²: ${selected:-none}"
+fi
+measured=$(grep '^idview: measure: {' "$work/clip.out" | tail -1)
+[[ $measured == *'"distance":'[0-9]*'"unit":"mm"}' ]] && echo "ok   the measure line in mm: $measured" ||
+    fail "the measure line: ${measured:-none}"
+grep -q '^idview: title: .* - render (CPU device) [0-9.]* ms$' "$work/clip.out" &&
+    echo "ok   the title says lavapipe's times are CPU time" ||
+    fail "title: $(grep -m1 '^idview: title:' "$work/clip.out")"
+
+((failures == 0)) && echo "all panel checks passed" || exit 1
