@@ -44,6 +44,12 @@ class OrbitCamera {
     // Wheel steps (positive: closer). Scales the distance to the target, so the eye never
     // reaches or crosses it.
     void zoom(float steps);
+    // Wheel steps toward `point` (the surface under the cursor): eye and target move along
+    // their lines to the point by the distance's factor, a scaling about the point that keeps
+    // the view direction, so the point projects to the same pixel in either projection (an
+    // orthographic view's height follows the distance). The target comes closer to the point
+    // on each step, so the next orbit turns around the region the user zoomed into.
+    void zoomToward(glm::vec3 point, float steps);
     // Keeps the view direction and frames the whole scene, or `what` (F: the selection), in
     // either projection (scene::fitCamera's distance), inside `span` of the window's width
     // (the area beside the panel): the distance fits that narrower view, and the projection
@@ -71,6 +77,7 @@ class OrbitCamera {
 
   private:
     glm::vec3 direction() const; // unit vector from target to eye
+    float zoomFactor(float steps) const; // what `steps` multiply the distance by, clamped
     // The screen's up: the direction's derivative by pitch, defined at the poles too, where
     // the model's up axis is the view direction itself.
     glm::vec3 viewUp() const;

@@ -11,6 +11,7 @@
 
 #include "app/cli.h"
 #include "app/viewer/events.h"
+#include "app/viewer/file_chooser.h"
 #include "app/viewer/input.h"
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
@@ -25,8 +26,9 @@
 namespace app {
 
 // Opens the window on the options' scene and runs until it is closed (window close button,
-// Esc with nothing selected, or a script's quit), then keeps its settings for the next run
-// unless --no-saved-settings (saved_settings.h). Returns the exit code: 0, or 3 when the
+// Esc with nothing selected, or a script's quit), then keeps its settings, the window's size
+// and place, the panel's layout and the recent files for the next run unless
+// --no-saved-settings (saved_settings.h, kept_view.h). Returns the exit code: 0, or 3 when the
 // validation layer reported anything. Throws vk::Error and friends with a message for people
 // (no display, no device that can present, a model that cannot be loaded at start).
 int runViewer(const Options& options);
@@ -47,6 +49,12 @@ class Viewer {
     float aspect() const;
     uint64_t nextFrame() const { return frameNumber_; }
     void reloadShaders(); // R
+    // The wheel: `steps` toward the surface point under the cursor (the hover's pick, while
+    // the cursor is still on its pixel), else toward the orbit target.
+    void zoomAtCursor(float steps);
+    // Ctrl+O and the panel's Open...: the desktop's file chooser (file_chooser.h), its choice
+    // opened as a dropped file; without one, the panel's open field and a message.
+    void chooseFile();
     // F: frames the selected parts when there are some, else those not hidden, else the
     // whole scene, in the area beside the panel.
     void fitView();
@@ -75,7 +83,8 @@ class Viewer {
     // defaults, in the viewer and in the file (saved_settings.h).
     void resetSettings();
     void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
-    bool loading() const { return scene_.loading().has_value(); } // a dropped model
+    // A dropped model loading, or a file chooser open (what it chooses loads next).
+    bool loading() const { return scene_.loading().has_value() || chooser_.open(); }
 
   private:
     using Clock = std::chrono::steady_clock;
@@ -109,10 +118,20 @@ class Viewer {
     Input input_;
     OrbitCamera camera_;
     Measure measure_;
+    FileChooser chooser_; // Open...: its answer is taken between frames (openDrops)
+    void chosen(const ChooserResult& result);
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
     scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
     std::optional<size_t> selectedRow_;
     glm::mat4 viewProj_{1.0f}; // of the newest frame: where measure points come from
+    // The view-projections of the last few frames, by frame number: a pick arrives frames
+    // after it was taken, and its depth is unprojected with the view it was taken in.
+    std::deque<std::pair<uint64_t, glm::mat4>> drawnViewProj_;
+    void keepViewProj(uint64_t frame, const glm::mat4& viewProj);
+    std::optional<glm::vec3> pointUnderCursor() const; // zoomAtCursor's point
+    // The part of the window's width beside the panel, where F and a new model fit.
+    FreeSpan panelSpan() const;
+    void sayFitted() const; // a new model's fit, as an event line
 
     // Frame timing and the title.
     uint64_t frameNumber_ = 0;
