@@ -86,7 +86,8 @@ TEST(KeptView, AtMostTenRecentFilesAndBadLinesWarnOnce) {
     EXPECT_TRUE(view.panelVisible); // the bad lines changed nothing
     EXPECT_EQ(view.panelWidth, app::ViewSettings{}.panelWidth);
     ASSERT_EQ(w.lines.size(), 4u);
-    EXPECT_EQ(w.lines[0], "viewer.conf:13: 'viewer.panel = maybe' expects shown or hidden; ignored");
+    EXPECT_EQ(w.lines[0],
+              "viewer.conf:13: 'viewer.panel = maybe' expects shown or hidden; ignored");
     EXPECT_EQ(w.lines[1],
               "viewer.conf:14: 'viewer.panel-width = 20' expects a width in pixels; ignored");
     EXPECT_EQ(w.lines[2],

@@ -91,3 +91,20 @@ TEST(OrbitZoom, TheDistanceStaysWithinTheZoomLimits) {
     camera.zoomToward(point, 1.0f);
     EXPECT_EQ(camera.target(), target);
 }
+
+TEST(OrbitZoom, HomeComesBackToTheViewSetHomeKept) {
+    const scene::Bounds bounds = box({-40.0f, -25.0f, 0.0f}, {60.0f, 30.0f, 20.0f});
+    app::OrbitCamera camera = openedCamera(bounds); // fitted beside the panel
+    camera.setHome();
+    const glm::vec3 eye = camera.eye(), target = camera.target();
+    const float shift = camera.shift();
+    ASSERT_NE(shift, 0.0f);
+    camera.zoomToward({55.0f, -20.0f, 18.0f}, 3.0f);
+    camera.orbit({120.0f, -40.0f});
+    camera.pan({30.0f, 10.0f}, 720.0f);
+    camera.fit(bounds, 1.5f); // a fit over the whole window drops the shift
+    camera.resetView();
+    EXPECT_LT(glm::distance(camera.eye(), eye), 1e-4f * glm::distance(eye, target));
+    EXPECT_LT(glm::distance(camera.target(), target), 1e-4f * glm::distance(eye, target));
+    EXPECT_EQ(camera.shift(), shift);
+}

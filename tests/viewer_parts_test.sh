@@ -276,19 +276,19 @@ iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: or
     echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
     fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
 
-# The open field as a newcomer types into it: Ctrl+O, a path, Enter pressed and released
+# The open field as a newcomer types into it: Ctrl+L, a path, Enter pressed and released
 # between two frames (a script's key always is), the model opens; the field is then empty,
 # so the next path typed opens as it is, not joined to the last one.
 cp "$work/small.glb" "$work/again.glb"
 t=0.5
 {
-    at key ctrl+O
+    at key ctrl+L
     at frames 3
     at type "$work/small.glb"
     at key ENTER
     at loaded
     at frames 3
-    at key ctrl+O
+    at key ctrl+L
     at frames 3
     at type "$work/again.glb"
     at key ENTER

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace app {
@@ -63,7 +63,8 @@ std::array<int, 2> parseWindowPos(const std::string& text) {
         const char* end = items[i].data() + items[i].size();
         const auto [stop, error] = std::from_chars(items[i].data(), end, pos[i]);
         // Monitors left of or above the primary one have negative coordinates.
-        good = error == std::errc() && stop == end && !items[i].empty() && std::abs(pos[i]) < 100000;
+        good =
+            error == std::errc() && stop == end && !items[i].empty() && std::abs(pos[i]) < 100000;
     }
     if (!good) throw UsageError("--window-pos expects X,Y in screen pixels, not '" + text + "'");
     return pos;

@@ -47,9 +47,9 @@ ChooserResult runZenity(const std::string& title, const std::vector<FileFilter>&
     int spawned = 0;
     {
         std::lock_guard lock(job.mutex);
-        spawned = job.quitting ? ECANCELED
-                               : posix_spawnp(&pid, "zenity", &actions, nullptr, argv.data(),
-                                              environ);
+        spawned = job.quitting
+                      ? ECANCELED
+                      : posix_spawnp(&pid, "zenity", &actions, nullptr, argv.data(), environ);
         if (spawned == 0) job.child = pid;
     }
     posix_spawn_file_actions_destroy(&actions);
@@ -57,12 +57,15 @@ ChooserResult runZenity(const std::string& title, const std::vector<FileFilter>&
     std::string text;
     char buffer[4096];
     for (ssize_t n; spawned == 0 && (n = read(out[0], buffer, sizeof buffer)) != 0;)
-        if (n > 0) text.append(buffer, size_t(n));
-        else if (errno != EINTR) break;
+        if (n > 0)
+            text.append(buffer, size_t(n));
+        else if (errno != EINTR)
+            break;
     close(out[0]);
     if (spawned != 0) return {ChooserResult::Kind::Unavailable, "", "zenity is not on PATH"};
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
     {
         std::lock_guard lock(job.mutex);
         job.child = 0;

@@ -23,8 +23,8 @@ struct FileFilter {
 struct ChooserResult {
     enum class Kind { Chosen, Cancelled, Unavailable };
     Kind kind = Kind::Unavailable;
-    std::string path;  // Chosen: the file
-    std::string via;   // "portal" or "zenity"; Unavailable: why neither could be used
+    std::string path; // Chosen: the file
+    std::string via;  // "portal" or "zenity"; Unavailable: why neither could be used
 };
 
 class FileChooser {

@@ -150,6 +150,7 @@ void Viewer::follow(SceneState::Change change) {
     // is framed beside the panel, as F frames it, not partly under it.
     camera_ = OrbitCamera(initial, scene.bounds(), settings_.camera.standard);
     camera_.fit(aspect(), panelSpan());
+    camera_.setHome(); // Home comes back here, beside the panel
     sayFitted();
 }
 

@@ -66,6 +66,7 @@ void Input::onKey(int key, int scancode, int action, int mods) {
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
     ViewSettings& view = viewer_.view();
     if (key == GLFW_KEY_O && (mods & GLFW_MOD_CONTROL)) return viewer_.chooseFile(); // Open...
+    if (key == GLFW_KEY_L && (mods & GLFW_MOD_CONTROL)) return viewer_.focusOpenField();
     if (const scene::StandardView* standard = viewOfKey(key, mods)) {
         viewer_.turnTo(*standard);
         return;

@@ -45,9 +45,9 @@ std::string readLine(const std::string& key, const std::string& value, ViewSetti
 std::string keptViewText(const ViewSettings& view) {
     char width[32];
     std::snprintf(width, sizeof width, "%g", double(view.panelWidth));
-    std::string text = std::string(viewLinePrefix) + "panel = " +
-                       (view.panelVisible ? "shown" : "hidden") + "\n" + viewLinePrefix +
-                       "panel-width = " + width + "\n";
+    std::string text = std::string(viewLinePrefix) +
+                       "panel = " + (view.panelVisible ? "shown" : "hidden") + "\n" +
+                       viewLinePrefix + "panel-width = " + width + "\n";
     for (const std::string& path : view.recentFiles)
         if (path.find('\n') == std::string::npos) // one line a path
             text += std::string(viewLinePrefix) + "recent = " + path + "\n";
@@ -62,10 +62,10 @@ void readKeptView(const std::string& text, const std::string& name, ViewSettings
         line = trimmed(line);
         if (!isViewLine(line)) continue; // a flag line, a comment or nothing
         const size_t equals = line.find('=');
-        const std::string key =
-            trimmed(line.substr(std::string(viewLinePrefix).size(),
-                                equals == std::string::npos ? std::string::npos
-                                                            : equals - std::string(viewLinePrefix).size()));
+        const std::string key = trimmed(
+            line.substr(std::string(viewLinePrefix).size(),
+                        equals == std::string::npos ? std::string::npos
+                                                    : equals - std::string(viewLinePrefix).size()));
         const std::string value =
             equals == std::string::npos ? "" : trimmed(line.substr(equals + 1));
         const std::string problem =

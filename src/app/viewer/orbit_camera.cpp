@@ -151,8 +151,20 @@ void OrbitCamera::turnTo(const scene::StandardView& view) {
 }
 
 void OrbitCamera::resetView() {
+    if (home_) {
+        target_ = home_->target;
+        distance_ = home_->distance;
+        yaw_ = home_->yaw;
+        pitch_ = home_->pitch;
+        shift_ = home_->shift;
+        return;
+    }
     setFrom(initial_);
     if (opening_) turnTo(*opening_);
+}
+
+void OrbitCamera::setHome() {
+    home_ = Home{target_, distance_, yaw_, pitch_, shift_};
 }
 
 scene::Camera OrbitCamera::camera(float reach, bool ortho) const {

@@ -5,6 +5,8 @@
 // gives either projection. Plain maths (no window, no Vulkan), so it is unit-tested.
 #pragma once
 
+#include <optional>
+
 #include <glm/glm.hpp>
 
 #include "scene/camera.h"
@@ -58,8 +60,11 @@ class OrbitCamera {
     void fit(const scene::Bounds& what, float aspect, FreeSpan span = {});
     // Turns to a standard view around the target, at the same distance (1, 3, 7, 0).
     void turnTo(const scene::StandardView& view);
-    // Back to the initial view (Home).
+    // Back to the initial view (Home), or to the view setHome() kept.
     void resetView();
+    // The current view, lens shift included, becomes the one Home comes back to (a model
+    // opened fitted beside the panel).
+    void setHome();
 
     glm::vec3 eye() const;
     glm::vec3 target() const { return target_; }
@@ -76,7 +81,7 @@ class OrbitCamera {
     scene::Camera camera(float reach = 1.0f, bool ortho = false) const;
 
   private:
-    glm::vec3 direction() const; // unit vector from target to eye
+    glm::vec3 direction() const;         // unit vector from target to eye
     float zoomFactor(float steps) const; // what `steps` multiply the distance by, clamped
     // The screen's up: the direction's derivative by pitch, defined at the poles too, where
     // the model's up axis is the view direction itself.
@@ -93,6 +98,13 @@ class OrbitCamera {
     scene::Bounds bounds_;
     scene::Camera initial_;
     const scene::StandardView* opening_ = nullptr;
+    // setHome's view, kept as the orbit's own state: a camera rebuilt from eye and target
+    // could not say which way is up on the poles (a top view).
+    struct Home {
+        glm::vec3 target;
+        float distance, yaw, pitch, shift;
+    };
+    std::optional<Home> home_;
 };
 
 } // namespace app

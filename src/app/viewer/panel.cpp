@@ -47,7 +47,8 @@ const char* const controlsHelp = "left drag          orbit\n"
                                  "F1                 hide/show this panel\n"
                                  "drop a file        open it (.gltf .glb .step .stp .iges\n"
                                  "                   .igs .brep); or type its path in\n"
-                                 "                   the open field (ctrl + O)";
+                                 "                   the open field (ctrl + L)\n"
+                                 "ctrl + O           Open...: the desktop's file chooser";
 
 // When to choose which technique, from the H100 figures in docs/benchmarks.md.
 const char* const techniqueHelp =
@@ -336,8 +337,8 @@ void recentFiles(ViewSettings& view, PanelActions& actions) {
     }
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s", view.recentFiles.empty() ? "recent files: none yet"
-                                                         : "recent files");
+        ImGui::SetTooltip("%s",
+                          view.recentFiles.empty() ? "recent files: none yet" : "recent files");
 }
 
 // The model path field, the width of the panel so its hint shows whole, with the recent
@@ -358,8 +359,8 @@ void openField(ViewSettings& view, PanelActions& actions) {
         view.openPath[0])
         actions.open = std::string(view.openPath.data());
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("type or paste a model's path, Enter opens it (Ctrl+O comes here); "
-                          "or drop the file on the window");
+        ImGui::SetTooltip("type or paste a model's path, Enter opens it; or drop the file on "
+                          "the window");
     ImGui::SameLine(0.0f, spacing);
     if (ImGui::Button(chooseLabel)) actions.chooseFile = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("choose a model file (Ctrl+O)");

@@ -41,8 +41,8 @@ struct ViewSettings {
     // the part (a CAD face), 1 its object (a CAD solid), 2 the assembly node above that. A
     // double-click selects at least the object.
     uint32_t selectLevel = 0;
-    std::array<char, 512> openPath{};     // the panel's "open" field, emptied when a model opens
-    bool focusOpen = false;               // Ctrl+O: the open field takes the keys next frame
+    std::array<char, 512> openPath{}; // the panel's "open" field, emptied when a model opens
+    bool focusOpen = false;           // Ctrl+L, or no chooser: the open field takes the keys
     // Models opened, newest first, at most 10; kept between runs (kept_view.h).
     std::vector<std::string> recentFiles;
     // Where the panel lay in the last frame, window x coordinates (both 0 while hidden): F

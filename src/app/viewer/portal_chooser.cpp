@@ -86,7 +86,8 @@ void answered(GObject* source, GAsyncResult* result, gpointer data) {
                 g_free(path);
             }
         g_free(uris);
-        if (!waiting.answer) waiting.answer = ChooserResult{ChooserResult::Kind::Cancelled, "", "portal"};
+        if (!waiting.answer)
+            waiting.answer = ChooserResult{ChooserResult::Kind::Cancelled, "", "portal"};
         g_variant_unref(reply);
     }
     g_main_loop_quit(waiting.loop);

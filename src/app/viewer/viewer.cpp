@@ -97,10 +97,9 @@ std::optional<glm::vec3> Viewer::pointUnderCursor() const {
     if (input_.cursorPixel(extent) != pick->pixel) return std::nullopt; // stale: moved since
     for (const auto& [frame, viewProj] : drawnViewProj_)
         if (frame == pick->frame)
-            return scene::unprojectPixel(viewProj, glm::vec2(extent.width, extent.height),
-                                         glm::vec2(pick->pixel) +
-                                             scene_.targets()->pass().sampleZero(),
-                                         pick->depth);
+            return scene::unprojectPixel(
+                viewProj, glm::vec2(extent.width, extent.height),
+                glm::vec2(pick->pixel) + scene_.targets()->pass().sampleZero(), pick->depth);
     return std::nullopt;
 }
 
@@ -114,16 +113,15 @@ void Viewer::zoomAtCursor(float steps) {
     camera_.zoomToward(*point, steps);
     // Where the point shows now, for the event line: on the cursor's pixel.
     const VkExtent2D extent = scene_.targets()->extent();
-    const glm::mat4 viewProj =
-        camera_.shiftMatrix() *
-        cameraFrame(camera_.camera(settings_.animation.animate ? 2.0f : 1.0f,
-                                   settings_.camera.ortho),
-                    extent)
-            .viewProj;
+    const glm::mat4 viewProj = camera_.shiftMatrix() *
+                               cameraFrame(camera_.camera(settings_.animation.animate ? 2.0f : 1.0f,
+                                                          settings_.camera.ortho),
+                                           extent)
+                                   .viewProj;
     const glm::vec4 clip = viewProj * glm::vec4(*point, 1.0f);
-    const glm::vec2 at = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) *
-                             glm::vec2(extent.width, extent.height) -
-                         scene_.targets()->pass().sampleZero();
+    const glm::vec2 at =
+        (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(extent.width, extent.height) -
+        scene_.targets()->pass().sampleZero();
     const glm::uvec2 pixel = input_.hoverPick()->pixel;
     char text[160];
     std::snprintf(text, sizeof text, "zoom: toward part %u at %u,%u, now at %.2f,%.2f",
@@ -174,17 +172,17 @@ void Viewer::sayFitted() const {
     const scene::Bounds& b = camera_.bounds();
     float left = float(extent.width), right = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 clip = viewProj * glm::vec4((corner & 1) ? b.max.x : b.min.x,
-                                                    (corner & 2) ? b.max.y : b.min.y,
-                                                    (corner & 4) ? b.max.z : b.min.z, 1.0f);
+        const glm::vec4 clip =
+            viewProj * glm::vec4((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                                 (corner & 4) ? b.max.z : b.min.z, 1.0f);
         const float x = (clip.x / clip.w * 0.5f + 0.5f) * float(extent.width);
         left = std::min(left, x);
         right = std::max(right, x);
     }
     const FreeSpan span = panelSpan();
     char text[160];
-    std::snprintf(text, sizeof text, "opened fitted: x %.0f to %.0f, free %.0f to %.0f of %u",
-                  left, right, span.left * float(extent.width), span.right * float(extent.width),
+    std::snprintf(text, sizeof text, "opened fitted: x %.0f to %.0f, free %.0f to %.0f of %u", left,
+                  right, span.left * float(extent.width), span.right * float(extent.width),
                   extent.width);
     events_.say(text);
 }
@@ -305,6 +303,11 @@ void Viewer::chooseFile() {
         events_.say("file chooser: open");
 }
 
+void Viewer::focusOpenField() {
+    view_.panelVisible = true;
+    view_.focusOpen = true;
+}
+
 void Viewer::chosen(const ChooserResult& result) {
     switch (result.kind) {
     case ChooserResult::Kind::Chosen:
@@ -315,9 +318,7 @@ void Viewer::chosen(const ChooserResult& result) {
         events_.say("file chooser: cancelled");
         break;
     case ChooserResult::Kind::Unavailable:
-        // The panel's open field instead, ready to type into.
-        view_.panelVisible = true;
-        view_.focusOpen = true;
+        focusOpenField(); // the panel's open field instead
         scene_.fail("no file chooser: " + result.via + "; type the model's path here");
         events_.say("file chooser: none");
         break;

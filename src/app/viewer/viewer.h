@@ -55,6 +55,8 @@ class Viewer {
     // Ctrl+O and the panel's Open...: the desktop's file chooser (file_chooser.h), its choice
     // opened as a dropped file; without one, the panel's open field and a message.
     void chooseFile();
+    // Ctrl+L (a location, as GTK's chooser takes one): the panel's open field, ready to type.
+    void focusOpenField();
     // F: frames the selected parts when there are some, else those not hidden, else the
     // whole scene, in the area beside the panel.
     void fitView();
@@ -82,7 +84,7 @@ class Viewer {
     // The panel's Reset to defaults: the settings kept between runs back to the viewer's
     // defaults, in the viewer and in the file (saved_settings.h).
     void resetSettings();
-    void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
+    void cancelLoads() { scene_.cancelOpen(); } // the panel's Cancel
     // A dropped model loading, or a file chooser open (what it chooses loads next).
     bool loading() const { return scene_.loading().has_value() || chooser_.open(); }
 
