@@ -72,7 +72,8 @@ class OrbitCamera {
     const scene::Bounds& bounds() const { return bounds_; }
     // How far right the picture moves, in normalised device coordinates (2 is the window's
     // width): a lens shift set by fit and kept by orbit, pan, zoom and the standard views, so
-    // they turn around the target where it shows. Home (resetView) takes it back to 0.
+    // they turn around the target where it shows. Home (resetView) takes it back to 0, or to
+    // the one setHome() kept.
     float shift() const { return shift_; }
     // The projection's lens shift as a matrix to apply after the view-projection.
     glm::mat4 shiftMatrix() const;
