@@ -156,9 +156,9 @@ FreeSpan Viewer::panelSpan() const {
     if (!view_.panelVisible) return {};
     int width = 0, height = 0;
     glfwGetWindowSize(window_.handle(), &width, &height);
-    // Before the panel's first frame (the model given at start) it is not placed yet: where
-    // it opens, at its width.
-    if (view_.panelRight <= view_.panelLeft)
+    // Before the first frame (the model given at start) the panel is not placed yet: where
+    // it opens, at its width. Later both sides are 0 while it is collapsed.
+    if (frameNumber_ == 0)
         return freeSpan(float(width), panelMargin, panelMargin + view_.panelWidth);
     return freeSpan(float(width), view_.panelLeft, view_.panelRight);
 }
