@@ -25,7 +25,8 @@ esac
 # ones; libtbb-dev only for the libtbb.so symlink that Debian's OCCT CMake config names.
 packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-tools libtinygltf-dev
     libimgui-dev libvulkan-dev libstb-dev libmeshoptimizer-dev mesa-vulkan-drivers
-    libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev libtbb-dev)
+    libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev libtbb-dev
+    libportal-dev) # Open...: the desktop portal's file chooser (optional to the build)
 if [[ $what == test ]]; then
     # occt-misc: the STEP, IGES and BREP samples the CAD loader tests read.
     packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang

@@ -16,7 +16,8 @@ source "$(dirname "$0")/viewer_lib.sh"
 # The parts session: box selections (Shift, Ctrl and Alt + drag), H, Shift+H, I and the object
 # list's selection by name, with edges on, checked against what headless rendering of the
 # same view (720x450, no camera move) reports for the same rectangles; then a box with every
-# renderer. The panel covers the left of the window, the boxes lie right of it.
+# renderer. The boxes lie right of where the panel would be; it is hidden, and F fits the
+# scene in the whole window as headless frames it (a model opens fitted beside the panel).
 t=0.5
 parts() { # the sorted part IDs headless --select-rect finds in X0,Y0,X1,Y1, one per line
     "$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
@@ -38,6 +39,9 @@ visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=s
     $(count "$after_add") -gt $(count "$after_remove") ]] ||
     fail "headless --select-rect / --visible-parts gave nothing to compare with"
 {
+    at key F1
+    at key F
+    at frames 6 # the visible part count of the view F framed, however slow frames are
     at key E
     at box 420 150 600 330
     at frames 6
@@ -97,13 +101,15 @@ for r in $("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{o
     [[ $got == "idview: selected: $(count "$big") parts" ]] || fail "box with $r: '$got'"
 done
 echo "ok   box selection with each of $n renderers"
-# The visible part count the panel shows: at first the headless count of the same view;
-# with the parts hidden fewer (not compared with headless: parts revealed behind the hidden
-# ones are seen through a camera the viewer rebuilds from its orbit, which can differ from
-# headless's in the last bits, enough to show or not a sliver); isolated, exactly the parts
-# of the box (all of them were visible in it); and after Shift+H the first count again.
+# The visible part count the panel shows: once F has framed the scene (the count before the
+# first box's selection, frames after F), the headless count of the same view; with the parts
+# hidden fewer (not compared with headless: parts revealed behind the hidden ones are seen
+# through a camera the viewer rebuilds from its orbit, which can differ from headless's in
+# the last bits, enough to show or not a sliver); isolated, exactly the parts of the box (all
+# of them were visible in it); and after Shift+H the first count again.
 counts=$(sed -n 's/^idview: visible parts: //p' "$work/parts.out")
-first_seen=$(echo "$counts" | sed -n '/^[1-9]/{p;q}')
+first_seen=$(awk '/^idview: selected:/{exit} /^idview: visible parts: /{n = $4} END{print n}' \
+    "$work/parts.out")
 [[ $first_seen == "$visible_all" ]] && echo "ok   visible parts: $first_seen" ||
     fail "visible parts: viewer '$first_seen', headless '$visible_all'"
 while_hidden=$(awk '/^idview: hidden: [1-9]/{on=1} on && /^idview: hidden: 0 parts/{exit} on' \
@@ -279,19 +285,19 @@ iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: or
     echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
     fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
 
-# The open field as a newcomer types into it: Ctrl+O, a path, Enter pressed and released
+# The open field as a newcomer types into it: Ctrl+L, a path, Enter pressed and released
 # between two frames (a script's key always is), the model opens; the field is then empty,
 # so the next path typed opens as it is, not joined to the last one.
 cp "$work/small.glb" "$work/again.glb"
 t=0.5
 {
-    at key ctrl+O
+    at key ctrl+L
     at frames 3
     at type "$work/small.glb"
     at key ENTER
     at loaded
     at frames 3
-    at key ctrl+O
+    at key ctrl+L
     at frames 3
     at type "$work/again.glb"
     at key ENTER

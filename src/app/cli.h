@@ -126,6 +126,9 @@ struct Options {
     // Viewer: read the settings kept between runs at start and write them at exit
     // (saved_settings.h); --no-saved-settings does neither.
     bool savedSettings = true;
+    // Viewer: where the window opens (its top left corner, screen coordinates), kept between
+    // runs with --size (saved_settings.h); pulled onto the screen if it lies off it.
+    std::optional<std::array<int, 2>> windowPos;
 
     std::vector<std::string> given; // flags on the command line, for mode-specific defaults
 };

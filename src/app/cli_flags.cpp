@@ -414,6 +414,10 @@ const std::vector<Flag>& flags() {
                "viewer: print one 'idview: ...' line on stdout per event (title, selection, opened "
                "model, screenshot, shader reload), for scripts and tests; quiet otherwise",
                &Options::printEvents),
+            {"--window-pos", "X,Y",
+             "viewer: the window's top left corner on the screen, kept between runs with "
+             "--size; pulled onto the screen's work area if it lies off it",
+             [](Options& o, auto& v) { o.windowPos = parseWindowPos(v); }},
             {"--no-saved-settings", nullptr,
              "viewer: open on the defaults, neither reading nor writing the settings kept "
              "between runs ($XDG_CONFIG_HOME/idview/viewer.conf, else "

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace app {
@@ -52,6 +53,21 @@ void parseSize(const std::string& text, Options& o) {
     if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, not '" + text + "'");
     o.width = parseCount("--size width", text.substr(0, x), 1, 16384);
     o.height = parseCount("--size height", text.substr(x + 1), 1, 16384);
+}
+
+std::array<int, 2> parseWindowPos(const std::string& text) {
+    const std::vector<std::string> items = commaList(text);
+    std::array<int, 2> pos{};
+    bool good = items.size() == 2;
+    for (size_t i = 0; good && i < 2; ++i) {
+        const char* end = items[i].data() + items[i].size();
+        const auto [stop, error] = std::from_chars(items[i].data(), end, pos[i]);
+        // Monitors left of or above the primary one have negative coordinates.
+        good =
+            error == std::errc() && stop == end && !items[i].empty() && std::abs(pos[i]) < 100000;
+    }
+    if (!good) throw UsageError("--window-pos expects X,Y in screen pixels, not '" + text + "'");
+    return pos;
 }
 
 uint32_t parseRange(const std::string& flag, const std::string& text, render::Range range) {

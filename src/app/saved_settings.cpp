@@ -84,6 +84,18 @@ const std::vector<Kept>& keptSettings() {
         kept("--lod-levels", FIELD(scene.lodLevels)),
         kept("--lod-error", FIELD(render.lod.errorPixels)),
         kept("--ortho", FIELD(camera.ortho)),
+        // The window's geometry at the last close: flags too, so a --size on the command line
+        // wins as it does for every kept flag; Reset to defaults leaves them as they are.
+        {"--size",
+         [](const Options& o) { return std::to_string(o.width) + "x" + std::to_string(o.height); },
+         [](Options&, const Options&) {}},
+        {"--window-pos",
+         [](const Options& o) {
+             return o.windowPos ? std::to_string((*o.windowPos)[0]) + "," +
+                                      std::to_string((*o.windowPos)[1])
+                                : std::string();
+         },
+         [](Options&, const Options&) {}},
     };
     return list;
 }
@@ -108,6 +120,10 @@ std::string trimmed(const std::string& text) {
 
 } // namespace
 
+bool isViewLine(const std::string& line) {
+    return line.starts_with(viewLinePrefix);
+}
+
 std::string savedSettingsPath() {
     const char* config = std::getenv("XDG_CONFIG_HOME");
     const char* home = std::getenv("HOME");
@@ -119,7 +135,8 @@ std::string savedSettingsPath() {
 std::string savedSettingsText(const Options& options) {
     const Options defaults = viewerDefaults();
     std::string text = "# idview's viewer settings, written when it closes: one command-line "
-                       "flag a line; the command line wins (idview --help)\n";
+                       "flag a line (the command line wins, idview --help), then the window's "
+                       "own viewer. lines\n";
     for (const Kept& k : keptSettings()) {
         const std::string value = k.text(options);
         if (value == k.text(defaults)) continue;
@@ -137,7 +154,7 @@ std::vector<std::string> savedArgs(const std::string& text, const std::string& n
     std::string line;
     for (int number = 1; std::getline(lines, line); ++number) {
         line = trimmed(line);
-        if (line.empty() || line[0] == '#') continue;
+        if (line.empty() || line[0] == '#' || isViewLine(line)) continue;
         const size_t space = line.find_first_of(" \t=");
         std::vector<std::string> one = {line.substr(0, space)};
         if (space != std::string::npos) one.push_back(trimmed(line.substr(space + 1)));
@@ -181,13 +198,21 @@ void resetSavedSettings(Options& options) {
     for (const Kept& k : keptSettings()) k.reset(options, defaults);
 }
 
-void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn) {
+std::string readSavedSettings(const std::string& path) {
+    std::ifstream file(path);
+    std::stringstream text;
+    if (file) text << file.rdbuf();
+    return text.str();
+}
+
+void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn,
+                        const std::string& viewText) {
     if (path.empty()) return warn("settings not saved: neither XDG_CONFIG_HOME nor HOME is set");
     std::error_code error;
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
     // Written beside the file and renamed over it: a crash never leaves half a file.
     const std::string partial = path + ".partial";
-    std::ofstream(partial) << savedSettingsText(options);
+    std::ofstream(partial) << savedSettingsText(options) << viewText;
     std::filesystem::rename(partial, path, error);
     if (error) warn("cannot save the settings to " + path + ": " + error.message());
 }

@@ -2,6 +2,9 @@
 // command-line flags, one per line, read when the viewer starts (the command line, read
 // after it, wins) and written when it closes. The flag table parses each line, so a setting
 // is defined once, as its flag, and reaches the viewer as the command line would give it.
+// The window's size and position are flags too (--size, --window-pos). What only the window
+// has and no flag sets (the panel's layout, the recent files) follows as `viewer.NAME = VALUE`
+// lines, which the viewer reads and writes itself (viewer/kept_view.h).
 #pragma once
 
 #include <functional>
@@ -13,6 +16,10 @@
 namespace app {
 
 using Warn = std::function<void(const std::string&)>; // one line for people
+
+// The start of the window's own lines, which the flag lines skip.
+constexpr const char* viewLinePrefix = "viewer.";
+bool isViewLine(const std::string& line);
 
 // $XDG_CONFIG_HOME/idview/viewer.conf, else $HOME/.config/idview/viewer.conf; "" when
 // neither variable is set.
@@ -36,7 +43,12 @@ Options viewerOptions(const std::vector<std::string>& args, const std::string& p
 // The kept settings of `options` back to viewerDefaults()' (the panel's Reset to defaults).
 void resetSavedSettings(Options& options);
 
-// Writes savedSettingsText(options) to `path`, making its folder; a failure is one warning.
-void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn);
+// The file's text; "" when there is none.
+std::string readSavedSettings(const std::string& path);
+
+// Writes savedSettingsText(options) and then `viewText` (the window's own lines) to `path`,
+// making its folder; a failure is one warning.
+void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn,
+                        const std::string& viewText = {});
 
 } // namespace app

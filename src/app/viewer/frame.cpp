@@ -11,6 +11,7 @@
 #include "app/headless.h" // cameraFrame
 #include "app/image_io.h"
 #include "app/viewer/commands.h"
+#include "app/viewer/kept_view.h" // maxRecentFiles
 #include "app/viewer/viewer.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
@@ -96,6 +97,7 @@ void Viewer::act(const PanelActions& actions) {
     if (actions.view) turnTo(*actions.view);
     if (actions.cancelLoad) cancelLoads();
     if (actions.resetSettings) resetSettings();
+    if (actions.chooseFile) chooseFile();
     Selection& selection = input_.selection();
     if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);
     const uint32_t partCount = scene_.scene().uniquePartCount();
@@ -124,6 +126,7 @@ void Viewer::applySettings() {
 }
 
 void Viewer::openDrops() {
+    if (const auto result = chooser_.poll()) chosen(*result); // Open...'s file opens as a drop
     for (const std::string& path : input_.takeDrops()) {
         if (isGltf(path) || scene::isCadPath(path))
             scene_.startOpen(path, settings_.scene); // follow() once it has loaded
@@ -158,8 +161,12 @@ void Viewer::follow(SceneState::Change change) {
     if (scene_.loaded().settings.copies > 1) // copy 0's opening view, drawn back to take in all
         initial = scene::fitCamera(scene.bounds(), initial.eye - initial.target, initial.up,
                                    initial.fovY, aspect());
-    // The model's up axis comes from the three-quarter view; --view turns from there.
+    // The model's up axis comes from the three-quarter view; --view turns from there; then it
+    // is framed beside the panel, as F frames it, not partly under it.
     camera_ = OrbitCamera(initial, scene.bounds(), settings_.camera.standard);
+    camera_.fit(aspect(), panelSpan());
+    camera_.setHome(); // Home comes back here, beside the panel
+    sayFitted();
 }
 
 // A model file that opened joins the recent files, and the open field empties for the next.
@@ -168,7 +175,7 @@ void Viewer::remember(const std::string& source) {
     auto& recent = view_.recentFiles;
     std::erase(recent, source);
     recent.insert(recent.begin(), source);
-    if (recent.size() > 10) recent.pop_back();
+    if (recent.size() > maxRecentFiles) recent.pop_back();
     view_.openPath.fill('\0');
 }
 
@@ -181,6 +188,7 @@ render::FrameParams Viewer::frameParams(double seconds) {
     params.viewProj = camera_.shiftMatrix() * params.viewProj; // F's fit beside the panel
     params.time = float(seconds);
     viewProj_ = params.viewProj;
+    keepViewProj(frameNumber_, params.viewProj);
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
     // A released box asks for its parts (recordScene adds the visible parts' count).
     if (const auto box = input_.boxQuery(extent)) params.partSets.push_back(*box);

@@ -104,7 +104,7 @@ void Input::onButton(int button, int action, int mods) {
 
 void Input::onScroll(double dx, double dy) {
     ImGui_ImplGlfw_ScrollCallback(window_, dx, dy);
-    if (!ImGui::GetIO().WantCaptureMouse) viewer_.camera().zoom(float(dy));
+    if (!ImGui::GetIO().WantCaptureMouse) viewer_.zoomAtCursor(float(dy));
 }
 
 void Input::onDrop(const std::string& path) {
@@ -128,17 +128,20 @@ std::optional<glm::vec2> Input::cursorInWindow() const {
     return glm::vec2(cursor_);
 }
 
-std::optional<glm::uvec2> Input::pickPixel(VkExtent2D extent, uint64_t frame) {
-    std::optional<glm::uvec2> pixel;
+std::optional<glm::uvec2> Input::cursorPixel(VkExtent2D extent) const {
     const auto cursor = cursorInWindow();
-    if (cursor && !ImGui::GetIO().WantCaptureMouse) { // not over the panel
-        int width = 0, height = 0;
-        glfwGetWindowSize(window_, &width, &height);
-        // Window coordinates to scene image pixels (they differ on high-DPI screens).
-        const glm::uvec2 p(cursor->x * float(extent.width) / float(width),
-                           cursor->y * float(extent.height) / float(height));
-        if (p.x < extent.width && p.y < extent.height) pixel = p;
-    }
+    if (!cursor || ImGui::GetIO().WantCaptureMouse) return std::nullopt; // over the panel
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    // Window coordinates to scene image pixels (they differ on high-DPI screens).
+    const glm::uvec2 p(cursor->x * float(extent.width) / float(width),
+                       cursor->y * float(extent.height) / float(height));
+    if (p.x < extent.width && p.y < extent.height) return p;
+    return std::nullopt;
+}
+
+std::optional<glm::uvec2> Input::pickPixel(VkExtent2D extent, uint64_t frame) {
+    const std::optional<glm::uvec2> pixel = cursorPixel(extent);
     if (!pixel)
         pickingSince_.reset();
     else if (!pickingSince_)
@@ -151,12 +154,14 @@ bool Input::readPick(const std::optional<render::PickReading>& pick) {
     // count, so an old pick never shows as the hover after leaving the panel.
     if (!pickingSince_) {
         selection_.hover(std::nullopt);
+        hoverPick_.reset();
         pendingClick_.reset();
         return false;
     }
     if (pick && pick->frame >= *pickingSince_) {
         selection_.hover(pick->part);
         hoveredDepth_ = pick->depth;
+        hoverPick_ = pick;
     }
     // A click selects what was under the cursor in the frame after the click.
     if (pendingClick_ && pick && pick->frame >= *pendingClick_ && viewer_.measuring()) {
@@ -224,6 +229,7 @@ void Input::forgetParts(uint32_t partCount) {
     selection_.reset(partCount);
     pendingClick_.reset();
     pickingSince_.reset();
+    hoverPick_.reset();
     box_.reset();
     partSetsFrom_ = viewer_.nextFrame(); // earlier frames counted the old scene's parts
     visibleParts_ = 0;
@@ -400,6 +406,9 @@ void Input::queue(const ScriptCommand& c) {
         break;
     case ScriptOp::Cancel:
         step([this] { viewer_.cancelLoads(); }, true);
+        break;
+    case ScriptOp::ClearRecent: // as the panel's entry does
+        step([this] { viewer_.view().recentFiles.clear(); }, true);
         break;
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(v[0]); ++i) step([] {}, true);

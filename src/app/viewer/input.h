@@ -59,6 +59,11 @@ class Input {
     // The pixel of the scene image (of `extent`) this frame picks: under the cursor, unless
     // the panel is. `frame` starts the run of picks that hover and clicks read.
     std::optional<glm::uvec2> pickPixel(VkExtent2D extent, uint64_t frame);
+    // The scene image pixel under the cursor now, nullopt over the panel or outside.
+    std::optional<glm::uvec2> cursorPixel(VkExtent2D extent) const;
+    // The newest pick that gave the hover (its frame, pixel, part and depth): the wheel zooms
+    // toward its point while the cursor is still on its pixel.
+    const std::optional<render::PickReading>& hoverPick() const { return hoverPick_; }
     // Hover and clicks from the newest completed pick. True when the selection changed.
     bool readPick(const std::optional<render::PickReading>& pick);
     // The box being dragged (Shift/Ctrl/Alt + left drag), in window coordinates.
@@ -125,6 +130,7 @@ class Input {
     uint32_t visibleParts_ = 0;
     Selection selection_;
     float hoveredDepth_ = 1.0f, selectedDepth_ = 1.0f;
+    std::optional<render::PickReading> hoverPick_;
     std::optional<uint64_t> pendingClick_; // the frame whose pick the click selects from
     uint32_t pendingLevel_ = 0;            // what it selects (ViewSettings::selectLevel)
     double lastClickTime_ = -1.0;          // glfwGetTime of the last click, for double-clicks

@@ -92,10 +92,22 @@ void OrbitCamera::pan(glm::vec2 pixels, float viewportHeight) {
 }
 
 void OrbitCamera::zoom(float steps) {
+    distance_ *= zoomFactor(steps);
+}
+
+float OrbitCamera::zoomFactor(float steps) const {
     // Multiplying keeps the distance positive whatever the steps; the bounds keep it from
     // vanishing (float underflow) or running away.
     const float radius = usableRadius(bounds_);
-    distance_ = std::clamp(distance_ * std::pow(zoomPerStep, steps), radius * 1e-5f, radius * 1e4f);
+    const float distance =
+        std::clamp(distance_ * std::pow(zoomPerStep, steps), radius * 1e-5f, radius * 1e4f);
+    return distance / distance_;
+}
+
+void OrbitCamera::zoomToward(glm::vec3 point, float steps) {
+    const float factor = zoomFactor(steps);
+    target_ = point + (target_ - point) * factor;
+    distance_ *= factor;
 }
 
 void OrbitCamera::fit(float aspect, FreeSpan span) {
@@ -139,8 +151,20 @@ void OrbitCamera::turnTo(const scene::StandardView& view) {
 }
 
 void OrbitCamera::resetView() {
+    if (home_) {
+        target_ = home_->target;
+        distance_ = home_->distance;
+        yaw_ = home_->yaw;
+        pitch_ = home_->pitch;
+        shift_ = home_->shift;
+        return;
+    }
     setFrom(initial_);
     if (opening_) turnTo(*opening_);
+}
+
+void OrbitCamera::setHome() {
+    home_ = Home{target_, distance_, yaw_, pitch_, shift_};
 }
 
 scene::Camera OrbitCamera::camera(float reach, bool ortho) const {

@@ -5,6 +5,8 @@
 // gives either projection. Plain maths (no window, no Vulkan), so it is unit-tested.
 #pragma once
 
+#include <optional>
+
 #include <glm/glm.hpp>
 
 #include "scene/camera.h"
@@ -44,6 +46,12 @@ class OrbitCamera {
     // Wheel steps (positive: closer). Scales the distance to the target, so the eye never
     // reaches or crosses it.
     void zoom(float steps);
+    // Wheel steps toward `point` (the surface under the cursor): eye and target move along
+    // their lines to the point by the distance's factor, a scaling about the point that keeps
+    // the view direction, so the point projects to the same pixel in either projection (an
+    // orthographic view's height follows the distance). The target comes closer to the point
+    // on each step, so the next orbit turns around the region the user zoomed into.
+    void zoomToward(glm::vec3 point, float steps);
     // Keeps the view direction and frames the whole scene, or `what` (F: the selection), in
     // either projection (scene::fitCamera's distance), inside `span` of the window's width
     // (the area beside the panel): the distance fits that narrower view, and the projection
@@ -52,8 +60,11 @@ class OrbitCamera {
     void fit(const scene::Bounds& what, float aspect, FreeSpan span = {});
     // Turns to a standard view around the target, at the same distance (1, 3, 7, 0).
     void turnTo(const scene::StandardView& view);
-    // Back to the initial view (Home).
+    // Back to the initial view (Home), or to the view setHome() kept.
     void resetView();
+    // The current view, lens shift included, becomes the one Home comes back to (a model
+    // opened fitted beside the panel).
+    void setHome();
 
     glm::vec3 eye() const;
     glm::vec3 target() const { return target_; }
@@ -61,7 +72,8 @@ class OrbitCamera {
     const scene::Bounds& bounds() const { return bounds_; }
     // How far right the picture moves, in normalised device coordinates (2 is the window's
     // width): a lens shift set by fit and kept by orbit, pan, zoom and the standard views, so
-    // they turn around the target where it shows. Home (resetView) takes it back to 0.
+    // they turn around the target where it shows. Home (resetView) takes it back to 0, or to
+    // the one setHome() kept.
     float shift() const { return shift_; }
     // The projection's lens shift as a matrix to apply after the view-projection.
     glm::mat4 shiftMatrix() const;
@@ -70,7 +82,8 @@ class OrbitCamera {
     scene::Camera camera(float reach = 1.0f, bool ortho = false) const;
 
   private:
-    glm::vec3 direction() const; // unit vector from target to eye
+    glm::vec3 direction() const;         // unit vector from target to eye
+    float zoomFactor(float steps) const; // what `steps` multiply the distance by, clamped
     // The screen's up: the direction's derivative by pitch, defined at the poles too, where
     // the model's up axis is the view direction itself.
     glm::vec3 viewUp() const;
@@ -86,6 +99,13 @@ class OrbitCamera {
     scene::Bounds bounds_;
     scene::Camera initial_;
     const scene::StandardView* opening_ = nullptr;
+    // setHome's view, kept as the orbit's own state: a camera rebuilt from eye and target
+    // could not say which way is up on the poles (a top view).
+    struct Home {
+        glm::vec3 target;
+        float distance, yaw, pitch, shift;
+    };
+    std::optional<Home> home_;
 };
 
 } // namespace app

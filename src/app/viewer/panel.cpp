@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <filesystem>
+#include <type_traits>
 #include <utility>
 
 #include <imgui.h>
@@ -55,13 +57,40 @@ void timing(const PanelInfo& info) {
                          "scene pass ms", 0.0f, FLT_MAX, ImVec2(-FLT_MIN, 60));
 }
 
+// The recent files' list: a file no longer there is greyed out (it may come back: a
+// network drive, a USB stick), and the last entry empties the list.
+void recentFiles(ViewSettings& view, PanelActions& actions) {
+    ImGui::BeginDisabled(view.recentFiles.empty());
+    if (ImGui::BeginCombo("##recent", nullptr, ImGuiComboFlags_NoPreview)) {
+        for (const std::string& path : view.recentFiles) {
+            std::error_code error;
+            const bool there = std::filesystem::exists(path, error); // only while open
+            if (ImGui::Selectable(path.c_str(), false,
+                                  there ? ImGuiSelectableFlags_None
+                                        : ImGuiSelectableFlags_Disabled))
+                actions.open = path;
+        }
+        ImGui::Separator();
+        if (ImGui::Selectable("clear list")) view.recentFiles.clear();
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s",
+                          view.recentFiles.empty() ? "recent files: none yet" : "recent files");
+}
+
 // The model path field, the width of the panel so its hint shows whole, with the recent
 // files beside it. Clicking it, or Ctrl+O, selects what it holds: typing replaces it.
 void openField(ViewSettings& view, PanelActions& actions) {
+    const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+    const char* chooseLabel = "Open...";
+    const float chooseWidth =
+        ImGui::CalcTextSize(chooseLabel).x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const float recentWidth = ImGui::GetFrameHeight();
     if (std::exchange(view.focusOpen, false)) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - recentWidth -
-                            ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - recentWidth - chooseWidth -
+                            2.0f * spacing);
     if (ImGui::InputTextWithHint("##open", "open .gltf .glb .step .iges .brep",
                                  view.openPath.data(), view.openPath.size(),
                                  ImGuiInputTextFlags_EnterReturnsTrue |
@@ -69,19 +98,13 @@ void openField(ViewSettings& view, PanelActions& actions) {
         view.openPath[0])
         actions.open = std::string(view.openPath.data());
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("type or paste a model's path, Enter opens it (Ctrl+O comes here); "
-                          "or drop the file on the window");
-    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-    ImGui::BeginDisabled(view.recentFiles.empty());
-    if (ImGui::BeginCombo("##recent", nullptr, ImGuiComboFlags_NoPreview)) {
-        for (const std::string& path : view.recentFiles)
-            if (ImGui::Selectable(path.c_str())) actions.open = path;
-        ImGui::EndCombo();
-    }
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s", view.recentFiles.empty() ? "recent files: none yet this session"
-                                                         : "recent files");
+        ImGui::SetTooltip("type or paste a model's path, Enter opens it; or drop the file on "
+                          "the window");
+    ImGui::SameLine(0.0f, spacing);
+    if (ImGui::Button(chooseLabel)) actions.chooseFile = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("choose a model file (Ctrl+O)");
+    ImGui::SameLine(0.0f, spacing);
+    recentFiles(view, actions);
 }
 
 // What a newcomer reaches for first, always in view: edges, projection, vsync, the views.

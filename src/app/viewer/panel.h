@@ -26,10 +26,17 @@
 
 namespace app {
 
+// The panel's distance from the window's top left corner, where it opens.
+constexpr float panelMargin = 8.0f;
+
 // What only the window has.
 struct ViewSettings {
     bool vsync = true;
+    // The panel's layout, kept between runs (kept_view.h): whether it shows (F9) and its
+    // width in pixels, dragged by its right edge and kept between minPanelWidth and
+    // maxPanelShare of the window's width.
     bool panelVisible = true;
+    float panelWidth = 360.0f;
     std::array<char, 96> objectFilter{}; // the assembly tree's filter text
     // The assembly tree's state, per row of PanelInfo::tree: open nodes; and the rows the
     // filter keeps, worked out again only when the filter text changes.
@@ -39,12 +46,10 @@ struct ViewSettings {
     // the part (a CAD face), 1 its object (a CAD solid), 2 the assembly node above that. A
     // double-click selects at least the object.
     uint32_t selectLevel = 0;
-    std::array<char, 512> openPath{};     // the panel's "open" field, emptied when a model opens
-    bool focusOpen = false;               // Ctrl+O: the open field takes the keys next frame
-    std::vector<std::string> recentFiles; // models opened this session, newest first
-    // The panel's width in pixels, dragged by its right edge; kept between minPanelWidth and
-    // maxPanelShare of the window's width.
-    float panelWidth = 360.0f;
+    std::array<char, 512> openPath{}; // the panel's "open" field, emptied when a model opens
+    bool focusOpen = false;           // Ctrl+L, or no chooser: the open field takes the keys
+    // Models opened, newest first, at most 10; kept between runs (kept_view.h).
+    std::vector<std::string> recentFiles;
     // Where the panel lay in the last frame, window x coordinates (both 0 while hidden): F
     // fits the scene in the area beside it.
     float panelLeft = 0.0f, panelRight = 0.0f;
@@ -66,6 +71,7 @@ struct PanelActions {
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
     bool cancelLoad = false;         // stop the model loading (and those queued behind it)
     bool resetSettings = false;      // the kept settings back to the defaults
+    bool chooseFile = false;         // Open...: the desktop's file chooser
 };
 
 // A part under the cursor or selected, as the pick reported it.

@@ -55,6 +55,7 @@ const CommandSpec commandSpecs[] = {
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
     {"cancel", ScriptOp::Cancel, 0, "cancel"},
+    {"clear-recent", ScriptOp::ClearRecent, 0, "clear-recent"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
     {"rest", ScriptOp::Rest, 1, "rest SECONDS"},
     {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready"},

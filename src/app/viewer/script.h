@@ -41,6 +41,7 @@
 //   4.6 loaded              wait until every dropped model has loaded (they load while
 //                           frames go on), however long that takes
 //   4.7 cancel              the panel's Cancel: stop the model loading and those queued
+//   4.75 clear-recent       the recent files' "clear list" entry
 //   4.8 frames 5            let 5 frames pass before the next command (results of a pick
 //                           arrive a frame or two later, however slow the frames are)
 //   4.9 rest 4              leave the viewer alone for 4 seconds from when the command runs:
@@ -93,6 +94,7 @@ enum class ScriptOp {
     Drop,
     Loaded,
     Cancel,
+    ClearRecent,
     Frames,
     Rest,
     Pipeline,

@@ -2,13 +2,19 @@
 // asks of the viewer as a whole.
 #include "app/viewer/viewer.h"
 
+#include <cstdio>
+
 #include <imgui.h>
 
-#include "app/headless.h" // exitCode, savePipelineCache
+#include "app/headless.h" // cameraFrame, exitCode, savePipelineCache
 #include "app/saved_settings.h"
+#include "app/viewer/kept_view.h"
 #include "scene/bounds.h"
 #include "scene/part_data.h"
 #include "vk/check.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 
 namespace app {
 namespace {
@@ -20,10 +26,18 @@ vk::DeviceInfo presentableDevice(const vk::Instance& instance, const std::string
     return info;
 }
 
+// The panel's layout and the recent files as the last run left them (kept_view.h).
+ViewSettings keptView(const Options& options) {
+    ViewSettings view;
+    const std::string path = options.savedSettings ? savedSettingsPath() : "";
+    if (!path.empty()) readKeptView(readSavedSettings(path), path, view, Events::problem);
+    return view;
+}
+
 } // namespace
 
 Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script)
-    : settings_(options), window_(window), events_(options.printEvents),
+    : settings_(options), view_(keptView(options)), window_(window), events_(options.printEvents),
       surface_(instance, window.createSurface(instance)),
       device_(instance, presentableDevice(instance, options.device, surface_.handle()),
               {VK_KHR_SWAPCHAIN_EXTENSION_NAME}),
@@ -31,6 +45,10 @@ Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, S
       presenter_(window, instance, device_, surface_.handle()),
       scene_(device_, compiler_, events_, options, presenter_.extent()), slots_(device_),
       input_(*this, window.handle(), std::move(script)) {
+    const auto size = window.size(), position = window.position();
+    events_.say("window: " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " at " +
+                std::to_string(position[0]) + "," + std::to_string(position[1]) + ", " +
+                std::to_string(view_.recentFiles.size()) + " recent files");
     follow(SceneState::Change::Model);
     window.listen(input_);
     // A pipeline built on a worker wakes the resting loop, which then switches to it.
@@ -55,10 +73,6 @@ void Viewer::reloadShaders() {
     scene_.reloadShaders();
 }
 
-void Viewer::chooseFile() {
-    view_.focusOpen = view_.panelVisible = true;
-}
-
 void Viewer::selectionChanged() const {
     const Selection& selection = input_.selection();
     const auto part = selection.primary();
@@ -80,14 +94,56 @@ void Viewer::selectionChanged() const {
                 "): " + info->path + face);
 }
 
+void Viewer::keepViewProj(uint64_t frame, const glm::mat4& viewProj) {
+    drawnViewProj_.emplace_back(frame, viewProj);
+    if (drawnViewProj_.size() > 8) drawnViewProj_.pop_front(); // picks come back sooner
+}
+
+std::optional<glm::vec3> Viewer::pointUnderCursor() const {
+    const auto& pick = input_.hoverPick();
+    if (!pick || !pick->part || !scene_.targets()) return std::nullopt; // background
+    const VkExtent2D extent = scene_.targets()->extent();
+    if (input_.cursorPixel(extent) != pick->pixel) return std::nullopt; // stale: moved since
+    for (const auto& [frame, viewProj] : drawnViewProj_)
+        if (frame == pick->frame)
+            return scene::unprojectPixel(
+                viewProj, glm::vec2(extent.width, extent.height),
+                glm::vec2(pick->pixel) + scene_.targets()->pass().sampleZero(), pick->depth);
+    return std::nullopt;
+}
+
+void Viewer::zoomAtCursor(float steps) {
+    const auto point = pointUnderCursor();
+    if (!point) {
+        camera_.zoom(steps);
+        events_.say("zoom: toward the target");
+        return;
+    }
+    camera_.zoomToward(*point, steps);
+    // Where the point shows now, for the event line: on the cursor's pixel.
+    const VkExtent2D extent = scene_.targets()->extent();
+    const glm::mat4 viewProj = camera_.shiftMatrix() *
+                               cameraFrame(camera_.camera(settings_.animation.animate ? 2.0f : 1.0f,
+                                                          settings_.camera.ortho),
+                                           extent)
+                                   .viewProj;
+    const glm::vec4 clip = viewProj * glm::vec4(*point, 1.0f);
+    const glm::vec2 at =
+        (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(extent.width, extent.height) -
+        scene_.targets()->pass().sampleZero();
+    const glm::uvec2 pixel = input_.hoverPick()->pixel;
+    char text[160];
+    std::snprintf(text, sizeof text, "zoom: toward part %u at %u,%u, now at %.2f,%.2f",
+                  *input_.hoverPick()->part, pixel.x, pixel.y, at.x, at.y);
+    events_.say(text);
+}
+
 void Viewer::fitView() {
     // The selection; else the parts not hidden (isolated ones); else the whole scene; framed
     // in the area the panel leaves free.
     const Selection& selection = input_.selection();
     const scene::Scene& scene = scene_.scene();
-    const float width = ImGui::GetIO().DisplaySize.x;
-    const FreeSpan span =
-        view_.panelVisible ? freeSpan(width, view_.panelLeft, view_.panelRight) : FreeSpan{};
+    const FreeSpan span = panelSpan();
     scene::Bounds bounds = scene::partsWorldBounds(scene, selection.selected());
     const char* what = "selection";
     if (scene::isEmpty(bounds) && !selection.hidden().empty()) {
@@ -103,6 +159,41 @@ void Viewer::fitView() {
         camera_.fit(bounds, aspect(), span);
     }
     events_.say(std::string("fit: ") + what);
+}
+
+FreeSpan Viewer::panelSpan() const {
+    if (!view_.panelVisible) return {};
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_.handle(), &width, &height);
+    // Before the first frame (the model given at start) the panel is not placed yet: where
+    // it opens, at its width. Later both sides are 0 while it is collapsed.
+    if (frameNumber_ == 0)
+        return freeSpan(float(width), panelMargin, panelMargin + view_.panelWidth);
+    return freeSpan(float(width), view_.panelLeft, view_.panelRight);
+}
+
+void Viewer::sayFitted() const {
+    // The window x range the scene's bounds cover, for scripts to check against the panel.
+    const VkExtent2D extent = presenter_.extent();
+    const glm::mat4 viewProj =
+        camera_.shiftMatrix() *
+        cameraFrame(camera_.camera(1.0f, settings_.camera.ortho), extent).viewProj;
+    const scene::Bounds& b = camera_.bounds();
+    float left = float(extent.width), right = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec4 clip =
+            viewProj * glm::vec4((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                                 (corner & 4) ? b.max.z : b.min.z, 1.0f);
+        const float x = (clip.x / clip.w * 0.5f + 0.5f) * float(extent.width);
+        left = std::min(left, x);
+        right = std::max(right, x);
+    }
+    const FreeSpan span = panelSpan();
+    char text[160];
+    std::snprintf(text, sizeof text, "opened fitted: x %.0f to %.0f, free %.0f to %.0f of %u", left,
+                  right, span.left * float(extent.width), span.right * float(extent.width),
+                  extent.width);
+    events_.say(text);
 }
 
 void Viewer::turnTo(const scene::StandardView& view) {
@@ -217,13 +308,22 @@ int runViewer(const Options& options) {
     // A bad script fails before any window opens.
     ScriptPlayer script(options.script.empty() ? std::vector<ScriptCommand>{}
                                                : loadScript(options.script));
-    Window window(options.width, options.height);
+    Window window(options.width, options.height, options.windowPos);
     vk::Instance instance({options.validation, window.vulkanExtensions(), options.syncValidation});
     {
         Viewer viewer(options, window, instance, std::move(script));
         viewer.run();
-        if (options.savedSettings)
-            writeSavedSettings(savedSettingsPath(), viewer.settings(), Events::problem);
+        if (options.savedSettings) {
+            // The window as it closes opens next time: its size and place are --size and
+            // --window-pos lines, the panel and the recent files the viewer's own.
+            Options kept = viewer.settings();
+            const auto size = window.size();
+            kept.width = uint32_t(std::max(size[0], 1));
+            kept.height = uint32_t(std::max(size[1], 1));
+            kept.windowPos = window.position();
+            writeSavedSettings(savedSettingsPath(), kept, Events::problem,
+                               keptViewText(viewer.view()));
+        }
     }
     return exitCode(instance.validationMessages());
 }
@@ -231,9 +331,50 @@ int runViewer(const Options& options) {
 void Viewer::resetSettings() {
     resetSavedSettings(settings_);
     if (settings_.savedSettings)
-        writeSavedSettings(savedSettingsPath(), settings_,
-                           [this](const std::string& message) { scene_.fail(message); });
+        writeSavedSettings(
+            savedSettingsPath(), settings_,
+            [this](const std::string& message) { scene_.fail(message); }, keptViewText(view_));
     events_.say("settings: defaults");
+}
+
+void Viewer::chooseFile() {
+    // The formats openDrops takes (frame.cpp's isGltf, scene::isCadPath), in either case:
+    // the choosers' globs are case-sensitive.
+    const std::vector<FileFilter> filters = {
+        {"glTF and CAD models",
+         {"*.gltf", "*.glb", "*.step", "*.stp", "*.iges", "*.igs", "*.brep", "*.GLTF", "*.GLB",
+          "*.STEP", "*.STP", "*.IGES", "*.IGS", "*.BREP"}},
+        {"glTF models", {"*.gltf", "*.glb", "*.GLTF", "*.GLB"}},
+        {"CAD files (STEP, IGES, BREP)",
+         {"*.step", "*.stp", "*.iges", "*.igs", "*.brep", "*.STEP", "*.STP", "*.IGES", "*.IGS",
+          "*.BREP"}},
+        {"All files", {"*"}},
+    };
+    // The answer wakes the loop, which may be resting in its event wait.
+    if (chooser_.start("Open a model - idview", filters, [] { glfwPostEmptyEvent(); }))
+        events_.say("file chooser: open");
+}
+
+void Viewer::focusOpenField() {
+    view_.panelVisible = true;
+    view_.focusOpen = true;
+}
+
+void Viewer::chosen(const ChooserResult& result) {
+    switch (result.kind) {
+    case ChooserResult::Kind::Chosen:
+        events_.say("file chooser: " + result.path + " (" + result.via + ")");
+        input_.onDrop(result.path); // opened as a dropped file
+        break;
+    case ChooserResult::Kind::Cancelled:
+        events_.say("file chooser: cancelled");
+        break;
+    case ChooserResult::Kind::Unavailable:
+        focusOpenField(); // the panel's open field instead
+        scene_.fail("no file chooser: " + result.via + "; type the model's path here");
+        events_.say("file chooser: none");
+        break;
+    }
 }
 
 void Viewer::toggleMeasure() {

@@ -12,6 +12,7 @@
 
 #include "app/cli.h"
 #include "app/viewer/events.h"
+#include "app/viewer/file_chooser.h"
 #include "app/viewer/input.h"
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
@@ -29,8 +30,9 @@
 namespace app {
 
 // Opens the window on the options' scene and runs until it is closed (window close button,
-// Ctrl+Q, or a script's quit), then keeps its settings for the next run
-// unless --no-saved-settings (saved_settings.h). Returns the exit code: 0, or 3 when the
+// Ctrl+Q, or a script's quit), then keeps its settings, the window's size
+// and place, the panel's layout and the recent files for the next run unless
+// --no-saved-settings (saved_settings.h, kept_view.h). Returns the exit code: 0, or 3 when the
 // validation layer reported anything. Throws vk::Error and friends with a message for people
 // (no display, no device that can present, a model that cannot be loaded at start).
 int runViewer(const Options& options);
@@ -51,6 +53,14 @@ class Viewer {
     float aspect() const;
     uint64_t nextFrame() const { return frameNumber_; }
     void reloadShaders(); // R
+    // The wheel: `steps` toward the surface point under the cursor (the hover's pick, while
+    // the cursor is still on its pixel), else toward the orbit target.
+    void zoomAtCursor(float steps);
+    // Ctrl+O and the panel's Open...: the desktop's file chooser (file_chooser.h), its choice
+    // opened as a dropped file; without one, the panel's open field and a message.
+    void chooseFile();
+    // Ctrl+L (a location, as GTK's chooser takes one): the panel's open field, ready to type.
+    void focusOpenField();
     // F: frames the selected parts when there are some, else those not hidden, else the
     // whole scene, in the area beside the panel.
     void fitView();
@@ -78,13 +88,12 @@ class Viewer {
     // The panel's Reset to defaults: the settings kept between runs back to the viewer's
     // defaults, in the viewer and in the file (saved_settings.h).
     void resetSettings();
-    void cancelLoads() { scene_.cancelOpen(); }                   // the panel's Cancel
-    bool loading() const { return scene_.loading().has_value(); } // a dropped model
+    void cancelLoads() { scene_.cancelOpen(); } // the panel's Cancel
+    // A dropped model loading, or a file chooser open (what it chooses loads next).
+    bool loading() const { return scene_.loading().has_value() || chooser_.open(); }
     bool pipelinePending() const { return scene_.pipelinePending(); }
     // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
     void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
-    // Ctrl+O: a model file to open (for now: the panel's open field, ready to type a path).
-    void chooseFile();
 
     // The command table's (commands.h; viewer_commands.cpp).
     void say(const std::string& line) const { events_.say(line); } // an event line
@@ -137,11 +146,21 @@ class Viewer {
     Input input_;
     OrbitCamera camera_;
     Measure measure_;
+    FileChooser chooser_; // Open...: its answer is taken between frames (openDrops)
+    void chosen(const ChooserResult& result);
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
     scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
     std::optional<size_t> selectedRow_;
     glm::mat4 viewProj_{1.0f};             // of the newest frame: where measure points come from
     mutable PartDetailsCache partDetails_; // the hovered and selected parts, worked out once
+    // The view-projections of the last few frames, by frame number: a pick arrives frames
+    // after it was taken, and its depth is unprojected with the view it was taken in.
+    std::deque<std::pair<uint64_t, glm::mat4>> drawnViewProj_;
+    void keepViewProj(uint64_t frame, const glm::mat4& viewProj);
+    std::optional<glm::vec3> pointUnderCursor() const; // zoomAtCursor's point
+    // The part of the window's width beside the panel, where F and a new model fit.
+    FreeSpan panelSpan() const;
+    void sayFitted() const; // a new model's fit, as an event line
 
     // Frame timing and the title.
     FramePacer pacer_;

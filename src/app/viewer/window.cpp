@@ -33,6 +33,26 @@ void guarded(GLFWwindow* window, Fn&& handler) {
     }
 }
 
+// `position` moved just enough for a window of `size` to lie inside the work area (the
+// screen less panels and docks) of the monitor whose area holds its top left corner, else of
+// the primary monitor; its top left corner stays inside even when it is larger.
+std::array<int, 2> onScreen(std::array<int, 2> position, std::array<int, 2> size) {
+    int count = 0;
+    GLFWmonitor** monitors = glfwGetMonitors(&count);
+    GLFWmonitor* chosen = glfwGetPrimaryMonitor();
+    for (int i = 0; i < count; ++i) {
+        int x = 0, y = 0, w = 0, h = 0;
+        glfwGetMonitorWorkarea(monitors[i], &x, &y, &w, &h);
+        if (position[0] >= x && position[0] < x + w && position[1] >= y && position[1] < y + h)
+            chosen = monitors[i];
+    }
+    if (!chosen) return position; // no monitor known: the window system decides
+    int x = 0, y = 0, w = 0, h = 0;
+    glfwGetMonitorWorkarea(chosen, &x, &y, &w, &h);
+    return {std::clamp(position[0], x, x + std::max(w - size[0], 0)),
+            std::clamp(position[1], y, y + std::max(h - size[1], 0))};
+}
+
 } // namespace
 
 Window::Library::Library() {
@@ -46,12 +66,31 @@ Window::Library::~Library() {
     glfwTerminate();
 }
 
-Window::Window(uint32_t width, uint32_t height) {
+Window::Window(uint32_t width, uint32_t height, std::optional<std::array<int, 2>> position) {
     if (!glfwVulkanSupported())
         throw vk::Error("cannot open a window: GLFW finds no Vulkan loader");
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API); // Vulkan, not OpenGL
+    // Placed before it shows, so it never appears first where the window manager put it.
+    glfwWindowHint(GLFW_VISIBLE, position ? GLFW_FALSE : GLFW_TRUE);
     window_ = glfwCreateWindow(int(width), int(height), "idview", nullptr, nullptr);
     if (!window_) throw vk::Error("cannot open a window: " + glfwProblem);
+    if (position) {
+        const std::array<int, 2> at = onScreen(*position, {int(width), int(height)});
+        glfwSetWindowPos(window_, at[0], at[1]);
+        glfwShowWindow(window_);
+    }
+}
+
+std::array<int, 2> Window::size() const {
+    std::array<int, 2> size{};
+    glfwGetWindowSize(window_, &size[0], &size[1]);
+    return size;
+}
+
+std::array<int, 2> Window::position() const {
+    std::array<int, 2> position{};
+    glfwGetWindowPos(window_, &position[0], &position[1]);
+    return position;
 }
 
 Window::~Window() {

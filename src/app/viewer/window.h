@@ -3,6 +3,7 @@
 // display, no Vulkan loader) in one line.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,7 +21,10 @@ class Input;
 
 class Window {
   public:
-    Window(uint32_t width, uint32_t height);
+    // At `position` (screen coordinates of its top left corner) when given, pulled inside the
+    // work area of the monitor it lies on (the primary one when none), so a position kept
+    // from another screen layout never puts it out of reach.
+    Window(uint32_t width, uint32_t height, std::optional<std::array<int, 2>> position = {});
     ~Window();
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
@@ -35,6 +39,10 @@ class Window {
     void stopListening();
 
     VkExtent2D framebufferSize() const;
+    // The window's size and its top left corner, in screen coordinates (for --size and
+    // --window-pos next time).
+    std::array<int, 2> size() const;
+    std::array<int, 2> position() const;
     bool closing() const;
     void close();
     void setTitle(const std::string& title);
