@@ -9,7 +9,7 @@ source "$(dirname "$0")/viewer_lib.sh"
 
 t=0.5
 {
-    at key F1 # the panel off: screenshots of the scene alone, comparable byte for byte
+    at key F9 # the panel off: screenshots of the scene alone, comparable byte for byte
     at frames 3
     at screenshot "$work/before.png"
     at pipeline hold

@@ -17,6 +17,7 @@ t=0.5
     at key ESC
     at scroll 4
     at frames 6
+    at rest 0.5 # a click right after the first would be a double-click (the object)
     at click 432 232
     at frames 6
     at quit

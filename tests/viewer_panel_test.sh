@@ -94,12 +94,13 @@ t=1
     done
     at frames 5
     at screenshot "$work/wide.png"
-    at click 500 850
+    # On the screw's shaft: it opens fitted in the area beside the panel.
+    at click 680 850
     at frames 5
     at key M
-    at click 500 850
+    at click 680 850
     at frames 3
-    at click 500 950
+    at click 680 950
     at frames 5
     at key M
     at resize 533 1700

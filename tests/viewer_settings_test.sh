@@ -55,7 +55,7 @@ settings_only | grep -q '^--' &&
 t=0.5
 {
     at resize 800 500
-    at key F1 # the panel hidden
+    at key F9 # the panel hidden
     at drop "$work/recent.glb"
     at loaded
     at frames 2

@@ -42,7 +42,7 @@ done
     at msaa 1
     # Headless's opening view: the panel hidden and F, which fits the scene in the whole window
     # (a model opens fitted beside the panel).
-    at key F1
+    at key F9
     at key F
     at key M # measure mode: two clicks measure instead of selecting
     at click 470 260
@@ -50,7 +50,7 @@ done
     at click 520 280
     at frames 6
     at key M
-    at key F1
+    at key F9
     at key V
     at key V
     at drag 600 300 560 320

@@ -168,20 +168,9 @@ CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
     : device_(device) {
     cull_ = createComputePipeline(device, compiler, cache, "cull.comp", sizeof(gpu::CullPush),
                                   VK_NULL_HANDLE, "cull draws");
-    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                         VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    auto layout = vk::init<VkDescriptorSetLayoutCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    layout.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-    layout.bindingCount = 1;
-    layout.pBindings = &binding;
-    depthLayout_ = vk::make(device, vkCreateDescriptorSetLayout, layout, "depth pyramid input");
-    // texelFetch only: the sampler's filtering is never used.
-    auto sampler = vk::init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
-    sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
-    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    sampler_ = vk::make(device, vkCreateSampler, sampler, "depth pyramid sampler");
+    depthLayout_ = pushDescriptorLayout(device, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                        "depth pyramid input");
+    sampler_ = texelFetchSampler(device, "depth pyramid sampler");
     for (int msaa = 0; msaa < 2; ++msaa)
         pyramid_[msaa] = createComputePipeline(device, compiler, cache, "depth_pyramid.comp",
                                                sizeof(gpu::PyramidPush), depthLayout_.get(),

@@ -19,24 +19,12 @@ uint32_t groups(uint32_t pixels) {
 IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
                    const DiskPipelineCache& cache)
     : device_(device) {
-    std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
-    for (uint32_t i = 0; i < bindings.size(); ++i)
-        bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT,
-                       nullptr};
-    auto info = vk::init<VkDescriptorSetLayoutCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-    info.bindingCount = static_cast<uint32_t>(bindings.size());
-    info.pBindings = bindings.data();
-    images_ = vk::make(device, vkCreateDescriptorSetLayout, info, "ID pass images");
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    images_ = pushDescriptorLayout(device, {storage, storage}, "ID pass images");
     createCompose(compiler, cache);
     partSet_ = createComputePipeline(device, compiler, cache, "part_set.comp",
                                      sizeof(gpu::PartSetPush), images_.get(), "part sets");
-    VkDescriptorSetLayoutBinding samples{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1,
-                                         VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    info.bindingCount = 1;
-    info.pBindings = &samples;
-    samples_ = vk::make(device, vkCreateDescriptorSetLayout, info, "multisampled IDs");
+    samples_ = pushDescriptorLayout(device, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE}, "multisampled IDs");
     // Culling's: the parts without their count, of the resolved IDs or of every sample.
     visibleParts_[0] =
         createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
@@ -48,24 +36,12 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
 }
 
 void IdPasses::createCompose(const vk::ShaderCompiler& compiler, const DiskPipelineCache& cache) {
-    std::array<VkDescriptorSetLayoutBinding, 4> bindings{};
-    for (uint32_t i = 0; i < bindings.size(); ++i)
-        bindings[i] = {i,
-                       i == 3 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
-                              : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                       1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    auto info = vk::init<VkDescriptorSetLayoutCreateInfo>(
-        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
-    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-    info.bindingCount = static_cast<uint32_t>(bindings.size());
-    info.pBindings = bindings.data();
-    composeImages_ = vk::make(device_, vkCreateDescriptorSetLayout, info, "composition images");
-    // texelFetch only: the sampler's filtering is never used.
-    auto sampler = vk::init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
-    sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
-    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
-        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    depthSampler_ = vk::make(device_, vkCreateSampler, sampler, "composition depth sampler");
+    // IDs, composed colour, shaded colour, depth.
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    composeImages_ = pushDescriptorLayout(
+        device_, {storage, storage, storage, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+        "composition images");
+    depthSampler_ = texelFetchSampler(device_, "composition depth sampler");
     for (const bool msaa : {false, true})
         compose_[msaa] = createComputePipeline(device_, compiler, cache, "compose.comp",
                                                sizeof(gpu::ComposePush), composeImages_.get(),

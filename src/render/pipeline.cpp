@@ -163,6 +163,28 @@ vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
     return cache.create(info, name);
 }
 
+vk::Handle<VkDescriptorSetLayout> pushDescriptorLayout(const vk::Device& device,
+                                                       const std::vector<VkDescriptorType>& types,
+                                                       const std::string& name) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings(types.size());
+    for (uint32_t i = 0; i < bindings.size(); ++i)
+        bindings[i] = {i, types[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    auto info = vk::init<VkDescriptorSetLayoutCreateInfo>(
+        VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO);
+    info.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    info.bindingCount = static_cast<uint32_t>(bindings.size());
+    info.pBindings = bindings.data();
+    return vk::make(device, vkCreateDescriptorSetLayout, info, name);
+}
+
+vk::Handle<VkSampler> texelFetchSampler(const vk::Device& device, const std::string& name) {
+    auto sampler = vk::init<VkSamplerCreateInfo>(VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO);
+    sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
+    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    return vk::make(device, vkCreateSampler, sampler, name);
+}
+
 void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
                    VkDescriptorType type, const VkDescriptorImageInfo& image) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());

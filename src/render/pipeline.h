@@ -45,6 +45,12 @@ createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
                       const DiskPipelineCache& cache, const char* file, uint32_t pushBytes,
                       VkDescriptorSetLayout set, const std::string& name,
                       const std::vector<std::pair<std::string, std::string>>& defines = {});
+// The set layout of a compute pass's push descriptors: binding i of type types[i].
+vk::Handle<VkDescriptorSetLayout> pushDescriptorLayout(const vk::Device& device,
+                                                       const std::vector<VkDescriptorType>& types,
+                                                       const std::string& name);
+// For shaders that read a sampled image with texelFetch only: no filtering is ever used.
+vk::Handle<VkSampler> texelFetchSampler(const vk::Device& device, const std::string& name);
 // Binds `pass` and pushes `image` as its binding 0 (a push descriptor set of one image).
 void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
                    VkDescriptorType type, const VkDescriptorImageInfo& image);

@@ -148,7 +148,7 @@ std::vector<Command> table() {
         // The mouse: handled by Input::onButton, onCursor and onScroll; listed for the help.
         {"orbit", {}, "Left drag", "orbit around the target", nullptr},
         {"pan", {}, "Right or middle drag", "pan", nullptr},
-        {"zoom", {}, "Wheel", "zoom", nullptr},
+        {"zoom", {}, "Wheel", "zoom toward the point under the cursor", nullptr},
         {"select",
          {},
          "Left click",
@@ -163,7 +163,7 @@ std::vector<Command> table() {
         {"drop-file",
          {},
          "Drop a file",
-         "open it (.gltf .glb .step .stp .iges .igs .brep); Ctrl+O types a path",
+         "open it (.gltf .glb .step .stp .iges .igs .brep)",
          nullptr},
     };
 }

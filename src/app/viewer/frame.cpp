@@ -41,6 +41,7 @@ void Viewer::drawFrame(const FrameWants& wants) {
     render::FrameSlot& slot = slots_.begin(frameNumber_);
     // The hovered part comes from the ID image of each frame, scene pass or not.
     if (input_.readPick(slots_.latestHover())) selectionChanged();
+    zoomWhenReady();
     if (const auto hovered = input_.selection().hovered(); hovered != saidHovered_) {
         saidHovered_ = hovered;
         events_.say(hovered ? "hovered: part " + std::to_string(*hovered) : "hovered: none");
@@ -86,8 +87,7 @@ void Viewer::drawPanel() {
                                                 ImVec2(box->second.x, box->second.y),
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y),
-                scene_.scene().unit);
+    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
     drawOverlays();
     ImGui::Render();
 }
@@ -268,6 +268,7 @@ PanelInfo Viewer::panelInfo() const {
     info.idBytes = scene_.idBytes();
     info.sampleCounts = scene_.sampleCounts();
     info.fps = fps_;
+    info.continuous = !presenter_.vsync();
     const auto& gpu = slots_.gpuMilliseconds();
     info.gpuMs = mean(gpu, 30);
     info.cpuRecordMs = mean(cpuRecordMs_, 30);
@@ -331,8 +332,8 @@ void Viewer::updateTitle(double seconds, bool now) {
     const char* timed = cpu ? "render (CPU device)" : "GPU";
     const double ms = mean(slots_.gpuMilliseconds(), 30);
     if (continuous)
-        std::snprintf(text, sizeof text, "idview - %s - %.0f fps - %s %.2f ms", what.c_str(),
-                      fps_, timed, ms);
+        std::snprintf(text, sizeof text, "idview - %s - %.0f fps - %s %.2f ms", what.c_str(), fps_,
+                      timed, ms);
     else
         std::snprintf(text, sizeof text, "idview - %s - %s %.2f ms", what.c_str(), timed, ms);
     if (title_ == text) return;

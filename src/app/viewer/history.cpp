@@ -33,20 +33,23 @@ bool History::observe(const ShownState& now, bool settled) {
     return true;
 }
 
-std::optional<ShownState> History::undo() {
-    if (undo_.empty()) return std::nullopt;
-    redo_.push_back(std::move(current_));
-    current_ = std::move(undo_.back());
-    undo_.pop_back();
+// Undo and redo are one move: the newest state of `from` becomes the current one, which
+// goes onto `to`.
+std::optional<ShownState> History::step(std::vector<ShownState>& from,
+                                        std::vector<ShownState>& to) {
+    if (from.empty()) return std::nullopt;
+    to.push_back(std::move(current_));
+    current_ = std::move(from.back());
+    from.pop_back();
     return current_;
 }
 
+std::optional<ShownState> History::undo() {
+    return step(undo_, redo_);
+}
+
 std::optional<ShownState> History::redo() {
-    if (redo_.empty()) return std::nullopt;
-    undo_.push_back(std::move(current_));
-    current_ = std::move(redo_.back());
-    redo_.pop_back();
-    return current_;
+    return step(redo_, undo_);
 }
 
 } // namespace app

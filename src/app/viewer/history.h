@@ -43,6 +43,8 @@ class History {
     static constexpr size_t limit = 100;
 
   private:
+    std::optional<ShownState> step(std::vector<ShownState>& from, std::vector<ShownState>& to);
+
     std::vector<ShownState> undo_, redo_;
     ShownState current_;
 };

@@ -6,8 +6,8 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <filesystem>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -130,9 +130,13 @@ void viewRow(Options& settings, ViewSettings& view, PanelActions& actions) {
 void status(const PanelInfo& info, PanelActions& actions) {
     // The frame rate on the device's line where the widest rate would fit there too, else on
     // a line of its own: a rate gaining a digit never wraps the line and moves what follows.
+    // Drawing on change, a frame rate would count changes: the panel says so instead.
     char fps[32];
-    std::snprintf(fps, sizeof fps, "%.0f fps", info.fps);
-    const std::string widest = info.device + ", 99999 fps";
+    if (info.continuous)
+        std::snprintf(fps, sizeof fps, "%.0f fps", info.fps);
+    else
+        std::snprintf(fps, sizeof fps, "draws on change");
+    const std::string widest = info.device + ", draws on change"; // wider than 99999 fps
     if (ImGui::CalcTextSize(widest.c_str()).x <= ImGui::GetContentRegionAvail().x) {
         textDisabledWrapped((info.device + ", " + fps).c_str());
     } else {

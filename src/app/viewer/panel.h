@@ -117,6 +117,7 @@ struct PanelInfo {
     scene::IdDataBytes idBytes;
     VkSampleCountFlags sampleCounts = VK_SAMPLE_COUNT_1_BIT; // offered by the device
     double fps = 0.0, gpuMs = 0.0, cpuRecordMs = 0.0;
+    bool continuous = false;       // vsync off: a scene pass every frame, so fps means something
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
     uint32_t selectedCount = 0, hiddenCount = 0;

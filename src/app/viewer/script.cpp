@@ -81,6 +81,15 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     auto fail = [&](const std::string& message) { throw ScriptError(where + ": " + message); };
     ScriptCommand command;
     command.where = where;
+    // A command that takes one of a few words: "'NAME' takes a, b or c, not 'x'" otherwise.
+    auto expectWord = [&](std::initializer_list<const char*> words) {
+        const std::vector<std::string> list(words.begin(), words.end());
+        if (std::find(list.begin(), list.end(), command.text) != list.end()) return;
+        std::string said;
+        for (size_t i = 0; i < list.size(); ++i)
+            said += (i == 0 ? "" : i + 1 == list.size() ? " or " : ", ") + list[i];
+        fail("'" + name + "' takes " + said + ", not '" + command.text + "'");
+    };
     if (!parseNumber(time, command.seconds) || command.seconds < 0.0)
         fail("expected '<seconds> <command> [args]', and '" + time +
              "' is not a time in seconds (0 or more)");
@@ -168,8 +177,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             fail("rest takes seconds, more than 0 and at most 60");
         break;
     case ScriptOp::Level:
-        if (command.text != "face" && command.text != "solid" && command.text != "assembly")
-            fail("'level' takes face, solid or assembly, not '" + command.text + "'");
+        expectWord({"face", "solid", "assembly"});
         break;
     case ScriptOp::Move:
     case ScriptOp::Click:
@@ -213,12 +221,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     case ScriptOp::Freeze:
     case ScriptOp::Sort:
     case ScriptOp::Ortho:
-        if (command.text != "on" && command.text != "off")
-            fail("'" + name + "' takes on or off, not '" + command.text + "'");
+        expectWord({"on", "off"});
         break;
     case ScriptOp::Pipeline:
-        if (command.text != "hold" && command.text != "release" && command.text != "ready")
-            fail("'pipeline' takes hold, release or ready, not '" + command.text + "'");
+        expectWord({"hold", "release", "ready"});
         break;
     case ScriptOp::View:
         if (!scene::findStandardView(command.text))

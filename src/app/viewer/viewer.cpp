@@ -112,7 +112,28 @@ std::optional<glm::vec3> Viewer::pointUnderCursor() const {
     return std::nullopt;
 }
 
+// The part under the cursor comes from a frame's ID image a frame or two after the cursor
+// got there: wheel steps that come sooner wait for it (a few frames at most, then they zoom
+// toward the target), so a quick move-and-scroll still zooms at the cursor.
 void Viewer::zoomAtCursor(float steps) {
+    if (!pendingZoom_ && !hoverIsCurrent()) pendingZoomFrame_ = frameNumber_;
+    pendingZoom_ += steps;
+    zoomWhenReady();
+}
+
+bool Viewer::hoverIsCurrent() const {
+    const auto& pick = input_.hoverPick();
+    return pick && scene_.targets() &&
+           input_.cursorPixel(scene_.targets()->extent()) == pick->pixel;
+}
+
+void Viewer::zoomWhenReady() {
+    constexpr uint64_t patience = 4; // frames: the hover arrives two frames after the move
+    if (!pendingZoom_ || (!hoverIsCurrent() && frameNumber_ < pendingZoomFrame_ + patience)) return;
+    zoomNow(std::exchange(pendingZoom_, 0.0f));
+}
+
+void Viewer::zoomNow(float steps) {
     const auto point = pointUnderCursor();
     if (!point) {
         camera_.zoom(steps);
@@ -273,7 +294,7 @@ FrameWants Viewer::frameWants() const {
     wants.now = elapsed();
     wants.events = window_.events() + input_.stepsRun(); // scripted input counts as input
     wants.continuous = !view_.vsync;
-    wants.busy = input_.waiting() || !screenshotPath_.empty();
+    wants.busy = input_.waiting() || !screenshotPath_.empty() || pendingZoom_ != 0.0f;
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = input_.selection().hovered().has_value();
     wants.scriptWake = input_.wakeIn(wants.now);

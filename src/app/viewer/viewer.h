@@ -16,8 +16,8 @@
 #include "app/viewer/input.h"
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
-#include "app/viewer/pacer.h"
 #include "app/viewer/overlays.h"
+#include "app/viewer/pacer.h"
 #include "app/viewer/panel.h"
 #include "app/viewer/part_details.h"
 #include "app/viewer/presenter.h"
@@ -158,6 +158,11 @@ class Viewer {
     std::deque<std::pair<uint64_t, glm::mat4>> drawnViewProj_;
     void keepViewProj(uint64_t frame, const glm::mat4& viewProj);
     std::optional<glm::vec3> pointUnderCursor() const; // zoomAtCursor's point
+    bool hoverIsCurrent() const;                       // the hover reading is of the cursor's pixel
+    void zoomWhenReady(); // each frame: wheel steps waiting for the hover reading
+    void zoomNow(float steps);
+    float pendingZoom_ = 0.0f;      // wheel steps waiting
+    uint64_t pendingZoomFrame_ = 0; // the frame they started waiting at
     // The part of the window's width beside the panel, where F and a new model fit.
     FreeSpan panelSpan() const;
     void sayFitted() const; // a new model's fit, as an event line
@@ -175,7 +180,7 @@ class Viewer {
     scene::PartSet shownSelected_, shownHidden_;
     uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
     std::optional<uint32_t> saidHovered_; // the hovered part last told
-    Shell shell_; // the help, undo history and overlays (overlays.h)
+    Shell shell_;                         // the help, undo history and overlays (overlays.h)
 };
 
 } // namespace app
