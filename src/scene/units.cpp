@@ -37,7 +37,10 @@ std::string formatArea(double value, const LengthUnit& unit) {
 }
 
 std::string formatPoint(glm::dvec3 p, const LengthUnit& unit) {
-    return withUnit("(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")", unit, "");
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string.
+    std::string text = "(";
+    text.append(number(p.x)).append(", ").append(number(p.y)).append(", ").append(number(p.z));
+    return withUnit(text + ")", unit, "");
 }
 
 std::string unitJsonMember(const LengthUnit& unit) {
