@@ -81,44 +81,56 @@ render::RenderSettings withSection(render::RenderSettings settings) {
     return settings;
 }
 
+// A rig drawing the plain settings, its builds waking `wakes`, and what it drew before any
+// request: the start of the tests that ask for the section variant.
+struct Drawing {
+    Drawing(vk::Instance& instance, const scene::Scene& scene)
+        : r(instance), renderer(r.rig.renderer) {
+        renderer.onPipelineBuilt(wakes.callback());
+        renderer.setScene(scene, plain);
+        before = r.ids();
+        old = renderer.pipeline();
+    }
+    const render::RenderSettings plain;
+    const render::RenderSettings cut = withSection(plain);
+    Rig r;
+    Wakes wakes; // goes before the rig's renderer, which waits for its workers
+    render::Renderer& renderer;
+    std::vector<uint32_t> before;
+    VkPipeline old = VK_NULL_HANDLE;
+};
+
 TEST(PipelineBuilds, FramesGoOnWithTheOldPipelineWhileTheFirstSectionCutBuilds) {
     const app::LoadedScene scene = tiles();
     vk::Instance instance({true, {}});
     {
-        const render::RenderSettings plain;
-        const render::RenderSettings cut = withSection(plain);
-        Rig r(instance);
-        Wakes wakes;
-        render::Renderer& renderer = r.rig.renderer;
-        renderer.onPipelineBuilt(wakes.callback());
-        renderer.setScene(scene.scene, plain);
-        const std::vector<uint32_t> before = r.ids();
-        const VkPipeline old = renderer.pipeline();
+        Drawing d(instance, scene.scene);
 
-        renderer.holdPipelineBuilds(true);
-        const auto build = renderer.prepare(scene.scene, cut);
+        d.renderer.holdPipelineBuilds(true);
+        const auto build = d.renderer.prepare(scene.scene, d.cut);
         ASSERT_TRUE(build.has_value()) << "the section variant was not built yet";
         EXPECT_NE(build->name.find("section"), std::string::npos) << build->name;
         for (int i = 0; i < 6; ++i) {
-            EXPECT_TRUE(renderer.prepare(scene.scene, cut).has_value())
+            EXPECT_TRUE(d.renderer.prepare(scene.scene, d.cut).has_value())
                 << "asked again, frame " << i;
-            EXPECT_TRUE(renderer.building());
-            r.submit(); // frames in flight, as the viewer's
-            EXPECT_EQ(r.ids(), before) << "frame " << i << " draws the configuration before";
-            EXPECT_EQ(renderer.pipeline(), old);
-            EXPECT_EQ(renderer.settings(), plain);
+            EXPECT_TRUE(d.renderer.building());
+            d.r.submit(); // frames in flight, as the viewer's
+            EXPECT_EQ(d.r.ids(), d.before) << "frame " << i << " draws the configuration before";
+            EXPECT_EQ(d.renderer.pipeline(), d.old);
+            EXPECT_EQ(d.renderer.settings(), d.plain);
         }
 
-        renderer.holdPipelineBuilds(false);
-        wakes.waitFor(1);
-        EXPECT_FALSE(renderer.prepare(scene.scene, cut).has_value()) << "built: ready to switch";
-        EXPECT_FALSE(renderer.building()) << "its result was collected";
-        renderer.configure(scene.scene, cut);
-        EXPECT_TRUE(renderer.lastSwitch().pipelineCached) << "the worker's pipeline is used";
-        EXPECT_NE(renderer.pipeline(), old);
-        const std::vector<uint32_t> after = r.ids();
-        EXPECT_NE(after, before) << "the cut shows in the ID image";
-        EXPECT_EQ(after, synchronousIds(instance, scene.scene, cut,
+        d.renderer.holdPipelineBuilds(false);
+        d.wakes.waitFor(1);
+        EXPECT_FALSE(d.renderer.prepare(scene.scene, d.cut).has_value())
+            << "built: ready to switch";
+        EXPECT_FALSE(d.renderer.building()) << "its result was collected";
+        d.renderer.configure(scene.scene, d.cut);
+        EXPECT_TRUE(d.renderer.lastSwitch().pipelineCached) << "the worker's pipeline is used";
+        EXPECT_NE(d.renderer.pipeline(), d.old);
+        const std::vector<uint32_t> after = d.r.ids();
+        EXPECT_NE(after, d.before) << "the cut shows in the ID image";
+        EXPECT_EQ(after, synchronousIds(instance, scene.scene, d.cut,
                                         scene::PartSet(scene.scene.uniquePartCount())));
     }
     EXPECT_EQ(instance.validationMessages(), 0u);
@@ -198,28 +210,20 @@ TEST(PipelineBuilds, AFailedBuildKeepsTheLastGoodPipeline) {
     const app::LoadedScene scene = tiles();
     vk::Instance instance({true, {}});
     {
-        const render::RenderSettings plain;
-        const render::RenderSettings cut = withSection(plain);
-        Rig r(instance);
-        Wakes wakes;
-        render::Renderer& renderer = r.rig.renderer;
-        renderer.onPipelineBuilt(wakes.callback());
-        renderer.setScene(scene.scene, plain);
-        const std::vector<uint32_t> before = r.ids();
-        const VkPipeline old = renderer.pipeline();
+        Drawing d(instance, scene.scene);
 
-        renderer.holdPipelineBuilds(true);
-        ASSERT_TRUE(renderer.prepare(scene.scene, cut).has_value());
+        d.renderer.holdPipelineBuilds(true);
+        ASSERT_TRUE(d.renderer.prepare(scene.scene, d.cut).has_value());
         vk::failAfter(1); // the worker's first fault point: its first shader compile
-        renderer.holdPipelineBuilds(false);
-        wakes.waitFor(1);
+        d.renderer.holdPipelineBuilds(false);
+        d.wakes.waitFor(1);
         vk::failAfter(0);
-        EXPECT_THROW(renderer.prepare(scene.scene, cut), vk::Error);
-        EXPECT_EQ(renderer.pipeline(), old);
-        EXPECT_EQ(r.ids(), before);
-        EXPECT_TRUE(renderer.prepare(scene.scene, cut).has_value()) << "built again";
-        wakes.waitFor(2);
-        EXPECT_FALSE(renderer.prepare(scene.scene, cut).has_value());
+        EXPECT_THROW(d.renderer.prepare(scene.scene, d.cut), vk::Error);
+        EXPECT_EQ(d.renderer.pipeline(), d.old);
+        EXPECT_EQ(d.r.ids(), d.before);
+        EXPECT_TRUE(d.renderer.prepare(scene.scene, d.cut).has_value()) << "built again";
+        d.wakes.waitFor(2);
+        EXPECT_FALSE(d.renderer.prepare(scene.scene, d.cut).has_value());
     }
     EXPECT_EQ(instance.validationMessages(), 0u);
 }
