@@ -4,9 +4,11 @@
 // and part edges and outlines are drawn from the ID image, with no line geometry: they cost
 // the same for every technique and follow exactly the parts the ID attachment shows. Because
 // the scene pass leaves its images untouched, a viewer at rest runs this pass alone when the
-// hover, the blink or the selection changes (shared.h ComposePush has the rules).
+// hover, the blink or the selection changes, and for a step of the blink only over the tiles
+// of the hovered part (shared_id_passes.h has the rules).
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
+#extension GL_KHR_shader_subgroup_vote : require
 
 #include "shared.h"
 
@@ -30,6 +32,9 @@ layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer Par
 };
 layout(buffer_reference, std430, buffer_reference_align = 8) writeonly buffer HoverRef {
     uint64_t value;
+};
+layout(buffer_reference, std430, buffer_reference_align = 8) buffer HoverBoxRef {
+    HoverBox box;
 };
 
 // The widest window (the selection's outline) reaches LO pixels up-left and HI down-right;
@@ -102,12 +107,24 @@ uint64_t hoverValue(uint id) {
     return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(id);
 }
 
+// COMPOSE_WHOLE: one invocation of each subgroup that sees the hovered part adds the tile.
+void addToBox(bool hoveredHere, uvec2 tile) {
+    if (!subgroupAny(hoveredHere) || !subgroupElect()) return;
+    HoverBoxRef ref = HoverBoxRef(compose.boxAddress);
+    atomicMin(ref.box.tileMin.x, tile.x);
+    atomicMin(ref.box.tileMin.y, tile.y);
+    atomicMax(ref.box.tileMax.x, tile.x);
+    atomicMax(ref.box.tileMax.y, tile.y);
+}
+
 void main() {
+    const bool whole = compose.step == COMPOSE_WHOLE;
+    const uvec2 tile = gl_WorkGroupID.xy + (whole ? uvec2(0u) : compose.tileOrigin);
     const bool outline = (compose.flags & EDGE_SELECTED) != 0u;
     // Without lines no pixel looks at its neighbours, so the tile is not loaded: a viewer at
     // rest composes the blink of the hovered part a few times a second, on a CPU device too.
     const bool lines = compose.flags != 0u;
-    const ivec2 origin = ivec2(gl_WorkGroupID.xy * ID_PASS_TILE) - ivec2(LO);
+    const ivec2 origin = ivec2(tile * ID_PASS_TILE) - ivec2(LO);
     const ivec2 last = ivec2(compose.extent) - 1;
     // Outside the image the border pixel repeats: the image's edge is no part edge. (The
     // flags are the same for the whole dispatch, so the barrier stays in uniform flow.)
@@ -121,7 +138,7 @@ void main() {
         }
         barrier();
     }
-    const uvec2 pixel = gl_GlobalInvocationID.xy;
+    const uvec2 pixel = tile * ID_PASS_TILE + gl_LocalInvocationID.xy;
     if (any(greaterThanEqual(pixel, compose.extent))) return;
 
     const bool hovering = all(lessThan(compose.hoverPixel, compose.extent));
@@ -131,8 +148,11 @@ void main() {
 
     const ivec2 p = ivec2(gl_LocalInvocationID.xy) + ivec2(LO);
     const uint id = lines ? tileIds[at(p)] : imageLoad(ids, ivec2(pixel)).r;
+    const bool hoveredHere = id == hovered && id != BACKGROUND_ID;
+    // The hovered pixel's tile too: it writes what is under the pixel in every step.
+    if (whole) addToBox(hoveredHere || pixel == compose.hoverPixel, tile);
     vec3 rgb = imageLoad(shaded, ivec2(pixel)).rgb;
-    if (id == hovered && id != BACKGROUND_ID) rgb = highlightHovered(rgb, compose.blink);
+    if (hoveredHere) rgb = highlightHovered(rgb, compose.blink);
     if (isSelected(id)) rgb = highlightSelected(rgb);
     vec4 result = vec4(rgb, 1.0);
     if (!lines) {

@@ -21,18 +21,34 @@ IDV_CONST EDGE_WIDTH_MAX = 3;
 IDV_CONST EDGE_LINES = 1u;    // ComposePush::flags: draw part edges
 IDV_CONST EDGE_SELECTED = 2u; // outline the selected parts
 IDV_CONST EDGE_HOVERED = 4u;  // outline the hovered part
+// ComposePush::step. Between two steps of the blink only the hovered part's pixels change,
+// so a viewer at rest composes again just the tiles that hold them:
+// - COMPOSE_WHOLE: every tile; those holding the hovered part or the hovered pixel go into
+//   the HoverBox at boxAddress (reset before);
+// - COMPOSE_TILES: the tiles from tileOrigin on, one workgroup each (the box, once the host
+//   has read it), computed exactly as in COMPOSE_WHOLE.
+IDV_CONST COMPOSE_WHOLE = 0u;
+IDV_CONST COMPOSE_TILES = 1u;
 struct ComposePush {
     vec4 lineColor;           // display-encoded RGBA written where an edge is (the colour image's)
     vec4 selectColor;         // the selection's outline
     vec4 hoverColor;          // the hovered part's outline
     uint64_t selectedAddress; // bitset, or 0
     uint64_t hoverAddress;    // uint64_t written: the part and depth at hoverPixel
+    uint64_t boxAddress;      // HoverBox, COMPOSE_WHOLE
     uvec2 extent;
     uvec2 hoverPixel; // x NO_PICK (or outside the image): nothing hovered
+    uvec2 tileOrigin; // COMPOSE_TILES: the first tile
     uint width;       // 1 to EDGE_WIDTH_MAX
     uint flags;
     float blink; // the hovered part's highlight weight, 0..1 (render/blink.h)
-    uint unused;
+    uint step;   // COMPOSE_WHOLE or COMPOSE_TILES
+};
+// The tiles (ID_PASS_TILE pixels square) holding the hovered part and pixel, inclusive:
+// reset to tileMin 0xffffffff and tileMax 0, so an empty box has tileMin > tileMax.
+struct HoverBox {
+    uvec2 tileMin;
+    uvec2 tileMax;
 };
 
 // part_set.comp: every unique part ID in an inclusive pixel rectangle of the ID image goes
@@ -51,8 +67,9 @@ struct PartSetResult {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(ComposePush) == 96 && offsetof(ComposePush, selectedAddress) == 48);
-static_assert(offsetof(ComposePush, blink) == 88);
+static_assert(sizeof(ComposePush) == 112 && offsetof(ComposePush, selectedAddress) == 48);
+static_assert(offsetof(ComposePush, blink) == 104);
+static_assert(sizeof(HoverBox) == 16);
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);
 #endif

@@ -2,8 +2,10 @@
 # viewer_rest_test.sh IDVIEW LAVAPIPE_ICD - the viewer at rest, counted through its event
 # lines under Xvfb on lavapipe with validation (issue 34, item 1): resting the cursor over a
 # part for four seconds runs no scene pass while the hovered part's blink is composed again
-# and again; vsync off draws a scene pass every frame; a drag that turns the camera draws
-# scene passes. Exit 77: skipped (viewer_lib.sh).
+# and again, over the hovered part's tiles alone and with the panel kept as drawn, and those
+# pictures are the ones a frame that draws everything shows; vsync off draws a scene pass
+# every frame; a drag that turns the camera draws scene passes. Exit 77: skipped
+# (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 cat >"$work/rest.txt" <<'SCRIPT'
@@ -24,9 +26,13 @@ cat >"$work/rest.txt" <<'SCRIPT'
 SCRIPT
 session rest
 out=$work/rest.out
-# rest lines: "idview: rest: S scene passes, C compositions"
-scenes() { sed -n 's/^idview: rest: \([0-9]*\) scene passes, \([0-9]*\) compositions$/\1/p'; }
-comps() { sed -n 's/^idview: rest: \([0-9]*\) scene passes, \([0-9]*\) compositions$/\2/p'; }
+# rest lines: "idview: rest: S scene passes, C compositions, T of the hovered part's tiles,
+# K frames keeping the panel"
+rest_line='^idview: rest: \([0-9]*\) scene passes, \([0-9]*\) compositions, \([0-9]*\) .*tiles, \([0-9]*\) frames.*$'
+scenes() { sed -n "s/$rest_line/\\1/p"; }
+comps() { sed -n "s/$rest_line/\\2/p"; }
+tiles() { sed -n "s/$rest_line/\\3/p"; }
+kept() { sed -n "s/$rest_line/\\4/p"; }
 
 hovered=$(grep -m1 -n '^idview: hovered: part ' "$out" | cut -d: -f1)
 off=$(grep -m1 -n '^idview: title: .* - vsync off' "$out" | cut -d: -f1)
@@ -44,6 +50,13 @@ if [[ $(echo "$s" | wc -l) -eq 1 && -n $s && -n $first && $((last - first)) -ge 
 else
     fail "resting over a part: scene passes '$(echo "$s" | tr '\n' ' ')', compositions $first to $last"
 fi
+# Every step of the blink after the first few: the hovered part's tiles, the panel kept.
+steps=$((last - first))
+tiled=$(($(echo "$resting" | tiles | tail -1) - $(echo "$resting" | tiles | head -1)))
+panels=$(($(echo "$resting" | kept | tail -1) - $(echo "$resting" | kept | head -1)))
+[[ $tiled -eq $steps && $panels -eq $steps ]] &&
+    echo "ok   $steps steps of the blink: all over the hovered part's tiles, the panel kept" ||
+    fail "of $steps steps of the blink $tiled were over the tiles and $panels kept the panel"
 
 # vsync off: a scene pass every frame (the script's 10 frames at least), continuous title.
 grep -q '^idview: title: .* - vsync off, continuous - ' "$out" &&
@@ -58,4 +71,48 @@ end=$(scenes <"$out" | tail -1)
 [[ -n $end && $end -gt $after ]] && echo "ok   a drag draws scene passes: $after -> $end" ||
     fail "a drag drew no scene pass ($after -> '$end')"
 grep -c '^idview: rest: ' "$out" | xargs echo "     rest lines:"
+
+# Pictures: each step of the blink (held by the script) drawn anew from the scene pass on
+# (`redraw` and the screenshot at the same time, so in the same frame), and composed over
+# the hovered part's tiles with the panel kept, after the other step was drawn.
+t=0.5
+{
+    at frames 3
+    at move 480 230
+    at frames 5
+    at blink strong
+    at frames 3
+    echo "$t redraw"
+    at screenshot "$work/strong-drawn.png"
+    at frames 3
+    at blink weak
+    at frames 3
+    at screenshot "$work/weak-kept.png"
+    echo "$t redraw"
+    at screenshot "$work/weak-drawn.png"
+    at frames 3
+    at blink strong
+    at frames 3
+    at screenshot "$work/strong-kept.png"
+    at quit
+} >"$work/blink.txt"
+session blink
+# Screenshots come from the same encoder, so equal files are equal pictures.
+same() { cmp -s "$work/$1.png" "$work/$2.png"; }
+pictures=$(grep -c '^idview: screenshot: ' "$work/blink.out")
+# The frames keeping the panel by each screenshot (the first rest line after it).
+kept_at() { sed -n "/^idview: screenshot: .*$1.png/,\$p" "$work/blink.out" | kept | head -1; }
+if [[ $pictures -ne 4 ]]; then
+    fail "$pictures screenshots of 4"
+elif same strong-drawn weak-drawn; then
+    fail "the two steps of the blink show the same picture"
+elif same strong-drawn strong-kept && same weak-drawn weak-kept; then
+    echo "ok   both steps of the blink composed over its tiles with the panel kept equal them drawn anew"
+else
+    fail "a step of the blink composed at rest differs from the same step drawn anew"
+fi
+[[ $(kept_at weak-kept) -gt $(kept_at strong-drawn) && $(kept_at strong-kept) -gt $(kept_at weak-drawn) ]] &&
+    echo "ok   the frames of those steps kept the panel" ||
+    fail "no frame kept the panel: $(kept_at strong-drawn) $(kept_at weak-kept) $(kept_at weak-drawn) $(kept_at strong-kept)"
+grep -q 'validation' "$work/blink.err" && fail "validation: $(grep -m3 validation "$work/blink.err")"
 [[ $failures -eq 0 ]] || exit 1

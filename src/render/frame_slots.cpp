@@ -49,6 +49,10 @@ FrameSlots::FrameSlots(vk::Device& device) : device_(device) {
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                                 VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
                                             "hover readback" + suffix);
+        slot.hoverBoxReadback = vk::hostBuffer(device, sizeof(gpu::HoverBox),
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                               "hovered tiles readback" + suffix);
         slot.cullReadback =
             vk::hostBuffer(device, sizeof(gpu::CullStats), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            "cull counters readback" + suffix);
@@ -80,9 +84,15 @@ FrameSlot& FrameSlots::begin(uint64_t frameNumber) {
     VkDevice dev = device_.handle();
     waitForFrame(device_, slot.done.get());
     collect(slot);
+    // The newer frames that have finished too, without waiting: what they read back (the
+    // hovered part, its tiles) is known a frame sooner. Oldest first, as in finish().
+    for (uint64_t newer = frameNumber - count + 1; newer < frameNumber; ++newer)
+        if (FrameSlot& other = slots_[newer % count]; other.frameNumber == newer && finished(newer))
+            collect(other);
     slot.frameNumber = frameNumber;
     slot.pickPixel.reset();
     slot.hoverPixel.reset();
+    slot.composedWhole = false;
     slot.scenePass = false;
     slot.partSetQueries.clear();
     vk::check(vkResetCommandPool(dev, slot.pool.get(), 0), "vkResetCommandPool");
@@ -166,6 +176,11 @@ void FrameSlots::collect(FrameSlot& slot) {
         uint64_t value;
         std::memcpy(&value, slot.hoverReadback.mapped(), sizeof value);
         latestHover_ = decodePick(value, slot.frameNumber, *slot.hoverPixel);
+    }
+    if (slot.composedWhole && (!latestTiles_ || latestTiles_->frame < slot.frameNumber)) {
+        gpu::HoverBox box;
+        std::memcpy(&box, slot.hoverBoxReadback.mapped(), sizeof box);
+        latestTiles_ = decodeHoverBox(box, slot.frameNumber);
     }
     if (!slot.partSetQueries.empty() &&
         (!latestPartSets_ || latestPartSets_->frame < slot.frameNumber))

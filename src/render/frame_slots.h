@@ -53,8 +53,11 @@ struct FrameSlot {
     // Host-visible uint64 the composition writes itself: the part and depth at the hovered
     // pixel, encoded as PickData's (gpu::ComposePush::hoverAddress).
     vk::Buffer hoverReadback;
-    vk::Buffer cullReadback; // host-visible gpu::CullStats of the frame
-    bool submitted = false;  // has work whose timestamps are not read yet
+    // Host-visible gpu::HoverBox a whole composition fills (reset by the host when recorded).
+    vk::Buffer hoverBoxReadback;
+    bool composedWhole = false; // the frame composed the whole picture
+    vk::Buffer cullReadback;    // host-visible gpu::CullStats of the frame
+    bool submitted = false;     // has work whose timestamps are not read yet
     // Whether the frame ran the scene pass (Renderer::record) or only composed the picture
     // again from the images the last one left (Renderer::recordComposition): only the first
     // kind has timestamps, culling counters and a pick.
@@ -114,6 +117,9 @@ class FrameSlots {
     const std::optional<PickReading>& latestHover() const { return latestHover_; }
     // The part sets of the newest completed frame that asked for some; the same way.
     const std::optional<PartSetReading>& latestPartSets() const { return latestPartSets_; }
+    // The hovered part's tiles of the newest completed frame that composed the whole
+    // picture; the same way.
+    const std::optional<HoveredTiles>& latestHoveredTiles() const { return latestTiles_; }
     // GPU milliseconds of the passes over the ID image (edges, part sets), as above; 0 for
     // frames without them.
     const std::vector<double>& idPassMilliseconds() const { return idPassMs_; }
@@ -129,6 +135,7 @@ class FrameSlots {
     uint64_t timedFrames_ = 0;
     std::optional<PickReading> latestPick_, latestHover_;
     std::optional<PartSetReading> latestPartSets_;
+    std::optional<HoveredTiles> latestTiles_;
 };
 
 } // namespace render

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstring>
 
 #include "render/blink.h"
 #include "render/renderer.h"
@@ -11,6 +12,19 @@
 #include "vk/check.h"
 
 namespace render {
+namespace {
+
+// Whether two compositions over the same images give the same picture but for the hovered
+// part's pixels: everything but the blink's weight is equal (where the hovered part is read
+// back to differs per frame slot and changes no pixel).
+bool differsInBlinkOnly(const gpu::ComposePush& a, const gpu::ComposePush& b) {
+    return a.lineColor == b.lineColor && a.selectColor == b.selectColor &&
+           a.hoverColor == b.hoverColor && a.selectedAddress == b.selectedAddress &&
+           a.extent == b.extent && a.hoverPixel == b.hoverPixel && a.width == b.width &&
+           a.flags == b.flags;
+}
+
+} // namespace
 
 CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     CullCounts counts;
@@ -228,7 +242,7 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
 // The composition (highlights, edges and outlines when on, the part under the hovered
 // pixel) and the frame's part set queries, into the slot's buffers.
 void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
-                              const FrameParams& params) const {
+                              const FrameParams& params) {
     const EdgeSettings& e = settings_.edges;
     gpu::ComposePush compose{};
     compose.lineColor = glm::vec4(e.color, 1.0f);
@@ -260,7 +274,19 @@ void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneT
         slot.partSetWords = words;
         slot.partSetParts = partCount_;
     }
-    idPasses_->record(cmd, targets, compose, params.partSets, words, slot.partSets,
+    // A step of the blink alone changes only the hovered part's pixels.
+    const bool blinkOnly = composed_ && composed_->targets == &targets &&
+                           differsInBlinkOnly(composed_->push, compose) && params.hoveredTiles &&
+                           params.hoveredTiles->frame == composed_->wholeFrame;
+    lastTiles_ = blinkOnly ? params.hoveredTiles : std::nullopt;
+    if (!blinkOnly) {
+        const gpu::HoverBox empty{glm::uvec2(~0u), glm::uvec2(0u)};
+        std::memcpy(slot.hoverBoxReadback.mapped(), &empty, sizeof empty); // the fence signalled
+        compose.boxAddress = slot.hoverBoxReadback.address();
+        slot.composedWhole = true;
+    }
+    composed_ = Composed{&targets, compose, blinkOnly ? composed_->wholeFrame : slot.frameNumber};
+    idPasses_->record(cmd, targets, compose, lastTiles_, params.partSets, words, slot.partSets,
                       slot.partSetsReadback);
     // The hovered part, written by the shader into the slot's host-visible buffer.
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,

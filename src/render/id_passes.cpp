@@ -49,8 +49,8 @@ void IdPasses::createCompose(const vk::ShaderCompiler& compiler, const DiskPipel
                                                {{"IDV_COMPOSE_MSAA", msaa ? "1" : "0"}});
 }
 
-void IdPasses::compose(VkCommandBuffer cmd, const SceneTargets& targets,
-                       const gpu::ComposePush& push) const {
+void IdPasses::compose(VkCommandBuffer cmd, const SceneTargets& targets, gpu::ComposePush push,
+                       const std::optional<HoveredTiles>& tiles) const {
     const ComputePipeline& pass = compose_[targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT];
     const std::array<VkDescriptorImageInfo, 4> images = {
         VkDescriptorImageInfo{VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL},
@@ -70,8 +70,12 @@ void IdPasses::compose(VkCommandBuffer cmd, const SceneTargets& targets,
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
     device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0,
                                 static_cast<uint32_t>(writes.size()), writes.data());
+    push.step = tiles ? gpu::COMPOSE_TILES : gpu::COMPOSE_WHOLE;
+    push.tileOrigin = tiles ? tiles->first : glm::uvec2(0);
     vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-    vkCmdDispatch(cmd, groups(push.extent.x), groups(push.extent.y), 1);
+    const glm::uvec2 count =
+        tiles ? tiles->count : glm::uvec2(groups(push.extent.x), groups(push.extent.y));
+    if (count.x > 0 && count.y > 0) vkCmdDispatch(cmd, count.x, count.y, 1);
 }
 
 void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
@@ -94,10 +98,12 @@ void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
 
 // To GENERAL: after the pass's writes and its transition to the final layout (which the
 // pass's outgoing dependency orders before the transfer stage), or after the last frame's
-// passes and copies when no scene pass ran. The composed colour is written whole, so its old
-// contents go; the last frame's blit or copy of it must be done first. Back: before the
-// copies and blits that read the images, and the next frame's pass that overwrites them.
-void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const {
+// passes and copies when no scene pass ran. A whole composition writes every pixel, so the
+// composed colour's old contents go; one of the hovered part's tiles keeps the rest. Either
+// way the last frame's blit or copy of it must be done first. Back: before the copies and
+// blits that read the images, and the next frame's pass that overwrites them.
+void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, Move move) const {
+    const bool toGeneral = move != Move::Back;
     std::array<VkImageMemoryBarrier, 3> barriers{};
     const std::array<VkImage, 3> images = {targets.ids().handle(), targets.shaded().handle(),
                                            targets.color().handle()};
@@ -109,10 +115,11 @@ void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
         b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         if (toGeneral) {
             const bool composed = images[i] == targets.color().handle();
+            const bool discard = composed && move == Move::ToGeneral;
             b.srcAccessMask = composed ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
             b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
             b.oldLayout =
-                composed ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+                discard ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
             b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
         } else {
             b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
@@ -167,15 +174,16 @@ void IdPasses::recordVisible(VkCommandBuffer cmd, const SceneTargets& targets,
         dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[1]);
         return;
     }
-    transition(cmd, targets, true);
+    transition(cmd, targets, Move::ToGeneral);
     bindImages(cmd, targets, visibleParts_[0]);
     dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[0]);
-    transition(cmd, targets, false);
+    transition(cmd, targets, Move::Back);
 }
 
 void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets,
-                      const gpu::ComposePush& composition, const std::vector<PartSetQuery>& queries,
-                      uint32_t words, const vk::Buffer& results, const vk::Buffer& readback) const {
+                      const gpu::ComposePush& composition, const std::optional<HoveredTiles>& tiles,
+                      const std::vector<PartSetQuery>& queries, uint32_t words,
+                      const vk::Buffer& results, const vk::Buffer& readback) const {
     vk::CmdLabel label(device_.debug(), cmd, "ID image passes");
     const VkDeviceSize stride = sizeof(gpu::PartSetResult) + VkDeviceSize(words) * 4;
     const VkDeviceSize bytes = stride * queries.size();
@@ -189,12 +197,12 @@ void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets,
                              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &cleared, 0, nullptr, 0,
                              nullptr);
     }
-    transition(cmd, targets, true);
-    compose(cmd, targets, composition);
+    transition(cmd, targets, tiles ? Move::ToGeneralKeepingColor : Move::ToGeneral);
+    compose(cmd, targets, composition, tiles);
     if (!queries.empty()) bindImages(cmd, targets, partSet_);
     for (size_t i = 0; i < queries.size(); ++i)
         dispatchPartSet(cmd, targets, queries[i], results.address() + stride * i, words, partSet_);
-    transition(cmd, targets, false);
+    transition(cmd, targets, Move::Back);
     if (queries.empty()) return;
     auto written = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

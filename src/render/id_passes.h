@@ -7,6 +7,7 @@
 // sample 0 of each pixel, as the pick does; only culling's visible parts read every sample.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "render/pick.h"
@@ -24,10 +25,12 @@ class IdPasses {
     // The composition into targets.color(), then the part sets. The images go from
     // TRANSFER_SRC_OPTIMAL (the scene pass's final layout) to GENERAL and back around the
     // passes. The part sets write `results` (one PartSetResult plus `words` words per query,
-    // zeroed here) and are copied to `readback`.
+    // zeroed here) and are copied to `readback`. Without `tiles` the whole picture is
+    // composed and the hovered part's tiles go to compose.boxAddress; with them, only those
+    // tiles, over the picture the composition before left (it differed in the blink alone).
     void record(VkCommandBuffer cmd, const SceneTargets& targets, const gpu::ComposePush& compose,
-                const std::vector<PartSetQuery>& queries, uint32_t words, const vk::Buffer& results,
-                const vk::Buffer& readback) const;
+                const std::optional<HoveredTiles>& tiles, const std::vector<PartSetQuery>& queries,
+                uint32_t words, const vk::Buffer& results, const vk::Buffer& readback) const;
 
     // Culling's visible-part pass: every unique part of the ID image into `visible` (a
     // gpu::PartSetResult, then `words` words), cleared first; with MSAA, of every sample of
@@ -43,9 +46,11 @@ class IdPasses {
                          const ComputePipeline& pass) const;
     void bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
                     const ComputePipeline& pass) const;
-    void compose(VkCommandBuffer cmd, const SceneTargets& targets,
-                 const gpu::ComposePush& push) const;
-    void transition(VkCommandBuffer cmd, const SceneTargets& targets, bool toGeneral) const;
+    void compose(VkCommandBuffer cmd, const SceneTargets& targets, gpu::ComposePush push,
+                 const std::optional<HoveredTiles>& tiles) const;
+    // To GENERAL (keeping the composed colour or not) and back to TRANSFER_SRC_OPTIMAL.
+    enum class Move { ToGeneral, ToGeneralKeepingColor, Back };
+    void transition(VkCommandBuffer cmd, const SceneTargets& targets, Move move) const;
 
     vk::Device& device_;
     vk::Handle<VkDescriptorSetLayout> images_;  // pushed per frame: IDs, colour

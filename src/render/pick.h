@@ -1,6 +1,7 @@
 // pick.h - what the CPU learns from a frame's pick: the nearest part at the picked pixel and
 // its depth, decoded from the 64-bit value the fragment shaders atomicMin'ed (see PickData);
-// and from its part set queries, the unique parts inside pixel rectangles (id_passes.h).
+// from its part set queries, the unique parts inside pixel rectangles (id_passes.h); and from
+// its composition, the tiles the hovered part covers.
 #pragma once
 
 #include <bit>
@@ -39,6 +40,23 @@ struct PartSetQuery {
 // The rectangle spanned by two corners given in any order.
 inline PartSetQuery spanning(glm::uvec2 a, glm::uvec2 b) {
     return {glm::min(a, b), glm::max(a, b)};
+}
+
+// The tiles (gpu::ID_PASS_TILE pixels square) a whole composition found holding the hovered
+// part or pixel (gpu::HoverBox): a step of the blink after it composes only these again.
+struct HoveredTiles {
+    uint64_t frame = 0;     // FrameSlots frame number of the composition
+    glm::uvec2 first{0};    // the first tile
+    glm::uvec2 count{0, 0}; // tiles across and down; 0 when none holds them
+};
+
+inline HoveredTiles decodeHoverBox(const gpu::HoverBox& box, uint64_t frame) {
+    HoveredTiles tiles{frame, box.tileMin, glm::uvec2(0)};
+    if (glm::all(glm::lessThanEqual(box.tileMin, box.tileMax)))
+        tiles.count = box.tileMax - box.tileMin + 1u;
+    else
+        tiles.first = glm::uvec2(0);
+    return tiles;
 }
 
 struct PartSetReading {

@@ -190,6 +190,7 @@ void Renderer::reloadShaders() {
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
     animator_ = std::move(animator);
     idPasses_ = std::move(idPasses);
+    composed_.reset(); // their box of the hovered part's tiles is not written yet
     culler_ = std::move(culler);
     // A still view would go on drawing what the old shaders culled (planFrame): cull anew.
     if (draws_) {
@@ -205,6 +206,7 @@ void Renderer::setSelection(const scene::PartSet& selected) {
     auto buffer = partSetBuffer(upload, selected, "selection");
     upload.submit();
     selected_ = std::move(buffer);
+    composed_.reset();
 }
 
 void Renderer::setHidden(const scene::PartSet& hidden) {
@@ -260,7 +262,7 @@ CullCounts Renderer::cullTotals() const {
 // The frame, step by step. Culling (render/culling.h) may split the scene pass in two halves
 // around the depth pyramid; every step writes its timestamp, steps left out included.
 void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& target,
-                      const FrameParams& params) const {
+                      const FrameParams& params) {
     if (!pipeline_ || !sceneGpu_) throw vk::Error("Renderer::record before setScene");
     const SceneTargets& targets = *target;
     if (uint32_t(targets.pass().samples()) != pipeline_->key.msaa)
@@ -272,6 +274,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
                                                             selected_, hidden_, visible_, target})
         slot.keep(used);
     slot.scenePass = true;
+    composed_.reset(); // the images the composition reads are drawn again
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
     FrameCulling culling = planFrame(params, targets);
@@ -293,7 +296,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
 }
 
 void Renderer::recordComposition(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& target,
-                                 const FrameParams& params) const {
+                                 const FrameParams& params) {
     if (!sceneGpu_) throw vk::Error("Renderer::recordComposition before setScene");
     for (const std::shared_ptr<const void>& used :
          std::initializer_list<std::shared_ptr<const void>>{idPasses_, selected_, target})

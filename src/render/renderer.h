@@ -43,6 +43,9 @@ struct FrameParams {
     // the visible parts); the result reaches FrameSlots::latestPartSets().
     std::vector<PartSetQuery> partSets;
     float explode = 0.0f; // exploded view, 0 (at rest) to 1; see render/animator.h
+    // FrameSlots::latestHoveredTiles(): once the tiles of the last whole composition are
+    // known, a step of the blink composes only them (Renderer::recordComposition).
+    std::optional<HoveredTiles> hoveredTiles;
 };
 
 // What the culling of a configuration leaves out, per frame (FrameSlots::cullStats() holds
@@ -120,14 +123,18 @@ class Renderer {
     // buffer; the slot keeps what the commands use, `targets` included. They must be made
     // with pass(settings().pipeline.msaa).
     void record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& targets,
-                const FrameParams& params) const;
+                const FrameParams& params);
 
     // Composes the picture again from the images the last scene pass left in `targets`
     // (recorded before in submission order, with the settings drawn then): the hovered part
     // at params.pickPixel, the selection and edges as they are now, and params.partSets. No
-    // scene pass, pick, culling or timestamps: what a viewer at rest records.
+    // scene pass, pick, culling or timestamps: what a viewer at rest records. When only the
+    // blink's weight (params.time) changed since the last composition into `targets` and
+    // params.hoveredTiles holds what the last whole one found, only those are composed again.
     void recordComposition(FrameSlot& slot, const std::shared_ptr<const SceneTargets>& targets,
-                           const FrameParams& params) const;
+                           const FrameParams& params);
+    // The tiles the last composition made again; nullopt: it made the whole picture.
+    const std::optional<HoveredTiles>& lastComposedTiles() const { return lastTiles_; }
 
     const RenderSettings& settings() const { return settings_; }
     // Counts the calls that may change what the scene pass draws beyond settings(): a scene
@@ -185,7 +192,7 @@ class Renderer {
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
     void recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
-                        const FrameParams& params) const;
+                        const FrameParams& params);
 
     vk::Device& device_;
     const vk::ShaderCompiler& compiler_;
@@ -213,6 +220,15 @@ class Renderer {
     scene::PartSet hiddenSet_;
     uint64_t hiddenVersion_ = 0; // counts setHidden() calls: culling asks whether it changed
     uint64_t changes_ = 0;
+    // What the composed image of `targets` was made from, blink aside, while nothing else
+    // wrote to the images it reads: a scene pass, a new selection or new ID passes forget it.
+    struct Composed {
+        const SceneTargets* targets = nullptr;
+        gpu::ComposePush push{};
+        uint64_t wholeFrame = 0; // the frame slot's number of the last whole composition
+    };
+    std::optional<Composed> composed_;
+    std::optional<HoveredTiles> lastTiles_;
     std::vector<uint8_t> objectHidden_;                      // per object: all its parts are hidden
     std::vector<std::pair<uint32_t, uint32_t>> objectParts_; // per object: first ID, count
     uint32_t partCount_ = 0;

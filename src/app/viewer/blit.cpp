@@ -1,4 +1,5 @@
-// blit.cpp - layout transitions, the scene-to-window blit and the window readback.
+// blit.cpp - layout transitions, the blit into the window's picture, its copy onto the
+// swapchain image and its readback.
 #include "app/viewer/blit.h"
 
 #include <algorithm>
@@ -26,26 +27,57 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImag
 
 } // namespace
 
-void recordSceneToWindow(VkCommandBuffer cmd, const vk::Image& scene, VkImage window,
-                         VkExtent2D windowExtent) {
+void recordSceneToPicture(VkCommandBuffer cmd, const vk::Image& scene, const vk::Image& picture,
+                          const std::optional<VkRect2D>& only) {
+    if (only && (only->extent.width == 0 || only->extent.height == 0)) return; // nothing changed
+    // After the last frame's copy of the picture to the window (and to a screenshot).
+    imageBarrier(cmd, picture.handle(),
+                 only ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    // A blit rather than a copy: it swizzles RGBA into a BGRA picture, and scales.
+    const VkRect2D from = only.value_or(VkRect2D{{0, 0}, scene.extent()});
+    const VkRect2D to = only.value_or(VkRect2D{{0, 0}, picture.extent()});
+    auto corners = [](const VkRect2D& r, VkOffset3D(&offsets)[2]) {
+        offsets[0] = {r.offset.x, r.offset.y, 0};
+        offsets[1] = {r.offset.x + int32_t(r.extent.width), r.offset.y + int32_t(r.extent.height),
+                      1};
+    };
+    VkImageBlit region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    corners(from, region.srcOffsets);
+    corners(to, region.dstOffsets);
+    vkCmdBlitImage(cmd, scene.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, picture.handle(),
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
+    if (only)
+        imageBarrier(cmd, picture.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_READ_BIT);
+    else
+        imageBarrier(cmd, picture.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
+void recordPictureToWindow(VkCommandBuffer cmd, const vk::Image& picture, VkImage window) {
     // The source stage is the one the acquire semaphore is waited at, which chains the
     // transition after the presentation engine has let go of the image.
     imageBarrier(cmd, window, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                  VK_ACCESS_TRANSFER_WRITE_BIT);
-    // A blit rather than a copy: it swizzles RGBA into a BGRA swapchain, and scales if the
-    // window changed size since the scene targets were made.
-    VkImageBlit region{};
+    VkImageCopy region{};
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.srcOffsets[1] = {int32_t(scene.extent().width), int32_t(scene.extent().height), 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.dstOffsets[1] = {int32_t(windowExtent.width), int32_t(windowExtent.height), 1};
-    vkCmdBlitImage(cmd, scene.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, window,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
-    imageBarrier(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                 VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    region.extent = {picture.extent().width, picture.extent().height, 1};
+    vkCmdCopyImage(cmd, picture.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, window,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    // For present; the semaphore the submit signals covers the rest.
+    imageBarrier(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
 }
 
 WindowCapture::WindowCapture(vk::Device& device, VkExtent2D extent)
@@ -53,19 +85,12 @@ WindowCapture::WindowCapture(vk::Device& device, VkExtent2D extent)
       buffer_(vk::hostBuffer(device, VkDeviceSize(extent.width) * extent.height * 4,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, "window screenshot")) {}
 
-void WindowCapture::record(VkCommandBuffer cmd, VkImage window) const {
-    imageBarrier(cmd, window, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                 VK_ACCESS_TRANSFER_READ_BIT);
+void WindowCapture::record(VkCommandBuffer cmd, const vk::Image& picture) const {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent_.width, extent_.height, 1};
-    vkCmdCopyImageToBuffer(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer_.handle(), 1,
-                           &region);
-    // Back for present; the semaphore the submit signals covers the rest.
-    imageBarrier(cmd, window, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+    vkCmdCopyImageToBuffer(cmd, picture.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           buffer_.handle(), 1, &region);
     auto toHost = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

@@ -13,6 +13,7 @@
 #include "app/viewer/commands.h"
 #include "app/viewer/kept_view.h" // maxRecentFiles
 #include "app/viewer/viewer.h"
+#include "render/blink.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
 
@@ -56,15 +57,13 @@ void Viewer::drawFrame(const FrameWants& wants) {
     if (!image) return; // out of date: the next frame makes a new swapchain first
     render::FrameParams params = frameParams(seconds);
     const SceneKey key = sceneKey(params);
-    const bool scenePass = pacer_.needsScene(key, wants.continuous);
+    const bool scenePass =
+        pacer_.needsScene(key, wants.continuous) || std::exchange(redrawNext_, false);
     recordScene(slot, params, scenePass);
     pacer_.drew(wants, scenePass, key);
-    std::string screenshot = std::exchange(screenshotPath_, {});
-    if (!screenshot.empty() && !presenter_.canCapture()) {
-        scene_.fail("screenshot: this window's images cannot be copied from");
-        screenshot.clear();
-    }
-    presenter_.record(slot.cmd, *image, scene_.targets()->color(), !screenshot.empty());
+    const std::string screenshot = std::exchange(screenshotPath_, {});
+    presenter_.record(slot.cmd, *image, scene_.targets()->color(), changedTiles(),
+                      !screenshot.empty());
     presenter_.present(slots_, slot, *image);
     if (!screenshot.empty()) saveScreenshot(screenshot);
     ++frameNumber_;
@@ -186,10 +185,13 @@ render::FrameParams Viewer::frameParams(double seconds) {
     render::FrameParams params =
         cameraFrame(camera_.camera(animate ? 2.0f : 1.0f, settings_.camera.ortho), extent);
     params.viewProj = camera_.shiftMatrix() * params.viewProj; // F's fit beside the panel
-    params.time = float(seconds);
+    // A time in the step of the blink it is held at (the first half of a period is strong).
+    const double period = 1.0 / render::blinkHz;
+    params.time = blinkHeld_ ? float(*blinkHeld_ ? 0.25 * period : 0.75 * period) : float(seconds);
     viewProj_ = params.viewProj;
     keepViewProj(frameNumber_, params.viewProj);
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
+    params.hoveredTiles = slots_.latestHoveredTiles();
     // A released box asks for its parts (recordScene adds the visible parts' count).
     if (const auto box = input_.boxQuery(extent)) params.partSets.push_back(*box);
     showParts();
@@ -224,6 +226,7 @@ void Viewer::showParts() {
 void Viewer::recordScene(render::FrameSlot& slot, render::FrameParams params, bool scenePass) {
     if (!scenePass) {
         scene_.renderer().recordComposition(slot, scene_.targets(), params);
+        if (scene_.renderer().lastComposedTiles()) ++tileCompositions_;
         return;
     }
     const VkExtent2D extent = scene_.targets()->extent();
@@ -233,6 +236,19 @@ void Viewer::recordScene(render::FrameSlot& slot, render::FrameParams params, bo
     scene_.renderer().record(slot, scene_.targets(), params);
     cpuRecordMs_.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     if (cpuRecordMs_.size() > 30) cpuRecordMs_.pop_front();
+}
+
+// The pixels of the scene image this frame's composition made again, when it made only the
+// hovered part's tiles.
+std::optional<VkRect2D> Viewer::changedTiles() const {
+    const auto& tiles = scene_.renderer().lastComposedTiles();
+    if (!tiles) return std::nullopt;
+    const VkExtent2D extent = scene_.targets()->extent();
+    const glm::uvec2 first = tiles->first * gpu::ID_PASS_TILE;
+    const glm::uvec2 end = glm::min((tiles->first + tiles->count) * gpu::ID_PASS_TILE,
+                                    glm::uvec2(extent.width, extent.height));
+    if (glm::any(glm::lessThanEqual(end, first))) return VkRect2D{{0, 0}, {0, 0}};
+    return VkRect2D{{int32_t(first.x), int32_t(first.y)}, {end.x - first.x, end.y - first.y}};
 }
 
 // The copy is done once the frame's fence has signalled: a screenshot waits for it.

@@ -1,6 +1,7 @@
 // imgui_layer.cpp - Dear ImGui backend set-up, font upload, panel pass and shutdown.
 #include "app/viewer/imgui_layer.h"
 
+#include <array>
 #include <cfloat>
 
 #include <backends/imgui_impl_glfw.h>
@@ -26,7 +27,7 @@ vk::Handle<VkRenderPass> createPanelPass(vk::Device& device, VkFormat format) {
     color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     color.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    color.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL; // copied to the window
     VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
@@ -41,22 +42,31 @@ vk::Handle<VkRenderPass> createPanelPass(vk::Device& device, VkFormat format) {
     in.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
     in.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     in.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    // The copies of the picture wait for the panel.
+    VkSubpassDependency out{};
+    out.srcSubpass = 0;
+    out.dstSubpass = VK_SUBPASS_EXTERNAL;
+    out.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    out.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    out.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    out.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    const std::array<VkSubpassDependency, 2> dependencies = {in, out};
     auto info = vk::init<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
     info.attachmentCount = 1;
     info.pAttachments = &color;
     info.subpassCount = 1;
     info.pSubpasses = &subpass;
-    info.dependencyCount = 1;
-    info.pDependencies = &in;
+    info.dependencyCount = static_cast<uint32_t>(dependencies.size());
+    info.pDependencies = dependencies.data();
     return vk::make(device, vkCreateRenderPass, info, "panel pass");
 }
 
 } // namespace
 
 ImGuiLayer::ImGuiLayer(GLFWwindow* window, const vk::Instance& instance, vk::Device& device,
-                       const vk::Swapchain& swapchain)
+                       const vk::Image& picture)
     : device_(device) {
-    pass_ = createPanelPass(device, swapchain.format());
+    pass_ = createPanelPass(device, picture.format());
     // One combined image sampler: the font texture, the only image the panel shows.
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
     auto poolInfo =
@@ -96,7 +106,7 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, const vk::Instance& instance, vk::Dev
     // The font atlas goes up once, at start-up; its staging buffer is freed right after.
     device.submitNow([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
     ImGui_ImplVulkan_DestroyFontUploadObjects();
-    createFramebuffers(swapchain);
+    createFramebuffer(picture);
 }
 
 ImGuiLayer::~ImGuiLayer() {
@@ -110,20 +120,17 @@ ImGuiLayer::Backends::~Backends() {
     if (context) ImGui::DestroyContext();
 }
 
-void ImGuiLayer::createFramebuffers(const vk::Swapchain& swapchain) {
-    framebuffers_.clear();
-    extent_ = swapchain.extent();
-    for (const vk::SwapchainImage& image : swapchain.images()) {
-        auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
-        info.renderPass = pass_.get();
-        info.attachmentCount = 1;
-        const VkImageView view = image.view.get();
-        info.pAttachments = &view;
-        info.width = extent_.width;
-        info.height = extent_.height;
-        info.layers = 1;
-        framebuffers_.push_back(vk::make(device_, vkCreateFramebuffer, info, "panel framebuffer"));
-    }
+void ImGuiLayer::createFramebuffer(const vk::Image& picture) {
+    extent_ = picture.extent();
+    auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);
+    info.renderPass = pass_.get();
+    info.attachmentCount = 1;
+    const VkImageView view = picture.view();
+    info.pAttachments = &view;
+    info.width = extent_.width;
+    info.height = extent_.height;
+    info.layers = 1;
+    framebuffer_ = vk::make(device_, vkCreateFramebuffer, info, "panel framebuffer");
 }
 
 void ImGuiLayer::newFrame(std::optional<glm::vec2> cursor) {
@@ -133,14 +140,54 @@ void ImGuiLayer::newFrame(std::optional<glm::vec2> cursor) {
     ImGui::NewFrame();
 }
 
-void ImGuiLayer::record(VkCommandBuffer cmd, uint32_t index) const {
+void ImGuiLayer::record(VkCommandBuffer cmd) const {
     auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
     begin.renderPass = pass_.get();
-    begin.framebuffer = framebuffers_.at(index).get();
+    begin.framebuffer = framebuffer_.get();
     begin.renderArea = {{0, 0}, extent_};
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
     vkCmdEndRenderPass(cmd);
+}
+
+// FNV-1a over the bytes ImGui hands the backend, and the box its vertices span.
+ImGuiLayer::Drawn ImGuiLayer::drawn() {
+    Drawn drawn;
+    const ImDrawData* data = ImGui::GetDrawData();
+    if (!data) return drawn;
+    uint64_t hash = 0xcbf29ce484222325ull;
+    auto add = [&](const void* bytes, size_t size) {
+        for (size_t i = 0; i < size; ++i) {
+            hash ^= static_cast<const uint8_t*>(bytes)[i];
+            hash *= 0x100000001b3ull;
+        }
+    };
+    glm::vec2 lo(FLT_MAX), hi(-FLT_MAX);
+    for (int l = 0; l < data->CmdListsCount; ++l) {
+        const ImDrawList& list = *data->CmdLists[l];
+        add(list.VtxBuffer.Data, size_t(list.VtxBuffer.Size) * sizeof(ImDrawVert));
+        add(list.IdxBuffer.Data, size_t(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
+        for (const ImDrawCmd& c : list.CmdBuffer) {
+            add(&c.ClipRect, sizeof c.ClipRect);
+            add(&c.TextureId, sizeof c.TextureId);
+            add(&c.VtxOffset, sizeof c.VtxOffset);
+            add(&c.IdxOffset, sizeof c.IdxOffset);
+            add(&c.ElemCount, sizeof c.ElemCount);
+        }
+        for (const ImDrawVert& v : list.VtxBuffer) {
+            lo = glm::min(lo, glm::vec2(v.pos.x, v.pos.y));
+            hi = glm::max(hi, glm::vec2(v.pos.x, v.pos.y));
+        }
+    }
+    drawn.hash = hash;
+    if (lo.x <= hi.x) {
+        // Whole pixels that any triangle may touch, one more each side for the rounding.
+        const glm::ivec2 first = glm::ivec2(glm::floor(lo)) - 1,
+                         last = glm::ivec2(glm::ceil(hi)) + 1;
+        drawn.bounds =
+            VkRect2D{{first.x, first.y}, {uint32_t(last.x - first.x), uint32_t(last.y - first.y)}};
+    }
+    return drawn;
 }
 
 } // namespace app

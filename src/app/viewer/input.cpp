@@ -413,6 +413,17 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
         break;
+    case ScriptOp::Redraw: // with what follows at the same time, in the same frame
+        step([this] { viewer_.redraw(); }, false);
+        break;
+    case ScriptOp::Blink:
+        step(
+            [this, weight = c.text] {
+                viewer_.holdBlink(weight == "clock" ? std::nullopt
+                                                    : std::optional(weight == "strong"));
+            },
+            true);
+        break;
     case ScriptOp::Rest: // the steps after it wait, and the loop with them
         step([this, s = v[0]] { restUntil_ = scriptNow_ + s; }, false);
         break;

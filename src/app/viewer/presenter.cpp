@@ -1,4 +1,4 @@
-// presenter.cpp - swapchain upkeep, acquire, blit, panel, present and window captures.
+// presenter.cpp - swapchain upkeep, acquire, the window's picture, present and captures.
 #include "app/viewer/presenter.h"
 
 #include <string>
@@ -6,6 +6,19 @@
 #include "vk/check.h"
 
 namespace app {
+namespace {
+
+bool overlap(const VkRect2D& a, const VkRect2D& b) {
+    auto apart = [](int32_t from, uint32_t size, int32_t otherFrom) {
+        return int64_t(from) + size <= otherFrom;
+    };
+    return !apart(a.offset.x, a.extent.width, b.offset.x) &&
+           !apart(b.offset.x, b.extent.width, a.offset.x) &&
+           !apart(a.offset.y, a.extent.height, b.offset.y) &&
+           !apart(b.offset.y, b.extent.height, a.offset.y);
+}
+
+} // namespace
 
 Presenter::Presenter(Window& window, const vk::Instance& instance, vk::Device& device,
                      VkSurfaceKHR surface)
@@ -18,7 +31,8 @@ Presenter::Presenter(Window& window, const vk::Instance& instance, vk::Device& d
     const VkExtent2D size = window.framebufferSize();
     if (size.width == 0 || size.height == 0 || !swapchain_.recreate(size, vsync_))
         throw vk::Error("the window has no area to render to");
-    panel_ = std::make_unique<ImGuiLayer>(window.handle(), instance, device, swapchain_);
+    makePicture();
+    panel_ = std::make_unique<ImGuiLayer>(window.handle(), instance, device, picture_);
 }
 
 bool Presenter::ready(bool vsync) {
@@ -28,7 +42,8 @@ bool Presenter::ready(bool vsync) {
     if (!stale_ && vsync == vsync_ && now.width == size.width && now.height == size.height)
         return true;
     if (!swapchain_.recreate(size, vsync)) return false; // drains the queue first
-    panel_->createFramebuffers(swapchain_);
+    makePicture();
+    panel_->createFramebuffer(picture_);
     vsync_ = vsync;
     stale_ = false;
     return true;
@@ -46,18 +61,39 @@ std::optional<Presenter::Image> Presenter::acquire(uint64_t frameNumber) {
     return image;
 }
 
+void Presenter::makePicture() {
+    picture_ = vk::Image(device_, swapchain_.extent(), swapchain_.format(),
+                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                             VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                         VK_IMAGE_ASPECT_COLOR_BIT, "window picture");
+    drawnPanel_.reset();
+}
+
 void Presenter::record(VkCommandBuffer cmd, const Image& image, const vk::Image& scene,
-                       bool capture) {
-    const VkImage window = swapchain_.images()[image.index].image;
-    recordSceneToWindow(cmd, scene, window, swapchain_.extent());
-    panel_->record(cmd, image.index);
+                       const std::optional<VkRect2D>& sceneChanged, bool capture) {
+    const ImGuiLayer::Drawn panel = ImGuiLayer::drawn();
+    const VkExtent2D size = picture_.extent();
+    // The picture keeps the panel when the panel drew the same as when it was drawn in, and
+    // the scene changed only where the panel does not reach.
+    const bool keep = sceneChanged && drawnPanel_ == panel.hash && shownScene_ == scene.handle() &&
+                      scene.extent().width == size.width && scene.extent().height == size.height &&
+                      !(panel.bounds && overlap(*panel.bounds, *sceneChanged));
+    shownScene_ = scene.handle();
+    if (keep) {
+        recordSceneToPicture(cmd, scene, picture_, sceneChanged);
+        ++keptPanels_;
+    } else {
+        recordSceneToPicture(cmd, scene, picture_, std::nullopt);
+        panel_->record(cmd);
+        drawnPanel_ = panel.hash;
+    }
+    recordPictureToWindow(cmd, picture_, swapchain_.images()[image.index].image);
     if (!capture) return;
-    const VkExtent2D size = swapchain_.extent();
     // The capture buffer is only reused after the frame that filled it was read back.
     if (!capture_ || capture_->extent().width != size.width ||
         capture_->extent().height != size.height)
         capture_ = std::make_unique<WindowCapture>(device_, size);
-    capture_->record(cmd, window);
+    capture_->record(cmd, picture_);
 }
 
 void Presenter::present(render::FrameSlots& slots, render::FrameSlot& slot, const Image& image) {
@@ -67,7 +103,7 @@ void Presenter::present(render::FrameSlots& slots, render::FrameSlot& slot, cons
 }
 
 std::vector<uint8_t> Presenter::capturedRgba() const {
-    return capture_ ? capture_->rgba(swapchain_.format()) : std::vector<uint8_t>{};
+    return capture_ ? capture_->rgba(picture_.format()) : std::vector<uint8_t>{};
 }
 
 std::string Presenter::vsyncState() const {

@@ -1,7 +1,7 @@
 // presenter.h - what shows a frame in the window: the swapchain (remade on resize, when the
 // driver says it is out of date or suboptimal, and when vsync changes), one acquire semaphore
-// per frame slot, the scene image blitted onto the acquired image, the ImGui panel over it,
-// present, and the copy of the presented image for screenshots.
+// per frame slot, the window's picture (the scene image blitted in, the ImGui panel over it)
+// copied onto the acquired image, present, and the copy of the picture for screenshots.
 #pragma once
 
 #include <array>
@@ -40,16 +40,21 @@ class Presenter {
     // slot's fence has signalled). nullopt when the swapchain is out of date; the next
     // ready() remakes it.
     std::optional<Image> acquire(uint64_t frameNumber);
-    // After the scene pass: the scene's colour onto the image, the panel over it, and with
-    // `capture` a copy of the result for capturedRgba().
-    void record(VkCommandBuffer cmd, const Image& image, const vk::Image& scene, bool capture);
+    // After the composition: the scene's colour into the window's picture, the panel over
+    // it, the picture onto the image, and with `capture` a copy of it for capturedRgba().
+    // `sceneChanged`: the scene image changed only there since the last frame (a step of
+    // the blink); when the panel draws as it did and does not reach there, only that part
+    // of the picture is made again and the panel is left as drawn.
+    void record(VkCommandBuffer cmd, const Image& image, const vk::Image& scene,
+                const std::optional<VkRect2D>& sceneChanged, bool capture);
     // Submits the slot (waiting for the acquire at the blit) and presents the image.
     void present(render::FrameSlots& slots, render::FrameSlot& slot, const Image& image);
 
     // The last capture, once its frame's fence has signalled: RGBA8, top row first.
     std::vector<uint8_t> capturedRgba() const;
     VkExtent2D capturedExtent() const { return capture_ ? capture_->extent() : VkExtent2D{}; }
-    bool canCapture() const { return swapchain_.copyable(); }
+    // Frames that kept the panel as drawn (see record).
+    uint64_t keptPanels() const { return keptPanels_; }
     VkExtent2D extent() const { return swapchain_.extent(); }
     // "on", "off", or "off (FIFO only)" where the surface offers nothing but FIFO.
     std::string vsyncState() const;
@@ -57,10 +62,18 @@ class Presenter {
     bool vsync() const { return vsync_; }
 
   private:
+    void makePicture(); // of the swapchain's size and format
+
     Window& window_;
     vk::Device& device_;
     vk::Swapchain swapchain_;
     std::array<vk::Handle<VkSemaphore>, render::FrameSlots::count> acquired_;
+    // What the window shows, kept from frame to frame (the swapchain's images are not):
+    // the scene blitted in and the panel drawn over it, copied to each acquired image.
+    vk::Image picture_;
+    std::optional<uint64_t> drawnPanel_; // ImGuiLayer::Drawn::hash of the panel it holds
+    VkImage shownScene_ = VK_NULL_HANDLE;
+    uint64_t keptPanels_ = 0;
     std::unique_ptr<ImGuiLayer> panel_;
     std::unique_ptr<WindowCapture> capture_;
     bool vsync_ = true;

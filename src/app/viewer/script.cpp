@@ -57,6 +57,8 @@ const CommandSpec commandSpecs[] = {
     {"cancel", ScriptOp::Cancel, 0, "cancel"},
     {"clear-recent", ScriptOp::ClearRecent, 0, "clear-recent"},
     {"frames", ScriptOp::Frames, 1, "frames N"},
+    {"redraw", ScriptOp::Redraw, 0, "redraw"},
+    {"blink", ScriptOp::Blink, 0, "blink strong|weak|clock"},
     {"rest", ScriptOp::Rest, 1, "rest SECONDS"},
     {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready"},
     {"quit", ScriptOp::Quit, 0, "quit"},
@@ -113,7 +115,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Section || spec->op == ScriptOp::Screenshot ||
                            spec->op == ScriptOp::Drop || spec->op == ScriptOp::View ||
                            spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Level ||
-                           spec->op == ScriptOp::Pipeline;
+                           spec->op == ScriptOp::Pipeline || spec->op == ScriptOp::Blink;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
@@ -225,6 +227,9 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         break;
     case ScriptOp::Pipeline:
         expectWord({"hold", "release", "ready"});
+        break;
+    case ScriptOp::Blink:
+        expectWord({"strong", "weak", "clock"});
         break;
     case ScriptOp::View:
         if (!scene::findStandardView(command.text))

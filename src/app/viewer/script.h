@@ -96,6 +96,8 @@ enum class ScriptOp {
     Cancel,
     ClearRecent,
     Frames,
+    Redraw,
+    Blink,
     Rest,
     Pipeline,
     Quit

@@ -322,7 +322,9 @@ void Viewer::rest() {
     if (rested_) return;
     rested_ = true;
     events_.say("rest: " + std::to_string(pacer_.scenePasses()) + " scene passes, " +
-                std::to_string(pacer_.compositions()) + " compositions");
+                std::to_string(pacer_.compositions()) + " compositions, " +
+                std::to_string(tileCompositions_) + " of the hovered part's tiles, " +
+                std::to_string(presenter_.keptPanels()) + " frames keeping the panel");
 }
 
 int runViewer(const Options& options) {

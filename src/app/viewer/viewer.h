@@ -69,6 +69,12 @@ class Viewer {
     void turnTo(const scene::StandardView& view);
     void setOrtho(bool ortho);
     void screenshot(const std::string& path) { screenshotPath_ = path; }
+    // The next frame draws everything anew, as after a change: the scene pass, the whole
+    // composition and the panel (tests compare what frames at rest show with it).
+    void redraw() { redrawNext_ = true; }
+    // The hovered part's blink held at its strong or weak step (tests: a step of the blink
+    // they choose), or back on the clock.
+    void holdBlink(std::optional<bool> strong) { blinkHeld_ = strong; }
     void selectionChanged() const; // tells the event lines
     void partsChanged() const;     // hidden parts changed: tells the event lines
     // The parts of every object named `name` join the selection as `mode` says.
@@ -128,6 +134,7 @@ class Viewer {
     render::FrameParams frameParams(double seconds);
     void showParts();
     void recordScene(render::FrameSlot& slot, render::FrameParams params, bool scenePass);
+    std::optional<VkRect2D> changedTiles() const;
     void saveScreenshot(const std::string& path);
     void updateTitle(double seconds, bool now);
     PanelInfo panelInfo() const;
@@ -169,7 +176,10 @@ class Viewer {
 
     // Frame timing and the title.
     FramePacer pacer_;
-    bool rested_ = false; // the loop slept since the last frame
+    bool rested_ = false;           // the loop slept since the last frame
+    uint64_t tileCompositions_ = 0; // compositions of the hovered part's tiles alone
+    bool redrawNext_ = false;
+    std::optional<bool> blinkHeld_; // strong (true) or weak
     uint64_t frameNumber_ = 0;
     std::optional<Clock::time_point> start_;
     std::deque<double> cpuRecordMs_;
