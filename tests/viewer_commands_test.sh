@@ -35,6 +35,7 @@ t=0.5
     at frames 3
     at screenshot "$work/running.png"
     at key ctrl+O
+    at loaded # the chooser's answer (none here: the open field), however long it takes
     at frames 3
     at key M
     at key ESC
@@ -120,14 +121,19 @@ t=0.5
     at box 420 150 600 330
     at frames 6
     at key H
+    at pipeline ready # the first hide builds the pipeline that hides, however long it takes
     at frames 6
     at key ctrl+Z
+    at pipeline ready
     at frames 6
     at key ctrl+shift+Z
+    at pipeline ready
     at frames 6
     at key ctrl+Z
+    at pipeline ready
     at frames 6
     at key ctrl+Y
+    at pipeline ready
     at frames 6
     at node hide
     at frames 4

@@ -15,6 +15,7 @@
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
+#include "vk/barrier.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
 
@@ -39,11 +40,8 @@ struct Readback {
                                color.handle(), 1, &region);
         vkCmdCopyImageToBuffer(cmd, targets.ids().handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                ids.handle(), 1, &region);
-        auto toHost = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
-        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                             &toHost, 0, nullptr, 0, nullptr);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     }
 
     // Once the frame that recorded the copies has finished.
