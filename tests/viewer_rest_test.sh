@@ -50,12 +50,14 @@ if [[ $(echo "$s" | wc -l) -eq 1 && -n $s && -n $first && $((last - first)) -ge 
 else
     fail "resting over a part: scene passes '$(echo "$s" | tr '\n' ' ')', compositions $first to $last"
 fi
-# Every step of the blink after the first few: the hovered part's tiles, the panel kept.
+# Every step of the blink: the hovered part's tiles, the panel kept; but for the first one on
+# a machine slow enough that the hover's last whole composition has not finished by then
+# (its tiles are read back once it has) or the panel still took in the hovered part's name.
 steps=$((last - first))
 tiled=$(($(echo "$resting" | tiles | tail -1) - $(echo "$resting" | tiles | head -1)))
 panels=$(($(echo "$resting" | kept | tail -1) - $(echo "$resting" | kept | head -1)))
-[[ $tiled -eq $steps && $panels -eq $steps ]] &&
-    echo "ok   $steps steps of the blink: all over the hovered part's tiles, the panel kept" ||
+[[ $steps -ge 3 && $tiled -ge $((steps - 1)) && $panels -ge $((steps - 1)) ]] &&
+    echo "ok   $steps steps of the blink: $tiled over the hovered part's tiles, $panels keeping the panel" ||
     fail "of $steps steps of the blink $tiled were over the tiles and $panels kept the panel"
 
 # vsync off: a scene pass every frame (the script's 10 frames at least), continuous title.
