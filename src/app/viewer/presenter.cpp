@@ -71,13 +71,17 @@ void Presenter::makePicture() {
 
 void Presenter::record(VkCommandBuffer cmd, const Image& image, const vk::Image& scene,
                        const std::optional<VkRect2D>& sceneChanged, bool capture) {
-    const ImGuiLayer::Drawn panel = ImGuiLayer::drawn();
     const VkExtent2D size = picture_.extent();
+    // The panel's draw data is hashed only in frames that could keep it (a frame that drew
+    // the scene anew, every frame with vsync off, cannot): it is the next such frame that
+    // compares with it.
+    std::optional<ImGuiLayer::Drawn> panel;
+    if (sceneChanged) panel = ImGuiLayer::drawn();
     // The picture keeps the panel when the panel drew the same as when it was drawn in, and
     // the scene changed only where the panel does not reach.
-    const bool keep = sceneChanged && drawnPanel_ == panel.hash && shownScene_ == scene.handle() &&
+    const bool keep = panel && drawnPanel_ == panel->hash && shownScene_ == scene.handle() &&
                       scene.extent().width == size.width && scene.extent().height == size.height &&
-                      !(panel.bounds && overlap(*panel.bounds, *sceneChanged));
+                      !(panel->bounds && overlap(*panel->bounds, *sceneChanged));
     shownScene_ = scene.handle();
     if (keep) {
         recordSceneToPicture(cmd, scene, picture_, sceneChanged);
@@ -85,7 +89,7 @@ void Presenter::record(VkCommandBuffer cmd, const Image& image, const vk::Image&
     } else {
         recordSceneToPicture(cmd, scene, picture_, std::nullopt);
         panel_->record(cmd);
-        drawnPanel_ = panel.hash;
+        drawnPanel_ = panel ? std::optional(panel->hash) : std::nullopt;
     }
     recordPictureToWindow(cmd, picture_, swapchain_.images()[image.index].image);
     if (!capture) return;
