@@ -17,6 +17,7 @@ using vec4 = glm::vec4;
 using uvec2 = glm::uvec2;
 using vec2 = glm::vec2;
 using mat4 = glm::mat4;
+using dvec4 = glm::dvec4;
 #define IDV_CONST constexpr uint32_t
 #else
 #define IDV_CONST const uint
@@ -119,7 +120,7 @@ struct FrameData {
     // third starts, the early pass's (a still view draws both again); 0 where unused
     uint lateMeshletWord, lateDrawnWord, earlyMeshletWord;
     float lodErrorPixels; // levels in the lists (cull.glsl's lodChosen): their pixels, else 0
-    float eyeReach; // |eye| in either projection: cull.glsl's rounding margins grow with it
+    float eyeReach;       // |eye| in either projection: cull.glsl's rounding margins grow with it
     // IDV_SECTION (scene/section.h): cut away where dot(plane, (p, 1)) > 0; unused (0,0,0,-1)
     vec4 sectionPlanes[SECTION_PLANES_MAX];
 };
@@ -429,9 +430,12 @@ struct PyramidPush {
 // animate.comp: objects[i].world = rest[i] with its translation moved by offsets[i] * explode
 // (the exploded view, see src/scene/explode.h). One thread per object.
 IDV_CONST ANIMATE_GROUP_SIZE = 64;
+// ObjectData::world is relative to the frame's origin (the eye, render::eyeRelative): this
+// pass writes it from the double placements whenever the origin or the explode value moves.
 struct AnimationPush {
+    dvec4 origin;            // world coordinates of the point the matrices are relative to (w 0)
     uint64_t objectsAddress; // ObjectData[], world written
-    uint64_t restAddress;    // mat4[]: the scene's world matrices
+    uint64_t restAddress;    // dmat4[]: the scene's world matrices, double
     uint64_t offsetsAddress; // vec4[]: per-object offset at explode 1 (w unused)
     uint objectCount;
     float explode; // 0: at rest, 1: twice as far from the scene centre
@@ -455,7 +459,7 @@ static_assert(offsetof(DrawPush, commandsAddress) == DRAW_PUSH_CULL_OFFSET);
 static_assert(sizeof(PickData) == 16 && sizeof(DrawData) == 32 && sizeof(Meshlet) == 16);
 static_assert(sizeof(ObjectData) == 144 && sizeof(Material) == 16);
 static_assert(sizeof(DrawPush) == 56 && offsetof(DrawPush, draw) == DRAW_PUSH_DRAW_OFFSET);
-static_assert(sizeof(AnimationPush) == 32 && offsetof(AnimationPush, explode) == 28);
+static_assert(sizeof(AnimationPush) == 64 && offsetof(AnimationPush, explode) == 60);
 } // namespace gpu
 #endif
 #undef IDV_CONST

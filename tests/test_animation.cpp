@@ -53,8 +53,8 @@ TEST(ExplodeMaths, ExplodedSceneMovesTranslationsOnly) {
     // At 1 each object's centre is twice as far from the scene centre: (-2.5, 0.5, 0) goes to
     // (-7, 0, -1) and (6, 1, 2) to (10, 1, 3).
     const scene::Scene full = scene::explodedScene(rest, 1.0f);
-    EXPECT_EQ(full.objects[0].world[3], glm::vec4(-7.5f, -0.5f, -1.0f, 1.0f));
-    EXPECT_EQ(full.objects[1].world[3], glm::vec4(9.0f, 0.0f, 3.0f, 1.0f));
+    EXPECT_EQ(full.objects[0].world[3], glm::dvec4(-7.5, -0.5, -1.0, 1.0));
+    EXPECT_EQ(full.objects[1].world[3], glm::dvec4(9.0, 0.0, 3.0, 1.0));
     for (size_t i = 0; i < rest.objects.size(); ++i) {
         for (int c = 0; c < 3; ++c) EXPECT_EQ(full.objects[i].world[c], rest.objects[i].world[c]);
         EXPECT_EQ(full.objects[i].uniquePartOffset, rest.objects[i].uniquePartOffset);

@@ -155,48 +155,48 @@ TEST(Camera, OrthoPlanesReachBehindAnEyeInsideTheBounds) {
 // Switching keeps the target's apparent size: points on the plane through the target,
 // facing the camera, land on the same pixels in both projections.
 TEST(Camera, SwitchingProjectionKeepsTheTargetsSize) {
-    scene::Camera camera = opening(box({-1, -1, -1}, {1, 1, 1}), 1.6f);
-    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
-    const glm::vec3 up = glm::cross(right, forward);
-    for (glm::vec2 offset :
-         {glm::vec2(0.3f, 0.0f), glm::vec2(-0.2f, 0.45f), glm::vec2(0.6f, -0.5f)}) {
-        const glm::vec4 p(camera.target + offset.x * right + offset.y * up, 1.0f);
+    scene::Camera camera = opening(box({-1, -1, -1}, {1, 1, 1}), 1.6);
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::dvec3 up = glm::cross(right, forward);
+    for (glm::dvec2 offset :
+         {glm::dvec2(0.3, 0.0), glm::dvec2(-0.2, 0.45), glm::dvec2(0.6, -0.5)}) {
+        const glm::dvec4 p(camera.target + offset.x * right + offset.y * up, 1.0);
         camera.ortho = false;
-        const glm::vec4 perspective = camera.viewProjection(1.6f) * p;
+        const glm::dvec4 perspective = camera.viewProjection(1.6) * p;
         camera.ortho = true;
-        const glm::vec4 ortho = camera.viewProjection(1.6f) * p;
-        EXPECT_EQ(ortho.w, 1.0f);
-        expectNear(glm::vec3(glm::vec2(perspective) / perspective.w, 0),
-                   glm::vec3(glm::vec2(ortho), 0), 1e-5f, "projected");
+        const glm::dvec4 ortho = camera.viewProjection(1.6) * p;
+        EXPECT_EQ(ortho.w, 1.0);
+        expectNear(glm::dvec3(glm::dvec2(perspective) / perspective.w, 0),
+                   glm::dvec3(glm::dvec2(ortho), 0), 1e-5, "projected");
     }
     // And the view is as tall as the perspective one at the target: 2 d tan(fov / 2).
-    EXPECT_FLOAT_EQ(camera.orthoHeight(),
-                    2.0f * glm::length(camera.target - camera.eye) * std::tan(0.5f * camera.fovY));
+    EXPECT_DOUBLE_EQ(camera.orthoHeight(),
+                     2.0 * glm::length(camera.target - camera.eye) * std::tan(0.5 * camera.fovY));
 }
 
 // In ortho every pixel's ray has the view's direction, starts on the near plane under the
 // pixel and passes through what projects there; unprojecting a pixel's depth gives the point.
 TEST(Camera, OrthoPixelRaysAreParallelAndUnprojectRoundTrips) {
-    scene::Camera camera = scene::turnedTo(opening(box({-2, -1, 0}, {3, 2, 1}), 1.5f),
+    scene::Camera camera = scene::turnedTo(opening(box({-2, -1, 0}, {3, 2, 1}), 1.5),
                                            *scene::findStandardView("isometric"), {0, 0, 1});
     camera.ortho = true;
     scene::fitPlanes(camera, box({-2, -1, 0}, {3, 2, 1}));
-    const glm::vec2 size(300, 200);
-    const glm::mat4 viewProj = camera.viewProjection(size.x / size.y);
-    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
-    for (const glm::vec3 point : {glm::vec3(0.5f, 0.2f, 0.3f), glm::vec3(-1.7f, 1.5f, 0.9f),
-                                  glm::vec3(2.5f, -0.8f, 0.1f)}) {
-        const glm::vec4 clip = viewProj * glm::vec4(point, 1.0f);
-        const glm::vec2 pixel = (glm::vec2(clip) * 0.5f + 0.5f) * size;
+    const glm::dvec2 size(300, 200);
+    const glm::dmat4 viewProj = camera.viewProjection(size.x / size.y);
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+    for (const glm::dvec3 point :
+         {glm::dvec3(0.5, 0.2, 0.3), glm::dvec3(-1.7, 1.5, 0.9), glm::dvec3(2.5, -0.8, 0.1)}) {
+        const glm::dvec4 clip = viewProj * glm::dvec4(point, 1.0);
+        const glm::dvec2 pixel = (glm::dvec2(clip) * 0.5 + 0.5) * size;
         const scene::Ray ray = scene::pixelRay(viewProj, size, pixel);
-        expectNear(glm::normalize(ray.direction), forward, 1e-5f, "ray direction");
-        const glm::vec4 origin = viewProj * glm::vec4(ray.origin, 1.0f);
-        EXPECT_NEAR(origin.z, 0.0f, 1e-5f); // on the near plane
-        const glm::vec3 toPoint = point - ray.origin;
-        const float along = glm::dot(toPoint, forward);
-        EXPECT_LT(glm::length(toPoint - along * forward), 1e-4f);
-        expectNear(scene::unprojectPixel(viewProj, size, pixel, clip.z), point, 1e-4f,
+        expectNear(glm::normalize(ray.direction), forward, 1e-5, "ray direction");
+        const glm::dvec4 origin = viewProj * glm::dvec4(ray.origin, 1.0);
+        EXPECT_NEAR(origin.z, 0.0, 1e-5); // on the near plane
+        const glm::dvec3 toPoint = point - ray.origin;
+        const double along = glm::dot(toPoint, forward);
+        EXPECT_LT(glm::length(toPoint - along * forward), 1e-4);
+        expectNear(scene::unprojectPixel(viewProj, size, pixel, clip.z), point, 1e-4,
                    "unprojected");
     }
 }

@@ -57,7 +57,7 @@ TEST(CopyAxes, BoundsGrowOnlyAlongTheChosenAxesAndIdsStayUniqueAndContiguous) {
 
 TEST(CopyAxes, GridIsAsCompactAsItCanBe) {
     const Scene s = makeAssembly();
-    const glm::vec3 step = (s.bounds().max - s.bounds().min) * 1.1f;
+    const glm::dvec3 step = (s.bounds().max - s.bounds().min) * 1.1;
     // 27 copies over xyz: a 3x3x3 block, so the last copy sits two steps out on each axis.
     const Scene cube = replicate(s, 27, parseCopyAxes("xyz"));
     const glm::vec3 last =

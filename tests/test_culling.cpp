@@ -90,7 +90,7 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
     scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
     if (c.ortho) {
         camera = app::initialCamera(loaded, float(W) / float(H), {nullptr, true});
-        camera.eye = camera.target + (camera.eye - camera.target) / 3.0f;
+        camera.eye = camera.target + (camera.eye - camera.target) / 3.0;
         scene::fitPlanes(camera, loaded.scene.bounds());
     }
 

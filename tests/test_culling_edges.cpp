@@ -256,10 +256,10 @@ TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
             scene::Bounds cluster{};
             for (uint32_t t = 0; t < part.triangleCount; ++t) {
                 if (t % gpu::CLUSTER_MAX_TRIANGLES == 0)
-                    cluster = {glm::vec3(1e30f), glm::vec3(-1e30f)};
+                    cluster = {glm::dvec3(1e30), glm::dvec3(-1e30)};
                 for (uint32_t c = 0; c < 3; ++c) {
                     const uint32_t i = g.firstIndex + 3 * (part.firstTriangle + t) + c;
-                    const glm::vec3 q = s.vertices[g.firstVertex + s.indices[i]].position;
+                    const glm::dvec3 q = s.vertices[g.firstVertex + s.indices[i]].position;
                     cluster.min = glm::min(cluster.min, q);
                     cluster.max = glm::max(cluster.max, q);
                 }

@@ -13,7 +13,8 @@ vk::DeviceInfo capable(uint32_t index, const char* name, VkPhysicalDeviceType ty
     d.name = name;
     d.type = type;
     d.apiVersion = VK_API_VERSION_1_3;
-    d.bufferDeviceAddress = d.shaderInt64 = d.shaderBufferInt64Atomics = d.geometryShader = true;
+    d.bufferDeviceAddress = d.shaderInt64 = d.shaderFloat64 = d.shaderBufferInt64Atomics =
+        d.geometryShader = true;
     d.multiDrawIndirect = d.drawIndirectFirstInstance = d.fragmentStoresAndAtomics =
         d.independentBlend = true;
     d.pushDescriptor = d.drawIndirectCount = d.shaderDrawParameters = true;
@@ -41,21 +42,23 @@ TEST(DeviceSelect, NamesEveryMissingRequirement) {
     vk::DeviceInfo d = capable(0, "old", VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU);
     d.apiVersion = VK_API_VERSION_1_1;
     d.shaderInt64 = false;
+    d.shaderFloat64 = false;
     d.geometryShader = false;
     d.drawIndirectCount = false;
     d.shaderDrawParameters = false;
     d.graphicsQueueFamily = UINT32_MAX;
     auto missing = vk::missingRequirements(d);
-    ASSERT_EQ(missing.size(), 6u);
+    ASSERT_EQ(missing.size(), 7u);
     EXPECT_EQ(missing[0], "Vulkan 1.2");
     EXPECT_EQ(missing[1], "shaderInt64");
-    EXPECT_EQ(missing[2], "geometryShader");
-    EXPECT_EQ(missing[3], "drawIndirectCount");
-    EXPECT_EQ(missing[4], "shaderDrawParameters");
-    EXPECT_EQ(missing[5], "a graphics queue with timestamps");
+    EXPECT_EQ(missing[2], "shaderFloat64");
+    EXPECT_EQ(missing[3], "geometryShader");
+    EXPECT_EQ(missing[4], "drawIndirectCount");
+    EXPECT_EQ(missing[5], "shaderDrawParameters");
+    EXPECT_EQ(missing[6], "a graphics queue with timestamps");
 
     vk::DeviceInfo none;
-    EXPECT_EQ(vk::missingRequirements(none).size(), 13u);
+    EXPECT_EQ(vk::missingRequirements(none).size(), 14u);
 }
 
 TEST(DeviceSelect, PrefersDiscreteThenIntegratedThenCpu) {

@@ -10,64 +10,64 @@ using namespace scene;
 
 TEST(Raycast, PixelRayPassesThroughTheProjectedPoint) {
     Camera camera = tilesCamera();
-    const glm::vec2 size(320, 200);
-    const glm::mat4 viewProj = camera.viewProjection(size.x / size.y);
-    const glm::vec3 point(1.3f, -0.7f, -0.5f);
-    glm::vec4 clip = viewProj * glm::vec4(point, 1);
-    glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * size;
+    const glm::dvec2 size(320, 200);
+    const glm::dmat4 viewProj = camera.viewProjection(size.x / size.y);
+    const glm::dvec3 point(1.3, -0.7, -0.5);
+    glm::dvec4 clip = viewProj * glm::dvec4(point, 1);
+    glm::dvec2 pixel = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * size;
     Ray ray = pixelRay(viewProj, size, pixel);
-    glm::vec3 toPoint = point - ray.origin;
-    float along = glm::dot(toPoint, glm::normalize(ray.direction));
-    EXPECT_LT(glm::length(toPoint - along * glm::normalize(ray.direction)), 1e-4f);
-    EXPECT_GT(ray.origin.z, 10.0f); // starts at the near plane, in front of the camera
+    glm::dvec3 toPoint = point - ray.origin;
+    double along = glm::dot(toPoint, glm::normalize(ray.direction));
+    EXPECT_LT(glm::length(toPoint - along * glm::normalize(ray.direction)), 1e-4);
+    EXPECT_GT(ray.origin.z, 10.0); // starts at the near plane, in front of the camera
 }
 
 TEST(Raycast, NearestSurfaceWinsAndGapsShowWhatIsBehind) {
     Scene s = makeTiles();
-    const glm::vec3 eye = tilesCamera().eye;
-    auto hitAt = [&](glm::vec3 target) { return raycast(s, {eye, (target - eye) * 2.0f}); };
+    const glm::dvec3 eye = tilesCamera().eye;
+    auto hitAt = [&](glm::dvec3 target) { return raycast(s, {eye, (target - eye) * 2.0}); };
     // Tile (row 1, col 2) of the second sheet: sheet origin (0.2, -0.4), tile origin (2, 1).
-    auto tile = hitAt({0.2f + 2.4f, -0.4f + 1.4f, 0});
+    auto tile = hitAt({0.2 + 2.4, -0.4 + 1.4, 0});
     ASSERT_TRUE(tile);
     EXPECT_EQ(tile->uniquePartId, 12u + 1 * 4 + 2);
     EXPECT_EQ(tile->object, 1u);
     EXPECT_EQ(tile->localPart, 6u);
     // Between two tiles the back plate (listed last) is hit.
-    auto plate = hitAt({0.2f + 0.9f, -0.4f + 1.4f, 0});
+    auto plate = hitAt({0.2 + 0.9, -0.4 + 1.4, 0});
     ASSERT_TRUE(plate);
     EXPECT_EQ(plate->uniquePartId, 24u);
-    EXPECT_FALSE(hitAt({20.0f, 0, 0})); // beside everything
+    EXPECT_FALSE(hitAt({20.0, 0, 0})); // beside everything
     EXPECT_LT(tile->t, plate->t);
 }
 
 TEST(Raycast, HonoursObjectTransforms) {
     Scene s = makeTiles();
-    s.objects[0].world = glm::translate(glm::mat4(1), {0, 0, 5}); // pull sheet 0 forward
-    const glm::vec3 eye(0, 0, 20);
-    auto hit = raycast(s, {eye, glm::vec3(0.4f, 0.4f, 0) - eye});
+    s.objects[0].world = glm::translate(glm::dmat4(1), {0, 0, 5}); // pull sheet 0 forward
+    const glm::dvec3 eye(0, 0, 20);
+    auto hit = raycast(s, {eye, glm::dvec3(0.4, 0.4, 0) - eye});
     ASSERT_TRUE(hit);
     EXPECT_EQ(hit->uniquePartId, 0u);
-    EXPECT_NEAR(hit->t, 15.0f / 20.0f, 1e-5f);
+    EXPECT_NEAR(hit->t, 15.0 / 20.0, 1e-5);
 }
 
 // Section planes: the flag's form, and which side a plane keeps.
 TEST(Section, ParsesAxisValueAndFlip) {
     const SectionPlane x = parseSectionPlane("x,1.5");
     EXPECT_TRUE(x.on);
-    EXPECT_EQ(x.normal, glm::vec3(1, 0, 0));
-    EXPECT_FLOAT_EQ(x.offset, 1.5f);
+    EXPECT_EQ(x.normal, glm::dvec3(1, 0, 0));
+    EXPECT_DOUBLE_EQ(x.offset, 1.5);
     EXPECT_FALSE(x.flip);
     const SectionPlane z = parseSectionPlane("z,-20,flip");
-    EXPECT_EQ(z.normal, glm::vec3(0, 0, 1));
-    EXPECT_FLOAT_EQ(z.offset, -20.0f);
+    EXPECT_EQ(z.normal, glm::dvec3(0, 0, 1));
+    EXPECT_DOUBLE_EQ(z.offset, -20.0);
     EXPECT_TRUE(z.flip);
-    for (const char* bad : {"", "x", "x,", "w,1", "xy,1", "x,1,fl", "x,one", "x,1e99", "x,nan",
+    for (const char* bad : {"", "x", "x,", "w,1", "xy,1", "x,1,fl", "x,one", "x,1e999", "x,nan",
                             "x,1,flip,flip", ",1", "X,1"})
         EXPECT_THROW(parseSectionPlane(bad), std::invalid_argument) << bad;
 }
 
 TEST(Section, KeepsTheSideAtMostTheValueOrTheOtherWhenFlipped) {
-    const SectionPlane y = axisPlane(1, 2.0f);
+    const SectionPlane y = axisPlane(1, 2.0);
     EXPECT_TRUE(y.keeps({9, 2.0f, 9}));
     EXPECT_TRUE(y.keeps({0, 1.9f, 0}));
     EXPECT_FALSE(y.keeps({0, 2.1f, 0}));

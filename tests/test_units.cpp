@@ -69,7 +69,7 @@ TEST(Units, FaceDescriptionsAndJsonCarryTheUnit) {
     const std::string line = scene::describeSurface(*face);
     EXPECT_NE(line.find(" mm\u00b2"), std::string::npos) << line;
     EXPECT_NE(scene::faceReportJson(*face).find("\"unit\":\"mm\""), std::string::npos);
-    const std::array<std::optional<glm::vec3>, 2> points = {glm::vec3(0), glm::vec3(3, 4, 0)};
+    const std::array<std::optional<glm::dvec3>, 2> points = {glm::dvec3(0), glm::dvec3(3, 4, 0)};
     const std::string measure = app::measureJson(points, {0u, 1u}, mm);
     EXPECT_NE(measure.find("\"distance\":5,"), std::string::npos) << measure;
     EXPECT_NE(measure.find("\"unit\":\"mm\""), std::string::npos) << measure;

@@ -182,13 +182,10 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
                 render::FrameSlot& slot = rig.slots.begin(frameNumber);
                 // --animate: objects move while being timed, the compute pass included.
                 params.explode = explodeAt(options.animation, frameNumber);
-                const render::FrameParams moved =
+                params.setView(
                     cameraFrame(scene::cameraOnPath(options.cameraPath, start, bounds,
                                                     f < warmup ? 0 : f - warmup, options.frames),
-                                rig.extent);
-                params.viewProj = moved.viewProj;
-                params.eye = moved.eye;
-                params.orthoToViewer = moved.orthoToViewer;
+                                rig.extent));
                 const auto start = Clock::now();
                 rig.renderer.record(slot, rig.targets, params);
                 const auto recorded = Clock::now();

@@ -19,6 +19,7 @@
 #include "scene/explode.h"
 #include "scene/face_info.h"
 #include "util/cache_file.h"
+#include "util/json_number.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
@@ -44,24 +45,19 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
            ",\"path\":" + jsonString(info->path) + depth;
 }
 
-std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
+std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
                         const std::array<std::optional<uint32_t>, 2>& parts,
                         const scene::LengthUnit& unit) {
-    auto point = [](const std::optional<glm::vec3>& p) {
-        if (!p) return std::string("null");
-        char text[96];
-        std::snprintf(text, sizeof text, "[%.9g,%.9g,%.9g]", double(p->x), double(p->y),
-                      double(p->z));
-        return std::string(text);
+    // Every digit of a double: points far from the origin read back exactly.
+    auto point = [](const std::optional<glm::dvec3>& p) {
+        return p ? util::jsonVector(*p) : std::string("null");
     };
     const auto& [p0, p1] = points;
     std::string distance = "null";
-    std::optional<glm::vec3> delta;
+    std::optional<glm::dvec3> delta;
     if (p0 && p1) {
         delta = *p1 - *p0;
-        char text[48];
-        std::snprintf(text, sizeof text, "%.9g", double(glm::length(*delta)));
-        distance = text;
+        distance = util::jsonNumber(glm::length(*delta));
     }
     auto part = [&](size_t i) {
         return parts[i] ? std::to_string(*parts[i]) : std::string("null");
@@ -109,8 +105,13 @@ void savePipelineCache(const render::Renderer& renderer) {
 
 render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent) {
     render::FrameParams params;
-    params.viewProj = camera.viewProjection(float(extent.width) / float(extent.height));
-    params.eye = camera.eye;
+    const double aspect = double(extent.width) / double(extent.height);
+    // The GPU works relative to the eye: the view from there has no translation, so the
+    // float matrix it gets is as exact wherever the model sits (docs/models.md).
+    params.origin = camera.eye;
+    params.worldViewProj = camera.viewProjection(aspect);
+    params.viewProj = glm::mat4(camera.projection(aspect) * camera.viewFromEye());
+    params.eye = glm::vec3(0.0f);
     if (camera.ortho) params.orthoToViewer = glm::normalize(camera.eye - camera.target);
     return params;
 }
@@ -216,9 +217,9 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                     result.measured.push_back(pick);
                     if (pick.part)
                         result.measuredPoints[i] = scene::unprojectPixel(
-                            params.viewProj,
-                            glm::vec2(float(rig.extent.width), float(rig.extent.height)),
-                            glm::vec2(pick.pixel) + rig.targets->pass().sampleZero(), pick.depth);
+                            params.worldViewProj, glm::dvec2(rig.extent.width, rig.extent.height),
+                            glm::dvec2(pick.pixel) + glm::dvec2(rig.targets->pass().sampleZero()),
+                            pick.depth);
                 }
             for (const auto& pixel : options.faceInfos)
                 result.faceInfoPicks.push_back(pickFrame(pixel));
@@ -230,10 +231,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 const bool lastFrame = frame + 1 == options.frames;
                 render::FrameParams frameParams = params;
                 if (options.cameraPath != scene::CameraPath::None) {
-                    const render::FrameParams moved = frameCamera(frame);
-                    frameParams.viewProj = moved.viewProj;
-                    frameParams.eye = moved.eye;
-                    frameParams.orthoToViewer = moved.orthoToViewer;
+                    frameParams.setView(frameCamera(frame));
                 }
                 if (lastFrame && options.visibleParts) frameParams.partSets = {whole};
                 renderer.record(slot, rig.targets, frameParams);

@@ -27,7 +27,7 @@ struct HeadlessResult {
     // Options::measure: both picks, and the world points their depths give (none on
     // background).
     std::vector<render::PickReading> measured;
-    std::array<std::optional<glm::vec3>, 2> measuredPoints;
+    std::array<std::optional<glm::dvec3>, 2> measuredPoints;
     std::vector<render::PickReading> faceInfoPicks; // one per Options::faceInfos entry
     std::optional<uint32_t> selected;               // the part Options::selects picked, if any
     // Options::selectRect: the parts in the rectangle (the selection afterwards), and their
@@ -68,7 +68,7 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
 // points and lengths are in `unit` (the scene's).
 std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& unit);
 // The same line for any two points (the viewer's measure mode prints it too).
-std::string measureJson(const std::array<std::optional<glm::vec3>, 2>& points,
+std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
                         const std::array<std::optional<uint32_t>, 2>& parts,
                         const scene::LengthUnit& unit);
 

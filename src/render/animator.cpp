@@ -39,9 +39,10 @@ Animator::Animator(vk::Device& device, const vk::ShaderCompiler& compiler,
     pipeline_ = std::move(built.pipeline);
 }
 
-void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const {
+void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode,
+                      const glm::dvec3& origin) const {
     explode = explode > 0.0f ? std::min(explode, 1.0f) : 0.0f; // NaN counts as at rest
-    if (explode == 0.0f && scene.explodeWritten == 0.0f) return;
+    if (explode == 0.0f && scene.explodeWritten == 0.0f && scene.originWritten == origin) return;
     vk::CmdLabel label(device_.debug(), cmd, "animate objects");
 
     // Write-after-read (and -write) across frames in flight on the one queue: the previous
@@ -54,21 +55,24 @@ void Animator::record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &before, 0, nullptr, 0,
                          nullptr);
 
-    gpu::AnimationPush push{scene.objectsAddress(), scene.restAddress(), scene.offsetsAddress(),
-                            scene.objectCount(), explode};
+    gpu::AnimationPush push{glm::dvec4(origin, 0.0), scene.objectsAddress(), scene.restAddress(),
+                            scene.offsetsAddress(),  scene.objectCount(),    explode};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
     vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     vkCmdDispatch(
         cmd, (scene.objectCount() + gpu::ANIMATE_GROUP_SIZE - 1) / gpu::ANIMATE_GROUP_SIZE, 1, 1);
 
     // The scene pass reads ObjectData in the vertex or mesh shader (world) and in the geometry
-    // and fragment shaders (the rest of the struct, in the same memory).
+    // and fragment shaders (the rest of the struct, in the same memory); culling's compute
+    // passes read the matrices too.
     auto after = vk::init<VkMemoryBarrier>(VK_STRUCTURE_TYPE_MEMORY_BARRIER);
     after.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, sceneShaders, 0, 1, &after, 0,
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         sceneShaders | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &after, 0,
                          nullptr, 0, nullptr);
     scene.explodeWritten = explode;
+    scene.originWritten = origin;
 }
 
 } // namespace render

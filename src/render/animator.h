@@ -19,10 +19,12 @@ class Animator {
              const DiskPipelineCache& cache);
 
     // Outside a render pass, before the scene pass: records the dispatch that writes the
-    // scene's world matrices for `explode` (clamped to 0..1), with the barriers around it.
-    // Records nothing when explode is 0 and the objects already hold their rest matrices,
-    // so a scene that is not animated pays nothing. Assumes the command buffer is submitted.
-    void record(VkCommandBuffer cmd, SceneGpu& scene, float explode) const;
+    // scene's world matrices for `explode` (clamped to 0..1), relative to `origin` (the
+    // frame's, render::FrameParams), with the barriers around it. Records nothing when explode
+    // is 0 and the objects already hold their rest matrices for that origin, so a still view
+    // of a scene that is not animated pays nothing. Assumes the command buffer is submitted.
+    void record(VkCommandBuffer cmd, SceneGpu& scene, float explode,
+                const glm::dvec3& origin) const;
 
   private:
     vk::Device& device_;

@@ -89,9 +89,11 @@ std::string describeCulling(const Technique& technique, const DrawMode& mode, Cu
 
 bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3 eye,
                     const scene::Bounds& box) {
-    // The same inflated box as cull.glsl's viewBox().
-    const glm::vec3 center = (box.min + box.max) * 0.5f;
-    glm::vec3 half = glm::max((box.max - box.min) * 0.5f, glm::vec3(0.0f));
+    // The same inflated box as cull.glsl's viewBox(), in its float arithmetic (geometry
+    // coordinates: the box's double values are floats).
+    const glm::vec3 boxMin(box.min), boxMax(box.max);
+    const glm::vec3 center = (boxMin + boxMax) * 0.5f;
+    glm::vec3 half = glm::max((boxMax - boxMin) * 0.5f, glm::vec3(0.0f));
     const glm::vec3 scales(glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])),
                            glm::length(glm::vec3(world[2])));
     const float largest = std::max({scales.x, scales.y, scales.z});

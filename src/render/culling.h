@@ -97,6 +97,7 @@ struct CullBuffers {
     std::vector<uint8_t> frozenObjects;
     struct View {
         glm::mat4 viewProj;
+        glm::dvec3 origin; // what viewProj and the objects' matrices are relative to
         float explode;
         uint64_t hiddenVersion;
         uint32_t width, height, samples; // of the targets

@@ -51,10 +51,15 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     // or push mode's task shader).
     std::optional<CullBuffers::View> view;
     if (c.plan.twoPasses && !freeze)
-        view = CullBuffers::View{
-            params.viewProj,           params.explode,          hiddenVersion_,
-            targets.extent().width,    targets.extent().height, uint32_t(targets.pass().samples()),
-            settings_.lod.errorPixels, settings_.section};
+        view = CullBuffers::View{params.viewProj,
+                                 params.origin,
+                                 params.explode,
+                                 hiddenVersion_,
+                                 targets.extent().width,
+                                 targets.extent().height,
+                                 uint32_t(targets.pass().samples()),
+                                 settings_.lod.errorPixels,
+                                 settings_.section};
     c.viewUnchanged = view && cull.lastView == view;
     // A still view, culled still twice in a row: the second time, the first half drew just
     // what passed a test against the whole depth of the view (the first time, against the
@@ -82,7 +87,8 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
     for (size_t o = 0; o < objectParts_.size(); ++o)
         c.objectShown[o] =
             !objectHidden_[o] &&
-            !outsideFrustum(params.viewProj, sceneGpu_->worldAt(uint32_t(o), params.explode),
+            !outsideFrustum(params.viewProj,
+                            sceneGpu_->worldAt(uint32_t(o), params.explode, params.origin),
                             params.eye, draws_->objectBoxes[o]);
     cull.frozenObjects = c.objectShown;
     return c;
@@ -143,7 +149,7 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     // Levels are chosen where cull.comp makes the lists; elsewhere full detail is drawn.
     if (draws_->levels && culling.plan.gpuLists) frame.lodErrorPixels = settings_.lod.errorPixels;
     for (uint32_t p = 0; p < gpu::SECTION_PLANES_MAX; ++p)
-        frame.sectionPlanes[p] = settings_.section.planes[p].equation();
+        frame.sectionPlanes[p] = glm::vec4(settings_.section.planes[p].equation(params.origin));
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.time = params.time;
     return frame;

@@ -287,7 +287,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       sceneShaderStages(device_) | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    animator_->record(cmd, *sceneGpu_, params.explode);
+    animator_->record(cmd, *sceneGpu_, params.explode, params.origin);
     recordScene(slot, targets, culling);
     recordIdPasses(cmd, slot, targets, params);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(),

@@ -28,9 +28,13 @@
 namespace render {
 
 // What changes every frame (the settings do not).
+// Everything the GPU gets is relative to `origin`, a point at the eye (render::eyeRelative):
+// a model placed kilometres from the world's origin is drawn with the precision it has there.
 struct FrameParams {
-    glm::mat4 viewProj{1.0f};
-    glm::vec3 eye{0.0f}; // the camera's position
+    glm::dvec3 origin{0.0};        // world coordinates; the objects' matrices are relative to it
+    glm::mat4 viewProj{1.0f};      // from coordinates relative to `origin` to clip space
+    glm::dmat4 worldViewProj{1.0}; // the same from world coordinates: the CPU's (measure, picks)
+    glm::vec3 eye{0.0f};           // the camera's position relative to `origin`
     // Orthographic: the unit direction toward the viewer, the same at every point; none in
     // perspective, where it runs from each point to the eye (FrameData::eyePosition).
     std::optional<glm::vec3> orthoToViewer;
@@ -46,6 +50,16 @@ struct FrameParams {
     // FrameSlots::latestHoveredTiles(): once the tiles of the last whole composition are
     // known, a step of the blink composes only them (Renderer::recordComposition).
     std::optional<HoveredTiles> hoveredTiles;
+
+    // Takes the camera's part of `view` (a frame made by the camera, e.g. app::cameraFrame):
+    // the origin, both matrices, the eye and the orthographic direction.
+    void setView(const FrameParams& view) {
+        origin = view.origin;
+        viewProj = view.viewProj;
+        worldViewProj = view.worldViewProj;
+        eye = view.eye;
+        orthoToViewer = view.orthoToViewer;
+    }
 };
 
 // What the culling of a configuration leaves out, per frame (FrameSlots::cullStats() holds

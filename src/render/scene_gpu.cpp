@@ -18,13 +18,13 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
         throw vk::Error("the scene is empty: nothing to draw");
 
     std::vector<gpu::ObjectData> objects;
-    std::vector<glm::mat4> rest;
+    std::vector<glm::dmat4> rest;
     objects.reserve(scene.objects.size());
     rest.reserve(scene.objects.size());
     for (const auto& o : scene.objects) {
         gpu::ObjectData data{};
-        data.world = o.world;
-        data.normalMatrix = glm::transpose(glm::inverse(o.world));
+        data.world = relativeWorld(o.world, originWritten); // animate.comp's, at rest
+        data.normalMatrix = glm::mat4(glm::transpose(glm::inverse(o.world)));
         data.materialIndex = o.material;
         data.uniquePartOffset = o.uniquePartOffset;
         data.geometryIndex = o.geometry;
@@ -77,11 +77,19 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     }
 }
 
-glm::mat4 SceneGpu::worldAt(uint32_t object, float explode) const {
-    glm::mat4 world = restWorld_[object];
+glm::mat4 relativeWorld(const glm::dmat4& world, const glm::dvec3& origin) {
+    glm::mat4 relative(world);
+    relative[3] = glm::vec4(glm::vec3(glm::dvec3(world[3]) - origin), 1.0f);
+    return relative;
+}
+
+glm::mat4 SceneGpu::worldAt(uint32_t object, float explode, const glm::dvec3& origin) const {
+    glm::dmat4 world = restWorld_[object];
     explode = explode > 0.0f ? std::min(explode, 1.0f) : 0.0f; // as Animator::record clamps
-    if (explode > 0.0f) world[3] += glm::vec4(glm::vec3(explodeOffsets_[object]) * explode, 0.0f);
-    return world;
+    // The float step, then the double add, as animate.comp and scene::explodedScene do.
+    const glm::vec3 step = glm::vec3(explodeOffsets_[object]) * explode;
+    world[3] += glm::dvec4(glm::dvec3(step), 0.0);
+    return relativeWorld(world, origin);
 }
 
 } // namespace render

@@ -11,6 +11,10 @@
 
 namespace render {
 
+// `world` with its translation made relative to `origin` in double, then rounded to float once:
+// what the GPU gets as an object's matrix (render::eyeRelative).
+glm::mat4 relativeWorld(const glm::dmat4& world, const glm::dvec3& origin);
+
 class SceneGpu {
   public:
     // The buffers are filled by `upload`'s submit (the caller's, with the rest of a switch).
@@ -24,17 +28,19 @@ class SceneGpu {
     VkDeviceAddress partMaterialsAddress() const { return partMaterials_.address(); }
     uint32_t objectCount() const { return objectCount_; }
 
-    // The animation's inputs: each object's world matrix at rest (mat4) and its offset at
+    // The animation's inputs: each object's world matrix at rest (dmat4) and its offset at
     // explode 1 (vec4), see render/animator.h.
     VkDeviceAddress restAddress() const { return rest_.address(); }
     VkDeviceAddress offsetsAddress() const { return offsets_.address(); }
-    // The explode value the objects' matrices hold once recorded work has run.
+    // The explode value and the origin the objects' matrices hold once recorded work has run.
     float explodeWritten = 0.0f;
+    glm::dvec3 originWritten{0.0};
 
     // For culling: each of the scene's parts' box in its geometry (scene/bounds.h), and the
-    // objects' world matrices at an explode value, as animate.comp writes them.
+    // objects' world matrices at an explode value relative to `origin`, as animate.comp
+    // writes them.
     const std::vector<scene::Bounds>& partBounds() const { return partBounds_; }
-    glm::mat4 worldAt(uint32_t object, float explode) const;
+    glm::mat4 worldAt(uint32_t object, float explode, const glm::dvec3& origin) const;
     // The parts' clusters (scene::partClusters): per entry of Scene::parts, and one more, the
     // first cluster; their boxes on the GPU (gpu::CullBox[], `unused0` the cluster's part in
     // its geometry), by which cull.comp tests the draws of several clusters one by one.
@@ -44,7 +50,7 @@ class SceneGpu {
   private:
     std::vector<scene::Bounds> partBounds_;
     std::vector<uint32_t> clusterStart_;
-    std::vector<glm::mat4> restWorld_;
+    std::vector<glm::dmat4> restWorld_;
     std::vector<glm::vec4> explodeOffsets_;
     vk::Buffer vertices_, indices_, objects_, materials_, rest_, offsets_, clusterBoxes_;
     vk::Buffer partMaterials_; // empty (address 0) unless a part has its own material

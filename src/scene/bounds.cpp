@@ -7,8 +7,8 @@
 namespace scene {
 
 Bounds emptyBounds() {
-    return {glm::vec3(std::numeric_limits<float>::max()),
-            glm::vec3(std::numeric_limits<float>::lowest())};
+    return {glm::dvec3(std::numeric_limits<double>::max()),
+            glm::dvec3(std::numeric_limits<double>::lowest())};
 }
 
 Bounds unite(const Bounds& a, const Bounds& b) {
@@ -29,8 +29,8 @@ std::vector<Bounds> partBounds(const Scene& scene) {
             for (uint32_t i = first; i < first + 3 * part.triangleCount; ++i) {
                 const glm::vec3& position =
                     scene.vertices[g.firstVertex + scene.indices[i]].position;
-                box.min = glm::min(box.min, position);
-                box.max = glm::max(box.max, position);
+                box.min = glm::min(box.min, glm::dvec3(position));
+                box.max = glm::max(box.max, glm::dvec3(position));
             }
         }
     return boxes;
@@ -46,9 +46,8 @@ Bounds partsWorldBounds(const Scene& scene, const PartSet& parts) {
         const Part& part = scene.part(object, ref->localPart);
         const uint32_t first = g.firstIndex + 3 * part.firstTriangle;
         for (uint32_t i = first; i < first + 3 * part.triangleCount; ++i) {
-            const glm::vec3 p = glm::vec3(
-                object.world *
-                glm::vec4(scene.vertices[g.firstVertex + scene.indices[i]].position, 1.0f));
+            const glm::dvec3 p =
+                placed(object.world, scene.vertices[g.firstVertex + scene.indices[i]].position);
             box.min = glm::min(box.min, p);
             box.max = glm::max(box.max, p);
         }
@@ -81,8 +80,8 @@ Clusters partClusters(const Scene& scene, uint32_t maxTriangles) {
                 for (uint32_t i = first; i < end; ++i) {
                     const glm::vec3& position =
                         scene.vertices[g.firstVertex + scene.indices[i]].position;
-                    box.min = glm::min(box.min, position);
-                    box.max = glm::max(box.max, position);
+                    box.min = glm::min(box.min, glm::dvec3(position));
+                    box.max = glm::max(box.max, glm::dvec3(position));
                 }
             }
         }
@@ -104,8 +103,8 @@ std::vector<Bounds> meshletBounds(const Meshlets& meshlets, const std::vector<Ve
         Bounds box = emptyBounds();
         for (uint32_t v = m.firstVertex; v < m.firstVertex + m.vertexCount; ++v) {
             const glm::vec3& position = vertices[meshlets.vertices[v]].position;
-            box.min = glm::min(box.min, position);
-            box.max = glm::max(box.max, position);
+            box.min = glm::min(box.min, glm::dvec3(position));
+            box.max = glm::max(box.max, glm::dvec3(position));
         }
         boxes.push_back(box);
     }

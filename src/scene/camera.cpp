@@ -8,70 +8,76 @@
 
 namespace scene {
 
-glm::mat4 Camera::view() const {
+glm::dmat4 Camera::view() const {
     return glm::lookAt(eye, target, up);
 }
 
-float Camera::orthoHeight() const {
-    return 2.0f * glm::length(target - eye) * std::tan(0.5f * fovY);
+glm::dmat4 Camera::viewFromEye() const {
+    return glm::lookAt(glm::dvec3(0.0), target - eye, up);
 }
 
-glm::mat4 Camera::projection(float aspect) const {
-    glm::mat4 proj;
+double Camera::orthoHeight() const {
+    return 2.0 * glm::length(target - eye) * std::tan(0.5 * double(fovY));
+}
+
+glm::dmat4 Camera::projection(double aspect) const {
+    glm::dmat4 proj;
     if (ortho) {
-        const float halfHeight = 0.5f * orthoHeight();
-        const float halfWidth = halfHeight * aspect;
+        const double halfHeight = 0.5 * orthoHeight();
+        const double halfWidth = halfHeight * aspect;
         proj = glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, nearPlane, farPlane);
     } else {
-        proj = glm::perspective(fovY, aspect, nearPlane, farPlane);
+        proj = glm::perspective(double(fovY), aspect, nearPlane, farPlane);
     }
-    proj[1][1] *= -1.0f; // Vulkan's framebuffer y points down
+    proj[1][1] *= -1.0; // Vulkan's framebuffer y points down
     return proj;
 }
 
-Camera fitCamera(const Bounds& bounds, glm::vec3 direction, glm::vec3 up, float fovY,
-                 float aspect) {
-    const float radius = std::max(bounds.radius(), 1e-3f);
-    const float halfFov = 0.5f * std::min(fovY, 2.0f * std::atan(std::tan(0.5f * fovY) * aspect));
-    const float distance = radius / std::sin(halfFov);
+Camera fitCamera(const Bounds& bounds, glm::dvec3 direction, glm::dvec3 up, float fovY,
+                 double aspect) {
+    const double radius = std::max(bounds.radius(), 1e-3);
+    const double fov = fovY;
+    const double halfFov = 0.5 * std::min(fov, 2.0 * std::atan(std::tan(0.5 * fov) * aspect));
+    const double distance = radius / std::sin(halfFov);
     Camera camera;
     camera.target = bounds.center();
     camera.eye = camera.target + glm::normalize(direction) * distance;
     camera.up = up;
     camera.fovY = fovY;
-    camera.nearPlane = std::max(distance - radius * 1.05f, distance * 1e-3f);
-    camera.farPlane = distance + radius * 1.05f;
+    camera.nearPlane = std::max(distance - radius * 1.05, distance * 1e-3);
+    camera.farPlane = distance + radius * 1.05;
     return camera;
 }
 
-void fitPlanes(Camera& camera, const Bounds& bounds, float reach) {
-    float radius = bounds.radius();
-    if (!std::isfinite(radius) || !(radius > 0.0f)) radius = 1.0f; // a point, or nothing
-    radius *= 1.05f * std::max(reach, 1.0f);
-    const float centre = glm::length(camera.eye - bounds.center());
+void fitPlanes(Camera& camera, const Bounds& bounds, double reach) {
+    double radius = bounds.radius();
+    if (!std::isfinite(radius) || !(radius > 0.0)) radius = 1.0; // a point, or nothing
+    radius *= 1.05 * std::max(reach, 1.0);
+    const double centre = glm::length(camera.eye - bounds.center());
     camera.farPlane = centre + radius;
     if (camera.ortho) {
         // Depth is linear and no ray starts at the eye: the slab through the whole sphere.
         camera.nearPlane = centre - radius;
         return;
     }
-    const float floor =
-        std::min(0.5f * glm::length(camera.target - camera.eye), camera.farPlane * 1e-3f);
+    const double floor =
+        std::min(0.5 * glm::length(camera.target - camera.eye), camera.farPlane * 1e-3);
     camera.nearPlane = std::max(centre - radius, floor);
 }
 
-glm::vec3 unprojectPixel(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel, float depth) {
-    const glm::vec4 p = glm::inverse(viewProj) * glm::vec4(pixel / size * 2.0f - 1.0f, depth, 1.0f);
-    return glm::vec3(p) / p.w;
+glm::dvec3 unprojectPixel(const glm::dmat4& viewProj, glm::dvec2 size, glm::dvec2 pixel,
+                          double depth) {
+    const glm::dvec4 p = glm::inverse(viewProj) * glm::dvec4(pixel / size * 2.0 - 1.0, depth, 1.0);
+    return glm::dvec3(p) / p.w;
 }
 
-Ray pixelRay(const glm::mat4& viewProj, glm::vec2 size, glm::vec2 pixel) {
-    const glm::mat4 inverse = glm::inverse(viewProj);
-    const glm::vec2 ndc = pixel / size * 2.0f - 1.0f;
-    glm::vec4 nearPoint = inverse * glm::vec4(ndc, 0.0f, 1.0f);
-    glm::vec4 farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
-    glm::vec3 origin = glm::vec3(nearPoint) / nearPoint.w;
-    return {origin, glm::vec3(farPoint) / farPoint.w - origin};
+Ray pixelRay(const glm::dmat4& viewProj, glm::dvec2 size, glm::dvec2 pixel) {
+    const glm::dmat4 inverse = glm::inverse(viewProj);
+    const glm::dvec2 ndc = pixel / size * 2.0 - 1.0;
+    const glm::dvec4 nearPoint = inverse * glm::dvec4(ndc, 0.0, 1.0);
+    const glm::dvec4 farPoint = inverse * glm::dvec4(ndc, 1.0, 1.0);
+    const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
+    return {origin, glm::dvec3(farPoint) / farPoint.w - origin};
 }
 
 } // namespace scene

@@ -37,23 +37,23 @@ std::string cameraPathNames() {
 Camera cameraOnPath(CameraPath path, const Camera& start, const Bounds& bounds, uint32_t frame,
                     uint32_t frames) {
     Camera camera = start;
-    const float t = frames ? float(frame % frames) / float(frames) : 0.0f;
+    const double t = frames ? double(frame % frames) / double(frames) : 0.0;
     if (path == CameraPath::Orbit) {
         // About the up axis through the target: the eye keeps its height and distance.
-        const glm::mat4 turn =
-            glm::rotate(glm::mat4(1.0f), 2.0f * glm::pi<float>() * t, glm::normalize(start.up));
-        camera.eye = start.target + glm::vec3(turn * glm::vec4(start.eye - start.target, 0.0f));
+        const glm::dmat4 turn =
+            glm::rotate(glm::dmat4(1.0), 2.0 * glm::pi<double>() * t, glm::normalize(start.up));
+        camera.eye = start.target + glm::dvec3(turn * glm::dvec4(start.eye - start.target, 0.0));
     } else if (path == CameraPath::Dolly) {
         // In to the middle of the bounds at half way, then back out, the view direction kept
         // (the target moves along). The distance to the centre shrinks by the same factor
         // every frame, as the wheel zooms, down to a fiftieth of the bounding radius: equal
         // steps as the eye sees them, so the path spends as long among the parts as on its
         // way to them.
-        const float depth = 1.0f - std::abs(1.0f - 2.0f * t);
-        const glm::vec3 centre = bounds.center();
-        const float from = glm::length(start.eye - centre);
-        const float to = 0.02f * std::max(bounds.radius(), 1e-6f);
-        const float scale = from > to ? std::pow(to / from, depth) : 1.0f;
+        const double depth = 1.0 - std::abs(1.0 - 2.0 * t);
+        const glm::dvec3 centre = bounds.center();
+        const double from = glm::length(start.eye - centre);
+        const double to = 0.02 * std::max(bounds.radius(), 1e-6);
+        const double scale = from > to ? std::pow(to / from, depth) : 1.0;
         camera.eye = centre + (start.eye - centre) * scale;
         camera.target = camera.eye + (start.target - start.eye);
     }

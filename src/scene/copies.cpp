@@ -62,23 +62,23 @@ Scene replicate(const Scene& scene, uint32_t copies, uint32_t axes) {
     result.objects.clear();
     result.objects.reserve(scene.objects.size() * copies);
     const Bounds bounds = scene.bounds();
-    glm::vec3 step = (bounds.max - bounds.min) * 1.1f;
+    glm::dvec3 step = (bounds.max - bounds.min) * 1.1;
     // A flat scene would put its copies on top of each other along its flat axis.
-    const float largest = std::max(step.x, std::max(step.y, step.z));
+    const double largest = std::max(step.x, std::max(step.y, step.z));
     for (int a = 0; a < 3; ++a)
-        if (step[a] <= 0.0f) step[a] = largest > 0.0f ? largest : 1.0f;
+        if (step[a] <= 0.0) step[a] = largest > 0.0 ? largest : 1.0;
     std::vector<int> chosen;
     for (int a = 0; a < 3; ++a)
         if (axes & (1u << a)) chosen.push_back(a);
     const uint32_t side = gridSide(copies, int(chosen.size()));
     for (uint32_t copy = 0; copy < copies; ++copy) {
-        glm::vec3 shift(0.0f);
+        glm::dvec3 shift(0.0);
         uint32_t rest = copy; // the copy's grid cell, digit by digit in base `side`
         for (int a : chosen) {
-            shift[a] = float(rest % side) * step[a];
+            shift[a] = double(rest % side) * step[a];
             rest /= side;
         }
-        const glm::mat4 move = glm::translate(glm::mat4(1.0f), shift);
+        const glm::dmat4 move = glm::translate(glm::dmat4(1.0), shift);
         // Copy 0 is the original; copy k (the (k+1)-th) keeps its objects' names and puts
         // "copy k/" in front of their paths, so that paths stay unique across copies.
         const std::string group = copy ? "copy " + std::to_string(copy) : std::string();

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/bounds.h"
+#include "util/json_number.h"
+
 namespace scene {
 
 const char* surfaceName(SurfaceKind kind) {
@@ -30,16 +33,15 @@ std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId) 
     auto place = [&](glm::dvec3 p) { return glm::dvec3(world * glm::dvec4(p, 1.0)); };
 
     const Part& part = scene.part(object, ref->localPart);
-    report.bbox.min = glm::vec3(std::numeric_limits<float>::max());
-    report.bbox.max = glm::vec3(std::numeric_limits<float>::lowest());
+    report.bbox = emptyBounds();
     double triangleArea = 0.0;
     for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t) {
         glm::dvec3 c[3];
         for (int k = 0; k < 3; ++k) {
             const uint32_t v = scene.indices[g.firstIndex + 3 * t + uint32_t(k)];
             c[k] = place(glm::dvec3(scene.vertices[g.firstVertex + v].position));
-            report.bbox.min = glm::min(report.bbox.min, glm::vec3(c[k]));
-            report.bbox.max = glm::max(report.bbox.max, glm::vec3(c[k]));
+            report.bbox.min = glm::min(report.bbox.min, c[k]);
+            report.bbox.max = glm::max(report.bbox.max, c[k]);
         }
         triangleArea += 0.5 * glm::length(glm::cross(c[1] - c[0], c[2] - c[0]));
     }
@@ -64,16 +66,13 @@ std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId) 
 
 namespace {
 
+// Every digit: a face kilometres from the origin keeps its millimetres (util/json_number.h).
 std::string vec(glm::dvec3 v) {
-    char text[96];
-    std::snprintf(text, sizeof text, "[%.9g,%.9g,%.9g]", v.x, v.y, v.z);
-    return text;
+    return util::jsonVector(v);
 }
 
 std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", v);
-    return text;
+    return util::jsonNumber(v);
 }
 
 } // namespace
@@ -91,8 +90,8 @@ std::string faceReportJson(const FaceReport& r) {
                 ",\"direction\":" + vec(s.axisDirection) + "}";
     if (s.kind == SurfaceKind::Sphere)
         json += ",\"radius\":" + number(s.radius) + ",\"center\":" + vec(s.axisOrigin);
-    return json + ",\"bbox\":{\"min\":" + vec(glm::dvec3(r.bbox.min)) +
-           ",\"max\":" + vec(glm::dvec3(r.bbox.max)) + "}," + unitJsonMember(r.unit) + "}";
+    return json + ",\"bbox\":{\"min\":" + vec(r.bbox.min) + ",\"max\":" + vec(r.bbox.max) + "}," +
+           unitJsonMember(r.unit) + "}";
 }
 
 std::string describeSurface(const FaceReport& r) {

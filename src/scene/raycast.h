@@ -16,7 +16,7 @@ struct Hit {
     uint32_t uniquePartId = 0;
     uint32_t object = 0;
     uint32_t localPart = 0;
-    float t = 0.0f; // along Ray::direction, 0 at the origin
+    double t = 0.0; // along Ray::direction, 0 at the origin
     // The ray meets the back of the surface (its triangle's normal, turned to the side the
     // vertex normals give at the hit, faces away): with section planes, a cap of the part.
     bool cap = false;
@@ -34,7 +34,7 @@ class RayCaster {
 
   private:
     struct Prepared {
-        glm::mat4 toLocal;
+        glm::dmat4 toLocal;
         Bounds worldBounds;
     };
     const Scene& scene_;

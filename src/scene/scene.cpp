@@ -50,13 +50,12 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
 
 Bounds Scene::bounds() const {
     Bounds b;
-    b.min = glm::vec3(std::numeric_limits<float>::max());
-    b.max = glm::vec3(std::numeric_limits<float>::lowest());
+    b.min = glm::dvec3(std::numeric_limits<double>::max());
+    b.max = glm::dvec3(std::numeric_limits<double>::lowest());
     for (const auto& object : objects) {
         const Geometry& g = geometries[object.geometry];
         for (uint32_t v = 0; v < g.vertexCount; ++v) {
-            glm::vec3 p =
-                glm::vec3(object.world * glm::vec4(vertices[g.firstVertex + v].position, 1));
+            const glm::dvec3 p = placed(object.world, vertices[g.firstVertex + v].position);
             b.min = glm::min(b.min, p);
             b.max = glm::max(b.max, p);
         }
@@ -65,7 +64,7 @@ Bounds Scene::bounds() const {
     return b;
 }
 
-uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::dmat4& world,
                    std::string name, std::string path) {
     Object object;
     object.geometry = geometry;
@@ -82,7 +81,7 @@ std::string joinPath(const std::string& group, const std::string& name) {
     return group.empty() ? name : group + '/' + name;
 }
 
-uint32_t addNamedObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+uint32_t addNamedObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::dmat4& world,
                         const std::string& group, const std::string& name) {
     return addObject(scene, geometry, material, world, name, joinPath(group, name));
 }
@@ -92,7 +91,7 @@ std::string NameCounter::next(const std::string& kind) {
 }
 
 uint32_t NameCounter::add(Scene& scene, uint32_t geometry, uint32_t material,
-                          const glm::mat4& world, const std::string& group) {
+                          const glm::dmat4& world, const std::string& group) {
     return addNamedObject(scene, geometry, material, world, group,
                           next(scene.geometries[geometry].name));
 }

@@ -58,10 +58,12 @@ struct Material {
 };
 
 // One placement of a geometry. Its parts have unique IDs uniquePartOffset + local index.
+// Placements are double: a part kilometres from the origin keeps its millimetres here, and the
+// GPU gets it relative to a point near the camera (render::eyeRelative), rounded once.
 struct Object {
     uint32_t geometry = 0;
     uint32_t material = 0;
-    glm::mat4 world{1.0f};
+    glm::dmat4 world{1.0};
     uint32_t uniquePartOffset = 0;
     std::string name; // what a person calls it, e.g. "bolt M10 #12"
     // The names of the nodes from the scene root down to this object, joined by '/'; the last
@@ -69,11 +71,12 @@ struct Object {
     std::string path;
 };
 
+// A box in world (or geometry) coordinates, double like the placements it is computed from.
 struct Bounds {
-    glm::vec3 min{0.0f};
-    glm::vec3 max{0.0f};
-    glm::vec3 center() const { return (min + max) * 0.5f; }
-    float radius() const { return glm::length(max - min) * 0.5f; }
+    glm::dvec3 min{0.0};
+    glm::dvec3 max{0.0};
+    glm::dvec3 center() const { return (min + max) * 0.5; }
+    double radius() const { return glm::length(max - min) * 0.5; }
 };
 
 // Which object and which of its geometry's parts a unique part ID names.
@@ -116,11 +119,16 @@ struct Scene {
     Bounds bounds() const;
 };
 
+// Where a vertex position of a geometry lies once `world` places it, in double.
+inline glm::dvec3 placed(const glm::dmat4& world, const glm::vec3& position) {
+    return glm::dvec3(world * glm::dvec4(glm::dvec3(position), 1.0));
+}
+
 // nullopt when the ID names no part of `scene` (background, or a stale ID after a reload).
 std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId);
 
 // Adds an object and gives it the next free range of unique part IDs.
-uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::dmat4& world,
                    std::string name = {}, std::string path = {});
 uint32_t addMaterial(Scene& scene, std::string name, glm::vec4 color);
 
@@ -128,7 +136,7 @@ uint32_t addMaterial(Scene& scene, std::string name, glm::vec4 color);
 std::string joinPath(const std::string& group, const std::string& name);
 
 // For generated scenes: adds an object called `name` whose path is `group`/`name`.
-uint32_t addNamedObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+uint32_t addNamedObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::dmat4& world,
                         const std::string& group, const std::string& name);
 
 // Numbers generated object names per kind so that they are unique within a scene: the first
@@ -138,7 +146,7 @@ class NameCounter {
     std::string next(const std::string& kind);
     // addNamedObject for one more object of `geometry`'s kind, numbered after the geometry's
     // name: the 12th of geometry "bolt M10" is "bolt M10 #12".
-    uint32_t add(Scene& scene, uint32_t geometry, uint32_t material, const glm::mat4& world,
+    uint32_t add(Scene& scene, uint32_t geometry, uint32_t material, const glm::dmat4& world,
                  const std::string& group);
 
   private:

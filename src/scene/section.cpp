@@ -6,10 +6,10 @@
 
 namespace scene {
 
-glm::vec4 SectionPlane::equation() const {
-    if (!on) return {0.0f, 0.0f, 0.0f, -1.0f};
-    const float side = flip ? -1.0f : 1.0f;
-    return side * glm::vec4(normal, -offset);
+glm::dvec4 SectionPlane::equation(const glm::dvec3& origin) const {
+    if (!on) return {0.0, 0.0, 0.0, -1.0};
+    const double side = flip ? -1.0 : 1.0;
+    return side * glm::dvec4(normal, glm::dot(normal, origin) - offset);
 }
 
 bool Section::any() const {
@@ -18,7 +18,7 @@ bool Section::any() const {
     return false;
 }
 
-bool Section::keeps(glm::vec3 p) const {
+bool Section::keeps(const glm::dvec3& p) const {
     for (const SectionPlane& plane : planes)
         if (!plane.keeps(p)) return false;
     return true;
@@ -33,11 +33,11 @@ bool Section::add(const SectionPlane& plane) {
     return false;
 }
 
-SectionPlane axisPlane(int axis, float value, bool flip) {
+SectionPlane axisPlane(int axis, double value, bool flip) {
     SectionPlane plane;
     plane.on = true;
-    plane.normal = glm::vec3(0.0f);
-    plane.normal[axis] = 1.0f;
+    plane.normal = glm::dvec3(0.0);
+    plane.normal[axis] = 1.0;
     plane.offset = value;
     plane.flip = flip;
     return plane;
@@ -54,12 +54,12 @@ SectionPlane parseSectionPlane(const std::string& text) {
         flip = true;
         value.resize(second);
     }
-    float number = 0.0f;
+    double number = 0.0;
     try {
         size_t used = 0;
-        number = std::stof(value, &used);
+        number = std::stod(value, &used);
         if (used != value.size() || !std::isfinite(number)) throw std::invalid_argument(form);
-    } catch (const std::logic_error&) { // not a number, or out of float's range
+    } catch (const std::logic_error&) { // not a number, or out of double's range
         throw std::invalid_argument(form);
     }
     return axisPlane(text[0] - 'x', number, flip);

@@ -43,25 +43,25 @@ std::string standardViewNames() {
     return names;
 }
 
-glm::mat3 modelFrame(glm::vec3 modelUp) {
-    const glm::vec3 z = glm::normalize(modelUp);
+glm::dmat3 modelFrame(glm::dvec3 modelUp) {
+    const glm::dvec3 z = glm::normalize(modelUp);
     // X stays X unless it is the up axis itself; Y completes a right-handed frame.
-    const glm::vec3 helper = std::abs(z.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-    const glm::vec3 x = glm::normalize(helper - glm::dot(helper, z) * z);
-    return glm::mat3(x, glm::cross(z, x), z);
+    const glm::dvec3 helper = std::abs(z.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 x = glm::normalize(helper - glm::dot(helper, z) * z);
+    return glm::dmat3(x, glm::cross(z, x), z);
 }
 
-Camera turnedTo(const Camera& camera, const StandardView& view, glm::vec3 modelUp) {
-    const glm::mat3 frame = modelFrame(modelUp);
+Camera turnedTo(const Camera& camera, const StandardView& view, glm::dvec3 modelUp) {
+    const glm::dmat3 frame = modelFrame(modelUp);
     Camera turned = camera;
-    const float distance = glm::length(camera.eye - camera.target);
-    const glm::vec3 toEye = glm::normalize(frame * view.toEye);
+    const double distance = glm::length(camera.eye - camera.target);
+    const glm::dvec3 toEye = glm::normalize(frame * glm::dvec3(view.toEye));
     turned.eye = camera.target + toEye * distance;
     // lookAt turns the model's up into the screen's up everywhere but along it, and keeping it
     // keeps what turns about the up axis (--camera-path orbit) doing so; top and bottom look
     // along it and take the screen's up.
-    const bool alongUp = std::abs(glm::dot(toEye, frame[2])) > 0.999f;
-    turned.up = alongUp ? glm::normalize(frame * view.screenUp) : frame[2];
+    const bool alongUp = std::abs(glm::dot(toEye, frame[2])) > 0.999;
+    turned.up = alongUp ? glm::normalize(frame * glm::dvec3(view.screenUp)) : frame[2];
     return turned;
 }
 

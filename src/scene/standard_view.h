@@ -25,11 +25,11 @@ std::string standardViewNames();                             // "front, back, ..
 
 // The model's axes for a model whose up axis is `modelUp`: the columns are the model's
 // directions that FreeCAD's X, Y and Z stand for (Z-up: the identity; Y-up: X, -Z, Y).
-glm::mat3 modelFrame(glm::vec3 modelUp);
+glm::dmat3 modelFrame(glm::dvec3 modelUp);
 
 // `camera` turned to `view` around its target, at the same distance (so a fitted view stays
 // fitted), in a model whose up axis is `modelUp`. Its up vector stays the model's, except
 // for top and bottom, which look along it and take the screen's up.
-Camera turnedTo(const Camera& camera, const StandardView& view, glm::vec3 modelUp);
+Camera turnedTo(const Camera& camera, const StandardView& view, glm::dvec3 modelUp);
 
 } // namespace scene

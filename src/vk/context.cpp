@@ -161,6 +161,7 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
         vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
     features.pNext = &f12;
     features.features.shaderInt64 = VK_TRUE;
+    features.features.shaderFloat64 = VK_TRUE;
     features.features.geometryShader = VK_TRUE;
     features.features.multiDrawIndirect = VK_TRUE;
     features.features.drawIndirectFirstInstance = VK_TRUE;

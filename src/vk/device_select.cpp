@@ -77,6 +77,7 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     VkPhysicalDeviceFeatures features;
     vkGetPhysicalDeviceFeatures(device, &features);
     info.shaderInt64 = features.shaderInt64;
+    info.shaderFloat64 = features.shaderFloat64;
     info.geometryShader = features.geometryShader;
     info.multiDrawIndirect = features.multiDrawIndirect;
     info.drawIndirectFirstInstance = features.drawIndirectFirstInstance;
@@ -102,6 +103,7 @@ std::vector<std::string> missingRequirements(const DeviceInfo& info) {
     if (info.apiVersion < VK_API_VERSION_1_2) missing.push_back("Vulkan 1.2");
     if (!info.bufferDeviceAddress) missing.push_back("bufferDeviceAddress");
     if (!info.shaderInt64) missing.push_back("shaderInt64");
+    if (!info.shaderFloat64) missing.push_back("shaderFloat64");
     if (!info.shaderBufferInt64Atomics) missing.push_back("shaderBufferInt64Atomics");
     if (!info.geometryShader) missing.push_back("geometryShader");
     if (!info.multiDrawIndirect) missing.push_back("multiDrawIndirect");

@@ -24,6 +24,7 @@ struct DeviceInfo {
     // Requirements, one flag each so the refusal can name every missing one.
     bool bufferDeviceAddress = false;
     bool shaderInt64 = false;
+    bool shaderFloat64 = false; // animate.comp places objects relative to the eye in double
     bool shaderBufferInt64Atomics = false;
     bool geometryShader = false;
     bool multiDrawIndirect = false;

@@ -184,12 +184,14 @@ render::FrameParams Viewer::frameParams(double seconds) {
     // The exploded view pushes objects out to twice their distance from the centre.
     render::FrameParams params =
         cameraFrame(camera_.camera(animate ? 2.0f : 1.0f, settings_.camera.ortho), extent);
-    params.viewProj = camera_.shiftMatrix() * params.viewProj; // F's fit beside the panel
+    // F's fit beside the panel: a shift in clip space, the same for both matrices.
+    params.viewProj = glm::mat4(camera_.shiftMatrix()) * params.viewProj;
+    params.worldViewProj = camera_.shiftMatrix() * params.worldViewProj;
     // A time in the step of the blink it is held at (the first half of a period is strong).
     const double period = 1.0 / render::blinkHz;
     params.time = blinkHeld_ ? float(*blinkHeld_ ? 0.25 * period : 0.75 * period) : float(seconds);
-    viewProj_ = params.viewProj;
-    keepViewProj(frameNumber_, params.viewProj);
+    viewProj_ = params.worldViewProj;
+    keepViewProj(frameNumber_, params.worldViewProj);
     params.pickPixel = input_.pickPixel(extent, frameNumber_);
     params.hoveredTiles = slots_.latestHoveredTiles();
     // A released box asks for its parts (recordScene adds the visible parts' count).

@@ -55,14 +55,14 @@ std::vector<std::string> measureLines(const scene::Scene& scene,
     return lines;
 }
 
-void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewProj, glm::vec2 size,
-                 const scene::LengthUnit& unit) {
+void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& viewProj,
+                 glm::vec2 size, const scene::LengthUnit& unit) {
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     std::vector<ImVec2> screen;
     for (const MeasurePoint& p : points) {
-        const glm::vec4 clip = viewProj * glm::vec4(p.world, 1.0f);
-        if (clip.w <= 0.0f) return; // behind the eye: nothing sensible to draw
-        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        const glm::dvec4 clip = viewProj * glm::dvec4(p.world, 1.0);
+        if (clip.w <= 0.0) return; // behind the eye: nothing sensible to draw
+        const glm::vec2 ndc = glm::vec2(glm::dvec2(clip) / clip.w);
         screen.push_back(ImVec2((ndc.x * 0.5f + 0.5f) * size.x, (ndc.y * 0.5f + 0.5f) * size.y));
     }
     const ImU32 colour = IM_COL32(255, 235, 59, 255), shadow = IM_COL32(0, 0, 0, 200);

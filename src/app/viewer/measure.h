@@ -15,7 +15,7 @@
 namespace app {
 
 struct MeasurePoint {
-    glm::vec3 world;
+    glm::dvec3 world;
     uint32_t part;
 };
 
@@ -45,7 +45,7 @@ std::vector<std::string> measureLines(const scene::Scene& scene,
 
 // The overlay: the points, and with two the line between them labelled with the distance,
 // over the window of `size` seen through `viewProj`, the distance in `unit` (the scene's).
-void drawMeasure(const std::vector<MeasurePoint>& points, const glm::mat4& viewProj, glm::vec2 size,
-                 const scene::LengthUnit& unit);
+void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& viewProj,
+                 glm::vec2 size, const scene::LengthUnit& unit);
 
 } // namespace app

@@ -11,12 +11,12 @@ namespace {
 
 // Orbiting stops just short of the poles, so that dragging keeps turning about the model's
 // up axis; only the top and bottom views stand on them.
-constexpr float maxPitch = 1.5607963f; // pi/2 - 0.01
+constexpr double maxPitch = 1.5607963; // pi/2 - 0.01
 
 // Scenes of a single point (or none) still get a usable camera.
-float usableRadius(const scene::Bounds& bounds) {
-    const float radius = bounds.radius();
-    return std::isfinite(radius) && radius > 0.0f ? radius : 1.0f;
+double usableRadius(const scene::Bounds& bounds) {
+    const double radius = bounds.radius();
+    return std::isfinite(radius) && radius > 0.0 ? radius : 1.0;
 }
 
 // Less free than this (a fraction of the width) and F uses the whole window after all.
@@ -42,21 +42,21 @@ void OrbitCamera::setFrom(const scene::Camera& camera) {
     up_ = glm::normalize(camera.up);
     // Any vector not along up gives the horizontal frame; glTF (y-up) gets a = z, b = x and
     // the built-in scenes (z-up) a = x, b = y, so yaw 0 looks along a familiar axis.
-    const glm::vec3 helper = std::abs(up_.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    const glm::dvec3 helper = std::abs(up_.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
     a_ = glm::normalize(helper - glm::dot(helper, up_) * up_);
     b_ = glm::cross(up_, a_);
     target_ = camera.target;
     fovY_ = camera.fovY;
-    shift_ = 0.0f;
-    const glm::vec3 offset = camera.eye - camera.target;
+    shift_ = 0.0;
+    const glm::dvec3 offset = camera.eye - camera.target;
     distance_ = glm::length(offset);
-    if (!(distance_ > 0.0f)) {
+    if (!(distance_ > 0.0)) {
         distance_ = usableRadius(bounds_);
-        yaw_ = pitch_ = 0.0f;
+        yaw_ = pitch_ = 0.0;
         return;
     }
-    const glm::vec3 d = offset / distance_;
-    pitch_ = std::clamp(std::asin(std::clamp(glm::dot(d, up_), -1.0f, 1.0f)), -maxPitch, maxPitch);
+    const glm::dvec3 d = offset / distance_;
+    pitch_ = std::clamp(std::asin(std::clamp(glm::dot(d, up_), -1.0, 1.0)), -maxPitch, maxPitch);
     yaw_ = std::atan2(glm::dot(d, b_), glm::dot(d, a_));
 }
 
@@ -64,85 +64,86 @@ void OrbitCamera::setBounds(const scene::Bounds& bounds) {
     bounds_ = bounds;
 }
 
-glm::vec3 OrbitCamera::direction() const {
+glm::dvec3 OrbitCamera::direction() const {
     return std::cos(pitch_) * (std::cos(yaw_) * a_ + std::sin(yaw_) * b_) + std::sin(pitch_) * up_;
 }
 
-glm::vec3 OrbitCamera::viewUp() const {
+glm::dvec3 OrbitCamera::viewUp() const {
     return -std::sin(pitch_) * (std::cos(yaw_) * a_ + std::sin(yaw_) * b_) + std::cos(pitch_) * up_;
 }
 
-glm::vec3 OrbitCamera::eye() const {
+glm::dvec3 OrbitCamera::eye() const {
     return target_ + direction() * distance_;
 }
 
 void OrbitCamera::orbit(glm::vec2 pixels) {
     // Dragging right turns the model right (the eye goes left); dragging down shows the top.
-    yaw_ = std::remainder(yaw_ - pixels.x * radiansPerPixel, 2.0f * glm::pi<float>());
+    yaw_ = std::remainder(yaw_ - pixels.x * radiansPerPixel, 2.0 * glm::pi<double>());
     pitch_ = std::clamp(pitch_ + pixels.y * radiansPerPixel, -maxPitch, maxPitch);
 }
 
-void OrbitCamera::pan(glm::vec2 pixels, float viewportHeight) {
+void OrbitCamera::pan(glm::vec2 pixels, double viewportHeight) {
     // World units per pixel at the target's depth, so the target follows the cursor.
-    const float scale = 2.0f * distance_ * std::tan(0.5f * fovY_) / std::max(viewportHeight, 1.0f);
-    const glm::vec3 forward = -direction();
-    const glm::vec3 right = glm::normalize(glm::cross(forward, viewUp()));
-    const glm::vec3 viewUp = glm::cross(right, forward);
-    target_ += (-right * pixels.x + viewUp * pixels.y) * scale;
+    const double scale = 2.0 * distance_ * std::tan(0.5 * fovY_) / std::max(viewportHeight, 1.0);
+    const glm::dvec3 forward = -direction();
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, viewUp()));
+    const glm::dvec3 viewUp = glm::cross(right, forward);
+    target_ += (-right * double(pixels.x) + viewUp * double(pixels.y)) * scale;
 }
 
-void OrbitCamera::zoom(float steps) {
+void OrbitCamera::zoom(double steps) {
     distance_ *= zoomFactor(steps);
 }
 
-float OrbitCamera::zoomFactor(float steps) const {
+double OrbitCamera::zoomFactor(double steps) const {
     // Multiplying keeps the distance positive whatever the steps; the bounds keep it from
-    // vanishing (float underflow) or running away.
-    const float radius = usableRadius(bounds_);
-    const float distance =
-        std::clamp(distance_ * std::pow(zoomPerStep, steps), radius * 1e-5f, radius * 1e4f);
+    // vanishing (double underflow) or running away.
+    const double radius = usableRadius(bounds_);
+    const double distance =
+        std::clamp(distance_ * std::pow(zoomPerStep, steps), radius * 1e-5, radius * 1e4);
     return distance / distance_;
 }
 
-void OrbitCamera::zoomToward(glm::vec3 point, float steps) {
-    const float factor = zoomFactor(steps);
+void OrbitCamera::zoomToward(glm::dvec3 point, double steps) {
+    const double factor = zoomFactor(steps);
     target_ = point + (target_ - point) * factor;
     distance_ *= factor;
 }
 
-void OrbitCamera::fit(float aspect, FreeSpan span) {
+void OrbitCamera::fit(double aspect, FreeSpan span) {
     fit(bounds_, aspect, span);
 }
 
-void OrbitCamera::fit(const scene::Bounds& what, float aspect, FreeSpan span) {
-    const float radius = usableRadius(what);
-    const float width = std::clamp(span.right - span.left, 1e-3f, 1.0f);
-    aspect *= width;                        // the span's own aspect decides the distance
-    shift_ = span.left + span.right - 1.0f; // the span's middle, in device coordinates
+void OrbitCamera::fit(const scene::Bounds& what, double aspect, FreeSpan span) {
+    const double radius = usableRadius(what);
+    const double width = std::clamp(double(span.right) - double(span.left), 1e-3, 1.0);
+    aspect *= width; // the span's own aspect decides the distance
+    shift_ =
+        double(span.left) + double(span.right) - 1.0; // the span's middle, in device coordinates
     // The narrower of the two fields of view decides, as in scene::fitCamera; the
     // orthographic view of that distance is taller than the sphere (Camera::orthoHeight).
-    const float halfFov =
-        0.5f * std::min(fovY_, 2.0f * std::atan(std::tan(0.5f * fovY_) * std::max(aspect, 1e-3f)));
+    const double halfFov =
+        0.5 * std::min(fovY_, 2.0 * std::atan(std::tan(0.5 * fovY_) * std::max(aspect, 1e-3)));
     target_ = what.center();
     distance_ = radius / std::sin(halfFov);
 }
 
-glm::mat4 OrbitCamera::shiftMatrix() const {
+glm::dmat4 OrbitCamera::shiftMatrix() const {
     // x' = x + shift * w: in clip space, so perspective and ortho both move by `shift`.
-    glm::mat4 m(1.0f);
+    glm::dmat4 m(1.0);
     m[3][0] = shift_;
     return m;
 }
 
 void OrbitCamera::turnTo(const scene::StandardView& view) {
-    const glm::mat3 frame = scene::modelFrame(up_);
-    const glm::vec3 d = glm::normalize(frame * view.toEye);
-    const float along = glm::dot(d, up_);
-    if (std::abs(along) > 0.9999f) {
+    const glm::dmat3 frame = scene::modelFrame(up_);
+    const glm::dvec3 d = glm::normalize(frame * view.toEye);
+    const double along = glm::dot(d, up_);
+    if (std::abs(along) > 0.9999) {
         // Top or bottom: on the pole, where the yaw only says which way the screen's up
         // points (viewUp): away from the horizontal direction at the top, towards it below.
-        pitch_ = std::copysign(0.5f * glm::pi<float>(), along);
-        const glm::vec3 h = -std::copysign(1.0f, along) * glm::normalize(frame * view.screenUp);
+        pitch_ = std::copysign(0.5 * glm::pi<double>(), along);
+        const glm::dvec3 h = -std::copysign(1.0, along) * glm::normalize(frame * view.screenUp);
         yaw_ = std::atan2(glm::dot(h, b_), glm::dot(h, a_));
     } else {
         pitch_ = std::asin(along);
@@ -167,7 +168,7 @@ void OrbitCamera::setHome() {
     home_ = Home{target_, distance_, yaw_, pitch_, shift_};
 }
 
-scene::Camera OrbitCamera::camera(float reach, bool ortho) const {
+scene::Camera OrbitCamera::camera(double reach, bool ortho) const {
     scene::Camera camera;
     camera.eye = eye();
     camera.target = target_;

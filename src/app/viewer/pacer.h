@@ -19,6 +19,7 @@ namespace app {
 
 // Everything the scene pass's picture depends on. Equal keys draw equal images.
 struct SceneKey {
+    glm::dvec3 origin{0.0}; // what viewProj and the objects' matrices are relative to
     glm::mat4 viewProj{1.0f};
     glm::vec4 eye{0.0f}; // position, or the direction to the viewer (w 0) in orthographic
     float explode = 0.0f;

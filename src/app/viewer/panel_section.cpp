@@ -14,12 +14,12 @@
 
 namespace app {
 
-glm::vec2 offsetRange(const scene::Bounds& bounds, glm::vec3 normal) {
-    glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+glm::dvec2 offsetRange(const scene::Bounds& bounds, glm::dvec3 normal) {
+    glm::dvec2 range(std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest());
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
-                          (corner & 2) ? bounds.max.y : bounds.min.y,
-                          (corner & 4) ? bounds.max.z : bounds.min.z);
+        const glm::dvec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
+                           (corner & 2) ? bounds.max.y : bounds.min.y,
+                           (corner & 4) ? bounds.max.z : bounds.min.z);
         range.x = std::min(range.x, glm::dot(normal, p));
         range.y = std::max(range.y, glm::dot(normal, p));
     }
@@ -31,7 +31,7 @@ namespace {
 // Which axis a plane lies on, or -1 for a face's plane.
 int axisOf(const scene::SectionPlane& plane) {
     for (int axis = 0; axis < 3; ++axis)
-        if (plane.normal == glm::vec3(axis == 0, axis == 1, axis == 2)) return axis;
+        if (plane.normal == glm::dvec3(axis == 0, axis == 1, axis == 2)) return axis;
     return -1;
 }
 
@@ -43,8 +43,8 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
     std::snprintf(label, sizeof label, "plane %d", index + 1);
     if (ImGui::Checkbox(label, &plane.on) && plane.on && axisOf(plane) >= 0) {
         // Turned on: start through the middle of the scene, where a cut shows most.
-        const glm::vec2 range = offsetRange(bounds, plane.normal);
-        plane.offset = 0.5f * (range.x + range.y);
+        const glm::dvec2 range = offsetRange(bounds, plane.normal);
+        plane.offset = 0.5 * (range.x + range.y);
     }
     if (!plane.on) {
         ImGui::PopID();
@@ -55,7 +55,7 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
         const char* names[] = {"X", "Y", "Z"};
         sameLineIfFits(checkboxWidth(names[a]));
         if (ImGui::RadioButton(names[a], axis == a) && axis != a) {
-            const float middle = 0.5f * (bounds.min[a] + bounds.max[a]);
+            const double middle = 0.5 * (bounds.min[a] + bounds.max[a]);
             plane = scene::axisPlane(a, middle, plane.flip);
         }
     }
@@ -63,8 +63,8 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
     ImGui::BeginDisabled(!selectedPlane);
     if (ImGui::RadioButton("face", axis < 0) && selectedPlane) {
         // Flush with the selected face, keeping what lies behind it: the solid it bounds.
-        plane.normal = glm::vec3(selectedPlane->normal);
-        plane.offset = float(selectedPlane->d);
+        plane.normal = selectedPlane->normal;
+        plane.offset = selectedPlane->d;
     }
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(selectedPlane ? "on the plane of the selected face"
@@ -72,15 +72,17 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
     ImGui::EndDisabled();
     sameLineIfFits(checkboxWidth("flip"));
     ImGui::Checkbox("flip", &plane.flip);
-    const glm::vec2 range = offsetRange(bounds, plane.normal);
+    const glm::dvec2 range = offsetRange(bounds, plane.normal);
     // A little past the bounds, so a plane can leave the scene whole on either side.
-    const float margin = 0.02f * (range.y - range.x) + 1e-6f;
+    const double margin = 0.02 * (range.y - range.x) + 1e-6;
+    const double low = range.x - margin, high = range.y + margin;
     // The slider shows the offset with its unit.
     std::string format =
         "%.3f" + (unit.symbol.empty() ? std::string(" (no unit)") : " " + unit.symbol);
     const std::string offsetLabel = fitLabel("offset");
-    ImGui::SliderFloat(offsetLabel.c_str(), &plane.offset, range.x - margin, range.y + margin,
-                       format.c_str());
+    // Double: a plane through a building at its map position keeps its millimetres.
+    ImGui::SliderScalar(offsetLabel.c_str(), ImGuiDataType_Double, &plane.offset, &low, &high,
+                        format.c_str());
     if (axis < 0) {
         char normal[96];
         std::snprintf(normal, sizeof normal, "normal %.3f %.3f %.3f", plane.normal.x,

@@ -20,6 +20,6 @@ void sectionPlanes(scene::Section& section, const scene::Bounds& bounds,
                    const scene::LengthUnit& unit, PanelLayout& layout);
 
 // The offsets at which a plane of this normal touches the bounds: the slider's range.
-glm::vec2 offsetRange(const scene::Bounds& bounds, glm::vec3 normal);
+glm::dvec2 offsetRange(const scene::Bounds& bounds, glm::dvec3 normal);
 
 } // namespace app

@@ -94,21 +94,22 @@ void Viewer::selectionChanged() const {
                 "): " + info->path + face);
 }
 
-void Viewer::keepViewProj(uint64_t frame, const glm::mat4& viewProj) {
+void Viewer::keepViewProj(uint64_t frame, const glm::dmat4& viewProj) {
     drawnViewProj_.emplace_back(frame, viewProj);
     if (drawnViewProj_.size() > 8) drawnViewProj_.pop_front(); // picks come back sooner
 }
 
-std::optional<glm::vec3> Viewer::pointUnderCursor() const {
+std::optional<glm::dvec3> Viewer::pointUnderCursor() const {
     const auto& pick = input_.hoverPick();
     if (!pick || !pick->part || !scene_.targets()) return std::nullopt; // background
     const VkExtent2D extent = scene_.targets()->extent();
     if (input_.cursorPixel(extent) != pick->pixel) return std::nullopt; // stale: moved since
     for (const auto& [frame, viewProj] : drawnViewProj_)
         if (frame == pick->frame)
-            return scene::unprojectPixel(
-                viewProj, glm::vec2(extent.width, extent.height),
-                glm::vec2(pick->pixel) + scene_.targets()->pass().sampleZero(), pick->depth);
+            return scene::unprojectPixel(viewProj, glm::dvec2(extent.width, extent.height),
+                                         glm::dvec2(pick->pixel) +
+                                             glm::dvec2(scene_.targets()->pass().sampleZero()),
+                                         pick->depth);
     return std::nullopt;
 }
 
@@ -143,15 +144,16 @@ void Viewer::zoomNow(float steps) {
     camera_.zoomToward(*point, steps);
     // Where the point shows now, for the event line: on the cursor's pixel.
     const VkExtent2D extent = scene_.targets()->extent();
-    const glm::mat4 viewProj = camera_.shiftMatrix() *
-                               cameraFrame(camera_.camera(settings_.animation.animate ? 2.0f : 1.0f,
-                                                          settings_.camera.ortho),
-                                           extent)
-                                   .viewProj;
-    const glm::vec4 clip = viewProj * glm::vec4(*point, 1.0f);
-    const glm::vec2 at =
-        (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(extent.width, extent.height) -
-        scene_.targets()->pass().sampleZero();
+    const glm::dmat4 viewProj =
+        camera_.shiftMatrix() *
+        cameraFrame(
+            camera_.camera(settings_.animation.animate ? 2.0f : 1.0f, settings_.camera.ortho),
+            extent)
+            .worldViewProj;
+    const glm::dvec4 clip = viewProj * glm::dvec4(*point, 1.0);
+    const glm::vec2 at = glm::vec2((glm::dvec2(clip) / clip.w * 0.5 + 0.5) *
+                                   glm::dvec2(extent.width, extent.height)) -
+                         scene_.targets()->pass().sampleZero();
     const glm::uvec2 pixel = input_.hoverPick()->pixel;
     char text[160];
     std::snprintf(text, sizeof text, "zoom: toward part %u at %u,%u, now at %.2f,%.2f",
@@ -196,16 +198,16 @@ FreeSpan Viewer::panelSpan() const {
 void Viewer::sayFitted() const {
     // The window x range the scene's bounds cover, for scripts to check against the panel.
     const VkExtent2D extent = presenter_.extent();
-    const glm::mat4 viewProj =
+    const glm::dmat4 viewProj =
         camera_.shiftMatrix() *
-        cameraFrame(camera_.camera(1.0f, settings_.camera.ortho), extent).viewProj;
+        cameraFrame(camera_.camera(1.0f, settings_.camera.ortho), extent).worldViewProj;
     const scene::Bounds& b = camera_.bounds();
     float left = float(extent.width), right = 0.0f;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 clip =
-            viewProj * glm::vec4((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                                 (corner & 4) ? b.max.z : b.min.z, 1.0f);
-        const float x = (clip.x / clip.w * 0.5f + 0.5f) * float(extent.width);
+        const glm::dvec4 clip = viewProj * glm::dvec4((corner & 1) ? b.max.x : b.min.x,
+                                                      (corner & 2) ? b.max.y : b.min.y,
+                                                      (corner & 4) ? b.max.z : b.min.z, 1.0);
+        const float x = float((clip.x / clip.w * 0.5 + 0.5) * double(extent.width));
         left = std::min(left, x);
         right = std::max(right, x);
     }
@@ -305,6 +307,7 @@ FrameWants Viewer::frameWants() const {
 SceneKey Viewer::sceneKey(const render::FrameParams& params) const {
     const render::Renderer& renderer = scene_.renderer();
     SceneKey key;
+    key.origin = params.origin;
     key.viewProj = params.viewProj;
     key.eye =
         params.orthoToViewer ? glm::vec4(*params.orthoToViewer, 0.0f) : glm::vec4(params.eye, 1.0f);
@@ -410,12 +413,12 @@ void Viewer::toggleMeasure() {
 void Viewer::measured(const render::PickReading& pick) {
     if (!pick.part) return; // background: nothing to measure
     const VkExtent2D extent = scene_.targets()->extent();
-    const glm::vec3 world = scene::unprojectPixel(
-        viewProj_, glm::vec2(extent.width, extent.height),
-        glm::vec2(pick.pixel) + scene_.targets()->pass().sampleZero(), pick.depth);
+    const glm::dvec3 world = scene::unprojectPixel(
+        viewProj_, glm::dvec2(extent.width, extent.height),
+        glm::dvec2(pick.pixel) + glm::dvec2(scene_.targets()->pass().sampleZero()), pick.depth);
     measure_.add({world, *pick.part});
     const auto& points = measure_.points();
-    std::array<std::optional<glm::vec3>, 2> at;
+    std::array<std::optional<glm::dvec3>, 2> at;
     std::array<std::optional<uint32_t>, 2> parts;
     for (size_t i = 0; i < points.size(); ++i) {
         at[i] = points[i].world;

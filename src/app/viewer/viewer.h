@@ -158,15 +158,15 @@ class Viewer {
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
     scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
     std::optional<size_t> selectedRow_;
-    glm::mat4 viewProj_{1.0f};             // of the newest frame: where measure points come from
+    glm::dmat4 viewProj_{1.0}; // of the newest frame (world): where measure points come from
     mutable PartDetailsCache partDetails_; // the hovered and selected parts, worked out once
     // The view-projections of the last few frames, by frame number: a pick arrives frames
     // after it was taken, and its depth is unprojected with the view it was taken in.
-    std::deque<std::pair<uint64_t, glm::mat4>> drawnViewProj_;
-    void keepViewProj(uint64_t frame, const glm::mat4& viewProj);
-    std::optional<glm::vec3> pointUnderCursor() const; // zoomAtCursor's point
-    bool hoverIsCurrent() const;                       // the hover reading is of the cursor's pixel
-    void zoomWhenReady(); // each frame: wheel steps waiting for the hover reading
+    std::deque<std::pair<uint64_t, glm::dmat4>> drawnViewProj_;
+    void keepViewProj(uint64_t frame, const glm::dmat4& viewProj);
+    std::optional<glm::dvec3> pointUnderCursor() const; // zoomAtCursor's point
+    bool hoverIsCurrent() const; // the hover reading is of the cursor's pixel
+    void zoomWhenReady();        // each frame: wheel steps waiting for the hover reading
     void zoomNow(float steps);
     float pendingZoom_ = 0.0f;      // wheel steps waiting
     uint64_t pendingZoomFrame_ = 0; // the frame they started waiting at

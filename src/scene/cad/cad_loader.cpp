@@ -87,10 +87,11 @@ void checkFile(const std::string& path) {
     if (size > kMaxFileBytes) throw Bad("file too large (" + std::to_string(size) + " bytes)");
 }
 
-glm::mat4 toMat4(const gp_Trsf& t) {
-    glm::mat4 m(1.0f);
+// Double, as Open CASCADE keeps it: a part placed kilometres away keeps its millimetres.
+glm::dmat4 toMatrix(const gp_Trsf& t) {
+    glm::dmat4 m(1.0);
     for (int row = 1; row <= 3; ++row)
-        for (int col = 1; col <= 4; ++col) m[col - 1][row - 1] = float(t.Value(row, col));
+        for (int col = 1; col <= 4; ++col) m[col - 1][row - 1] = t.Value(row, col);
     return m;
 }
 
@@ -338,7 +339,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
         const uint32_t material = leaf.color ? materialFor(*leaf.color) : grey;
         const std::string name =
             leaf.name.empty() ? stem + " solid " + std::to_string(++unnamed) : leaf.name;
-        addObject(scene, uint32_t(d.geometry), material, toMat4(leaf.world), name,
+        addObject(scene, uint32_t(d.geometry), material, toMatrix(leaf.world), name,
                   joinPath(leaf.group, name));
     }
     if (scene.objects.empty()) throw Bad("no face of the model could be triangulated");

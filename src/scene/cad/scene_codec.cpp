@@ -13,7 +13,7 @@ static_assert(sizeof(Part) == 2 * sizeof(uint32_t));
 // a field added to one of them changes its size and stops the build here, until it is
 // encoded below and kCadCacheVersion (cad_cache.h) is bumped, so that no old entry is read
 // as a new one.
-static_assert(sizeof(Geometry) == 160 && sizeof(Object) == 144 && sizeof(Material) == 48 &&
+static_assert(sizeof(Geometry) == 160 && sizeof(Object) == 208 && sizeof(Material) == 48 &&
                   sizeof(SurfaceInfo) == 104,
               "a scene record changed: encode its fields and bump kCadCacheVersion");
 

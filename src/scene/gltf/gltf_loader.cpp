@@ -31,32 +31,31 @@ using gltf::readFileBytes;
 
 constexpr size_t kMaxObjects = size_t(1) << 24;
 
-glm::mat4 localTransform(const tinygltf::Node& node, size_t index) {
+// In double, as the file gives it: a root node at map coordinates keeps its millimetres.
+glm::dmat4 localTransform(const tinygltf::Node& node, size_t index) {
     const std::string name = "node " + std::to_string(index);
     if (!node.matrix.empty()) {
         if (node.matrix.size() != 16) throw Bad(name + " has a matrix without 16 numbers");
-        glm::dmat4 m = glm::make_mat4(node.matrix.data()); // both column-major
-        return glm::mat4(m);
+        return glm::make_mat4(node.matrix.data()); // both column-major
     }
     if ((!node.translation.empty() && node.translation.size() != 3) ||
         (!node.rotation.empty() && node.rotation.size() != 4) ||
         (!node.scale.empty() && node.scale.size() != 3))
         throw Bad(name + " has a malformed translation, rotation or scale");
-    glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
     if (!node.translation.empty())
-        t = glm::translate(glm::mat4(1.0f), glm::vec3(glm::make_vec3(node.translation.data())));
+        t = glm::translate(glm::dmat4(1.0), glm::make_vec3(node.translation.data()));
     if (!node.rotation.empty()) {
         const auto& q = node.rotation; // glTF order x, y, z, w
-        glm::quat quat{float(q[3]), float(q[0]), float(q[1]), float(q[2])};
-        float len = glm::length(quat);
-        if (len > 0.0f && std::isfinite(len)) r = glm::mat4_cast(quat / len);
+        glm::dquat quat{q[3], q[0], q[1], q[2]};
+        const double len = glm::length(quat);
+        if (len > 0.0 && std::isfinite(len)) r = glm::mat4_cast(quat / len);
     }
-    if (!node.scale.empty())
-        s = glm::scale(glm::mat4(1.0f), glm::vec3(glm::make_vec3(node.scale.data())));
+    if (!node.scale.empty()) s = glm::scale(glm::dmat4(1.0), glm::make_vec3(node.scale.data()));
     return t * r * s;
 }
 
-bool isFinite(const glm::mat4& m) {
+bool isFinite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(m[c][r])) return false;
@@ -149,11 +148,11 @@ class Builder {
     void addTree(int root) {
         struct Step {
             int node;
-            glm::mat4 parentWorld;
+            glm::dmat4 parentWorld;
             bool leave;
             size_t parentPathLength;
         };
-        std::vector<Step> stack{{root, glm::mat4(1.0f), false, 0}};
+        std::vector<Step> stack{{root, glm::dmat4(1.0), false, 0}};
         onPath_.resize(model_.nodes.size(), false);
         path_.clear();
         while (!stack.empty()) {
@@ -169,7 +168,7 @@ class Builder {
                 throw Bad("node cycle: node " + std::to_string(n) + " is its own ancestor");
             onPath_[n] = true;
             const tinygltf::Node& node = model_.nodes[n];
-            glm::mat4 world = step.parentWorld * localTransform(node, n);
+            const glm::dmat4 world = step.parentWorld * localTransform(node, n);
             if (!isFinite(world))
                 throw Bad("node " + std::to_string(n) + " has a non-finite transform");
             const size_t parentPathLength = path_.size();
@@ -182,7 +181,7 @@ class Builder {
         }
     }
 
-    void addObject(int mesh, const glm::mat4& world, size_t node, const std::string& name) {
+    void addObject(int mesh, const glm::dmat4& world, size_t node, const std::string& name) {
         if (size_t(mesh) >= model_.meshes.size())
             throw Bad("node " + std::to_string(node) + " refers to missing mesh " +
                       std::to_string(mesh));

@@ -27,13 +27,13 @@ class GlbBuilder {
         // unique part IDs; the node is named after the object. idview scenes are z-up, glTF is
         // y-up: each node's matrix turns its object.
         tinygltf::Scene root;
-        const glm::mat4 up = zUpToYUp();
+        const glm::dmat4 up = zUpToYUp();
         for (const Object& object : scene_.objects) {
             tinygltf::Node node;
             node.name = object.name;
             node.mesh = meshFor(object.geometry, object.material);
-            const glm::mat4 world = up * object.world;
-            const float* m = &world[0][0];
+            const glm::dmat4 world = up * object.world;
+            const double* m = &world[0][0];
             node.matrix.assign(m, m + 16); // both column-major
             root.nodes.push_back(int(model_.nodes.size()));
             model_.nodes.push_back(std::move(node));
@@ -174,10 +174,10 @@ class GlbBuilder {
 
 } // namespace
 
-glm::mat4 zUpToYUp() {
+glm::dmat4 zUpToYUp() {
     // Columns: x stays x, y becomes -z, z becomes y.
-    return glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0),
-                     glm::vec4(0, 0, 0, 1));
+    return glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 0, -1, 0), glm::dvec4(0, 1, 0, 0),
+                      glm::dvec4(0, 0, 0, 1));
 }
 
 void writeGlb(const Scene& scene, const std::string& path) {

@@ -13,7 +13,7 @@
 namespace scene {
 
 // The rotation the writer puts into every node: idview's z-up to glTF's y-up.
-glm::mat4 zUpToYUp();
+glm::dmat4 zUpToYUp();
 
 // Throws std::runtime_error naming the file when it cannot be written.
 void writeGlb(const Scene& scene, const std::string& path);
