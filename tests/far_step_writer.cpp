@@ -55,10 +55,11 @@ bool write(const char* path, gp_Vec offset) {
     // (once turned), a column and a ball resting on its lowest point.
     const TDF_Label plate = shape(BRepPrimAPI_MakeBox(800.0, 500.0, 20.0).Shape(), "plate");
     const TDF_Label housing = shape(BRepPrimAPI_MakeBox(180.0, 120.0, 150.0).Shape(), "housing");
-    const TDF_Label column =
-        shape(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(), gp_Dir(0.0, 0.0, 1.0)), 45.0, 310.0).Shape(),
-              "column");
-    const TDF_Label ball = shape(BRepPrimAPI_MakeSphere(gp_Pnt(0.0, 0.0, 70.0), 70.0).Shape(), "ball");
+    const TDF_Label column = shape(
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(), gp_Dir(0.0, 0.0, 1.0)), 45.0, 310.0).Shape(),
+        "column");
+    const TDF_Label ball =
+        shape(BRepPrimAPI_MakeSphere(gp_Pnt(0.0, 0.0, 70.0), 70.0).Shape(), "ball");
     const TDF_Label machine = shapes->NewShape();
     TDataStd_Name::Set(machine, "machine");
     component(machine, plate, placed(gp_Vec()), "base plate");
@@ -76,7 +77,8 @@ bool write(const char* path, gp_Vec offset) {
 
     STEPCAFControl_Writer writer;
     writer.SetNameMode(true);
-    const bool ok = writer.Transfer(doc, STEPControl_AsIs) && writer.Write(path) == IFSelect_RetDone;
+    const bool ok =
+        writer.Transfer(doc, STEPControl_AsIs) && writer.Write(path) == IFSelect_RetDone;
     app->Close(doc);
     return ok;
 }

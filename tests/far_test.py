@@ -14,8 +14,8 @@ to the model. Then:
   - --measure between the same pixels and --face-info on the same parts: distances and areas
     equal to 1e-9 relative, points, boxes, plane offsets and centres equal the origin's plus
     the offset within 1e-6 of the model's size.
---offset-scale S multiplies both offsets (0 checks this harness: both files then hold the
-origin's numbers). Every failure prints a line starting FAIL; the exit code is their count."""
+--offset-scale S (or IDVIEW_FAR_OFFSET_SCALE=S, as test_far_pick.cpp reads it) multiplies both
+offsets: 0 checks this harness, both files then holding the origin's numbers. Every failure prints a line starting FAIL; the exit code is their count."""
 import concurrent.futures
 import json
 import os
@@ -32,12 +32,23 @@ SAME_RELATIVE = 1e-9  # distances and areas
 POINT_OF_SIZE = 1e-6  # points: a fraction of the model's size
 
 failures = 0
+PIXEL_LINES = 10  # pixels named one by one per model; the rest are counted
 
 
 def fail(message):
     global failures
     failures += 1
     print("FAIL " + message, flush=True)
+
+
+def fail_pixels(model, messages):
+    """One failure per pixel, the first PIXEL_LINES of them named."""
+    global failures
+    for m in messages[:PIXEL_LINES]:
+        fail("%s: %s" % (model.name, m))
+    if len(messages) > PIXEL_LINES:
+        failures += len(messages) - PIXEL_LINES
+        print("FAIL %s: %d more pixels like these" % (model.name, len(messages) - PIXEL_LINES))
 
 
 def run(idview, args):
@@ -148,11 +159,10 @@ def prove_ties(idview, model, diffs):
         fail("%s: %d differing pixels (of every combination), more than the %d ties this test "
              "proves" % (model.name, len(diffs), MAX_DIFFS_TO_PROVE))
         return
-    for x, y, a, b in diffs:
-        if BACKGROUND in (a, b):
-            fail("%s: pixel %d,%d shows part %s at the origin and %s far: a part against the "
-                 "background is no tie" % (model.name, x, y, a if a != BACKGROUND else "none",
-                                           b if b != BACKGROUND else "none"))
+    fail_pixels(model, ["pixel %d,%d shows part %s at the origin and %s far: a part against "
+                        "the background is no tie" % (x, y, a if a != BACKGROUND else "none",
+                                                      b if b != BACKGROUND else "none")
+                        for x, y, a, b in diffs if BACKGROUND in (a, b)])
     pairs = [d for d in diffs if BACKGROUND not in d[2:]]
     pixels_of = {}
     for x, y, a, b in pairs:
@@ -171,14 +181,17 @@ def prove_ties(idview, model, diffs):
             pick = json.loads(line)
             if pick["part"] == part:
                 depth[(part, pick["x"], pick["y"])] = pick["depth"]
+    untied = []
     for x, y, a, b in pairs:
         da, db = depth.get((a, x, y)), depth.get((b, x, y))
         if da is None or db is None:
-            fail("%s: pixel %d,%d shows part %d at the origin and %d far, but part %d alone "
-                 "does not cover it: no tie" % (model.name, x, y, a, b, a if da is None else b))
+            untied.append("pixel %d,%d shows part %d at the origin and %d far, but part %d "
+                          "alone does not cover it: no tie" % (x, y, a, b,
+                                                               a if da is None else b))
         elif abs(da - db) > TIE_RELATIVE * max(abs(da), abs(db)):
-            fail("%s: pixel %d,%d shows part %d at the origin and %d far, at depths %.9g and "
-                 "%.9g: no tie" % (model.name, x, y, a, b, da, db))
+            untied.append("pixel %d,%d shows part %d at the origin and %d far, at depths %.9g "
+                          "and %.9g: no tie" % (x, y, a, b, da, db))
+    fail_pixels(model, untied)
 
 
 def interior_pixels(ids, count):
@@ -297,7 +310,7 @@ def measure_and_faces(idview, model, reference):
 
 def main():
     args = sys.argv[1:]
-    scale = 1.0
+    scale = float(os.environ.get("IDVIEW_FAR_OFFSET_SCALE", "1"))
     if "--offset-scale" in args:
         i = args.index("--offset-scale")
         scale = float(args[i + 1])
@@ -327,10 +340,17 @@ def main():
                     continue
                 pairs = list(pool.map(
                     lambda c: far_against_origin(idview, model, work, reference, c), combos))
-                diffs = set()
+                diffs, differing = set(), []
                 for combo, (origin, far) in zip(combos, pairs):
                     if origin is not None and far is not None:
-                        diffs.update(compare_images(model, " ".join(combo), origin, far))
+                        found = compare_images(model, " ".join(combo), origin, far)
+                        diffs.update(found)
+                        if found:
+                            differing.append(len(found))
+                print("     %s: %d of %d combinations differ from the origin's image, by %d to "
+                      "%d pixels, %d distinct" % (model.name, len(differing), len(combos),
+                                                  min(differing, default=0),
+                                                  max(differing, default=0), len(diffs)))
                 prove_ties(idview, model, sorted(diffs))
                 measure_and_faces(idview, model, reference)
     print("%d failures" % failures)
