@@ -2,6 +2,7 @@
 // assembly in millimetres whose one top-level component is placed at (X, Y, Z) mm, as a plant
 // or ship places a part kilometres from its origin (issue 35). tests/far_test.sh writes it at
 // (0, 0, 0) and at (2e6, -3.5e6, 8e5) and compares what idview draws and measures.
+// `--gap OUT.step [MM]` writes two faces 0.1 mm (or MM) apart instead, hundreds of metres wide.
 //
 // The solids never share a visible face: what touches the base plate touches it with a face
 // or a point that the plate hides, so at the origin every visible pixel has one nearest
@@ -83,19 +84,45 @@ bool write(const char* path, gp_Vec offset) {
     return ok;
 }
 
+// Two faces `gap` mm apart seen from about a kilometre: a 500 m square slab (top at z = 0) and
+// a 300 m square sheet sunk into it whose top lies `gap` above the slab's.
+bool writeGap(const char* path, double gap) {
+    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+    Handle(TDocStd_Document) doc;
+    app->NewDocument("MDTV-XCAF", doc);
+    Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    const TDF_Label slab = shapes->AddShape(
+        BRepPrimAPI_MakeBox(gp_Pnt(-2.5e5, -2.5e5, -1000.0), gp_Pnt(2.5e5, 2.5e5, 0.0)).Shape(),
+        false);
+    TDataStd_Name::Set(slab, "slab");
+    const TDF_Label sheet = shapes->AddShape(
+        BRepPrimAPI_MakeBox(gp_Pnt(-1.5e5, -1.5e5, gap - 10.0), gp_Pnt(1.5e5, 1.5e5, gap)).Shape(),
+        false);
+    TDataStd_Name::Set(sheet, "sheet");
+    STEPCAFControl_Writer writer;
+    writer.SetNameMode(true);
+    const bool ok =
+        writer.Transfer(doc, STEPControl_AsIs) && writer.Write(path) == IFSelect_RetDone;
+    app->Close(doc);
+    return ok;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 5) {
-        std::fprintf(stderr, "usage: idview_far_step_writer OUT.step X Y Z (millimetres)\n");
+    const bool gap = (argc == 3 || argc == 4) && std::string(argv[1]) == "--gap";
+    if (argc != 5 && !gap) {
+        std::fprintf(stderr, "usage: idview_far_step_writer OUT.step X Y Z (millimetres)\n"
+                             "       idview_far_step_writer --gap OUT.step [MM] (default 0.1)\n");
         return 2;
     }
     // A generator that exits at once: Open CASCADE's one-time registrations (XDE application,
     // STEP writer) are never freed, which LeakSanitizer would report in the sanitizer pass.
     const scene::OcctLeaksIgnored ignored;
-    const gp_Vec offset(std::atof(argv[2]), std::atof(argv[3]), std::atof(argv[4]));
-    if (!write(argv[1], offset)) {
-        std::fprintf(stderr, "idview_far_step_writer: cannot write %s\n", argv[1]);
+    const char* path = gap ? argv[2] : argv[1];
+    if (gap ? !writeGap(path, argc == 4 ? std::atof(argv[3]) : 0.1)
+            : !write(path, gp_Vec(std::atof(argv[2]), std::atof(argv[3]), std::atof(argv[4])))) {
+        std::fprintf(stderr, "idview_far_step_writer: cannot write %s\n", path);
         return 1;
     }
     return 0;

@@ -11,6 +11,7 @@ to the model. Then:
     the far ID image equals the origin's pixel for pixel, except where two parts tie in depth,
     which must be proven: drawn alone at the origin (--isolate), both parts show at that pixel
     and their picked depths agree within 1e-6 relative;
+  - two faces 0.1 mm apart, a kilometre from the camera, stay distinct in the ID image;
   - --measure between the same pixels and --face-info on the same parts: distances and areas
     equal to 1e-9 relative, points, boxes, plane offsets and centres equal the origin's plus
     the offset within 1e-6 of the model's size.
@@ -308,6 +309,36 @@ def measure_and_faces(idview, model, reference):
         fail("%s: nothing measured" % model.name)
 
 
+def gap_stays_distinct(idview, writer, work):
+    """Two faces 0.1 mm apart, about a kilometre from the fitted camera (idview_far_step_writer
+    --gap): wherever the upper face shows when drawn alone, it shows when both are drawn."""
+    path = os.path.join(work, "gap.step")
+    # IDVIEW_FAR_GAP_MM: a wider gap, to check this part of the harness where 0.1 mm fails.
+    gap = os.environ.get("IDVIEW_FAR_GAP_MM", "0.1")
+    subprocess.run([writer, "--gap", path, gap], check=True, stdout=subprocess.DEVNULL)
+    both, alone = os.path.join(work, "gap.ids"), os.path.join(work, "gap-sheet.ids")
+    # The sheet is the second solid: parts 6 to 11 (a box's six faces).
+    if run(idview, ["--model", path, "--frames", "1", "--id-image", both]) is None or run(
+            idview, ["--model", path, "--frames", "1", "--isolate", "6,7,8,9,10,11",
+                     "--id-image", alone]) is None:
+        return
+    both, alone = read_ids(both), read_ids(alone)
+    if both is None or alone is None:
+        return
+    shown = [v for v in alone if v != BACKGROUND]
+    # The upper face is the sheet's part that covers most of its picture.
+    top = max(set(shown), key=shown.count) if shown else None
+    covered = [i for i, v in enumerate(alone) if v == top]
+    lost = [i for i in covered if both[i] != top]
+    print("%s gap: the upper face covers %d pixels, %d of them show another part" % (
+        "ok  " if not lost else "diff", len(covered), len(lost)), flush=True)
+    if len(covered) < W * H // 20:
+        fail("gap: the upper face covers only %d pixels" % len(covered))
+    fail_pixels(Model("gap", path, path, [0.0, 0.0, 0.0], 0.0),
+                ["pixel %d,%d shows part %d, not the upper face %d %s mm above it" % (
+                    i % W, i // W, both[i], top, gap) for i in lost])
+
+
 def main():
     args = sys.argv[1:]
     scale = float(os.environ.get("IDVIEW_FAR_OFFSET_SCALE", "1"))
@@ -353,6 +384,7 @@ def main():
                                                   max(differing, default=0), len(diffs)))
                 prove_ties(idview, model, sorted(diffs))
                 measure_and_faces(idview, model, reference)
+        gap_stays_distinct(idview, writer, work)
     print("%d failures" % failures)
     return failures
 
