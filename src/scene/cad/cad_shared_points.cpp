@@ -59,22 +59,24 @@ void SharedPoints::share(const TopoDS_Face& face, const Handle(Poly_Triangulatio
             const Standard_Integer n = polygon->Node(k);
             return n >= 1 && n <= nodes ? &vertices[n - 1] : nullptr;
         };
-        // The polygon's ends are the edge's vertices: each goes to the vertex it lies on.
+        // The polygon's ends are the edge's vertices, paired the way that puts them nearer
+        // (an edge shorter than its tolerance has both ends within it of either vertex).
         TopoDS_Vertex first, last;
         TopExp::Vertices(edge, first, last);
-        for (Standard_Integer k : {Standard_Integer(1), count}) {
-            Vertex* v = node(k);
-            if (!v) continue;
-            for (const TopoDS_Vertex& corner : {first, last}) {
-                if (corner.IsNull()) continue;
-                if (!samePoint(v->position, pointOf(corner), BRep_Tool::Tolerance(corner)))
-                    continue;
-                if (std::vector<glm::vec3>* kept = find(corner))
-                    v->position = kept->front();
-                else
-                    add(corner, {v->position});
-                break;
-            }
+        Vertex* ends[2] = {node(1), node(count)};
+        if (!ends[0] || !ends[1] || first.IsNull() || last.IsNull()) continue;
+        const glm::vec3 a = pointOf(first), b = pointOf(last);
+        if (squared(ends[0]->position, b) + squared(ends[1]->position, a) <
+            squared(ends[0]->position, a) + squared(ends[1]->position, b))
+            std::swap(first, last);
+        for (int k = 0; k < 2; ++k) {
+            const TopoDS_Vertex& corner = k == 0 ? first : last;
+            Vertex* v = ends[k];
+            if (!samePoint(v->position, pointOf(corner), BRep_Tool::Tolerance(corner))) continue;
+            if (std::vector<glm::vec3>* kept = find(corner))
+                v->position = kept->front();
+            else
+                add(corner, {v->position});
         }
         // The nodes between, against the edge's points in either direction (a seam's two
         // polygons, or another face's, may run the other way).
