@@ -23,7 +23,7 @@
 namespace scene {
 
 // Bumped whenever the entry layout or what the loader puts in a scene changes.
-constexpr uint32_t kCadCacheVersion = 2; // 2: IGES gaps sewn, edge points shared
+constexpr uint32_t kCadCacheVersion = 3; // 3: IGES gaps sewn, edge points shared
 
 struct CadCacheKey {
     std::string path; // absolute, symbolic links resolved
