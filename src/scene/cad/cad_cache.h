@@ -23,7 +23,8 @@
 namespace scene {
 
 // Bumped whenever the entry layout or what the loader puts in a scene changes.
-constexpr uint32_t kCadCacheVersion = 2; // 2: placements in double
+// 4: placements in double; 3: IGES gaps sewn, edge points shared.
+constexpr uint32_t kCadCacheVersion = 4;
 
 struct CadCacheKey {
     std::string path; // absolute, symbolic links resolved

@@ -205,18 +205,23 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
                                   " shapes without faces (wires or points) skipped");
 
     // Tessellation: every distinct shape once, all in one call so that faces mesh in parallel.
-    double deflection = options.deflection;
-    if (deflection == 0.0) {
-        const double diagonal =
-            world.IsVoid() || world.IsOpen() ? 0.0 : std::sqrt(world.SquareExtent());
-        deflection =
-            std::isfinite(diagonal) && diagonal > 0.0 ? diagonal * kRelativeDeflection : 0.01;
-    }
+    const double diagonal =
+        world.IsVoid() || world.IsOpen() ? 0.0 : std::sqrt(world.SquareExtent());
+    const double automatic =
+        std::isfinite(diagonal) && diagonal > 0.0 ? diagonal * kRelativeDeflection : 0.01;
+    const double deflection = options.deflection == 0.0 ? automatic : options.deflection;
     result.deflection = deflection;
     start = Clock::now();
-    // Colours were matched above by the faces as read; sewing keeps their order.
+    // Colours were matched above by the faces as read; sewing keeps their order. A gap the
+    // file's resolution leaves open but narrower than the deflection is below what the
+    // tessellation draws (its triangles stray that far from the surface anyway), yet each side
+    // would be sampled on its own and the background would show through: such gaps are sewn
+    // too, never wider than the automatic deflection, so that a coarse --deflection cannot
+    // join edges that are apart in the model. STEP and BREP files state their faces' shared
+    // edges; only IGES files (sewTolerance set) are sewn.
+    const double gapTolerance = std::min(deflection, automatic);
     guarded("sewing the faces", [&] {
-        for (Distinct& d : distinct) sewFaces(d.shape, d.faces, sewTolerance);
+        for (Distinct& d : distinct) sewFaces(d.shape, d.faces, sewTolerance, gapTolerance);
     });
     TopoDS_Compound all;
     BRep_Builder builder;
@@ -275,9 +280,10 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
         g.firstVertex = uint32_t(scene.vertices.size());
         g.firstIndex = uint32_t(scene.indices.size());
         g.firstPart = uint32_t(scene.parts.size());
+        SharedPoints shared;
         for (Standard_Integer f = 1; f <= d.faces.Extent(); ++f) {
             ++result.faces;
-            if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex)) {
+            if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex, &shared)) {
                 Geometry& built = scene.geometries.back();
                 built.partFaces.push_back(uint32_t(f - 1));
                 built.partSurfaces.push_back(surfaceOf(TopoDS::Face(d.faces(f))));

@@ -21,7 +21,8 @@
 
 namespace scene {
 
-bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex) {
+bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex,
+                SharedPoints* shared) {
     TopLoc_Location location;
     const Handle(Poly_Triangulation)& triangulation = BRep_Tool::Triangulation(face, location);
     if (triangulation.IsNull() || triangulation->NbTriangles() == 0) return false;
@@ -51,6 +52,9 @@ bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVer
         scene.vertices.push_back({glm::vec3(float(p.X()), float(p.Y()), float(p.Z())),
                                   glm::vec3(float(d.X()), float(d.Y()), float(d.Z()))});
     }
+    if (shared)
+        shared->share(face, triangulation, location,
+                      &scene.vertices[scene.vertices.size() - size_t(nodes)]);
     const uint32_t triangles = uint32_t(scene.indices.size() - firstIndex) / 3;
     const Geometry& g = scene.geometries.back();
     scene.parts.push_back({g.triangleCount, triangles});
@@ -170,9 +174,10 @@ bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t
     next.lodError = error;
     scene.geometries.push_back(std::move(next));
     bool whole = true;
+    SharedPoints shared;
     for (uint32_t face : scene.geometries[shape.geometry].partFaces)
         if (!(whole = appendFace(scene, TopoDS::Face((*shape.faces)(int(face) + 1)),
-                                 uint32_t(vertices))))
+                                 uint32_t(vertices), &shared)))
             break;
     Geometry& built = scene.geometries.back();
     built.vertexCount = uint32_t(scene.vertices.size() - vertices);

@@ -15,14 +15,18 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include "scene/cad/cad_shared_points.h"
 #include "scene/lod.h"
 #include "scene/scene.h"
 
 namespace scene {
 
 // Appends the triangles of `face` as the next part of scene.geometries.back(), whose vertices
-// start at `geometryFirstVertex`; false when the face has none.
-bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex);
+// start at `geometryFirstVertex`; false when the face has none. With `shared` (one per
+// geometry), its boundary vertices take the points earlier faces gave their edges, so that
+// faces meeting at an edge meet at the same floats.
+bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex,
+                SharedPoints* shared = nullptr);
 
 // What one tessellation may take: its triangles, counted face by face as the mesher's
 // threads finish them, and a flag another thread may set to stop it.

@@ -6,8 +6,12 @@
 
 namespace scene {
 
-bool sewFaces(TopoDS_Shape& shape, TopTools_IndexedMapOfShape& faces, double tolerance) {
-    if (faces.Extent() < 2 || !(tolerance > 0.0)) return false;
+namespace {
+
+// One sewing of `shape` at `tolerance`: true, with `shape`, `faces` and `freeEdges` replaced,
+// when every face comes out as one face of its own.
+bool sewOnce(TopoDS_Shape& shape, TopTools_IndexedMapOfShape& faces, double tolerance,
+             int& freeEdges) {
     BRepBuilderAPI_Sewing sewing(tolerance);
     sewing.Add(shape);
     sewing.Perform();
@@ -26,6 +30,20 @@ bool sewFaces(TopoDS_Shape& shape, TopTools_IndexedMapOfShape& faces, double tol
         if (!replaced.Contains(all(f))) return false;
     shape = sewn;
     faces = replaced;
+    freeEdges = sewing.NbFreeEdges();
+    return true;
+}
+
+} // namespace
+
+bool sewFaces(TopoDS_Shape& shape, TopTools_IndexedMapOfShape& faces, double tolerance,
+              double gapTolerance) {
+    if (faces.Extent() < 2 || !(tolerance > 0.0)) return false;
+    int freeEdges = 0;
+    if (!sewOnce(shape, faces, tolerance, freeEdges)) return false;
+    // The edges paired at the file's resolution stay paired; only those left free are
+    // candidates now, so a wider tolerance cannot pull apart what matched exactly.
+    if (freeEdges > 0 && gapTolerance > tolerance) sewOnce(shape, faces, gapTolerance, freeEdges);
     return true;
 }
 
