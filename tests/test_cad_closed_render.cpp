@@ -107,7 +107,7 @@ TEST(CadClosedSolids, NoBackgroundShowsThroughAClosedModel) {
             for (uint32_t f = 0; f < frames; ++f) {
                 const scene::Camera camera =
                     scene::cameraOnPath(o.cameraPath, start, loaded.scene.bounds(), f, frames);
-                const glm::mat4 viewProj = camera.viewProjection(aspect);
+                const glm::dmat4 viewProj = camera.viewProjection(aspect);
                 const std::vector<size_t> enclosed = enclosedBackground(r.frames[f].ids, w, h);
                 std::ostringstream cracks;
                 size_t count = 0;

@@ -62,7 +62,7 @@ TEST_P(CadRender, EveryTechniqueDrawsTheSameFacesAndAPickNamesTheFace) {
     const auto results = app::renderHeadlessSequence(o, scene, camera, configs);
     EXPECT_EQ(results.front().validationMessages, 0u) << path;
 
-    const glm::mat4 viewProj = camera.viewProjection(float(W) / float(H));
+    const glm::dmat4 viewProj = camera.viewProjection(float(W) / float(H));
     const auto hit = scene::RayCaster(scene).cast(
         scene::pixelRay(viewProj, glm::vec2(W, H), glm::vec2(pixel.x, pixel.y) + 0.5f));
     ASSERT_TRUE(hit.has_value()) << path;

@@ -56,7 +56,7 @@ void expectNear(glm::vec3 a, glm::vec3 b, float tolerance, const std::string& wh
 // Every corner of `bounds` projects inside the image and the depth range.
 void expectContains(const scene::Camera& camera, const scene::Bounds& bounds, float aspect,
                     const std::string& what) {
-    const glm::mat4 viewProj = camera.viewProjection(aspect);
+    const glm::dmat4 viewProj = camera.viewProjection(aspect);
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
                           (corner & 2) ? bounds.max.y : bounds.min.y,
@@ -146,7 +146,7 @@ TEST(Camera, OrthoPlanesReachBehindAnEyeInsideTheBounds) {
     camera.ortho = true;
     scene::fitPlanes(camera, bounds);
     EXPECT_LT(camera.nearPlane, 0.0f);
-    const glm::mat4 viewProj = camera.viewProjection(1.0f);
+    const glm::dmat4 viewProj = camera.viewProjection(1.0f);
     const glm::vec4 behind = viewProj * glm::vec4(0, -15, 0, 1); // behind the eye, inside
     EXPECT_GE(behind.z / behind.w, 0.0f);
     EXPECT_EQ(behind.w, 1.0f);

@@ -243,7 +243,7 @@ render::RenderSettings culled(const char* technique, const char* mode, render::C
 TEST(CullingCounts, AgreeWithTheObjectsTheCpuCountsAndTheIdImageShows) {
     const InsideView& v = insideView();
     const scene::Scene& s = v.loaded.scene;
-    const glm::mat4 viewProj = v.camera.viewProjection(160.0f / 90.0f);
+    const glm::dmat4 viewProj = v.camera.viewProjection(160.0f / 90.0f);
     uint64_t inFrustum = 0, clusterInFrustum = 0, trianglesInFrustum = 0;
     for (const scene::Object& o : s.objects) {
         // Boxes of the vertices the triangles use, the object's and each cluster's, made here

@@ -59,7 +59,7 @@ struct Comparison {
 Comparison compareWithRaycast(const HeadlessResult& r, const scene::Scene& s,
                               const scene::Camera& camera, uint32_t step) {
     const glm::vec2 size(r.width, r.height);
-    const glm::mat4 viewProj = camera.viewProjection(size.x / size.y);
+    const glm::dmat4 viewProj = camera.viewProjection(size.x / size.y);
     const scene::RayCaster caster(s);
     Comparison c;
     for (uint32_t y = 0; y < r.height; y += step)
@@ -119,7 +119,7 @@ TEST_F(HeadlessRender, TilesIdImageHoldsExactlyTheVisibleParts) {
     EXPECT_EQ(seen, expected);
     // Pixel centres of known places: the image centre falls between the two sheets, on the
     // back plate; the first sheet's lower left tile covers the pixel where (-3.6, 0, 0) lands.
-    const glm::mat4 viewProj = scene::tilesCamera().viewProjection(320.0f / 200.0f);
+    const glm::dmat4 viewProj = scene::tilesCamera().viewProjection(320.0f / 200.0f);
     auto idAt = [&](glm::vec3 p) {
         glm::vec4 clip = viewProj * glm::vec4(p, 1);
         glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(320, 200);

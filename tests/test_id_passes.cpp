@@ -257,7 +257,7 @@ TEST_P(IdPasses, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
 
     // Pixels once showing a hidden part, and what the ray cast now finds there.
     scene::RayCaster caster(scene);
-    const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
+    const glm::dmat4 viewProj = f.camera.viewProjection(float(W) / float(H));
     app::Options o = testing_support::headlessOptions(W, H);
     o.hide = middle.ids();
     // Behind a hidden part lies another part, at the pixel's centre and at sample 0 of 4x.

@@ -14,6 +14,7 @@
 #include "app/scene_source.h"
 #include "render/technique.h"
 #include "scene/raycast.h"
+#include "util/json_number.h"
 #include "test_support.h"
 
 namespace {
@@ -182,7 +183,7 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
         app::renderHeadlessSequence(selectOptions, f.loaded.scene, f.camera, configs);
 
     scene::RayCaster caster(f.loaded.scene);
-    const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
+    const glm::dmat4 viewProj = f.camera.viewProjection(float(W) / float(H));
     for (size_t c = 0; c < configs.size(); ++c) {
         const std::string name = std::string(technique->name) + " + " +
                                  configs[c].pipeline.mode->name + " msaa " + std::to_string(msaa);
@@ -270,7 +271,7 @@ TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
         const app::HeadlessResult r = app::renderHeadless(o, f.loaded.scene, f.camera);
         EXPECT_EQ(r.validationMessages, 0u);
         const scene::RayCaster caster(f.loaded.scene);
-        const glm::mat4 viewProj = f.camera.viewProjection(float(W) / float(H));
+        const glm::dmat4 viewProj = f.camera.viewProjection(float(W) / float(H));
         const float size = glm::length(f.loaded.scene.bounds().max - f.loaded.scene.bounds().min);
         ASSERT_EQ(r.measured.size(), 2u);
         for (size_t i = 0; i < 2; ++i) {
@@ -284,10 +285,9 @@ TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
                       1e-4f * size)
                 << "msaa " << msaa << " point " << i;
         }
-        const glm::vec3 delta = *r.measuredPoints[1] - *r.measuredPoints[0];
-        EXPECT_GT(glm::length(delta), 0.0f);
-        char expected[64];
-        std::snprintf(expected, sizeof expected, "\"distance\":%.9g,", double(glm::length(delta)));
+        const glm::dvec3 delta = *r.measuredPoints[1] - *r.measuredPoints[0];
+        EXPECT_GT(glm::length(delta), 0.0);
+        const std::string expected = "\"distance\":" + util::jsonNumber(glm::length(delta)) + ",";
         const std::string line = app::measureJson(r, f.loaded.scene.unit);
         EXPECT_NE(line.find(expected), std::string::npos) << line;
         EXPECT_NE(line.find("\"parts\":[" + std::to_string(*r.measured[0].part) + "," +
@@ -325,7 +325,7 @@ TEST(Pick, OrthoPicksAgreeWithTheIdImageAndTheRayCast) {
     ASSERT_EQ(r.picks.size(), o.picks.size());
     const scene::RayCaster caster(f.loaded.scene);
     const glm::vec2 size{float(W), float(H)};
-    const glm::mat4 viewProj = f.camera.viewProjection(size.x / size.y);
+    const glm::dmat4 viewProj = f.camera.viewProjection(size.x / size.y);
     const float extent = glm::length(f.loaded.scene.bounds().max - f.loaded.scene.bounds().min);
     for (size_t i = 0; i < o.picks.size(); ++i) {
         const auto& pixel = o.picks[i];
