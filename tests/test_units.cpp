@@ -25,6 +25,9 @@ TEST(Units, LengthsAreasAndPointsCarryTheirUnit) {
     EXPECT_EQ(scene::formatLength(2.0, scene::gltfUnit()), "2 m");
     EXPECT_EQ(scene::formatArea(628.3185307, mm), "628.319 mm\u00b2");
     EXPECT_EQ(scene::formatPoint({1, -2.5, 0}, mm), "(1, -2.5, 0) mm");
+    // A point at map coordinates keeps its centimetres (issue 35).
+    EXPECT_EQ(scene::formatPoint({458002.4259, 5439009.5708, 121.9374771}, scene::gltfUnit()),
+              "(458002.426, 5439009.57, 121.937477) m");
     // No unit is said, not left out.
     EXPECT_EQ(scene::formatLength(3.0, scene::generatedUnit()), "3 (no unit)");
     EXPECT_EQ(scene::formatArea(3.0, scene::generatedUnit()), "3 (no unit)");

@@ -15,11 +15,15 @@ LengthUnit generatedUnit() {
 
 namespace {
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
+std::string number(double value, int digits = 6) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
     return text;
 }
+
+// A coordinate gets more digits than a length: a point kilometres from the origin (a building
+// at its map position) still shows its centimetres, 458002.426 rather than 458002.
+constexpr int coordinateDigits = 9;
 
 std::string withUnit(const std::string& number, const LengthUnit& unit, const char* power) {
     if (unit.symbol.empty()) return number + " (no unit)";
@@ -39,7 +43,11 @@ std::string formatArea(double value, const LengthUnit& unit) {
 std::string formatPoint(glm::dvec3 p, const LengthUnit& unit) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string.
     std::string text = "(";
-    text.append(number(p.x)).append(", ").append(number(p.y)).append(", ").append(number(p.z));
+    text.append(number(p.x, coordinateDigits))
+        .append(", ")
+        .append(number(p.y, coordinateDigits))
+        .append(", ")
+        .append(number(p.z, coordinateDigits));
     return withUnit(text + ")", unit, "");
 }
 
