@@ -25,9 +25,9 @@ static bool intersect(glm::vec3 origin, glm::vec3 dir, glm::vec3 a, glm::vec3 b,
     return t >= 0.0f;
 }
 
-// Slab test of the segment origin + t * direction, t in [0, 1], against a box.
+// Slab test of the segment origin + t * direction, t in [0, ray.end], against a box.
 static bool hitsBox(const Ray& ray, const Bounds& box) {
-    float t0 = 0.0f, t1 = 1.0f;
+    float t0 = 0.0f, t1 = ray.end;
     for (int axis = 0; axis < 3; ++axis) {
         const float inv = 1.0f / ray.direction[axis]; // +-inf for axis-parallel rays is fine
         float a = (box.min[axis] - ray.origin[axis]) * inv;
@@ -108,7 +108,7 @@ std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden,
                 if (!intersect(origin, dir, v[idx[0]].position, v[idx[1]].position,
                                v[idx[2]].position, t, uv))
                     continue;
-                if (t > 1.0f || (best && t >= best->t)) continue; // beyond far plane, or behind
+                if (t > ray.end || (best && t >= best->t)) continue; // beyond far plane, or behind
                 if (section && !section->keeps(ray.origin + t * ray.direction)) continue;
                 best = Hit{object.uniquePartOffset + p, oi, p, t};
                 bestTriangle = idx;
