@@ -32,26 +32,27 @@ struct GapScene {
 };
 
 // The back face is added first or last: where two depths tie, the face drawn first stays, so
-// with the back face first only a depth that tells them apart lets the front one show.
+// with the back face first only a depth that tells them apart lets the front one show. Draws
+// go in geometry order (render/draw_list.cpp sorts them so), hence geometries in that order.
 GapScene gapScene(bool backFirst) {
     GapScene g;
     scene::Scene& s = g.scene;
     s.unit = {"mm", "the test"};
     const uint32_t grey = scene::addMaterial(s, "grey", {0.5f, 0.5f, 0.5f, 1});
-    const uint32_t front = facingSquare(s, 0.0f, kFrontHalf, "front");
-    const uint32_t back = facingSquare(s, kGap, kBackHalf, "back");
+    for (bool isBack : {backFirst, !backFirst}) {
+        const uint32_t geometry = isBack ? facingSquare(s, kGap, kBackHalf, "back")
+                                         : facingSquare(s, 0.0f, kFrontHalf, "front");
+        const uint32_t object =
+            scene::addObject(s, geometry, grey, glm::mat4(1.0f), isBack ? "back" : "front");
+        (isBack ? g.back : g.front) = s.objects[object].uniquePartOffset; // a face is one part
+    }
     // A post 1.87 m in front of the eye, far to its side (out of view): the scene begins
     // there, so no fixed ratio of the far plane may put the near plane past it.
     scene::MeshBuilder post;
     post.addBox({5.0e5f, -kDistance + 1900.0f, 0.0f}, {100.0f, 60.0f, 100.0f});
     const uint32_t postGeometry = post.finish(s, "post");
-    const uint32_t order[2][2] = {{front, back}, {back, front}};
-    for (uint32_t geometry : order[backFirst])
-        scene::addObject(s, geometry, grey, glm::mat4(1.0f), geometry == front ? "front" : "back");
     scene::addObject(s, postGeometry, grey, glm::mat4(1.0f), "post");
     scene::validate(s);
-    g.front = s.objects[backFirst ? 1 : 0].uniquePartOffset; // a face is one part
-    g.back = s.objects[backFirst ? 0 : 1].uniquePartOffset;
     return g;
 }
 
