@@ -29,9 +29,8 @@ using testing_support::shaderCopy;
 constexpr uint32_t SW = 64, SH = 48; // the sliver scene's image
 constexpr glm::uvec2 kSliver{32, 21};
 
-// A flat square in clip space (the tests draw with an identity camera, so x and y map
-// straight to pixels: x = px / 32 - 1, y = py / 24 - 1) at depth z (reversed: greater is
-// nearer).
+// A flat square in clip space (the tests draw with test_support.h's flat camera, so x and y
+// map straight to pixels: x = px / 32 - 1, y = py / 24 - 1) at z, nearer the smaller z.
 uint32_t square(scene::Scene& s, float x0, float y0, float x1, float y1, float z,
                 const char* name) {
     scene::MeshBuilder mb;
@@ -47,7 +46,7 @@ float py(float pixel) {
     return pixel / 24.0f - 1.0f;
 }
 
-// An occluder over pixels x < 32 at depth 0.7, and behind it at 0.4 a square over pixels
+// An occluder over pixels x < 32 at z 0.3, and behind it at 0.6 a square over pixels
 // 29.2..32.6 x 20.2..22.6: past the occluder's edge only the pixel column x = 32 shows it.
 // Its screen rectangle, pixels 29..32, spans two level-1 texels of the pyramid, the second
 // of which (pixels 32..35) holds the background: one pixel less on each side leaves only
@@ -55,9 +54,9 @@ float py(float pixel) {
 scene::Scene sliverScene() {
     scene::Scene s;
     const uint32_t grey = scene::addMaterial(s, "grey", {0.5f, 0.5f, 0.5f, 1});
-    const uint32_t occluder = square(s, -1.0f, -1.0f, px(32.0f), 1.0f, 0.7f, "occluder");
+    const uint32_t occluder = square(s, -1.0f, -1.0f, px(32.0f), 1.0f, 0.3f, "occluder");
     const uint32_t small =
-        square(s, px(29.2f), py(20.2f), px(32.6f), py(22.6f), 0.4f, "small part");
+        square(s, px(29.2f), py(20.2f), px(32.6f), py(22.6f), 0.6f, "small part");
     scene::addObject(s, occluder, grey, glm::mat4(1.0f), "occluder");
     scene::addObject(s, small, grey, glm::mat4(1.0f), "small part");
     scene::validate(s);
@@ -364,7 +363,7 @@ TEST(CullingSamples, APartShowingOnlyInLaterSamplesIsDrawnFirst) {
             rig.renderer.setScene(s, o.render);
             const app::Readback readback(rig.device, rig.extent);
             render::FrameParams params;
-            params.viewProj = glm::mat4(1.0f);
+            params.viewProj = testing_support::flatViewProj();
             for (uint64_t frame = 0; frame < 2; ++frame) {
                 render::FrameSlot& slot = rig.slots.begin(frame);
                 rig.renderer.record(slot, rig.targets, params);
