@@ -104,7 +104,7 @@ uint64_t hoverValue(uint id) {
     if (id == BACKGROUND_ID) return PICK_NONE;
     // Level 0 of a single-sample image, or sample 0 of a multisampled one.
     const float depth = texelFetch(depthImage, ivec2(compose.hoverPixel), 0).r;
-    return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(id);
+    return pickKey(depth, id);
 }
 
 // COMPOSE_WHOLE: one invocation of each subgroup that sees the hovered part adds the tile.

@@ -17,7 +17,9 @@
 const float CULL_RELATIVE_MARGIN = 1.0 / 524288.0;
 // Screen rectangles grow by this much on each side (vertices snap to 1/256 pixel).
 const float CULL_PIXEL_MARGIN = 1.0 / 16.0;
-// Depth comparisons keep this much apart for the rasterizer's depth interpolation.
+// Depth comparisons keep this much apart, relative to the depth, for the rasterizer's depth
+// interpolation: depth is reversed (scene/camera.h), far surfaces have small depths and float
+// rounding is relative to them.
 const float CULL_DEPTH_MARGIN = 1.0 / 1048576.0;
 // Pyramid texels read per side of a screen rectangle, at most: finer levels hug a rectangle
 // closer. Draws and clusters read up to 16 x 16, meshlets 8 x 8 (measured on the H100: the
@@ -60,13 +62,14 @@ bool allBitsInRange(uint64_t address, uint first, uint count) {
 }
 
 // A box seen by the camera: outside the frustum, or its screen rectangle (pixels) and its
-// nearest depth, unless it reaches behind the near plane (then it cannot be occluded).
+// nearest depth (the greatest: depth is reversed), unless it reaches in front of the near
+// plane (then it cannot be occluded).
 struct BoxView {
     bool outside;
     bool inside; // every corner inside every plane: so is all the box holds
     bool crossesNear;
     vec2 minPixel, maxPixel;
-    float minDepth;
+    float nearestDepth;
 };
 
 BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
@@ -80,13 +83,13 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
     mat4 mvp = frame.viewProj * world;
     vec4 c = mvp * vec4(center, 1.0);
     vec4 ex = mvp[0] * halfSize.x, ey = mvp[1] * halfSize.y, ez = mvp[2] * halfSize.z;
-    uint outsideAll = 63u; // planes every corner is outside of: -x +x -y +y near far
+    uint outsideAll = 63u; // planes every corner is outside of: -x +x -y +y far near
     uint outsideAny = 0u;  // planes some corner is outside of
     BoxView view;
     view.crossesNear = false;
     view.minPixel = vec2(1e30);
     view.maxPixel = vec2(-1e30);
-    view.minDepth = 1.0;
+    view.nearestDepth = 0.0;
     [[unroll]] for (uint i = 0u; i < 8u; ++i) {
         vec4 p = c + ((i & 1u) != 0u ? ex : -ex) + ((i & 2u) != 0u ? ey : -ey) +
                  ((i & 4u) != 0u ? ez : -ez);
@@ -95,7 +98,7 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
                        (p.z < 0.0 ? 16u : 0u) | (p.z > p.w ? 32u : 0u);
         outsideAll &= outside;
         outsideAny |= outside;
-        if (p.w <= 0.0 || p.z < 0.0) {
+        if (p.w <= 0.0 || p.z > p.w) {
             view.crossesNear = true;
             continue;
         }
@@ -103,7 +106,7 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
         vec2 pixel = (ndc.xy * 0.5 + 0.5) * vec2(frame.viewport);
         view.minPixel = min(view.minPixel, pixel);
         view.maxPixel = max(view.maxPixel, pixel);
-        view.minDepth = min(view.minDepth, ndc.z);
+        view.nearestDepth = max(view.nearestDepth, ndc.z);
     }
     view.outside = outsideAll != 0u;
     view.inside = outsideAny == 0u;
@@ -129,12 +132,12 @@ bool occluded(FrameData frame, BoxView view, int span) {
     PyramidLevel level = pyramid.header.level[k];
     ivec2 t0 = first >> (k + 1u);
     ivec2 t1 = min(end >> (k + 1u), ivec2(level.width, level.height) - 1);
-    // Hidden where every texel holds a depth no farther than the box's nearest, less the
+    // Hidden where every texel holds a depth no farther than the box's nearest, plus the
     // margin: the first texel that does not decides (boxes in view, the most tested, stop soon).
-    float nearest = view.minDepth - CULL_DEPTH_MARGIN;
+    float nearest = view.nearestDepth * (1.0 + CULL_DEPTH_MARGIN);
     for (int y = t0.y; y <= t1.y; ++y)
         for (int x = t0.x; x <= t1.x; ++x)
-            if (pyramid.depth[level.offset + uint(y) * level.width + uint(x)] > nearest)
+            if (pyramid.depth[level.offset + uint(y) * level.width + uint(x)] < nearest)
                 return false;
     return true;
 }

@@ -1,7 +1,8 @@
 #version 460
 // depth_pyramid.comp - up to PYRAMID_LEVELS_PER_PASS levels of the depth pyramid (shared.h
 // PyramidHeader) in one dispatch, from the depth attachment (the first pass, level 0: the
-// farthest depth of every sample of 2 x 2 pixels; IDV_PYRAMID_MSAA: a multisampled one) or
+// farthest depth of every sample of 2 x 2 pixels, the least, depth being reversed;
+// IDV_PYRAMID_MSAA: a multisampled one) or
 // from the last level of the pass before. Each workgroup reduces a tile of its first level
 // down to one texel in shared memory; texels past an edge are left out, so a texel covers
 // exactly its pixels and the occlusion test (cull.glsl) stays conservative.
@@ -30,22 +31,23 @@ layout(buffer_reference, std430, buffer_reference_align = 16) buffer PyramidRef 
 // Level-by-level halves of the tile: PYRAMID_GROUP texels a side, then half of that, ...
 shared float tile[PYRAMID_GROUP][PYRAMID_GROUP];
 
-// The farthest depth at input position `p` (a pixel, or a texel of the level below the
-// pass's first), 0 past the edge: depths are 0 or more, so 0 never wins a max.
+// The farthest (least: depth is reversed) depth at input position `p` (a pixel, or a texel of
+// the level below the pass's first), 1 past the edge: depths are 1 or less, so 1 never wins a
+// min.
 float sourceDepth(PyramidRef p, ivec2 at) {
     if (pyramid.level == 0u) {
-        if (any(greaterThanEqual(uvec2(at), pyramid.extent))) return 0.0;
+        if (any(greaterThanEqual(uvec2(at), pyramid.extent))) return 1.0;
 #if IDV_PYRAMID_MSAA
-        float farthest = 0.0;
+        float farthest = 1.0;
         for (int s = 0; s < int(pyramid.samples); ++s)
-            farthest = max(farthest, texelFetch(depthImage, at, s).r);
+            farthest = min(farthest, texelFetch(depthImage, at, s).r);
         return farthest;
 #else
         return texelFetch(depthImage, at, 0).r;
 #endif
     }
     PyramidLevel below = p.header.level[pyramid.level - 1u];
-    if (uint(at.x) >= below.width || uint(at.y) >= below.height) return 0.0;
+    if (uint(at.x) >= below.width || uint(at.y) >= below.height) return 1.0;
     return p.depth[below.offset + uint(at.y) * below.width + uint(at.x)];
 }
 
@@ -62,22 +64,22 @@ void main() {
     // The first level: one texel per invocation, from 2 x 2 inputs.
     uvec2 texel = gl_WorkGroupID.xy * PYRAMID_GROUP + lane;
     ivec2 at = ivec2(texel * 2u);
-    float farthest = max(max(sourceDepth(p, at), sourceDepth(p, at + ivec2(1, 0))),
-                         max(sourceDepth(p, at + ivec2(0, 1)), sourceDepth(p, at + ivec2(1, 1))));
+    float farthest = min(min(sourceDepth(p, at), sourceDepth(p, at + ivec2(1, 0))),
+                         min(sourceDepth(p, at + ivec2(0, 1)), sourceDepth(p, at + ivec2(1, 1))));
     store(p, pyramid.level, texel, farthest);
     tile[lane.y][lane.x] = farthest;
     // The next levels within the tile: PYRAMID_GROUP / 2, / 4, ... texels a side. Texels
-    // past the level's edge hold 0 from the inputs past it, so they never win a max.
+    // past the level's edge hold 1 from the inputs past it, so they never win a min.
     uint size = PYRAMID_GROUP;
     for (uint level = pyramid.level + 1u; size > 1u; ++level) {
         barrier();
         size >>= 1;
-        float value = 0.0;
+        float value = 1.0;
         bool inLevel = all(lessThan(lane, uvec2(size)));
         if (inLevel) {
             uvec2 s = lane * 2u;
-            value = max(max(tile[s.y][s.x], tile[s.y][s.x + 1u]),
-                        max(tile[s.y + 1u][s.x], tile[s.y + 1u][s.x + 1u]));
+            value = min(min(tile[s.y][s.x], tile[s.y][s.x + 1u]),
+                        min(tile[s.y + 1u][s.x], tile[s.y + 1u][s.x + 1u]));
         }
         barrier();
         if (inLevel) {

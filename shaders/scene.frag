@@ -130,8 +130,7 @@ void main() {
     // With MSAA, sample 0 decides, as in the resolve of the ID attachment (see targets.h):
     // only fragments covering it take part. Without MSAA the mask is always 1.
     if (uvec2(gl_FragCoord.xy) == frame.pickPixel && (gl_SampleMaskIn[0] & 1) != 0) {
-        uint64_t depthBits = uint64_t(floatBitsToUint(depth));
-        atomicMin(pick.pick.current, (depthBits << 32) | uint64_t(uniquePartId));
+        atomicMin(pick.pick.current, pickKey(depth, uniquePartId));
     }
     outColor = vec4(color, 1.0);
 #endif

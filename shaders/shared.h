@@ -134,9 +134,10 @@ IDV_CONST OBJECT_MATERIAL = 0xFFFFFFFFu;
 // is hidden: with early tests a discarded fragment would still write depth.
 
 // The pick: during the scene pass, fragments at FrameData::pickPixel atomicMin `current` with
-// (depth bits << 32 | unique part ID); positive floats order like their bits, so the nearest
-// surface wins. After the pass `current` is copied to `last` and to the frame slot's
-// host-visible readback. (The hovered part's highlight reads the ID image: compose.comp.)
+// pickKey (~depth bits << 32 | unique part ID); positive floats order like their bits, and
+// depth is reversed (nearer is greater), so the inverted bits make the nearest surface win.
+// After the pass `current` is copied to `last` and to the frame slot's host-visible readback.
+// (The hovered part's highlight reads the ID image: compose.comp.)
 struct PickData {
     uint64_t current; // reset to PICK_NONE before each pass
     uint64_t last;
@@ -145,6 +146,9 @@ struct PickData {
 constexpr uint64_t PICK_NONE = ~uint64_t(0);
 #else
 const uint64_t PICK_NONE = 0xFFFFFFFFFFFFFFFFul;
+uint64_t pickKey(float depth, uint uniquePartId) {
+    return (uint64_t(~floatBitsToUint(depth)) << 32) | uint64_t(uniquePartId);
+}
 #endif
 
 // What one draw of a draw list needs. `push` mode pushes it; the mdi modes read it from the
@@ -379,8 +383,9 @@ struct CullStats {
 };
 
 // The depth pyramid (render/culling.h): level 0 holds, per 2x2 pixels, the farthest depth of
-// any sample; level k + 1 the farthest of 2x2 texels of level k. Texel (x, y) of level k
-// covers pixels [x, x + 1) * 2^(k + 1) exactly, edges clipped to the image.
+// any sample (the least: depth is reversed, scene/camera.h); level k + 1 the farthest of 2x2
+// texels of level k. Texel (x, y) of level k covers pixels [x, x + 1) * 2^(k + 1) exactly,
+// edges clipped to the image.
 struct PyramidLevel {
     uint offset; // first float of the level, after the header
     uint width, height;

@@ -1,7 +1,8 @@
 // test_camera.cpp - the camera's maths in both projections: the standard views against
 // FreeCAD's own camera rotations, fitting that keeps every corner of the bounds in view,
 // switching projections keeping the target's size, pixel rays and unprojection round trips
-// in ortho, and the world box of selected parts that F fits.
+// in both projections (reversed depth, perspective to infinity), the near plane from the scene,
+// and the world box of selected parts that F fits.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -192,13 +193,63 @@ TEST(Camera, OrthoPixelRaysAreParallelAndUnprojectRoundTrips) {
         const scene::Ray ray = scene::pixelRay(viewProj, size, pixel);
         expectNear(glm::normalize(ray.direction), forward, 1e-5, "ray direction");
         const glm::dvec4 origin = viewProj * glm::dvec4(ray.origin, 1.0);
-        EXPECT_NEAR(origin.z, 0.0, 1e-5); // on the near plane
+        EXPECT_NEAR(origin.z, 1.0, 1e-5); // on the near plane (reversed depth: 1)
         const glm::dvec3 toPoint = point - ray.origin;
         const double along = glm::dot(toPoint, forward);
         EXPECT_LT(glm::length(toPoint - along * forward), 1e-4);
         expectNear(scene::unprojectPixel(viewProj, size, pixel, clip.z), point, 1e-4,
                    "unprojected");
     }
+}
+
+// Perspective depth is reversed with the far plane at infinity: 1 at the near plane, near /
+// distance beyond it; every pixel's ray starts on the near plane and goes on without end
+// (the CPU ray cast reaches anything in view), and unprojecting a pixel's depth gives the
+// point back to float precision relative to its distance, a kilometre away too.
+TEST(Camera, PerspectiveDepthIsReversedToInfinityAndUnprojectsFarPoints) {
+    scene::Camera camera;
+    camera.eye = {3, -2, 1};
+    camera.target = {3, 10, 1};
+    camera.nearPlane = 0.5;
+    const glm::dvec2 size(300, 200);
+    const glm::dmat4 viewProj = camera.viewProjection(size.x / size.y);
+    const glm::dvec4 atNear = viewProj * glm::dvec4(3, -1.5, 1, 1);
+    EXPECT_NEAR(atNear.z / atNear.w, 1.0, 1e-6);
+    double lastDepth = 1.0;
+    for (double distance : {1.0, 40.0, 1e3, 1e6}) {
+        const glm::dvec3 point = camera.eye + glm::dvec3(0.3, 1.0, -0.2) * distance;
+        const glm::dvec4 clip = viewProj * glm::dvec4(point, 1.0);
+        const double depth = clip.z / clip.w;
+        EXPECT_LT(depth, lastDepth) << "farther must be less deep";
+        EXPECT_GT(depth, 0.0);
+        lastDepth = depth;
+        const glm::dvec2 pixel = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * size;
+        const scene::Ray ray = scene::pixelRay(viewProj, size, pixel);
+        EXPECT_TRUE(std::isinf(ray.end));
+        const glm::dvec4 origin = viewProj * glm::dvec4(ray.origin, 1.0);
+        EXPECT_NEAR(origin.z / origin.w, 1.0, 1e-5); // on the near plane
+        const double length = glm::length(point - camera.eye);
+        expectNear(scene::unprojectPixel(viewProj, size, pixel, depth), point, 1e-5 * length,
+                   "unprojected at " + std::to_string(distance));
+        expectNear(ray.origin + scene::rayParameterAtDepth(viewProj, depth) * ray.direction, point,
+                   1e-5 * length, "along the ray");
+    }
+}
+
+// The near plane comes from the scene and the eye: the scene's nearest depth when it lies
+// wholly in front, whatever the far plane; a floor relative to its size from inside it.
+TEST(Camera, NearPlaneFollowsTheScenesNearestPoint) {
+    scene::Camera camera;
+    camera.eye = {0, -1000, 0};
+    camera.target = {0, 0, 0};
+    scene::fitPlanes(camera, box({-1, -10, -1}, {1, 5000, 1}));
+    EXPECT_LE(camera.nearPlane, 990.0);
+    EXPECT_GT(camera.nearPlane, 980.0);
+    camera.eye = {0, 0, 0};
+    camera.target = {0, 10, 0};
+    scene::fitPlanes(camera, box({-1, -10, -1}, {1, 5000, 1}));
+    EXPECT_GT(camera.nearPlane, 0.0);
+    EXPECT_LT(camera.nearPlane, 0.1);
 }
 
 // F fits the world box of the selected parts' triangles: two tiles of makeTiles, placed by

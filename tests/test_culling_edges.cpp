@@ -29,8 +29,8 @@ using testing_support::shaderCopy;
 constexpr uint32_t SW = 64, SH = 48; // the sliver scene's image
 constexpr glm::uvec2 kSliver{32, 21};
 
-// A flat square in clip space (the tests draw with an identity camera, so x and y map
-// straight to pixels: x = px / 32 - 1, y = py / 24 - 1) at depth z.
+// A flat square in clip space (the tests draw with test_support.h's flat camera, so x and y
+// map straight to pixels: x = px / 32 - 1, y = py / 24 - 1) at z, nearer the smaller z.
 uint32_t square(scene::Scene& s, float x0, float y0, float x1, float y1, float z,
                 const char* name) {
     scene::MeshBuilder mb;
@@ -46,7 +46,7 @@ float py(float pixel) {
     return pixel / 24.0f - 1.0f;
 }
 
-// An occluder over pixels x < 32 at depth 0.3, and behind it at 0.6 a square over pixels
+// An occluder over pixels x < 32 at z 0.3, and behind it at 0.6 a square over pixels
 // 29.2..32.6 x 20.2..22.6: past the occluder's edge only the pixel column x = 32 shows it.
 // Its screen rectangle, pixels 29..32, spans two level-1 texels of the pyramid, the second
 // of which (pixels 32..35) holds the background: one pixel less on each side leaves only
@@ -363,7 +363,7 @@ TEST(CullingSamples, APartShowingOnlyInLaterSamplesIsDrawnFirst) {
             rig.renderer.setScene(s, o.render);
             const app::Readback readback(rig.device, rig.extent);
             render::FrameParams params;
-            params.viewProj = glm::mat4(1.0f);
+            params.viewProj = testing_support::flatViewProj();
             for (uint64_t frame = 0; frame < 2; ++frame) {
                 render::FrameSlot& slot = rig.slots.begin(frame);
                 rig.renderer.record(slot, rig.targets, params);

@@ -344,10 +344,11 @@ TEST(Pick, OrthoPicksAgreeWithTheIdImageAndTheRayCast) {
     }
 }
 
-// The decode of the packed value: depth bits high, part low, all ones for nothing.
+// The decode of the packed value: depth bits inverted high (shared.h pickKey), part low, all
+// ones for nothing.
 TEST(PickDecode, SplitsDepthAndPart) {
     const float depth = 0.25f;
-    const uint64_t value = (uint64_t(std::bit_cast<uint32_t>(depth)) << 32) | 1234u;
+    const uint64_t value = (uint64_t(~std::bit_cast<uint32_t>(depth)) << 32) | 1234u;
     const auto reading = render::decodePick(value, 7, {3, 4});
     EXPECT_EQ(reading.part, 1234u);
     EXPECT_EQ(reading.depth, depth);

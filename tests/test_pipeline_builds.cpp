@@ -55,7 +55,7 @@ struct Rig {
     // Records and submits a frame without waiting for it (as the viewer's loop does).
     void submit() {
         render::FrameParams params;
-        params.viewProj = glm::mat4(1.0f);
+        params.viewProj = testing_support::flatViewProj();
         render::FrameSlot& slot = rig.slots.begin(frame++);
         rig.renderer.record(slot, rig.targets, params);
         rig.slots.submit(slot);

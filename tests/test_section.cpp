@@ -4,6 +4,7 @@
 // hiding and every technique under a section: test_id_passes.cpp's Sectioned cases.)
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <filesystem>
 
 #include "app/headless.h"
@@ -123,6 +124,37 @@ TEST(Section, CutSolidMatchesTheRaycastAndCapsShowInTheCapColour) {
     EXPECT_GT(surfaces, 500u);
 }
 
+// The depth at `pixel` of the nearest surface with every part but `part` hidden (culling off).
+float depthOfPartAt(app::Options o, const scene::Scene& s, const scene::Camera& camera,
+                    uint32_t part, uint32_t pixel) {
+    o.render.culling.mode = render::CullMode::Off;
+    o.picks = {{pixel % W, pixel / W}};
+    for (uint32_t p = 0; p < s.uniquePartCount(); ++p)
+        if (p != part) o.hide.push_back(p);
+    const auto r = app::renderHeadless(o, s, camera);
+    EXPECT_EQ(r.picks.at(0).part, part);
+    return r.picks.at(0).depth;
+}
+
+// Equal images, but for pixels where the two parts shown tie exactly in depth: after a plane
+// moves, the last ID image (of another cut) may send either first, and the first drawn wins a
+// tie. Reversed depth made one such tie in this scene (parts 1521 and 1536 at 209,109).
+void expectSameUpToTies(const std::vector<uint32_t>& got, const std::vector<uint32_t>& alone,
+                        const app::Options& o, const scene::Scene& s, const scene::Camera& camera,
+                        size_t config) {
+    ASSERT_EQ(got.size(), alone.size());
+    size_t differing = 0;
+    for (uint32_t k = 0; k < got.size(); ++k) {
+        if (got[k] == alone[k]) continue;
+        ASSERT_LT(++differing, 4u) << config << ": more pixels differ than ties explain";
+        ASSERT_NE(got[k], gpu::BACKGROUND_ID) << config;
+        ASSERT_NE(alone[k], gpu::BACKGROUND_ID) << config;
+        EXPECT_EQ(std::bit_cast<uint32_t>(depthOfPartAt(o, s, camera, got[k], k)),
+                  std::bit_cast<uint32_t>(depthOfPartAt(o, s, camera, alone[k], k)))
+            << config << ": pixel " << k << " differs without a tie";
+    }
+}
+
 // Occlusion culling keeps state from frame to frame (the last ID image, the depth pyramid,
 // the lists of a still view): moving only a plane shows what the view hid, and each cut of
 // one sequence, the camera standing, draws what it draws alone. A procedural assembly, where
@@ -151,7 +183,7 @@ TEST(Section, MovingAPlaneInAStillViewCullsAnew) {
         app::Options alone = o;
         alone.render = configs[i];
         const auto single = app::renderHeadless(alone, loaded.scene, camera);
-        EXPECT_EQ(results[i].ids, single.ids) << i;
+        expectSameUpToTies(results[i].ids, single.ids, alone, loaded.scene, camera, i);
         if (i > 0) {
             EXPECT_NE(results[i].ids, results[i - 1].ids) << i; // each cut is another image
         }

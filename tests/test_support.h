@@ -32,11 +32,20 @@ inline render::RenderSettings settingsFor(const render::Technique& technique,
     return settings;
 }
 
-// One frame of `rig` through an identity camera (frame number `frame`, then counted on),
+// The tests' flat camera: x and y straight to the image, depth 1 - z, so that with reversed
+// depth (scene/camera.h) a smaller z is still nearer and z = 0 lies on the near plane.
+inline glm::mat4 flatViewProj() {
+    glm::mat4 viewProj(1.0f);
+    viewProj[2][2] = -1.0f;
+    viewProj[3][2] = 1.0f;
+    return viewProj;
+}
+
+// One frame of `rig` through the flat camera (frame number `frame`, then counted on),
 // waited for, and its ID image.
 inline std::vector<uint32_t> renderIds(app::Offscreen& rig, uint64_t& frame) {
     render::FrameParams params;
-    params.viewProj = glm::mat4(1.0f);
+    params.viewProj = flatViewProj();
     render::FrameSlot& slot = rig.slots.begin(frame++);
     rig.renderer.record(slot, rig.targets, params);
     const app::Readback readback(rig.device, rig.extent);

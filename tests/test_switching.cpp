@@ -84,7 +84,7 @@ struct Frames {
     // Records and submits one frame; returns its number.
     uint64_t submit() {
         render::FrameParams params;
-        params.viewProj = glm::mat4(1.0f);
+        params.viewProj = testing_support::flatViewProj();
         params.pickPixel = glm::uvec2(1, 1);
         render::FrameSlot& slot = rig.slots.begin(next);
         rig.renderer.record(slot, rig.targets, params);

@@ -160,7 +160,7 @@ void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassP
     std::array<VkClearValue, 3> clears{};
     clears[0].color = {{0.16f, 0.17f, 0.19f, 1.0f}};
     clears[1].color.uint32[0] = gpu::BACKGROUND_ID;
-    clears[2].depthStencil = {1.0f, 0};
+    clears[2].depthStencil = {0.0f, 0}; // reversed depth: 0 is the far plane
     auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
     begin.renderPass = targets.pass().handle(part);
     begin.framebuffer = targets.framebuffer(part);

@@ -20,14 +20,15 @@ struct PickReading {
     uint64_t frame = 0;           // FrameSlots frame number the pick was rendered in
     glm::uvec2 pixel{0};          // framebuffer pixel, top-left origin
     std::optional<uint32_t> part; // unique part ID; nullopt: background
-    float depth = 1.0f;           // framebuffer depth of the nearest fragment (0 near, 1 far)
+    float depth = 0.0f;           // framebuffer depth of the nearest fragment (1 near, 0 far)
 };
 
 inline PickReading decodePick(uint64_t value, uint64_t frame, glm::uvec2 pixel) {
-    PickReading reading{frame, pixel, std::nullopt, 1.0f};
+    PickReading reading{frame, pixel, std::nullopt, 0.0f};
     if (value == gpu::PICK_NONE) return reading;
     reading.part = static_cast<uint32_t>(value & 0xFFFFFFFFu);
-    reading.depth = std::bit_cast<float>(static_cast<uint32_t>(value >> 32));
+    // The depth bits are stored inverted (shared.h pickKey): nearer, greater depth, less key.
+    reading.depth = std::bit_cast<float>(~static_cast<uint32_t>(value >> 32));
     return reading;
 }
 

@@ -123,7 +123,9 @@ vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
     depth.depthTestEnable = VK_TRUE;
     depth.depthWriteEnable = VK_TRUE;
-    depth.depthCompareOp = VK_COMPARE_OP_LESS;
+    // Reversed depth (scene/camera.h): nearer is greater. Where two surfaces tie the one
+    // drawn first stays, as LESS kept it.
+    depth.depthCompareOp = VK_COMPARE_OP_GREATER;
 
     // Full write masks; no-id masks the ID attachment off entirely (its shader writes no ID),
     // which needs the independentBlend feature.

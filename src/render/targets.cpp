@@ -12,6 +12,9 @@
 
 namespace render {
 
+// Float depth first: reversed depth (scene/camera.h) keeps its relative precision at every
+// distance only in a float format. Vulkan guarantees D32_SFLOAT or X8_D24 (every desktop driver
+// and lavapipe offer D32_SFLOAT); the fixed-point fallbacks draw, with far less precision far off.
 static VkFormat pickDepthFormat(VkPhysicalDevice physical) {
     for (VkFormat format :
          {VK_FORMAT_D32_SFLOAT, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D16_UNORM}) {

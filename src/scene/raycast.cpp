@@ -29,9 +29,9 @@ static bool intersect(glm::dvec3 origin, glm::dvec3 dir, glm::dvec3 a, glm::dvec
     return t >= 0.0;
 }
 
-// Slab test of the segment origin + t * direction, t in [0, 1], against a box.
+// Slab test of the segment origin + t * direction, t in [0, ray.end], against a box.
 static bool hitsBox(const Ray& ray, const Bounds& box) {
-    double t0 = 0.0, t1 = 1.0;
+    double t0 = 0.0, t1 = ray.end;
     for (int axis = 0; axis < 3; ++axis) {
         const double inv = 1.0 / ray.direction[axis]; // +-inf for axis-parallel rays is fine
         double a = (box.min[axis] - ray.origin[axis]) * inv;
@@ -113,7 +113,8 @@ std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden,
                                glm::dvec3(v[idx[1]].position), glm::dvec3(v[idx[2]].position), t,
                                uv))
                     continue;
-                if (t > 1.0 || (best && t >= best->t)) continue; // beyond far plane, or behind
+                if (t > ray.end || (best && t >= best->t))
+                    continue; // beyond the far plane, or behind
                 if (section && !section->keeps(ray.origin + t * ray.direction)) continue;
                 best = Hit{object.uniquePartOffset + p, oi, p, t};
                 bestTriangle = idx;

@@ -129,7 +129,7 @@ class Input {
     uint64_t visibleFrame_ = 0; // the frame visibleParts_ was counted in
     uint32_t visibleParts_ = 0;
     Selection selection_;
-    float hoveredDepth_ = 1.0f, selectedDepth_ = 1.0f;
+    float hoveredDepth_ = 0.0f, selectedDepth_ = 0.0f; // reversed: 0 is the far plane
     std::optional<render::PickReading> hoverPick_;
     std::optional<uint64_t> pendingClick_; // the frame whose pick the click selects from
     uint32_t pendingLevel_ = 0;            // what it selects (ViewSettings::selectLevel)
