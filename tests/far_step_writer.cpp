@@ -37,6 +37,17 @@ TopLoc_Location placed(gp_Vec offset, double degrees = 0.0) {
     return TopLoc_Location(move * turn);
 }
 
+// Writes `doc` as STEP with its names, and closes it.
+bool writeDocument(const Handle(XCAFApp_Application) & app, Handle(TDocStd_Document) & doc,
+                   const char* path) {
+    STEPCAFControl_Writer writer;
+    writer.SetNameMode(true);
+    const bool ok =
+        writer.Transfer(doc, STEPControl_AsIs) && writer.Write(path) == IFSelect_RetDone;
+    app->Close(doc);
+    return ok;
+}
+
 bool write(const char* path, gp_Vec offset) {
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
     Handle(TDocStd_Document) doc;
@@ -76,12 +87,7 @@ bool write(const char* path, gp_Vec offset) {
     component(site, machine, placed(offset), "machine at site");
     shapes->UpdateAssemblies();
 
-    STEPCAFControl_Writer writer;
-    writer.SetNameMode(true);
-    const bool ok =
-        writer.Transfer(doc, STEPControl_AsIs) && writer.Write(path) == IFSelect_RetDone;
-    app->Close(doc);
-    return ok;
+    return writeDocument(app, doc, path);
 }
 
 // Two faces `gap` mm apart seen from about a kilometre: a 500 m square slab (top at z = 0) and
@@ -99,12 +105,7 @@ bool writeGap(const char* path, double gap) {
         BRepPrimAPI_MakeBox(gp_Pnt(-1.5e5, -1.5e5, gap - 10.0), gp_Pnt(1.5e5, 1.5e5, gap)).Shape(),
         false);
     TDataStd_Name::Set(sheet, "sheet");
-    STEPCAFControl_Writer writer;
-    writer.SetNameMode(true);
-    const bool ok =
-        writer.Transfer(doc, STEPControl_AsIs) && writer.Write(path) == IFSelect_RetDone;
-    app->Close(doc);
-    return ok;
+    return writeDocument(app, doc, path);
 }
 
 } // namespace

@@ -17,34 +17,6 @@
 
 namespace {
 
-// Background pixels no 4-connected path of background pixels joins to the image's border.
-std::vector<size_t> enclosedBackground(const std::vector<uint32_t>& ids, uint32_t w, uint32_t h) {
-    std::vector<uint8_t> outside(ids.size(), 0);
-    std::vector<size_t> stack;
-    auto visit = [&](uint32_t x, uint32_t y) {
-        const size_t i = size_t(y) * w + x;
-        if (ids[i] == gpu::BACKGROUND_ID && !outside[i]) {
-            outside[i] = 1;
-            stack.push_back(i);
-        }
-    };
-    for (uint32_t x = 0; x < w; ++x) visit(x, 0), visit(x, h - 1);
-    for (uint32_t y = 0; y < h; ++y) visit(0, y), visit(w - 1, y);
-    while (!stack.empty()) {
-        const size_t i = stack.back();
-        stack.pop_back();
-        const uint32_t x = uint32_t(i % w), y = uint32_t(i / w);
-        if (x > 0) visit(x - 1, y);
-        if (x + 1 < w) visit(x + 1, y);
-        if (y > 0) visit(x, y - 1);
-        if (y + 1 < h) visit(x, y + 1);
-    }
-    std::vector<size_t> enclosed;
-    for (size_t i = 0; i < ids.size(); ++i)
-        if (ids[i] == gpu::BACKGROUND_ID && !outside[i]) enclosed.push_back(i);
-    return enclosed;
-}
-
 // Whether one object's triangles cover the pixel's centre on all four sides, by the CPU's ray
 // cast 0.02 pixel from it diagonally: background there shows through a seam of that object
 // (where the centre ray itself hits, the GPU missed a covered sample; where it misses too, the
@@ -108,7 +80,8 @@ TEST(CadClosedSolids, NoBackgroundShowsThroughAClosedModel) {
                 const scene::Camera camera =
                     scene::cameraOnPath(o.cameraPath, start, loaded.scene.bounds(), f, frames);
                 const glm::dmat4 viewProj = camera.viewProjection(aspect);
-                const std::vector<size_t> enclosed = enclosedBackground(r.frames[f].ids, w, h);
+                const std::vector<size_t> enclosed =
+                    testing_support::enclosedBackground(r.frames[f].ids, w, h);
                 std::ostringstream cracks;
                 size_t count = 0;
                 for (size_t pixel : enclosed)

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "app/cli.h"
 #include "app/offscreen.h"
@@ -60,6 +61,36 @@ inline std::string testName(std::string name) {
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
     return name;
+}
+
+// Background pixels no 4-connected path of background pixels joins to the image's border:
+// where a closed model shows them, the background shows through a hole between its faces.
+inline std::vector<size_t> enclosedBackground(const std::vector<uint32_t>& ids, uint32_t w,
+                                              uint32_t h) {
+    std::vector<uint8_t> outside(ids.size(), 0);
+    std::vector<size_t> stack;
+    auto visit = [&](uint32_t x, uint32_t y) {
+        const size_t i = size_t(y) * w + x;
+        if (ids[i] == gpu::BACKGROUND_ID && !outside[i]) {
+            outside[i] = 1;
+            stack.push_back(i);
+        }
+    };
+    for (uint32_t x = 0; x < w; ++x) visit(x, 0), visit(x, h - 1);
+    for (uint32_t y = 0; y < h; ++y) visit(0, y), visit(w - 1, y);
+    while (!stack.empty()) {
+        const size_t i = stack.back();
+        stack.pop_back();
+        const uint32_t x = uint32_t(i % w), y = uint32_t(i / w);
+        if (x > 0) visit(x - 1, y);
+        if (x + 1 < w) visit(x + 1, y);
+        if (y > 0) visit(x, y - 1);
+        if (y + 1 < h) visit(x, y + 1);
+    }
+    std::vector<size_t> enclosed;
+    for (size_t i = 0; i < ids.size(); ++i)
+        if (ids[i] == gpu::BACKGROUND_ID && !outside[i]) enclosed.push_back(i);
+    return enclosed;
 }
 
 } // namespace testing_support
