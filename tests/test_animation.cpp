@@ -61,7 +61,8 @@ TEST(ExplodeMaths, ExplodedSceneMovesTranslationsOnly) {
     }
 
     const scene::Scene some = scene::explodedScene(rest, 0.6f);
-    const float x = -3.0f + -4.5f * 0.6f; // the reference's operations, rounded the same way
+    // The reference's operations, rounded the same way: the step in float, the add in double.
+    const double x = -3.0 + double(-4.5f * 0.6f);
     EXPECT_EQ(some.objects[0].world[3].x, x);
 }
 

@@ -14,8 +14,8 @@
 #include "app/scene_source.h"
 #include "render/technique.h"
 #include "scene/raycast.h"
-#include "util/json_number.h"
 #include "test_support.h"
+#include "util/json_number.h"
 
 namespace {
 
