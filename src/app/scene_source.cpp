@@ -89,8 +89,10 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
 }
 
 // CAD loads report on stderr once they have taken a second: "idview: loading FILE:
-// tessellating 40%", one line per stage and tenth at most.
+// tessellating 40%", one line per stage and tenth at most. Only a person at a terminal reads
+// progress; a script or a log capturing stderr gets its errors alone, however long the load.
 scene::CadProgress stderrProgress(const std::string& source) {
+    if (!isatty(STDERR_FILENO)) return [](const char*, double) {};
     struct State {
         std::mutex mutex;
         std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
