@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,8 @@
 #include "shared.h"
 
 namespace scene {
+
+class BrepShapes; // scene/cad/brep_shapes.h
 
 using Vertex = gpu::Vertex;
 
@@ -107,6 +110,9 @@ struct Scene {
     // What the coordinates are in: set where the scene is loaded (app::loadScene), for every
     // length the viewer and the JSON show.
     LengthUnit unit = generatedUnit();
+    // CAD files: the exact shapes behind the geometries (scene/cad/brep_shapes.h), shared by
+    // copies of the scene; null for glTF and generated scenes.
+    std::shared_ptr<const BrepShapes> brep;
 
     const Part& part(const Object& object, uint32_t localPart) const {
         return parts[geometries[object.geometry].firstPart + localPart];

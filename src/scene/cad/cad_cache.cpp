@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "scene/cad/brep_shapes.h"
 #include "scene/cad/scene_codec.h"
 #include "util/cache_file.h"
 #include "util/hash64.h"
@@ -42,6 +43,7 @@ CadLoadResult getResult(ByteReader& in) {
     CadLoadResult r;
     r.scene = decodeScene(in);
     resultFields(in, r);
+    r.scene.brep = decodeBrep(in.getBytes());
     if (!in.done()) throw std::runtime_error("bytes after the load");
     return r;
 }
@@ -148,6 +150,8 @@ std::string writeCadCache(const fs::path& entry, const CadCacheKey& key,
     keyFields(keyBytes, key);
     encodeScene(result.scene, payload);
     resultFields(payload, result);
+    if (!result.scene.brep) return "the load kept no B-rep";
+    payload.putString(encodeBrep(*result.scene.brep));
     for (char c : kMagic) head.put(c);
     head.put(kCadCacheVersion);
     head.putString(keyBytes.bytes());

@@ -1,7 +1,7 @@
 // cad_cache.h - CAD tessellations kept on disk, so that a file opened again skips Open
 // CASCADE: one entry per file path and tessellation settings in util::cacheFolder()
 // (util/cache_file.h), holding what loadCad returned (the scene with its levels of detail, the
-// warnings, the deflection used, the face counts). An entry is used only when its magic, format
+// warnings, the deflection used, the face counts, the B-rep shapes). An entry is used only when its magic, format
 // version, key (the path, the file's size and content hash, the deflections and levels asked for)
 // and the checksum of its payload all match and the payload decodes to a valid scene; anything else
 // is a miss, and the entry is written anew (to a temporary file renamed over it, so that a
@@ -23,8 +23,9 @@
 namespace scene {
 
 // Bumped whenever the entry layout or what the loader puts in a scene changes.
-// 4: placements in double; 3: IGES gaps sewn, edge points shared.
-constexpr uint32_t kCadCacheVersion = 4;
+// 5: the B-rep kept (brep_shapes.h); 4: placements in double; 3: IGES gaps sewn, edge points
+// shared.
+constexpr uint32_t kCadCacheVersion = 5;
 
 struct CadCacheKey {
     std::string path; // absolute, symbolic links resolved

@@ -2,6 +2,8 @@
 // distinct shape sewn where the format needs it, tessellated once (in parallel) and turned
 // into a geometry with one part per triangulated face.
 #include "scene/cad/cad_loader.h"
+
+#include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_check.h"
 
 #include "scene/cad/cad_mesh.h"
@@ -23,6 +25,7 @@
 #include <optional>
 
 #include <BRepBndLib.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -117,6 +120,23 @@ void guarded(const char* stage, Body&& body) {
     if (const int signal = runGuarded(body))
         throw Bad(std::string("Open CASCADE crashed while ") + stage + " (" + faultName(signal) +
                   "): the file is damaged or holds something its reader does not handle");
+}
+
+// The shapes the scene's geometries were tessellated from, for exact inspection
+// (brep_shapes.h); their triangulations are dropped, the scene has its own copy.
+template <typename Distinct>
+std::shared_ptr<const BrepShapes> keptShapes(const std::vector<Distinct>& distinct,
+                                             size_t geometries) {
+    auto impl = std::make_unique<BrepShapes::Impl>();
+    impl->geometries.resize(geometries);
+    for (const Distinct& d : distinct) {
+        if (d.geometry < 0) continue;
+        BRepTools::Clean(d.shape);
+        auto& kept = impl->geometries[size_t(d.geometry)];
+        kept.shape = d.shape;
+        for (int f = 1; f <= d.faces.Extent(); ++f) kept.faces.push_back(TopoDS::Face(d.faces(f)));
+    }
+    return std::make_shared<const BrepShapes>(std::move(impl));
 }
 
 CadLoadResult load(const std::string& path, const CadOptions& options, const CadProgress& progress,
@@ -349,6 +369,7 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
                   joinPath(leaf.group, name));
     }
     if (scene.objects.empty()) throw Bad("no face of the model could be triangulated");
+    scene.brep = keptShapes(distinct, scene.geometries.size());
     try {
         validate(scene);
     } catch (const std::invalid_argument& e) {
