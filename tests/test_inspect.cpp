@@ -32,6 +32,7 @@
 #include "closed_cad_files.h"
 #include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_cache.h"
+#include "scene/copies.h"
 #include "scene/face_info.h"
 #include "scene/inspect.h"
 #include "scene/mesh_builder.h"
@@ -230,6 +231,35 @@ TEST_F(Inspect, TheCacheGivesTheSameAnswers) {
     EXPECT_EQ(distanceJson(*a), distanceJson(*b));
     EXPECT_EQ(propertiesJson(*objectProperties(miss.scene, 0)),
               propertiesJson(*objectProperties(hit.scene, 0)));
+}
+
+// A copy moved along x: its faces, edges and solid are measured where the copy is (each
+// object's placement applied), against the original.
+TEST_F(Inspect, AMovedCopyIsMeasuredWhereItIs) {
+    const Scene original = loadCad(path_.string(), {}).scene;
+    const Scene s = replicate(original, 2, COPY_X);
+    ASSERT_EQ(s.objects.size(), 4u);
+    const glm::dvec3 shift = glm::dvec3(s.objects[2].world[3]) - glm::dvec3(s.objects[0].world[3]);
+    ASSERT_GT(shift.x, 100.0);
+    const Plates f = find(original);
+    const uint32_t moved = original.uniquePartCount(); // copy 1's IDs: copy 0's plus this
+    const auto plates = measureDistance(s, f.all(s, f.holed), f.all(s, f.holed + 2));
+    ASSERT_TRUE(plates);
+    EXPECT_NEAR(plates->distance, shift.x - 100.0, 1e-6);
+    const auto holes = measureDistance(s, part(f.hole1), part(f.hole1 + moved));
+    ASSERT_TRUE(holes && holes->centreDistance && holes->axisDistance);
+    EXPECT_NEAR(*holes->centreDistance, glm::length(shift), 1e-9);
+    EXPECT_NEAR(*holes->axisDistance, glm::length(shift), 1e-9);
+    const EdgeRef rim{f.rim2->part + moved, f.rim2->edge};
+    const auto rims = measureDistance(s, edge(*f.rim2), edge(rim));
+    ASSERT_TRUE(rims && rims->centreDistance);
+    EXPECT_NEAR(*rims->centreDistance, glm::length(shift), 1e-9);
+    EXPECT_NEAR(rims->distance, glm::length(shift) - 2 * kR2, 1e-6);
+    const auto a = objectProperties(s, f.holed), b = objectProperties(s, f.holed + 2);
+    ASSERT_TRUE(a && b);
+    EXPECT_NEAR(b->volume, a->volume, 1e-9 * a->volume);
+    EXPECT_NEAR(glm::length(b->center - (a->center + shift)), 0.0, 1e-9);
+    EXPECT_NEAR(glm::length(b->bbox.min - (a->bbox.min + shift)), 0.0, 1e-6);
 }
 
 TEST_F(Inspect, JsonLinesCarryTheMembersAndUnit) {
