@@ -243,6 +243,9 @@ if [[ -f $screw ]]; then
         "$idview" --model "$screw" --properties all
     expect cad-distance 0 "^\\{\"distance\":$num,\"p0\":$vec,\"p1\":$vec,\"source\":\"brep\".*\"unit\":\"mm\"\\}$" -- \
         "$idview" --model "$screw" --distance 0,3
+    # With --headless, after the rendered run's lines.
+    expect cad-properties-headless 0 '^\{"object":0,"volume":' -- \
+        "$idview" --headless --frames 1 --size 64x48 --model "$screw" --pick 32,24 --properties 0
     expect cad-distance-range 1 '^idview: error: --distance: part 99999 is not in the scene \(its parts are 0 to [0-9]+\)$' -- \
         "$idview" --model "$screw" --distance 0,99999
     expect cad-properties-range 1 '^idview: error: --properties: object 1 is not in the scene \(its objects are 0 to 0\)$' -- \

@@ -363,13 +363,15 @@ const std::vector<Flag>& flags() {
              "(source brep), from the triangles otherwise (mesh); where both are circles or "
              "cylinders also center_distance, axis_angle (degrees) and, for parallel axes, "
              "axis_distance; where one is a plane, point_to_plane (the other's centre, signed "
-             "along the plane's outward normal); then exit",
+             "along the plane's outward normal); without --headless nothing is rendered and idview "
+             "exits",
              [](Options& o, auto& v) { o.distance = parseDistance(v); }},
             {"--properties", "OBJECT|all",
              "print one JSON line {object,volume,area,center,bbox:{min,max,size},closed,unit} of "
              "the object (a solid of a CAD file: exact, from the B-rep; meshes: from triangles, "
              "volume 0 unless they close); all: one line per object and their sum "
-             "{object:\"all\",objects,...}; then exit",
+             "{object:\"all\",objects,...}; without --headless nothing is rendered and idview "
+             "exits",
              [](Options& o, auto& v) {
                  o.propertiesAll = v == "all";
                  if (!o.propertiesAll)

@@ -282,6 +282,8 @@ int runHeadless(const Options& options) {
     const scene::Scene& scene = loaded.scene;
     for (const auto& warning : loaded.warnings)
         std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
+    // Before rendering: a part or object not in the scene ends the run at once.
+    const std::vector<std::string> inspection = inspectionJson(options, scene);
     const float aspect = float(options.width) / float(options.height);
     HeadlessResult result =
         renderHeadless(options, scene, initialCamera(loaded, aspect, options.camera));
@@ -302,6 +304,7 @@ int runHeadless(const Options& options) {
     if (result.visibleParts)
         std::printf("%s\n",
                     partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
+    for (const std::string& line : inspection) std::printf("%s\n", line.c_str());
     if (options.stats)
         std::printf("%s\n", statsJson(loaded, options.render,
                                       FirstFrame{result.firstFrameMs, result.pipelineCache})
@@ -309,7 +312,8 @@ int runHeadless(const Options& options) {
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
     const bool json = !options.picks.empty() || options.measure || !options.faceInfos.empty() ||
-                      result.rectParts || result.visibleParts || options.stats;
+                      result.rectParts || result.visibleParts || options.stats ||
+                      !inspection.empty();
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()

@@ -116,10 +116,10 @@ int main(int argc, char** argv) {
         if (options.listDevices) return listDevices(options);
         // --stats with --headless renders first, to say how long the first frame took.
         const bool renderedStats = options.stats && options.headless && !options.benchmark &&
-                                   !options.tree && options.exportPath.empty() &&
-                                   !inspects(options);
-        if (!renderedStats &&
-            (options.stats || options.tree || !options.exportPath.empty() || inspects(options))) {
+                                   !options.tree && options.exportPath.empty();
+        // --distance and --properties need no image; with --headless they come with its lines.
+        if (!renderedStats && (options.stats || options.tree || !options.exportPath.empty() ||
+                               (inspects(options) && !options.headless))) {
             const app::LoadedScene loaded = app::loadScene(options.scene);
             // Checked and answered before anything is written: a wrong ID leaves no file.
             const std::vector<std::string> inspection = app::inspectionJson(options, loaded.scene);
