@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <regex>
 #include <unistd.h>
@@ -354,6 +355,47 @@ TEST(InspectMesh, TwoBoxesAtAKnownDistance) {
     EXPECT_NEAR(p->area, 24.0, 1e-12);
     EXPECT_NEAR(glm::distance(p->center, offset), 0.0, 1e-12);
     EXPECT_NEAR(glm::distance(p->bbox.max, offset + 1.0), 0.0, 1e-12);
+}
+
+// Many triangles each side (a 48-sided prism, a tilted box): the pruned search finds what
+// every pair of triangles tried gives.
+TEST(InspectMesh, ThePrunedSearchFindsWhatEveryPairGives) {
+    Scene s;
+    MeshBuilder builder;
+    builder.addPrism(glm::vec2(0.0f), 1.0f, 0.0f, 2.0f, 48, true);
+    const uint32_t prism = builder.finish(s, "prism");
+    builder.addBox(glm::vec3(0.0f), glm::vec3(1.0f, 3.0f, 0.5f));
+    const uint32_t box = builder.finish(s, "box");
+    const uint32_t material = addMaterial(s, "grey", glm::vec4(0.5f));
+    addObject(s, prism, material, glm::dmat4(1.0));
+    glm::dmat4 tilted = glm::translate(glm::dmat4(1.0), glm::dvec3(2.1, 0.3, 1.2));
+    tilted = glm::rotate(tilted, 0.7, glm::dvec3(0.3, 1.0, 0.2));
+    addObject(s, box, material, tilted);
+    auto triangles = [&](uint32_t object) {
+        std::vector<Triangle> all;
+        const Object& o = s.objects[object];
+        const Geometry& g = s.geometries[o.geometry];
+        for (uint32_t t = 0; t < g.triangleCount; ++t) {
+            Triangle c;
+            for (size_t k = 0; k < 3; ++k)
+                c[k] = placed(
+                    o.world,
+                    s.vertices[g.firstVertex + s.indices[g.firstIndex + 3 * t + k]].position);
+            all.push_back(c);
+        }
+        return all;
+    };
+    double every = std::numeric_limits<double>::infinity();
+    const auto a = triangles(0), b = triangles(1);
+    ASSERT_GT(a.size() * b.size(), 1000u);
+    for (const Triangle& x : a)
+        for (const Triangle& y : b) every = std::min(every, triangleDistance(x, y).distance);
+    Plates f;
+    const auto d = measureDistance(s, f.all(s, 0), f.all(s, 1));
+    ASSERT_TRUE(d);
+    EXPECT_GT(every, 0.01);
+    EXPECT_EQ(d->distance, every);
+    EXPECT_NEAR(glm::distance(d->p0, d->p1), every, 1e-12);
 }
 
 TEST(InspectMesh, CrossingTrianglesTouch) {

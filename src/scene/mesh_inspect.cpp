@@ -116,7 +116,7 @@ struct BoxedTriangle {
     Bounds box;
 };
 
-// A side's triangles in world coordinates, sorted by their boxes' lowest x for the sweep.
+// A side's triangles in world coordinates.
 struct Side {
     std::vector<BoxedTriangle> triangles;
     Bounds box = emptyBounds();
@@ -156,28 +156,90 @@ std::optional<Side> gather(const Scene& scene, const Thing& thing) {
         }
     }
     if (side.triangles.empty()) return std::nullopt;
-    std::sort(
-        side.triangles.begin(), side.triangles.end(),
-        [](const BoxedTriangle& x, const BoxedTriangle& y) { return x.box.min.x < y.box.min.x; });
     return side;
 }
+
+// A bounding volume hierarchy over one side's triangles: each node's box holds its triangles,
+// a leaf's few in order, an inner node's split in two at the median of its longest axis.
+class TriangleTree {
+  public:
+    explicit TriangleTree(std::vector<BoxedTriangle> triangles) : triangles_(std::move(triangles)) {
+        nodes_.emplace_back();
+        build(0, 0, uint32_t(triangles_.size()));
+    }
+
+    // Lowers `best` to the distance of `t` to the nearest triangle, where that is less.
+    void closest(const BoxedTriangle& t, ClosestPoints& best) const {
+        std::vector<uint32_t> stack{0};
+        while (!stack.empty()) {
+            const Node& node = nodes_[stack.back()];
+            stack.pop_back();
+            if (boxGap(t.box, node.box) >= best.distance) continue;
+            if (node.count > 0) {
+                for (uint32_t i = node.first; i < node.first + node.count; ++i) {
+                    if (boxGap(t.box, triangles_[i].box) >= best.distance) continue;
+                    const ClosestPoints c = triangleDistance(t.corners, triangles_[i].corners);
+                    if (c.distance < best.distance) best = c;
+                }
+                continue;
+            }
+            // The nearer child on top: taken first, it lowers `best` for the other.
+            const uint32_t near = node.first, far = node.first + 1;
+            const bool swap = boxGap(t.box, nodes_[far].box) < boxGap(t.box, nodes_[near].box);
+            stack.push_back(swap ? near : far);
+            stack.push_back(swap ? far : near);
+        }
+    }
+
+  private:
+    static constexpr uint32_t kLeafSize = 4;
+    struct Node {
+        Bounds box;
+        uint32_t first = 0; // a leaf's first triangle, an inner node's first child
+        uint32_t count = 0; // a leaf's triangles; 0 for an inner node
+    };
+
+    void build(uint32_t node, uint32_t begin, uint32_t end) {
+        Bounds box = emptyBounds();
+        for (uint32_t i = begin; i < end; ++i) box = unite(box, triangles_[i].box);
+        nodes_[node].box = box;
+        if (end - begin <= kLeafSize) {
+            nodes_[node].first = begin;
+            nodes_[node].count = end - begin;
+            return;
+        }
+        const glm::dvec3 size = box.max - box.min;
+        const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+        const uint32_t middle = begin + (end - begin) / 2;
+        std::nth_element(triangles_.begin() + begin, triangles_.begin() + middle,
+                         triangles_.begin() + end,
+                         [axis](const BoxedTriangle& a, const BoxedTriangle& b) {
+                             return a.box.center()[axis] < b.box.center()[axis];
+                         });
+        // The two children side by side, so that a node names them by the first.
+        const uint32_t children = uint32_t(nodes_.size());
+        nodes_.resize(nodes_.size() + 2);
+        nodes_[node].first = children;
+        build(children, begin, middle);
+        build(children + 1, middle, end);
+    }
+
+    std::vector<BoxedTriangle> triangles_;
+    std::vector<Node> nodes_;
+};
 
 } // namespace
 
 std::optional<DistanceReport> meshDistance(const Scene& scene, const Thing& a, const Thing& b) {
     const auto sa = gather(scene, a), sb = gather(scene, b);
     if (!sa || !sb) return std::nullopt;
+    // The tree over b; each of a's triangles descends it, skipping what lies farther than the
+    // best distance so far.
+    const TriangleTree tree(sb->triangles);
     ClosestPoints best{std::numeric_limits<double>::infinity(), {}, {}};
-    // Each of a's triangles against b's, b swept along x: a triangle of b whose box starts
-    // beyond a's box plus the best distance so far, and every one after it, cannot be closer.
-    for (const BoxedTriangle& ta : sa->triangles) {
-        if (boxGap(ta.box, sb->box) >= best.distance) continue;
-        for (const BoxedTriangle& tb : sb->triangles) {
-            if (tb.box.min.x > ta.box.max.x + best.distance) break;
-            if (boxGap(ta.box, tb.box) >= best.distance) continue;
-            const ClosestPoints c = triangleDistance(ta.corners, tb.corners);
-            if (c.distance < best.distance) best = c;
-        }
+    for (const BoxedTriangle& t : sa->triangles) {
+        if (boxGap(t.box, sb->box) >= best.distance) continue;
+        tree.closest(t, best);
         if (best.distance == 0) break;
     }
     DistanceReport report;
