@@ -13,6 +13,7 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -135,10 +136,7 @@ void compareFeatures(const Feature& a, const Feature& b, DistanceReport& report)
     toPlane(b, a);
 }
 
-} // namespace
-
-std::optional<DistanceReport> brepDistance(const Scene& scene, const Thing& a, const Thing& b) {
-    if (!scene.brep) return std::nullopt;
+std::optional<DistanceReport> exactDistance(const Scene& scene, const Thing& a, const Thing& b) {
     const auto la = locate(scene, a), lb = locate(scene, b);
     if (!la || !lb) return std::nullopt;
     BRepExtrema_DistShapeShape extrema(la->shape, lb->shape);
@@ -153,10 +151,8 @@ std::optional<DistanceReport> brepDistance(const Scene& scene, const Thing& a, c
     return report;
 }
 
-std::optional<SolidProperties> brepProperties(const Scene& scene, uint32_t object) {
-    if (!scene.brep || object >= scene.objects.size()) return std::nullopt;
+SolidProperties exactProperties(const Scene& scene, uint32_t object) {
     const Object& o = scene.objects[object];
-    if (!scene.brep->has(o.geometry)) return std::nullopt;
     const TopoDS_Shape shape =
         scene.brep->impl().geometries[o.geometry].shape.Moved(placement(o.world));
     SolidProperties p;
@@ -188,6 +184,29 @@ std::optional<SolidProperties> brepProperties(const Scene& scene, uint32_t objec
         p.bbox = {{x0, y0, z0}, {x1, y1, z1}};
     }
     return p;
+}
+
+} // namespace
+
+// Open CASCADE throws Standard_Failure, no std::exception, where a shape defeats it (a
+// degenerate surface, a curve it cannot evaluate): no answer then, and the caller goes on.
+std::optional<DistanceReport> brepDistance(const Scene& scene, const Thing& a, const Thing& b) {
+    if (!scene.brep) return std::nullopt;
+    try {
+        return exactDistance(scene, a, b);
+    } catch (const Standard_Failure&) {
+        return std::nullopt;
+    }
+}
+
+std::optional<SolidProperties> brepProperties(const Scene& scene, uint32_t object) {
+    if (!scene.brep || object >= scene.objects.size()) return std::nullopt;
+    if (!scene.brep->has(scene.objects[object].geometry)) return std::nullopt;
+    try {
+        return exactProperties(scene, object);
+    } catch (const Standard_Failure&) {
+        return std::nullopt;
+    }
 }
 
 } // namespace scene
