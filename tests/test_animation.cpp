@@ -1,7 +1,10 @@
-// test_animation.cpp - the exploded-view animation: the offsets and the CPU reference by hand,
+// test_animation.cpp - the exploded view: the offsets by assembly level against a computation
+// from the objects' paths alone (nested and flat assemblies) and the CPU reference by hand,
 // then, on lavapipe with validation on, the GPU-animated ID image must equal bit for bit the
 // image of the CPU-exploded scene drawn at rest (and differ from the unexploded image), the
-// pick must name what the animated image shows, and explode 0 must bring the rest back.
+// pick must name what the animated image shows, `--explode F` headless must draw the same
+// and pick what the CPU ray cast of the exploded scene meets, and explode 0 must bring the
+// rest back.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
