@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -20,6 +21,7 @@
 #include "app/scene_source.h"
 #include "render/technique.h"
 #include "scene/explode.h"
+#include "scene/face_info.h"
 #include "scene/raycast.h"
 #include "test_support.h"
 #include "vk/context.h"
@@ -391,6 +393,40 @@ TEST(GpuExplode, HeadlessFlagDrawsAndPicksTheExplodedScene) {
         EXPECT_EQ(pick.part.value_or(gpu::BACKGROUND_ID), hit->uniquePartId)
             << "pick at " << pick.pixel.x << "," << pick.pixel.y;
     }
+
+    // What the CPU answers headless sees the parts where they are drawn: the face report of
+    // the part under a pixel boxes the point the measurement's depth gives there (a box of
+    // the part at rest would not: it moved).
+    const auto at = picking.picks.front(), other = picking.picks.back();
+    const std::string measure = std::to_string(at.x) + "," + std::to_string(at.y) + "," +
+                                std::to_string(other.x) + "," + std::to_string(other.y);
+    app::Options inspect = app::parseArgs(
+        {"--headless", "--size", std::to_string(W) + "x" + std::to_string(H), "--scene",
+         "procedural:preset=small,seed=1", "--explode", "0.7", "--frames", "1", "--measure",
+         measure, "--face-info", std::to_string(at.x) + "," + std::to_string(at.y)});
+    testing::internal::CaptureStdout();
+    const int code = app::runHeadless(inspect);
+    const std::string lines = testing::internal::GetCapturedStdout();
+    ASSERT_EQ(code, 0);
+    auto numbers = [&](const std::string& key) { // the three numbers after `key`
+        glm::dvec3 v(0.0);
+        const size_t found = lines.find(key);
+        EXPECT_NE(found, std::string::npos) << key << " in " << lines;
+        if (found != std::string::npos)
+            std::sscanf(lines.c_str() + found + key.size(), "%lf,%lf,%lf", &v.x, &v.y, &v.z);
+        return v;
+    };
+    const glm::dvec3 point = numbers("\"p0\":["), lo = numbers("\"min\":["),
+                     hi = numbers("\"max\":[");
+    const double slack = 1e-4 * exploded.bounds().radius();
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(point, lo - slack)) &&
+                glm::all(glm::lessThanEqual(point, hi + slack)))
+        << lines;
+    const auto restFace = scene::faceReport(f.loaded.scene, *picked.picks.front().part);
+    ASSERT_TRUE(restFace.has_value());
+    EXPECT_FALSE(glm::all(glm::greaterThanEqual(point, restFace->bbox.min - slack)) &&
+                 glm::all(glm::lessThanEqual(point, restFace->bbox.max + slack)))
+        << "the part did not move";
 }
 
 // One renderer, frames in flight: exploded, then back to explode 0, which must restore the
