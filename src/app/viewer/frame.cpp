@@ -156,7 +156,10 @@ void Viewer::openDrops() {
 // at its own.
 void Viewer::follow(SceneState::Change change) {
     if (change == SceneState::Change::None) return;
+    // The new scene exploded as the slider stands, before the camera frames it; its copy may
+    // lie where the last one did, so the part details start over.
     scene_.explode(settings_.animation.animate ? 0.0f : settings_.animation.explode);
+    partDetails_ = PartDetailsCache{};
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
