@@ -225,6 +225,18 @@ TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     EXPECT_NE(unknown.find(", view, ortho,"), std::string::npos) << unknown;
 }
 
+// `explode F`, the panel's slider: 0 to 1.
+TEST(InputScript, ExplodeTakesZeroToOne) {
+    const auto commands = app::parseScript("1 explode 0.6\n2 explode 0\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Explode);
+    EXPECT_EQ(commands[0].values[0], 0.6);
+    EXPECT_EQ(commands[1].values[0], 0.0);
+    EXPECT_EQ(errorOf("1 explode 1.5\n"), "s.txt:1: explode takes a number from 0 to 1");
+    EXPECT_EQ(errorOf("1 explode -1\n"), "s.txt:1: explode takes a number from 0 to 1");
+    EXPECT_EQ(errorOf("1 explode wide\n"), "s.txt:1: 'wide' is not a number (explode F (0 to 1))");
+}
+
 TEST(InputScript, TypeTakesTheRestOfTheLine) {
     const auto commands = app::parseScript("1 type /tmp/a model.glb \n2 key ctrl+O\n", "s.txt");
     ASSERT_EQ(commands.size(), 2u);

@@ -4,8 +4,8 @@
 # part for four seconds runs no scene pass while the hovered part's blink is composed again
 # and again, over the hovered part's tiles alone and with the panel kept as drawn, and those
 # pictures are the ones a frame that draws everything shows; vsync off draws a scene pass
-# every frame; a drag that turns the camera draws scene passes. Exit 77: skipped
-# (viewer_lib.sh).
+# every frame; a drag that turns the camera draws scene passes; the explode slider changes
+# the picture and the viewer rests again after it. Exit 77: skipped (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 cat >"$work/rest.txt" <<'SCRIPT'
@@ -117,4 +117,37 @@ fi
     echo "ok   the frames of those steps kept the panel" ||
     fail "no frame kept the panel: $(kept_at strong-drawn) $(kept_at weak-kept) $(kept_at weak-drawn) $(kept_at strong-kept)"
 grep -q 'validation' "$work/blink.err" && fail "validation: $(grep -m3 validation "$work/blink.err")"
+
+# The explode slider, as a script's `explode` sets it: the picture changes, and afterwards
+# the viewer rests again, frames composed with no scene pass while nothing moves.
+t=0.5
+{
+    at frames 3
+    at rest 0.5
+    at screenshot "$work/at-rest.png"
+    at explode 0.8
+    at frames 3
+    at rest 0.5
+    at screenshot "$work/exploded.png"
+    at frames 3
+    at rest 0.5
+    at quit
+} >"$work/explode.txt"
+session explode
+out=$work/explode.out
+said=$(grep -n -m1 '^idview: explode: 0.8$' "$out" | cut -d: -f1)
+# The rest lines after the slider moved: the first after its scene pass, then the last.
+moved=$(sed -n "${said:-1},\$p" "$out" | scenes | head -1)
+ended=$(sed -n "${said:-1},\$p" "$out" | scenes | tail -1)
+before=$(sed -n "1,${said:-1}p" "$out" | scenes | tail -1)
+if [[ -z $said ]]; then
+    fail "no 'explode: 0.8' line"
+elif cmp -s "$work/at-rest.png" "$work/exploded.png"; then
+    fail "exploding did not change the picture"
+elif [[ -n $moved && -n $before && $moved -gt $before && $ended -eq $moved ]]; then
+    echo "ok   explode 0.8 changed the picture ($before -> $moved scene passes), then rested at $ended"
+else
+    fail "scene passes around the explode: before '$before', after '$moved', at the end '$ended'"
+fi
+grep -q 'validation' "$work/explode.err" && fail "validation: $(grep -m3 validation "$work/explode.err")"
 [[ $failures -eq 0 ]] || exit 1

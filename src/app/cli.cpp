@@ -142,6 +142,9 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
                          "level everywhere");
     if (options.animation.time && !options.animation.animate)
         throw UsageError("--time needs --animate");
+    if (options.animation.animate && options.animation.explode > 0.0f)
+        throw UsageError("--explode and --animate cannot be combined: --animate runs the "
+                         "exploded view from 0 to 1 and back");
     auto outside = [&](const Options::Pixel& p) {
         return p.x >= options.width || p.y >= options.height;
     };

@@ -39,9 +39,9 @@ struct SceneSettings {
     bool operator==(const SceneSettings&) const = default;
 };
 
-// The exploded view: with `animate` it follows scene::explodeLoop, headless at `time`
-// seconds or at frame / 60 without it; otherwise it stays at `explode` (0..1, set by
-// in-process callers such as the tests).
+// The exploded view (scene/explode.h): at `explode`, 0 (at rest) to 1, as --explode and the
+// viewer's slider set it; with `animate` (the benchmark's motion) it follows
+// scene::explodeLoop instead, headless at `time` seconds or at frame / 60 without it.
 struct Animation {
     bool animate = false;
     std::optional<float> time;

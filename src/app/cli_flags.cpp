@@ -401,9 +401,15 @@ const std::vector<Flag>& flags() {
             {"--edge-color", "RRGGBB",
              "edge colour in hex, as displayed" + byDefault(hexColor(d.render.edges.color)),
              [](Options& o, auto& v) { o.render.edges.color = parseColor("--edge-color", v); }},
+            {"--explode", "F",
+             "the exploded view at F, 0 (at rest) to 1: sub-assemblies move apart from their "
+             "assembly's centre, and their parts apart within them, level by level (the viewer's "
+             "explode slider)" +
+                 byDefault(d.animation.explode),
+             [](Options& o, auto& v) { o.animation.explode = parseFraction("--explode", v); }},
             {"--animate", nullptr,
-             "exploded-view animation: objects move out from the scene centre to twice their "
-             "distance and back every 4 s, their matrices written on the GPU each frame; headless "
+             "exploded-view animation, for benchmarks: the exploded view goes from 0 to 1 and "
+             "back every 4 s, the objects' matrices written on the GPU each frame; headless "
              "at --time, else at frame / 60 s",
              [](Options& o, auto&) { o.animation.animate = true; }},
             headless({"--time", "SECONDS",
@@ -427,7 +433,8 @@ const std::vector<Flag>& flags() {
             text(
                 "--script", "FILE",
                 "viewer: run scripted input, lines '<seconds> <command> [args]' (key, move, click, "
-                "drag, scroll, resize, renderer, mode, msaa, sort, defaults, copies, frames, "
+                "drag, scroll, resize, renderer, mode, msaa, sort, defaults, copies, explode, "
+                "frames, "
                 "screenshot, drop, quit)",
                 &Options::script),
             on("--print-events",

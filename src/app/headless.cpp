@@ -279,14 +279,20 @@ HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
 
 int runHeadless(const Options& options) {
     const LoadedScene loaded = loadScene(options.scene);
-    const scene::Scene& scene = loaded.scene;
     for (const auto& warning : loaded.warnings)
         std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
+    // --explode: the GPU draws it from the scene at rest (render/animator.h); what the CPU
+    // answers (face reports, measurements, inspection) and the opening view take the objects
+    // where they are drawn, bit for bit (scene::explodedScene).
+    std::optional<scene::Scene> exploded;
+    if (!options.animation.animate && options.animation.explode > 0.0f)
+        exploded = scene::explodedScene(loaded.scene, options.animation.explode);
+    const scene::Scene& scene = exploded ? *exploded : loaded.scene;
     // Before rendering: a part or object not in the scene ends the run at once.
     const std::vector<std::string> inspection = inspectionJson(options, scene);
     const float aspect = float(options.width) / float(options.height);
-    HeadlessResult result =
-        renderHeadless(options, scene, initialCamera(loaded, aspect, options.camera));
+    HeadlessResult result = renderHeadless(
+        options, loaded.scene, initialCamera(loaded, aspect, options.camera, scene.bounds()));
     const render::PipelineKey& key = options.render.pipeline;
 
     if (!options.screenshot.empty())

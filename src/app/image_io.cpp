@@ -32,7 +32,8 @@ std::vector<uint32_t> readIdImage(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
                                std::istreambuf_iterator<char>());
-    if (!in.eof() || bytes.size() % 4 != 0)
+    // istreambuf_iterator reads to the end without setting the stream's eofbit.
+    if (!in.is_open() || in.bad() || bytes.size() % 4 != 0)
         throw std::runtime_error("cannot read ID image '" + path + "'");
     std::vector<uint32_t> ids(bytes.size() / 4);
     for (size_t i = 0; i < ids.size(); ++i)

@@ -180,6 +180,11 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
 }
 
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const CameraSettings& view) {
+    return initialCamera(loaded, aspect, view, loaded.scene.bounds());
+}
+
+scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const CameraSettings& view,
+                            const scene::Bounds& bounds) {
     scene::Camera camera;
     if (loaded.tilesLayout) {
         camera = scene::tilesCamera();
@@ -190,14 +195,13 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const Camer
         const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
         const glm::vec3 direction =
             yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);
-        camera =
-            scene::fitCamera(loaded.scene.bounds(), direction, up, glm::radians(40.0f), aspect);
+        camera = scene::fitCamera(bounds, direction, up, glm::radians(40.0f), aspect);
     }
     // The standard views turn about the fitted target at the fitted distance, the model's
     // up axis being the opening camera's.
     if (view.standard) camera = scene::turnedTo(camera, *view.standard, camera.up);
     camera.ortho = view.ortho;
-    if (view.ortho) scene::fitPlanes(camera, loaded.scene.bounds());
+    if (view.ortho) scene::fitPlanes(camera, bounds);
     return camera;
 }
 

@@ -85,6 +85,10 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect,
                             const CameraSettings& view = {});
+// The same framing `bounds` instead of the scene's own (the scene exploded: the objects
+// where they are drawn).
+scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const CameraSettings& view,
+                            const scene::Bounds& bounds);
 
 // How a headless run's first frame went, for --stats --headless: milliseconds from just
 // before the device was created to the first frame's fence, and the pipeline cache's status

@@ -121,7 +121,23 @@ void Viewer::act(const PanelActions& actions) {
 void Viewer::applySettings() {
     follow(scene_.poll(settings_.scene));
     follow(scene_.apply(settings_.scene, settings_.render));
+    explode();
     scene_.resize(presenter_.extent());
+}
+
+// The explode slider moved (or a script's `explode`): the CPU's scene follows what the GPU
+// draws, so picks, measurements, face reports and F see the objects where they show, and the
+// camera's planes take in the exploded scene; measure points placed before no longer lie on
+// their parts. The animation (--animate) is drawn by the GPU alone, the CPU's scene at rest.
+void Viewer::explode() {
+    const float at = settings_.animation.animate ? 0.0f : settings_.animation.explode;
+    if (!scene_.explode(at)) return;
+    camera_.setBounds(scene_.scene().bounds());
+    measure_.forget();
+    partDetails_ = PartDetailsCache{}; // the same arrays hold other placements now
+    char text[48];
+    std::snprintf(text, sizeof text, "explode: %.3g", double(at));
+    events_.say(text);
 }
 
 void Viewer::openDrops() {
@@ -140,6 +156,10 @@ void Viewer::openDrops() {
 // at its own.
 void Viewer::follow(SceneState::Change change) {
     if (change == SceneState::Change::None) return;
+    // The new scene exploded as the slider stands, before the camera frames it; its copy may
+    // lie where the last one did, so the part details start over.
+    scene_.explode(settings_.animation.animate ? 0.0f : settings_.animation.explode);
+    partDetails_ = PartDetailsCache{};
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
@@ -181,9 +201,8 @@ void Viewer::remember(const std::string& source) {
 render::FrameParams Viewer::frameParams(double seconds) {
     const VkExtent2D extent = scene_.targets()->extent();
     const bool animate = settings_.animation.animate;
-    // The exploded view pushes objects out to twice their distance from the centre.
     render::FrameParams params =
-        cameraFrame(camera_.camera(animate ? 2.0f : 1.0f, settings_.camera.ortho), extent);
+        cameraFrame(camera_.camera(reach(), settings_.camera.ortho), extent);
     // F's fit beside the panel: a shift in clip space, the same for both matrices.
     params.viewProj = glm::mat4(camera_.shiftMatrix()) * params.viewProj;
     params.worldViewProj = camera_.shiftMatrix() * params.worldViewProj;
@@ -197,7 +216,7 @@ render::FrameParams Viewer::frameParams(double seconds) {
     // A released box asks for its parts (recordScene adds the visible parts' count).
     if (const auto box = input_.boxQuery(extent)) params.partSets.push_back(*box);
     showParts();
-    params.explode = animate ? scene::explodeLoop(float(seconds)) : 0.0f;
+    params.explode = animate ? scene::explodeLoop(float(seconds)) : settings_.animation.explode;
     return params;
 }
 

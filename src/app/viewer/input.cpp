@@ -389,6 +389,9 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Ortho:
         step([this, on = c.text == "on"] { viewer_.setOrtho(on); }, true);
         break;
+    case ScriptOp::Explode: // as the panel's slider sets it
+        step(settings([f = float(v[0])](Options& s) { s.animation.explode = f; }), true);
+        break;
     case ScriptOp::Copies:
         step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);
         break;

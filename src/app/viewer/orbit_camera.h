@@ -78,7 +78,8 @@ class OrbitCamera {
     // The projection's lens shift as a matrix to apply after the view-projection.
     glm::dmat4 shiftMatrix() const;
     // The camera for this frame, near and far planes fitted to the bounds. `reach` is how
-    // far from the centre the scene may extend, in bounding radii (an exploded view: 2).
+    // far from the centre the scene may extend, in bounding radii (the exploded view's
+    // animation: SceneState::explodeReach).
     scene::Camera camera(double reach = 1.0, bool ortho = false) const;
 
   private:

@@ -205,7 +205,13 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     ImGui::EndDisabled();
     culling(s.culling, info);
     levelsOfDetail(settings, info);
-    ImGui::Checkbox("animate (exploded view)", &settings.animation.animate);
+    // The exploded view, by assembly level (scene/explode.h); --animate's loop, for the
+    // benchmark, has no place here.
+    ImGui::SliderFloat(fitLabel("explode").c_str(), &settings.animation.explode, 0.0f, 1.0f, "%.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("move the parts apart, assembly level by level: sub-assemblies from "
+                          "their assembly's centre, their parts within them (--explode F)");
     // What the last switch cost: a cached pipeline makes it a lookup.
     const render::SwitchReport& last = info.lastSwitch;
     ImGui::TextWrapped("last switch %.2f ms, pipeline %s%s", last.ms,

@@ -2,10 +2,12 @@
 // opening scenes. A failure keeps what worked before.
 #include "app/viewer/scene_state.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "app/headless.h" // pipelineCacheFolder
 #include "scene/copies.h"
+#include "scene/explode.h"
 #include "vk/check.h"
 
 namespace app {
@@ -115,9 +117,10 @@ bool SceneState::openScene(const SceneSettings& settings) {
 }
 
 void SceneState::opened() {
-    events_.say("opened: " + base_.source + " (" + std::to_string(scene().objects.size()) +
-                " objects, " + std::to_string(scene().uniquePartCount()) + " parts, " +
-                std::to_string(scene().drawnTriangleCount()) + " triangles)");
+    const scene::Scene& scene = atRest();
+    events_.say("opened: " + base_.source + " (" + std::to_string(scene.objects.size()) +
+                " objects, " + std::to_string(scene.uniquePartCount()) + " parts, " +
+                std::to_string(scene.drawnTriangleCount()) + " triangles)");
 }
 
 // The model alone is loaded; the copies are made here, so changing them needs no reload.
@@ -168,7 +171,7 @@ void SceneState::configure(render::RenderSettings& render) {
     const uint32_t msaa = render.pipeline.msaa;
     try {
         // A pipeline not built yet is built on a worker; what is drawn stays until then.
-        if (const auto build = renderer_.prepare(scene(), render)) {
+        if (const auto build = renderer_.prepare(atRest(), render)) {
             const bool cut = render.section.any();
             waitFor(settingsWait_, *build,
                     cut == renderer_.settings().section.any() ? "the switch happens"
@@ -181,7 +184,7 @@ void SceneState::configure(render::RenderSettings& render) {
         if (uint32_t(targets->pass().samples()) != msaa)
             targets = std::make_shared<render::SceneTargets>(device_, renderer_.pass(msaa),
                                                              targets_->extent());
-        renderer_.configure(scene(), render);
+        renderer_.configure(atRest(), render);
         targets_ = std::move(targets);
     } catch (const std::exception& e) {
         settingsWait_.reset();
@@ -190,7 +193,7 @@ void SceneState::configure(render::RenderSettings& render) {
         return;
     }
     arrived(settingsWait_);
-    idBytes_ = scene::idDataBytes(scene(), render.pipeline.searchBatch);
+    idBytes_ = scene::idDataBytes(atRest(), render.pipeline.searchBatch);
     error_.clear();
 }
 
@@ -265,8 +268,42 @@ std::optional<SceneState::Building> SceneState::building() const {
 }
 
 void SceneState::sceneChanged() {
-    idBytes_ = scene::idDataBytes(scene(), renderer_.settings().pipeline.searchBatch);
+    explodeOffsets_.clear();
+    exploded_.reset();
+    explodedAt_ = 0.0f;
+    idBytes_ = scene::idDataBytes(atRest(), renderer_.settings().pipeline.searchBatch);
     error_.clear();
+}
+
+const std::vector<glm::vec4>& SceneState::explodeOffsets() {
+    if (!explodeOffsets_.empty() || atRest().objects.empty()) return explodeOffsets_;
+    explodeOffsets_ = scene::explodeOffsets(atRest());
+    double farthest = 0.0;
+    for (const glm::vec4& offset : explodeOffsets_)
+        farthest = std::max(farthest, double(glm::length(glm::vec3(offset))));
+    // Every point moves by its object's offset at most, and lies within one radius at rest.
+    const double radius = atRest().bounds().radius();
+    explodeReach_ = radius > 0.0 ? 1.0 + farthest / radius : 1.0;
+    return explodeOffsets_;
+}
+
+bool SceneState::explode(float explode) {
+    explode = explode > 0.0f ? std::min(explode, 1.0f) : 0.0f; // as render::Animator clamps
+    if (explode == explodedAt_) return false;
+    explodedAt_ = explode;
+    if (explode == 0.0f) {
+        exploded_.reset(); // the copy's memory back while nothing is exploded
+        return true;
+    }
+    // Copied once; moving it again touches the placements alone.
+    if (!exploded_) exploded_ = atRest();
+    scene::placeExploded(*exploded_, atRest(), explodeOffsets(), explode);
+    return true;
+}
+
+double SceneState::explodeReach() {
+    explodeOffsets();
+    return explodeReach_;
 }
 
 } // namespace app

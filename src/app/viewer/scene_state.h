@@ -74,7 +74,18 @@ class SceneState {
     // no longer wanted finish into the cache unawaited (apply() collects them).
     bool pipelinePending() const { return settingsWait_ || hiddenWait_; }
 
-    const scene::Scene& scene() const { return copies_ ? *copies_ : base_.scene; }
+    // The scene where it is drawn, for everything the CPU answers (picks' names, face
+    // reports, measurements, bounds): while the exploded view is on, a copy whose objects sit
+    // where the GPU draws them (scene::explodedScene, bit for bit), else the scene at rest.
+    const scene::Scene& scene() const { return exploded_ ? *exploded_ : atRest(); }
+    // The scene at rest, as the renderer holds it (the GPU moves the objects itself).
+    const scene::Scene& atRest() const { return copies_ ? *copies_ : base_.scene; }
+    // Moves scene()'s objects to the exploded view at `explode` (0: at rest, the copy
+    // freed); true when they moved. A new scene starts at rest.
+    bool explode(float explode);
+    // How far from the centre of the scene at rest the exploded view at 1 reaches, in its
+    // bounding radii (OrbitCamera::camera's reach), for the animation.
+    double explodeReach();
     const LoadedScene& loaded() const { return base_; }
     const render::Renderer& renderer() const { return renderer_; }
     render::Renderer& renderer() { return renderer_; }
@@ -111,6 +122,13 @@ class SceneState {
     std::shared_ptr<const render::SceneTargets> targets_;
     LoadedScene base_;                   // as loaded, one copy (its settings: what is drawn)
     std::optional<scene::Scene> copies_; // with model copies, when more than one
+    // The exploded view: the objects' offsets (worked out once a scene first explodes), and
+    // the scene with them applied at explodedAt_ while that is above 0.
+    std::vector<glm::vec4> explodeOffsets_;
+    std::optional<scene::Scene> exploded_;
+    float explodedAt_ = 0.0f;
+    double explodeReach_ = 1.0;
+    const std::vector<glm::vec4>& explodeOffsets();
     scene::IdDataBytes idBytes_;
     VkSampleCountFlags sampleCounts_;
     std::string error_;

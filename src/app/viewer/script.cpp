@@ -51,6 +51,7 @@ const CommandSpec commandSpecs[] = {
     {"section", ScriptOp::Section, 0, "section AXIS,VALUE[,flip] | off"},
     {"view", ScriptOp::View, 0, "view NAME"},
     {"ortho", ScriptOp::Ortho, 0, "ortho on|off"},
+    {"explode", ScriptOp::Explode, 1, "explode F (0 to 1)"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
@@ -168,6 +169,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (command.values[0] < 1.0 || command.values[0] > 1e6 ||
             command.values[0] != std::floor(command.values[0]))
             fail("copies takes a whole number from 1 to 1000000");
+        break;
+    case ScriptOp::Explode:
+        if (command.values[0] < 0.0 || command.values[0] > 1.0)
+            fail("explode takes a number from 0 to 1");
         break;
     case ScriptOp::Frames:
         if (command.values[0] < 1.0 || command.values[0] > 1000.0 ||

@@ -146,10 +146,7 @@ void Viewer::zoomNow(float steps) {
     const VkExtent2D extent = scene_.targets()->extent();
     const glm::dmat4 viewProj =
         camera_.shiftMatrix() *
-        cameraFrame(
-            camera_.camera(settings_.animation.animate ? 2.0f : 1.0f, settings_.camera.ortho),
-            extent)
-            .worldViewProj;
+        cameraFrame(camera_.camera(reach(), settings_.camera.ortho), extent).worldViewProj;
     const glm::dvec4 clip = viewProj * glm::dvec4(*point, 1.0);
     const glm::vec2 at = glm::vec2((glm::dvec2(clip) / clip.w * 0.5 + 0.5) *
                                    glm::dvec2(extent.width, extent.height)) -

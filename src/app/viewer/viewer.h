@@ -132,6 +132,10 @@ class Viewer {
     void restore(const ShownState& state, const char* what); // undo, redo
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
+    void explode(); // the CPU's scene and the camera follow the explode setting
+    // The camera's reach (OrbitCamera::camera): the camera's bounds hold the scene as the
+    // explode slider places it, the animation reaches further (SceneState::explodeReach).
+    double reach() { return settings_.animation.animate ? scene_.explodeReach() : 1.0; }
     void showParts();
     void recordScene(render::FrameSlot& slot, render::FrameParams params, bool scenePass);
     std::optional<VkRect2D> changedTiles() const;
