@@ -109,6 +109,9 @@ struct Options {
     // Headless face properties: each point picked (after --measure) and one JSON line of the
     // part's surface printed (scene/face_info.h).
     std::vector<Pixel> faceInfos;
+    // Headless edges: each point picked (after --face-info) and one JSON line of the edge of
+    // its part's face nearest it (scene/edge_info.h), within scene::edgePickPixels.
+    std::vector<Pixel> edgeInfos;
     // Headless visibility: the parts --hide names are not drawn; --isolate draws only its
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;

@@ -10,10 +10,10 @@
 namespace app {
 namespace {
 
-// Lines each details box holds: a part's name, path, face and its surface, object and
-// triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
+// Lines each details box holds: a part's name, path, face and its surface, its edge, object
+// and triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
 // the hover changes (it scrolls where a narrow panel wraps more).
-constexpr float detailLines = 7.0f;
+constexpr float detailLines = 8.0f;
 
 void partLine(const char* what, const PartLine& line) {
     if (!line.part) {
@@ -31,6 +31,12 @@ void partLine(const char* what, const PartLine& line) {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep face's number in its shape (0-based, as --face-info "
                               "gives it); its exact area from Open CASCADE");
+    }
+    if (!line.edge.empty()) {
+        ImGui::TextWrapped("%s", line.edge.c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the B-rep edge's number in its shape (0-based, as --edge-info "
+                              "gives it); its exact length, radius and axis from Open CASCADE");
     }
     ImGui::TextWrapped("object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
     ImGui::TextWrapped("%u triangles, depth %.6f", p.triangleCount, double(line.depth));
