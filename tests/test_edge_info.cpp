@@ -20,9 +20,9 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
+#include <GeomAdaptor_Curve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_TrimmedCurve.hxx>
-#include <GeomAdaptor_Curve.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -167,7 +167,8 @@ TEST(EdgeInfo, TheNearestEdgeOnScreenIsTheOneNextToTheCursor) {
     for (uint32_t p = 0; p < s.uniquePartCount(); ++p)
         for (const EdgeRef& ref : faceEdges(s, p)) {
             const auto e = edgeReport(s, ref);
-            if (e && e->kind == CurveKind::Circle && e->center.z > 5.0 && faceEdges(s, p).size() == 5)
+            if (e && e->kind == CurveKind::Circle && e->center.z > 5.0 &&
+                faceEdges(s, p).size() == 5)
                 top = p;
         }
     ASSERT_NE(top, ~0u);
@@ -203,8 +204,7 @@ TEST(EdgeInfo, AnOcctFilesEdgesAreOpenCascadesOwn) {
     int circles = 0, checked = 0;
     for (uint32_t part = 0; part < s.uniquePartCount(); ++part) {
         const uint32_t object = s.locate(part)->object;
-        const TopoDS_Shape& shape =
-            s.brep->impl().geometries[s.objects[object].geometry].shape;
+        const TopoDS_Shape& shape = s.brep->impl().geometries[s.objects[object].geometry].shape;
         TopTools_IndexedMapOfShape edges;
         TopExp::MapShapes(shape, TopAbs_EDGE, edges);
         const TopLoc_Location where = placement(glm::dmat4(s.objects[object].world));
@@ -215,7 +215,8 @@ TEST(EdgeInfo, AnOcctFilesEdgesAreOpenCascadesOwn) {
             double first = 0, last = 0;
             const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
             ASSERT_FALSE(curve.IsNull());
-            const double length = GCPnts_AbscissaPoint::Length(GeomAdaptor_Curve(curve), first, last);
+            const double length =
+                GCPnts_AbscissaPoint::Length(GeomAdaptor_Curve(curve), first, last);
             EXPECT_NEAR(e->length, length, 1e-9 * std::max(1.0, length)) << "edge " << ref.edge;
             Handle(Geom_Curve) basis = curve;
             if (auto trimmed = Handle(Geom_TrimmedCurve)::DownCast(basis))

@@ -72,7 +72,7 @@ TEST(EdgeInfoPick, NamesTheEdgeNearestTheRayCastsHit) {
     };
     const glm::dvec2 middle = project({8, 15, 10});
     app::Options o = testing_support::headlessOptions(W, H);
-    o.edgeInfos = {inside({20, 0, 10}, {20, 5, 10}),  // the front edge, y = 0
+    o.edgeInfos = {inside({20, 0, 10}, {20, 5, 10}),   // the front edge, y = 0
                    inside({40, 20, 10}, {35, 20, 10}), // the right edge, x = 40
                    inside({25, 15, 10}, {27, 15, 10}), // the hole's rim
                    {uint32_t(middle.x), uint32_t(middle.y)}};

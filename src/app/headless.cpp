@@ -16,8 +16,8 @@
 #include "render/renderer.h"
 #include "render/targets.h"
 #include "scene/camera_path.h"
-#include "scene/explode.h"
 #include "scene/edge_info.h"
+#include "scene/explode.h"
 #include "scene/face_info.h"
 #include "util/cache_file.h"
 #include "util/json_number.h"
@@ -239,11 +239,11 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 result.edgeInfoPicks.push_back(pick);
                 // The cursor at the pixel's centre, as the viewer's mouse position is.
                 result.edgeInfoEdges.push_back(
-                    pick.part ? scene::nearestEdge(scene, *pick.part, params.worldViewProj,
-                                                   glm::dvec2(rig.extent.width, rig.extent.height),
-                                                   glm::dvec2(pick.pixel) + 0.5,
-                                                   scene::edgePickPixels)
-                              : std::nullopt);
+                    pick.part
+                        ? scene::nearestEdge(scene, *pick.part, params.worldViewProj,
+                                             glm::dvec2(rig.extent.width, rig.extent.height),
+                                             glm::dvec2(pick.pixel) + 0.5, scene::edgePickPixels)
+                        : std::nullopt);
             }
             const uint64_t timedBefore = slots.timedFrames();
             const uint64_t reusedBefore = renderer.reusedFrames();
@@ -333,8 +333,8 @@ int runHeadless(const Options& options) {
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
     const bool json = !options.picks.empty() || options.measure || !options.faceInfos.empty() ||
-                      !options.edgeInfos.empty() ||
-                      result.rectParts || result.visibleParts || options.stats;
+                      !options.edgeInfos.empty() || result.rectParts || result.visibleParts ||
+                      options.stats;
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()

@@ -30,10 +30,10 @@ struct HeadlessResult {
     std::vector<render::PickReading> measured;
     std::array<std::optional<glm::dvec3>, 2> measuredPoints;
     std::vector<render::PickReading> faceInfoPicks; // one per Options::faceInfos entry
+    std::optional<uint32_t> selected;               // the part Options::selects picked, if any
     // One per Options::edgeInfos entry: the pick and the edge of its part's face nearest it.
     std::vector<render::PickReading> edgeInfoPicks;
     std::vector<std::optional<scene::EdgeRef>> edgeInfoEdges;
-    std::optional<uint32_t> selected;               // the part Options::selects picked, if any
     // Options::selectRect: the parts in the rectangle (the selection afterwards), and their
     // count as the GPU counted it.
     std::optional<scene::PartSet> rectParts;

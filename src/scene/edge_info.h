@@ -30,7 +30,7 @@ struct EdgeReport {
     glm::dvec3 direction{0.0};       // lines
     double radius = 0.0;             // circles and arcs (diameter = 2 radius)
     glm::dvec3 center{0.0}, axis{0.0};
-    std::vector<glm::dvec3> points;  // along the edge, for drawing and screen distance
+    std::vector<glm::dvec3> points; // along the edge, for drawing and screen distance
     LengthUnit unit;
 };
 

@@ -145,8 +145,7 @@ std::optional<EdgeReport> edgeReport(const Scene& scene, EdgeRef ref) {
     TopoDS_Vertex first, last;
     TopExp::Vertices(edge, first, last);
     report.closed = !first.IsNull() && first.IsSame(last);
-    if (report.kind == CurveKind::Line)
-        report.direction = direction(curve.Line().Direction());
+    if (report.kind == CurveKind::Line) report.direction = direction(curve.Line().Direction());
     if (report.kind == CurveKind::Circle) {
         const gp_Circ circle = curve.Circle();
         report.radius = circle.Radius();
@@ -212,9 +211,9 @@ std::string edgeReportJson(const EdgeReport& r) {
                        ",\"edge\":" + std::to_string(r.ref.edge) + ",\"curve\":\"" +
                        curveName(r.kind) + "\",\"length\":" + jsonNumber(r.length);
     if (r.kind == CurveKind::Circle)
-        json += ",\"radius\":" + jsonNumber(r.radius) + ",\"diameter\":" +
-                jsonNumber(2.0 * r.radius) + ",\"center\":" + jsonVector(r.center) +
-                ",\"axis\":" + jsonVector(r.axis);
+        json += ",\"radius\":" + jsonNumber(r.radius) +
+                ",\"diameter\":" + jsonNumber(2.0 * r.radius) +
+                ",\"center\":" + jsonVector(r.center) + ",\"axis\":" + jsonVector(r.axis);
     if (r.kind == CurveKind::Line) json += ",\"direction\":" + jsonVector(r.direction);
     json += ",\"start\":" + jsonVector(r.start) + ",\"end\":" + jsonVector(r.end) +
             ",\"closed\":" + (r.closed ? "true" : "false");
