@@ -101,8 +101,10 @@ std::string describeSurface(const FaceReport& r) {
     // A hole or a boss is sized by its diameter; the radius follows for fillets.
     if (s.kind == SurfaceKind::Cylinder) {
         char axis[96];
-        std::snprintf(axis, sizeof axis, ", axis (%.4g, %.4g, %.4g)", s.axisDirection.x,
-                      s.axisDirection.y, s.axisDirection.z);
+        // Rounding's leftovers (-2.22e-16) read as the 0 they are.
+        const glm::dvec3 d = glm::mix(s.axisDirection, glm::dvec3(0.0),
+                                      glm::lessThan(glm::abs(s.axisDirection), glm::dvec3(1e-12)));
+        std::snprintf(axis, sizeof axis, ", axis (%.4g, %.4g, %.4g)", d.x, d.y, d.z);
         line += " Ø " + formatLength(2.0 * s.radius, r.unit) + " (r " +
                 formatLength(s.radius, r.unit) + ")" + axis;
     }

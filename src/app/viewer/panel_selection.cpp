@@ -15,6 +15,15 @@ namespace {
 // the hover changes (it scrolls where a narrow panel wraps more).
 constexpr float detailLines = 8.0f;
 
+// A face's or an edge's line, wrapped a space short of the edge: where a word ends just at the
+// edge ImGui 1.86 counts the blank after it in the line's width, past the edge (seen at the
+// narrowest panel with "cylinder Ø 10 mm (r 5 mm), axis (0, 0, -1)").
+void wrappedLine(const std::string& text) {
+    ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(" ").x);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+}
+
 void partLine(const char* what, const PartLine& line) {
     if (!line.part) {
         ImGui::TextDisabled("%s: none", what);
@@ -27,13 +36,13 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::PopStyleColor();
     if (p.face) {
         const std::string surface = line.face ? ": " + scene::describeSurface(*line.face) : "";
-        ImGui::TextWrapped("face %u%s", *p.face, surface.c_str());
+        wrappedLine("face " + std::to_string(*p.face) + surface);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep face's number in its shape (0-based, as --face-info "
                               "gives it); its exact area from Open CASCADE");
     }
     if (!line.edge.empty()) {
-        ImGui::TextWrapped("%s", line.edge.c_str());
+        wrappedLine(line.edge);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep edge's number in its shape (0-based, as --edge-info "
                               "gives it); its exact length, radius and axis from Open CASCADE");

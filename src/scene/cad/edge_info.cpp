@@ -228,8 +228,10 @@ std::string describeEdge(const EdgeReport& r) {
     line += ", length " + formatLength(r.length, r.unit);
     if (r.kind == CurveKind::Line) {
         char text[96];
-        std::snprintf(text, sizeof text, ", direction (%.4g, %.4g, %.4g)", r.direction.x,
-                      r.direction.y, r.direction.z);
+        // Rounding's leftovers (-2.22e-16) read as the 0 they are.
+        const glm::dvec3 d = glm::mix(r.direction, glm::dvec3(0.0),
+                                      glm::lessThan(glm::abs(r.direction), glm::dvec3(1e-12)));
+        std::snprintf(text, sizeof text, ", direction (%.4g, %.4g, %.4g)", d.x, d.y, d.z);
         line += text;
     }
     return line;
