@@ -2,6 +2,7 @@
 // the edge drawn nearest a pixel (edge_info.h).
 #include "scene/edge_info.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +13,7 @@
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GCPnts_TangentialDeflection.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -86,11 +88,42 @@ CurveKind kindOf(GeomAbs_CurveType type) {
 std::vector<glm::dvec3> polyline(const BRepAdaptor_Curve& curve, CurveKind kind, double length) {
     const double first = curve.FirstParameter(), last = curve.LastParameter();
     if (kind == CurveKind::Line) return {point(curve.Value(first)), point(curve.Value(last))};
-    GCPnts_TangentialDeflection sampler(curve, polylineAngle, polylineSag * length, 2);
+    // Open CASCADE refuses a sag of 0 (an edge of no length): a floor keeps it positive.
+    GCPnts_TangentialDeflection sampler(curve, polylineAngle, std::max(polylineSag * length, 1e-12),
+                                        2);
     std::vector<glm::dvec3> points;
     for (int i = 1; i <= sampler.NbPoints(); ++i) points.push_back(point(sampler.Value(i)));
     if (points.size() < 2) points = {point(curve.Value(first)), point(curve.Value(last))};
     return points;
+}
+
+// What edgeReport says of the placed edge; Open CASCADE may throw on a broken curve.
+EdgeReport measured(const TopoDS_Edge& edge, EdgeRef ref, uint32_t object, const LengthUnit& unit) {
+    const BRepAdaptor_Curve curve(edge);
+    EdgeReport report;
+    report.ref = ref;
+    report.object = object;
+    report.unit = unit;
+    report.kind = kindOf(curve.GetType());
+    report.length = GCPnts_AbscissaPoint::Length(curve);
+    report.start = point(curve.Value(curve.FirstParameter()));
+    report.end = point(curve.Value(curve.LastParameter()));
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(edge, first, last);
+    report.closed = !first.IsNull() && first.IsSame(last);
+    if (report.kind == CurveKind::Line) report.direction = direction(curve.Line().Direction());
+    if (report.kind == CurveKind::Circle) {
+        const gp_Circ circle = curve.Circle();
+        report.radius = circle.Radius();
+        report.center = point(circle.Location());
+        report.axis = direction(circle.Axis().Direction());
+    }
+    if (report.kind == CurveKind::Ellipse) {
+        report.center = point(curve.Ellipse().Location());
+        report.axis = direction(curve.Ellipse().Axis().Direction());
+    }
+    report.points = polyline(curve, report.kind, report.length);
+    return report;
 }
 
 // Distance from `p` to the segment a-b, in pixels.
@@ -133,31 +166,12 @@ std::optional<EdgeReport> edgeReport(const Scene& scene, EdgeRef ref) {
     if (BRep_Tool::Degenerated(unplaced) || !BRep_Tool::IsGeometric(unplaced)) return std::nullopt;
     const TopoDS_Edge edge = TopoDS::Edge(unplaced.Moved(placement(glm::dmat4(object.world))));
 
-    const BRepAdaptor_Curve curve(edge);
-    EdgeReport report;
-    report.ref = ref;
-    report.object = located->object;
-    report.unit = scene.unit;
-    report.kind = kindOf(curve.GetType());
-    report.length = GCPnts_AbscissaPoint::Length(curve);
-    report.start = point(curve.Value(curve.FirstParameter()));
-    report.end = point(curve.Value(curve.LastParameter()));
-    TopoDS_Vertex first, last;
-    TopExp::Vertices(edge, first, last);
-    report.closed = !first.IsNull() && first.IsSame(last);
-    if (report.kind == CurveKind::Line) report.direction = direction(curve.Line().Direction());
-    if (report.kind == CurveKind::Circle) {
-        const gp_Circ circle = curve.Circle();
-        report.radius = circle.Radius();
-        report.center = point(circle.Location());
-        report.axis = direction(circle.Axis().Direction());
+    // A broken curve makes Open CASCADE throw: that edge has no report, and the app goes on.
+    try {
+        return measured(edge, ref, located->object, scene.unit);
+    } catch (const Standard_Failure&) {
+        return std::nullopt;
     }
-    if (report.kind == CurveKind::Ellipse) {
-        report.center = point(curve.Ellipse().Location());
-        report.axis = direction(curve.Ellipse().Axis().Direction());
-    }
-    report.points = polyline(curve, report.kind, report.length);
-    return report;
 }
 
 std::optional<EdgeRef> nearestEdge(const Scene& scene, uint32_t part, const glm::dmat4& viewProj,
