@@ -41,7 +41,9 @@ constexpr double polylineSag = 1e-3;
 
 // The edges of one geometry's shape in TopExp::MapShapes order: EdgeRef::edge indexes it.
 // Kept for the last geometry asked (hovering asks for the same part move after move); the
-// weak pointer tells a reloaded scene's shapes from the ones mapped.
+// weak pointer tells a reloaded scene's shapes from the ones mapped. The lock guards the
+// rebuild, but the map handed out is the kept one: edge queries run on one thread at a time
+// (the viewer's main thread, headless's), as they do now.
 struct EdgeMap {
     std::weak_ptr<const BrepShapes> shapes;
     uint32_t geometry = 0;
