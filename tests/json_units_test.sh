@@ -27,8 +27,8 @@ check() {
     if python3 - "$work/$name.json" "$unit" <<'PY'; then echo "ok   $name: every length in $unit"; else failures=$((failures + 1)); fi
 import json, sys
 # Members that are lengths, coordinates, offsets or areas, wherever they appear.
-lengths = {"distance", "delta", "p0", "p1", "area", "radius", "d", "bbox", "center", "axis",
-           "deflection", "lod_levels"}
+lengths = {"distance", "delta", "p0", "p1", "area", "radius", "diameter", "d", "bbox", "center",
+           "axis", "deflection", "lod_levels"}
 path, unit = sys.argv[1], sys.argv[2]
 seen, bad = set(), []
 for line in open(path):

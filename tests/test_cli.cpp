@@ -394,3 +394,18 @@ TEST(Cli, ViewAndOrthoFlags) {
     EXPECT_NE(text.find("--view NAME"), std::string::npos);
     EXPECT_NE(text.find("--ortho"), std::string::npos);
 }
+
+// --edge-info takes pixels as --pick does: repeatable, and refused outside the image with the
+// same words.
+TEST(Cli, EdgeInfoPixels) {
+    const auto o = app::parseArgs(
+        std::vector<std::string>{"--size", "100x50", "--edge-info", "3,4", "--edge-info", "99,49"});
+    EXPECT_EQ(o.edgeInfos, (std::vector<app::Options::Pixel>{{3, 4}, {99, 49}}));
+    try {
+        app::parseArgs(std::vector<std::string>{"--size", "100x50", "--edge-info", "100,4"});
+        ADD_FAILURE() << "a pixel outside the image was taken";
+    } catch (const app::UsageError& e) {
+        EXPECT_EQ(std::string(e.what()), "pixel 100,4 is outside the 100x50 image");
+    }
+    EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--edge-info", "1"}), app::UsageError);
+}

@@ -82,6 +82,13 @@ TEST(FaceInfo, ABoxWithAHoleHasItsKnownPlanesAndCylinder) {
             EXPECT_NEAR(std::abs(r->surface.axisDirection.z), 1.0, 1e-9);
             EXPECT_NEAR(r->surface.axisOrigin.x, 20.0, 1e-9);
             EXPECT_NEAR(r->surface.axisOrigin.y, 15.0, 1e-9);
+            // The hole's diameter, in the JSON and the panel's line with its axis.
+            EXPECT_NE(faceReportJson(*r).find("\"diameter\":10,"), std::string::npos)
+                << faceReportJson(*r);
+            const std::string line = describeSurface(*r);
+            EXPECT_EQ(line.rfind("cylinder \u00d8 10 (no unit) (r 5 (no unit)), axis (0, 0, ", 0),
+                      0u)
+                << line;
             cylinderArea += r->surface.area;
             continue;
         }

@@ -99,3 +99,34 @@ TEST(Selection, HideIsolateAndShowAll) {
     s.showAll();
     EXPECT_TRUE(s.hidden().empty());
 }
+
+// The hovered B-rep edge: a click while one is hovered selects it with its part, a click away
+// from every edge leaves none; a box, Esc, hiding its part and a new scene clear it.
+TEST(Selection, AClickSelectsTheHoveredEdgeAndEscOrANewSceneClearsIt) {
+    app::Selection s;
+    s.reset(10);
+    s.hover(3);
+    s.hoverEdge(scene::EdgeRef{3, 7});
+    EXPECT_EQ(s.hoveredEdge(), (scene::EdgeRef{3, 7}));
+    EXPECT_FALSE(s.selectedEdge());
+    s.click();
+    EXPECT_EQ(s.selectedEdge(), (scene::EdgeRef{3, 7}));
+    EXPECT_TRUE(s.selected().contains(3));
+    s.hoverEdge(std::nullopt);
+    s.click();
+    EXPECT_FALSE(s.selectedEdge());
+    s.hoverEdge(scene::EdgeRef{3, 2});
+    s.click();
+    EXPECT_TRUE(s.escape());
+    EXPECT_FALSE(s.selectedEdge());
+    s.click();
+    s.select(setOf(10, {1, 2}), app::SelectMode::Replace);
+    EXPECT_FALSE(s.selectedEdge());
+    s.click();
+    s.hide(setOf(10, {3}));
+    EXPECT_FALSE(s.selectedEdge());
+    s.click();
+    s.reset(10);
+    EXPECT_FALSE(s.selectedEdge());
+    EXPECT_FALSE(s.hoveredEdge());
+}

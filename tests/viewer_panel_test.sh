@@ -7,8 +7,9 @@
 # width nor at the narrowest, 320 px (the window made narrow enough to clamp it there); the
 # row under the pointer stays where it was while a section plane's rows and the measure
 # section come and go above it; a selected CAD face's event line carries its name, surface
-# type and area in mm², and a measured distance its unit; on lavapipe the title says its
-# times are a CPU device's.
+# type and area in mm², and a measured distance its unit; clicks stepping onto the seam of the
+# screw's shaft hover its B-rep edge, then select that edge (event lines with its curve and
+# length in mm), and a click away from it leaves no edge selected; on lavapipe the title says its times are a CPU device's.
 # A validation message fails a session (exit code 3). Exit 77: skipped (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 screw=/usr/share/opencascade/data/step/screw.step
@@ -94,6 +95,13 @@ t=1
     done
     at frames 5
     at screenshot "$work/wide.png"
+    # Clicks stepping right onto the shaft's seam (a B-rep line edge near x 737 at y 900 in
+    # this view), the last within edgePickPixels of it, 4 px apart (never a double-click).
+    for x in 720 724 728 732 736; do
+        at click $x 900
+        at frames 2
+    done
+    at screenshot "$work/edge.png"
     # On the screw's shaft: it opens fitted in the area beside the panel.
     at click 680 850
     at frames 5
@@ -130,6 +138,20 @@ fi
 measured=$(grep '^idview: measure: {' "$work/clip.out" | tail -1)
 [[ $measured == *'"distance":'[0-9]*'"unit":"mm"}' ]] && echo "ok   the measure line in mm: $measured" ||
     fail "the measure line: ${measured:-none}"
+# The edge: hovered, then selected by a click with its curve and length, then no longer
+# selected after the click away from it that follows (the face's selection above).
+hovered=$(sed -n 's/^idview: edge hovered: \(part [0-9]* edge [0-9]*\)$/\1/p' "$work/clip.out" | head -1)
+edge=$(grep -m1 '^idview: edge selected: part' "$work/clip.out")
+if [[ -n $hovered && $edge =~ ^idview:\ edge\ selected:\ $hovered:\ [a-z]+.*,\ length\ [0-9.e+-]+\ mm ]]; then
+    echo "ok   $edge"
+else
+    fail "no edge hovered then selected: hovered '${hovered:-none}', ${edge:-no edge selected}"
+fi
+before=$(sed -n "1,\|^idview: screenshot: $work/edge.png|p" "$work/clip.out" | grep '^idview: edge selected:' | tail -1)
+after=$(sed -n "\|^idview: screenshot: $work/edge.png|,\$p" "$work/clip.out" | grep '^idview: edge selected:' | tail -1)
+[[ $before == *"edge selected: part"* && $after == "idview: edge selected: none" ]] &&
+    echo "ok   a click away from the edge left none selected" ||
+    fail "edge selected before the click away '${before:-nothing}', after '${after:-nothing}'"
 grep -q '^idview: title: .* - render (CPU device) [0-9.]* ms$' "$work/clip.out" &&
     echo "ok   the title says lavapipe's times are CPU time" ||
     fail "title: $(grep -m1 '^idview: title:' "$work/clip.out")"

@@ -150,6 +150,7 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
     };
     std::vector<Options::Pixel> pixels = options.picks;
     pixels.insert(pixels.end(), options.faceInfos.begin(), options.faceInfos.end());
+    pixels.insert(pixels.end(), options.edgeInfos.begin(), options.edgeInfos.end());
     if (options.measure)
         pixels.insert(pixels.end(), options.measure->begin(), options.measure->end());
     pixels.insert(pixels.end(), options.selects.begin(), options.selects.end());

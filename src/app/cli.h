@@ -115,6 +115,9 @@ struct Options {
     std::optional<std::array<uint32_t, 2>> distance;
     std::optional<uint32_t> propertiesObject;
     bool propertiesAll = false;
+    // Headless edges: each point picked (after --face-info) and one JSON line of the edge of
+    // its part's face nearest it (scene/edge_info.h), within scene::edgePickPixels.
+    std::vector<Pixel> edgeInfos;
     // Headless visibility: the parts --hide names are not drawn; --isolate draws only its
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;

@@ -377,6 +377,15 @@ const std::vector<Flag>& flags() {
                  if (!o.propertiesAll)
                      o.propertiesObject = parseCount("--properties", v, 0, 0xFFFFFFFEu);
              }},
+            headless(
+                {"--edge-info", "X,Y",
+                 "headless: pick the pixel and print one JSON line of the B-rep edge of its "
+                 "part's face drawn nearest it, within a few pixels: {x,y,part,object,edge,curve,"
+                 "length,...,start,end,closed} with curve line, circle, ellipse, bspline or other, "
+                 "its exact length, radius, diameter, center and axis for circles, direction for "
+                 "lines; \"edge\":null away from every edge, on background or without a B-rep; "
+                 "repeatable",
+                 [](Options& o, auto& v) { o.edgeInfos.push_back(parsePixel("--edge-info", v)); }}),
             headless({"--hide", "ID,...",
                       "headless: do not draw these unique parts (nor pick them)",
                       [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }}),

@@ -16,6 +16,7 @@
 #include "render/renderer.h"
 #include "render/targets.h"
 #include "scene/camera_path.h"
+#include "scene/edge_info.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
 #include "scene/inspect.h"
@@ -44,6 +45,16 @@ std::string pickJson(const scene::Scene& scene, const render::PickReading& pick)
     std::snprintf(depth, sizeof depth, ",\"depth\":%.9g}", double(pick.depth));
     return std::string(head) + ids + "\"name\":" + jsonString(info->name) +
            ",\"path\":" + jsonString(info->path) + depth;
+}
+
+std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& pick,
+                         const std::optional<scene::EdgeRef>& edge) {
+    const std::string head =
+        "{\"x\":" + std::to_string(pick.pixel.x) + ",\"y\":" + std::to_string(pick.pixel.y) + ",";
+    const auto report = edge ? scene::edgeReport(scene, *edge) : std::nullopt;
+    if (report) return head + scene::edgeReportJson(*report).substr(1);
+    return head + "\"part\":" + (pick.part ? std::to_string(*pick.part) : std::string("null")) +
+           ",\"edge\":null}";
 }
 
 std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
@@ -224,6 +235,17 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 }
             for (const auto& pixel : options.faceInfos)
                 result.faceInfoPicks.push_back(pickFrame(pixel));
+            for (const auto& pixel : options.edgeInfos) {
+                const render::PickReading pick = pickFrame(pixel);
+                result.edgeInfoPicks.push_back(pick);
+                // The cursor at the pixel's centre, as the viewer's mouse position is.
+                result.edgeInfoEdges.push_back(
+                    pick.part
+                        ? scene::nearestEdge(scene, *pick.part, params.worldViewProj,
+                                             glm::dvec2(rig.extent.width, rig.extent.height),
+                                             glm::dvec2(pick.pixel) + 0.5, scene::edgePickPixels)
+                        : std::nullopt);
+            }
             const uint64_t timedBefore = slots.timedFrames();
             const uint64_t reusedBefore = renderer.reusedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
@@ -307,6 +329,9 @@ int runHeadless(const Options& options) {
         const auto report = pick.part ? scene::faceReport(scene, *pick.part) : std::nullopt;
         std::printf("%s\n", report ? scene::faceReportJson(*report).c_str() : "{\"part\":null}");
     }
+    for (size_t i = 0; i < result.edgeInfoPicks.size(); ++i)
+        std::printf("%s\n",
+                    edgeInfoJson(scene, result.edgeInfoPicks[i], result.edgeInfoEdges[i]).c_str());
     if (result.visibleParts)
         std::printf("%s\n",
                     partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
@@ -318,8 +343,8 @@ int runHeadless(const Options& options) {
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
     const bool json = !options.picks.empty() || options.measure || !options.faceInfos.empty() ||
-                      result.rectParts || result.visibleParts || options.stats ||
-                      !inspection.empty();
+                      !options.edgeInfos.empty() || result.rectParts || result.visibleParts ||
+                      options.stats || !inspection.empty();
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()

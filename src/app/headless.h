@@ -11,6 +11,7 @@
 #include "app/cli.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
+#include "scene/inspect.h"
 #include "scene/scene.h"
 
 namespace app {
@@ -30,6 +31,9 @@ struct HeadlessResult {
     std::array<std::optional<glm::dvec3>, 2> measuredPoints;
     std::vector<render::PickReading> faceInfoPicks; // one per Options::faceInfos entry
     std::optional<uint32_t> selected;               // the part Options::selects picked, if any
+    // One per Options::edgeInfos entry: the pick and the edge of its part's face nearest it.
+    std::vector<render::PickReading> edgeInfoPicks;
+    std::vector<std::optional<scene::EdgeRef>> edgeInfoEdges;
     // Options::selectRect: the parts in the rectangle (the selection afterwards), and their
     // count as the GPU counted it.
     std::optional<scene::PartSet> rectParts;
@@ -62,6 +66,9 @@ struct HeadlessResult {
 // One --pick JSON line: {"x","y","part","object","local_part","name","path","depth"}, with
 // nulls for every field but x and y on background.
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
+// --edge-info's line: {"x","y"} then edgeReportJson's members, or {"x","y","part","edge":null}.
+std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& pick,
+                         const std::optional<scene::EdgeRef>& edge);
 
 // --measure's line: {"p0":[x,y,z],"p1":[x,y,z],"distance":D,"delta":[dx,dy,dz],"parts":[A,B],
 // "unit":"mm"}, null where a point shows no part (and the distance and delta then); the

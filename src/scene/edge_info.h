@@ -30,13 +30,20 @@ struct EdgeReport {
     glm::dvec3 direction{0.0};       // lines
     double radius = 0.0;             // circles and arcs (diameter = 2 radius)
     glm::dvec3 center{0.0}, axis{0.0};
-    std::vector<glm::dvec3> points;  // along the edge, for drawing and screen distance
+    std::vector<glm::dvec3> points; // along the edge, for drawing and screen distance
     LengthUnit unit;
 };
 
 // The edges bounding the part's face (EdgeRefs of that part); empty without a B-rep.
 std::vector<EdgeRef> faceEdges(const Scene& scene, uint32_t part);
 std::optional<EdgeReport> edgeReport(const Scene& scene, EdgeRef ref);
+
+// How near (pixels) the cursor must come to an edge for --edge-info and the viewer's hover to
+// take it: the ID image's face boundary lies within about a pixel of the drawn edge (the
+// tessellation's chords and the rasterizer's sample position), so a cursor on the face a couple
+// of pixels inside it finds the edge, while a band of 4 still leaves most of a face on screen
+// for picking the face itself.
+inline constexpr double edgePickPixels = 4.0;
 
 // The edge of `part`'s face (or of a neighbouring face sharing it) drawn nearest the pixel
 // `cursor` under `viewProj` (world to clip, double) in a window of `size` pixels, if within

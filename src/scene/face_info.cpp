@@ -86,7 +86,8 @@ std::string faceReportJson(const FaceReport& r) {
     if (s.kind == SurfaceKind::Plane)
         json += ",\"normal\":" + vec(s.normal) + ",\"d\":" + number(s.d);
     if (s.kind == SurfaceKind::Cylinder)
-        json += ",\"radius\":" + number(s.radius) + ",\"axis\":{\"origin\":" + vec(s.axisOrigin) +
+        json += ",\"radius\":" + number(s.radius) + ",\"diameter\":" + number(2.0 * s.radius) +
+                ",\"axis\":{\"origin\":" + vec(s.axisOrigin) +
                 ",\"direction\":" + vec(s.axisDirection) + "}";
     if (s.kind == SurfaceKind::Sphere)
         json += ",\"radius\":" + number(s.radius) + ",\"center\":" + vec(s.axisOrigin);
@@ -97,8 +98,17 @@ std::string faceReportJson(const FaceReport& r) {
 std::string describeSurface(const FaceReport& r) {
     const SurfaceInfo& s = r.surface;
     std::string line = surfaceName(s.kind);
-    if (s.kind == SurfaceKind::Cylinder || s.kind == SurfaceKind::Sphere)
-        line += " r " + formatLength(s.radius, r.unit);
+    // A hole or a boss is sized by its diameter; the radius follows for fillets.
+    if (s.kind == SurfaceKind::Cylinder) {
+        char axis[96];
+        // Rounding's leftovers (-2.22e-16) read as the 0 they are.
+        const glm::dvec3 d = glm::mix(s.axisDirection, glm::dvec3(0.0),
+                                      glm::lessThan(glm::abs(s.axisDirection), glm::dvec3(1e-12)));
+        std::snprintf(axis, sizeof axis, ", axis (%.4g, %.4g, %.4g)", d.x, d.y, d.z);
+        line += " Ø " + formatLength(2.0 * s.radius, r.unit) + " (r " +
+                formatLength(s.radius, r.unit) + ")" + axis;
+    }
+    if (s.kind == SurfaceKind::Sphere) line += " r " + formatLength(s.radius, r.unit);
     if (s.kind == SurfaceKind::Plane) {
         char normal[96];
         std::snprintf(normal, sizeof normal, " n (%.4g, %.4g, %.4g)", s.normal.x, s.normal.y,

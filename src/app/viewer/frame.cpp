@@ -47,6 +47,13 @@ void Viewer::drawFrame(const FrameWants& wants) {
         saidHovered_ = hovered;
         events_.say(hovered ? "hovered: part " + std::to_string(*hovered) : "hovered: none");
     }
+    // The cursor at its pixel's centre, as --edge-info takes it.
+    const VkExtent2D extent = scene_.targets()->extent();
+    const auto cursor = input_.cursorPixel(extent);
+    edgeHover_.update(scene_.scene(), input_.selection(),
+                      cursor ? std::optional(glm::dvec2(*cursor) + 0.5) : std::nullopt, viewProj_,
+                      glm::dvec2(extent.width, extent.height));
+    edgeHover_.tell(scene_.scene(), input_.selection(), events_);
     if (input_.readPartSets(slots_.latestPartSets(), scene_.targets()->extent()))
         selectionChanged();
     if (input_.visibleParts() != saidVisible_) {
@@ -87,6 +94,7 @@ void Viewer::drawPanel() {
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
+    edgeHover_.draw(viewProj_, glm::vec2(display.x, display.y));
     drawOverlays();
     ImGui::Render();
 }
@@ -163,6 +171,7 @@ void Viewer::follow(SceneState::Change change) {
     const scene::Scene& scene = scene_.scene();
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
+    edgeHover_.forget();
     startClean(change); // section, history: what belonged to the model before
     scene::AssemblyNode root = scene::assemblyTree(scene, treeRootName(scene_.loaded()));
     scene::sortNatural(root); // the panel lists siblings by name, --tree in scene order
@@ -313,11 +322,13 @@ PanelInfo Viewer::panelInfo() const {
         info.gpuHistory.push_back(float(gpu[i]));
     auto describe = [&](std::optional<uint32_t> part, float depth) {
         const PartDetails& details = partDetails_.get(scene_.scene(), part);
-        return PartLine{details.part, depth, details.face};
+        return PartLine{details.part, depth, details.face, {}};
     };
     info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
     const Selection& selection = input_.selection();
     info.selected = describe(selection.primary(), input_.selectedDepth());
+    info.hovered.edge = edgeHover_.hoveredLine();
+    info.selected.edge = edgeHover_.selectedLine();
     info.bounds = camera_.bounds();
     info.measuring = measure_.on();
     info.measureLines = measureLines(scene_.scene(), measure_.points());

@@ -79,6 +79,7 @@ struct PartLine {
     std::optional<scene::PartInfo> part;
     float depth = 1.0f;
     std::optional<scene::FaceReport> face; // CAD parts: the B-rep face (part_details.h)
+    std::string edge; // the B-rep edge near the cursor or selected (edge_hover.h), or ""
 };
 
 struct PanelInfo {

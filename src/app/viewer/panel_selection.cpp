@@ -10,10 +10,19 @@
 namespace app {
 namespace {
 
-// Lines each details box holds: a part's name, path, face and its surface, object and
-// triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
+// Lines each details box holds: a part's name, path, face and its surface, its edge, object
+// and triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
 // the hover changes (it scrolls where a narrow panel wraps more).
-constexpr float detailLines = 7.0f;
+constexpr float detailLines = 8.0f;
+
+// A face's or an edge's line, wrapped a space short of the edge: where a word ends just at the
+// edge ImGui 1.86 counts the blank after it in the line's width, past the edge (seen at the
+// narrowest panel with "cylinder Ø 10 mm (r 5 mm), axis (0, 0, -1)").
+void wrappedLine(const std::string& text) {
+    ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(" ").x);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+}
 
 void partLine(const char* what, const PartLine& line) {
     if (!line.part) {
@@ -27,10 +36,16 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::PopStyleColor();
     if (p.face) {
         const std::string surface = line.face ? ": " + scene::describeSurface(*line.face) : "";
-        ImGui::TextWrapped("face %u%s", *p.face, surface.c_str());
+        wrappedLine("face " + std::to_string(*p.face) + surface);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep face's number in its shape (0-based, as --face-info "
                               "gives it); its exact area from Open CASCADE");
+    }
+    if (!line.edge.empty()) {
+        wrappedLine(line.edge);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the B-rep edge's number in its shape (0-based, as --edge-info "
+                              "gives it); its exact length, radius and axis from Open CASCADE");
     }
     ImGui::TextWrapped("object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
     ImGui::TextWrapped("%u triangles, depth %.6f", p.triangleCount, double(line.depth));

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/cli.h"
+#include "app/viewer/edge_hover.h"
 #include "app/viewer/events.h"
 #include "app/viewer/file_chooser.h"
 #include "app/viewer/input.h"
@@ -157,6 +158,7 @@ class Viewer {
     Input input_;
     OrbitCamera camera_;
     Measure measure_;
+    EdgeHover edgeHover_; // the B-rep edges hovered and selected
     FileChooser chooser_; // Open...: its answer is taken between frames (openDrops)
     void chosen(const ChooserResult& result);
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
