@@ -389,6 +389,9 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Ortho:
         step([this, on = c.text == "on"] { viewer_.setOrtho(on); }, true);
         break;
+    case ScriptOp::Xray:
+        step([this, on = c.text == "on"] { viewer_.setXray(on); }, true);
+        break;
     case ScriptOp::Copies:
         step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);
         break;

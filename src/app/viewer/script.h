@@ -36,6 +36,7 @@
 //                           turns them all off
 //   3.8 view top            a standard view (scene/standard_view.h), as the keys 1, 3, 7, 0 do
 //   3.9 ortho on            orthographic projection (off: perspective), as O does
+//   3.9 xray on             X-ray on (off: off), as X and the panel's checkbox do
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
 //   4.6 loaded              wait until every dropped model has loaded (they load while
@@ -90,6 +91,7 @@ enum class ScriptOp {
     Section,
     View,
     Ortho,
+    Xray,
     Screenshot,
     Drop,
     Loaded,
