@@ -173,8 +173,13 @@ std::optional<PipelineBuild> Renderer::prepare(const scene::Scene& scene,
                                                const RenderSettings& settings) {
     if (!sceneGpu_) throw vk::Error("Renderer::prepare before setScene");
     const PipelineKey key = keyFor(scene, settings, false);
-    if (pipelines_.request(key, pass(key.msaa))) return std::nullopt;
-    return pipelines_.progress(key);
+    if (!pipelines_.request(key, pass(key.msaa))) return pipelines_.progress(key);
+    // Under X-ray its pipeline follows the MSAA setting and section too: built on a worker.
+    if (translucentPipeline_) {
+        const PipelineKey xray = translucentKey(key);
+        if (!pipelines_.request(xray, pass(xray.msaa))) return pipelines_.progress(xray);
+    }
+    return std::nullopt;
 }
 
 PipelineKey Renderer::hidingKey(bool hiding) const {

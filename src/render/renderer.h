@@ -102,10 +102,11 @@ class Renderer {
     // previous configuration drawing.
     void configure(const scene::Scene& scene, const RenderSettings& settings);
     // The non-blocking path (the viewer, which keeps drawing meanwhile): whether configure()
-    // with these arguments would find its pipeline built. nullopt: it would, and costs no
-    // compile; else the build it needs, started on a worker unless it runs already (ask again,
-    // a frame later: the newest wish is the one asked for). Throws what configure() would
-    // refuse, and once the error of a build that failed (the next ask starts it again).
+    // with these arguments would find its pipeline (and X-ray's, while on) built. nullopt: it
+    // would, and costs no compile; else the build it needs, started on a worker unless it runs
+    // already (ask again, a frame later: the newest wish is the one asked for). Throws what
+    // configure() would refuse, and once the error of a build that failed (the next ask starts
+    // it again).
     std::optional<PipelineBuild> prepare(const scene::Scene& scene, const RenderSettings& settings);
     // The same for setHidden(hidden), which switches to the variant that discards hidden parts
     // (or back) when `hidden` is the first set hidden (or the last shown).
