@@ -5,6 +5,8 @@
 // selected part finds the selected part.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "render/technique.h"
@@ -121,6 +123,17 @@ TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
             }
         }
     }
+    // A click's selection (--select): the one part, as isolating it draws it.
+    app::Options click = testing_support::headlessOptions(W, H);
+    click.selects = {through.front()};
+    click.xray = true;
+    const app::HeadlessResult one = app::renderHeadless(click, scene, camera);
+    ASSERT_TRUE(one.selected.has_value());
+    EXPECT_EQ(*one.selected, plain.ids[size_t(through.front().y) * W + through.front().x]);
+    app::Options alone = testing_support::headlessOptions(W, H);
+    alone.isolate = {*one.selected};
+    EXPECT_EQ(one.ids, app::renderHeadless(alone, scene, camera).ids);
+    EXPECT_GT(std::count(one.ids.begin(), one.ids.end(), *one.selected), 0);
     // The plain view shows other parts where X-ray shows the selection's.
     size_t covered = 0;
     for (size_t i = 0; i < plain.ids.size(); ++i)
