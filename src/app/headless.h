@@ -78,7 +78,8 @@ std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
 // becomes the selection), Options::selectRect (one frame, its parts become the selection),
 // then one frame per Options::picks entry, then one per Options::measure point; the timed frames
 // keep the last pick point hovered. With Options::xray, X-ray (render/xray.h) applies once the
-// selection is made: the picks, measures and timed frames see the selection through it. Throws vk::Error / vk::ShaderError with a message for people.
+// selection is made: the picks, measures and timed frames see the selection through it.
+// Throws vk::Error / vk::ShaderError with a message for people.
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 
