@@ -92,9 +92,10 @@ void main() {
 #if IDV_SECTION
     if (cutAway(frame, inWorldPos)) discard;
 #endif
+    // The X-ray pass draws the floor's shading translucent, blended over the picture.
     outColor = vec4(cap ? capColor(base, gl_FragCoord.xy)
                         : headlight(base, inWorldNormal, toViewer(frame, inWorldPos)),
-                    1.0);
+                    IDV_TRANSLUCENT != 0 ? XRAY_ALPHA : 1.0);
 #else
 #if IDV_PART_FROM_EARLIER_STAGE
     uint localPart = inPartIndex;

@@ -70,6 +70,14 @@ constexpr float NEUTRAL_MATERIAL = 0.5f;
 const float NEUTRAL_MATERIAL = 0.5;
 #endif
 
+// X-ray (render/xray.h): the opacity of the parts outside the selection, drawn over the scene
+// pass's picture. Low enough that three layers of them still let the selection show.
+#ifdef __cplusplus
+constexpr float XRAY_ALPHA = 0.25f;
+#else
+const float XRAY_ALPHA = 0.25;
+#endif
+
 // FrameData::pickPixel.x when no pixel is picked this frame.
 IDV_CONST NO_PICK = 0xFFFFFFFFu;
 

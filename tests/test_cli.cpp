@@ -296,8 +296,10 @@ TEST(Cli, PartFlags) {
     EXPECT_EQ(o.render.edges.color, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
     EXPECT_EQ(app::parseArgs(std::vector<std::string>{"--isolate", "7"}).isolate,
               std::vector<uint32_t>{7});
+    EXPECT_TRUE(app::parseArgs(std::vector<std::string>{"--xray"}).xray);
     const app::Options d;
     EXPECT_FALSE(d.render.edges.on);
+    EXPECT_FALSE(d.xray);
     EXPECT_NE(app::usage().find("(default 101014)"), std::string::npos); // the edge colour's
     for (const auto& bad : std::vector<std::vector<std::string>>{
              {"--size", "100x50", "--select-rect", "0,0,100,10"}, // outside the image

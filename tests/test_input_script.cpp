@@ -220,6 +220,12 @@ TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     EXPECT_EQ(on[0].text, "on");
     EXPECT_EQ(on[1].text, "off");
     EXPECT_EQ(errorOf("1 ortho yes\n"), "s.txt:1: 'ortho' takes on or off, not 'yes'");
+    const auto xray = app::parseScript("1 xray on\n2 xray off\n", "s.txt");
+    ASSERT_EQ(xray.size(), 2u);
+    EXPECT_EQ(xray[0].op, app::ScriptOp::Xray);
+    EXPECT_EQ(xray[0].text, "on");
+    EXPECT_EQ(xray[1].text, "off");
+    EXPECT_EQ(errorOf("1 xray\n"), "s.txt:1: 'xray' takes: xray on|off");
     // The unknown-command message lists the commands, these two among them.
     const std::string unknown = errorOf("1 jump\n");
     EXPECT_NE(unknown.find(", view, ortho,"), std::string::npos) << unknown;

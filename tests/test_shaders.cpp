@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "render/shader_variants.h"
+#include "render/xray.h"
 #include "vk/shader_compiler.h"
 
 namespace fs = std::filesystem;
@@ -93,6 +94,13 @@ TEST(Shaders, VariantKeysCoverEveryChoice) {
             EXPECT_EQ(has(hiding.effective(true)), 1) << t.name << " + " << m.name << " hiding";
             ++expected;
         }
+    // X-ray's translucent pass, with and without the section.
+    for (bool section : {false, true}) {
+        render::PipelineKey xray = render::translucentKey({});
+        xray.section = section;
+        EXPECT_EQ(has(xray), 1) << "x-ray, section " << section;
+        ++expected;
+    }
     EXPECT_EQ(keys.size(), expected); // nothing else
 }
 

@@ -38,6 +38,31 @@ visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=s
 [[ $(count "$big") -gt 10 && $(count "$after_remove") -gt 0 && -n $visible_all &&
     $(count "$after_add") -gt $(count "$after_remove") ]] ||
     fail "headless --select-rect / --visible-parts gave nothing to compare with"
+# X-ray: a pixel where, in the headless image of the same view, a part outside the big box's
+# selection covers a selected part (X-ray shows the selected one there), the same in the
+# 5x5 pixels around it in both images so that a sliver a bit apart changes nothing.
+"$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
+    --id-image "$work/plain.ids" >/dev/null 2>&1
+"$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 --xray \
+    --select-rect 420,150,600,330 --id-image "$work/xray.ids" >/dev/null 2>&1
+read -r xray_x xray_y xray_part < <(python3 - "$work/plain.ids" "$work/xray.ids" \
+    "$(echo "$big" | paste -sd, -)" <<'EOF'
+import struct, sys
+w, h = 720, 450
+plain, xray = (struct.unpack("<%dI" % (w * h), open(f, "rb").read()) for f in sys.argv[1:3])
+selected = {int(i) for i in sys.argv[3].split(",")}
+for y in range(160, h - 3, 2):
+    for x in range(300, w - 3, 2):
+        a, b = plain[y * w + x], xray[y * w + x]
+        if a in selected or b not in selected:
+            continue
+        if all(plain[(y + dy) * w + x + dx] == a and xray[(y + dy) * w + x + dx] == b
+               for dy in range(-2, 3) for dx in range(-2, 3)):
+            print(x, y, b)
+            sys.exit()
+EOF
+)
+[[ -n ${xray_part:-} ]] || fail "headless --xray showed no selected part behind another"
 {
     at key F9
     at key F
@@ -69,6 +94,18 @@ visible_hidden=$("$idview" --headless --size 720x450 --scene procedural:preset=s
         at box 420 150 600 330
         at frames 6
     done
+    # X-ray over the big box's selection: a click where another part covered a selected one
+    # selects the selected one, and the ID image then holds that part alone.
+    at renderer vertex-fs
+    at pipeline ready
+    at key X
+    at pipeline ready # the hiding variant, built on a worker
+    at frames 6
+    at click "${xray_x:-0}" "${xray_y:-0}"
+    at pipeline ready
+    at frames 8
+    at xray off
+    at frames 8
     at quit
 } >"$work/parts.txt"
 session parts --no-saved-settings
@@ -101,6 +138,17 @@ for r in $("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{o
     [[ $got == "idview: selected: $(count "$big") parts" ]] || fail "box with $r: '$got'"
 done
 echo "ok   box selection with each of $n renderers"
+# X-ray: on, the click through, then off.
+after_x=$(sed -n '/^idview: xray: on$/,$p' "$work/parts.out")
+clicked=$(echo "$after_x" | grep -m1 '^idview: selected:')
+[[ $clicked == "idview: selected: part ${xray_part:-none} "* ]] &&
+    echo "ok   X-ray: a click through a translucent part selects part $xray_part behind it" ||
+    fail "X-ray: the click at ${xray_x:-?},${xray_y:-?} gave '$clicked', expected part ${xray_part:-?}"
+xray_seen=$(echo "$after_x" | sed -n '/^idview: selected: part/,/^idview: xray: off$/p' |
+    sed -n 's/^idview: visible parts: //p' | tail -1)
+[[ $xray_seen == 1 ]] && echo "ok   X-ray: the ID image holds the one selected part" ||
+    fail "X-ray with one part selected: visible parts '$xray_seen', expected 1"
+grep -q '^idview: xray: off$' "$work/parts.out" || fail "X-ray: no 'xray: off'"
 # The visible part count the panel shows: once F has framed the scene (the count before the
 # first box's selection, frames after F), the headless count of the same view; with the parts
 # hidden fewer (not compared with headless: parts revealed behind the hidden ones are seen

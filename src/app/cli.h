@@ -122,6 +122,10 @@ struct Options {
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;
     bool visibleParts = false; // print {"count","parts"} of the last frame's ID image
+    // X-ray (render/xray.h): the parts outside the selection drawn translucent, left out of
+    // the ID image and picks. Headless: from the frames after --select / --select-rect on;
+    // the viewer opens with it on (X toggles it).
+    bool xray = false;
 
     SceneSettings scene;
     render::RenderSettings render;

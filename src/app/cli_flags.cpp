@@ -391,6 +391,11 @@ const std::vector<Flag>& flags() {
                       [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }}),
             headless({"--isolate", "ID,...", "headless: draw only these unique parts",
                       [](Options& o, auto& v) { o.isolate = parseIds("--isolate", v); }}),
+            on("--xray",
+               "X-ray: draw the parts outside the selection translucent, out of the ID image and "
+               "picks, so the selected parts inside show (headless: after --select or "
+               "--select-rect; with nothing selected it changes nothing)",
+               &Options::xray),
             headless(
                 on("--visible-parts",
                    "headless: print one JSON line {count,parts} of the unique parts the last frame "

@@ -15,6 +15,7 @@
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"
+#include "render/xray.h"
 #include "scene/camera_path.h"
 #include "scene/edge_info.h"
 #include "scene/explode.h"
@@ -188,6 +189,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             return RectResult{reading.sets.front(), reading.counts.front()};
         };
         const render::PartSetQuery whole{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}};
+        const scene::PartSet hidden = hiddenParts(options, scene);
         for (size_t c = 0; c < settings.size(); ++c) {
             HeadlessResult& result = results[c];
             result.width = rig.extent.width;
@@ -200,9 +202,11 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                 renderer.configure(scene, settings[c]);
             rig.useMsaa(settings[c].pipeline.msaa);
             result.stats = renderer.stats();
-            if (c == 0) renderer.setHidden(hiddenParts(options, scene));
+            // X-ray of the configuration before is off until this one's selection is made.
+            if (c == 0 || options.xray) renderer.setHidden(hidden);
             scene::PartSet selection(scene.uniquePartCount());
             renderer.setSelection(selection);
+            if (options.xray) renderer.setTranslucent(scene, selection);
             params.pickPixel.reset();
             params.partSets.clear();
             for (const auto& pixel : options.selects) {
@@ -214,8 +218,15 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
             if (options.selectRect) {
                 RectResult rect = rectFrame(*options.selectRect);
                 renderer.setSelection(rect.parts);
+                selection = rect.parts;
                 result.rectParts = std::move(rect.parts);
                 result.rectCount = rect.count;
+            }
+            // The picks and the timed frames see the selection through X-ray.
+            if (options.xray) {
+                const render::XrayParts xray = render::xrayParts(true, selection, hidden);
+                renderer.setHidden(xray.hidden);
+                renderer.setTranslucent(scene, xray.translucent);
             }
             for (const auto& pixel : options.picks) {
                 result.picks.push_back(pickFrame(pixel));

@@ -84,7 +84,9 @@ std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
 // Options::hide / isolate apply first. Then the picks: Options::selects (one frame, its part
 // becomes the selection), Options::selectRect (one frame, its parts become the selection),
 // then one frame per Options::picks entry, then one per Options::measure point; the timed frames
-// keep the last pick point hovered. Throws vk::Error / vk::ShaderError with a message for people.
+// keep the last pick point hovered. With Options::xray, X-ray (render/xray.h) applies once the
+// selection is made: the picks, measures and timed frames see the selection through it.
+// Throws vk::Error / vk::ShaderError with a message for people.
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 

@@ -315,6 +315,30 @@ void Renderer::bindGeometry(VkCommandBuffer cmd) const {
         VK_INDEX_TYPE_UINT32);
 }
 
+// X-ray's pass, last in the scene pass's last render pass: after every opaque draw, so that
+// its blend sees the finished picture and its depth test the selection's depth. Its draws
+// read the scene's vertices and indices, whatever the technique drew from.
+void Renderer::recordTranslucent(VkCommandBuffer cmd) const {
+    if (!translucent_ || !translucentPipeline_) return;
+    vk::CmdLabel label(device_.debug(), cmd, "x-ray");
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, translucentPipeline_->handle.get());
+    const VkDeviceSize zero = 0;
+    const VkBuffer vertices = sceneGpu_->vertices().handle();
+    vkCmdBindVertexBuffers(cmd, gpu::BINDING_VERTICES, 1, &vertices, &zero);
+    vkCmdBindIndexBuffer(cmd, sceneGpu_->indices().handle(), 0, VK_INDEX_TYPE_UINT32);
+    // The floor's shaders read the object of the pushed draw; the rest of it zero (full
+    // detail, draw 0) in place of what the technique's draws left there.
+    const gpu::DrawData none{};
+    vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_, gpu::DRAW_PUSH_DRAW_OFFSET,
+                       sizeof none, &none);
+    for (const TranslucentDraw& d : *translucent_) {
+        vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_,
+                           gpu::DRAW_PUSH_DRAW_OFFSET + offsetof(gpu::DrawData, objectIndex),
+                           sizeof d.object, &d.object);
+        vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+    }
+}
+
 // Before the pass: the previous frame's shaders and copies are done with the pick buffer
 // (write-after-read and write-after-write across frames on the one queue), then reset it.
 void Renderer::recordPickReset(VkCommandBuffer cmd) const {

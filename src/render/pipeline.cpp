@@ -122,7 +122,8 @@ vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
     auto depth = vk::init<VkPipelineDepthStencilStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
     depth.depthTestEnable = VK_TRUE;
-    depth.depthWriteEnable = VK_TRUE;
+    // A translucent surface hides nothing behind it: depth stays the opaque parts'.
+    depth.depthWriteEnable = scene.translucent ? VK_FALSE : VK_TRUE;
     // Reversed depth (scene/camera.h): nearer is greater. Where two surfaces tie the one
     // drawn first stays, as LESS kept it.
     depth.depthCompareOp = VK_COMPARE_OP_GREATER;
@@ -134,6 +135,17 @@ vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
         attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     if (!scene.writeIds) blend[1].colorWriteMask = 0;
+    if (scene.translucent) {
+        // Over: the fragment's alpha of its colour, the rest of what is there; the picture
+        // keeps alpha 1.
+        blend[0].blendEnable = VK_TRUE;
+        blend[0].srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        blend[0].dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        blend[0].colorBlendOp = VK_BLEND_OP_ADD;
+        blend[0].srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        blend[0].dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        blend[0].alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     auto colorBlend = vk::init<VkPipelineColorBlendStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     colorBlend.attachmentCount = static_cast<uint32_t>(blend.size());

@@ -24,6 +24,7 @@ std::string describePipeline(const PipelineKey& key) {
     std::string text = baseName(key);
     if (key.hiding) text += ", hiding parts";
     if (key.section) text += ", section";
+    if (key.translucent) text += ", translucent";
     if (key.taskCulling || key.runOffsets) text += ", culling";
     return text;
 }
@@ -179,6 +180,7 @@ std::shared_ptr<const Pipeline> PipelineCache::build(const PipelineKey& key, VkR
     info.mesh = key.technique->usesMeshShader();
     info.drawIndexAttribute = key.mode->drawIndexAttribute && !info.mesh;
     info.writeIds = !key.technique->isFloor();
+    info.translucent = key.translucent;
     auto pipeline = std::make_shared<Pipeline>();
     pipeline->key = key;
     pipeline->handle = createScenePipeline(driverCache_, info, stages, baseName(key));

@@ -81,6 +81,14 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     const Technique& technique = *key.technique;
     bool cached = false;
     auto pipeline = pipelines_.get(key, pass(key.msaa), cached);
+    // X-ray's pipeline follows the MSAA setting and the section; a new scene has no X-ray.
+    auto translucentPipeline = translucentPipeline_;
+    if (newScene) {
+        translucentPipeline.reset();
+    } else if (translucentPipeline && translucentPipeline->key != translucentKey(key)) {
+        bool found = false;
+        translucentPipeline = pipelines_.get(translucentKey(key), pass(key.msaa), found);
+    }
     const bool levels = settings.lod.errorPixels > 0.0f;
     const bool keepDraws = !newScene && drawsStillRight(key, settings.draws, levels);
     vk::UploadBatch upload(device_);
@@ -112,6 +120,11 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     }
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
+    translucentPipeline_ = std::move(translucentPipeline);
+    if (newScene) {
+        translucent_.reset();
+        translucentSet_.reset();
+    }
     sceneGpu_ = std::move(sceneGpu);
     partVertices_ = std::move(partVertices);
     meshlets_ = std::move(meshlets);
@@ -160,8 +173,13 @@ std::optional<PipelineBuild> Renderer::prepare(const scene::Scene& scene,
                                                const RenderSettings& settings) {
     if (!sceneGpu_) throw vk::Error("Renderer::prepare before setScene");
     const PipelineKey key = keyFor(scene, settings, false);
-    if (pipelines_.request(key, pass(key.msaa))) return std::nullopt;
-    return pipelines_.progress(key);
+    if (!pipelines_.request(key, pass(key.msaa))) return pipelines_.progress(key);
+    // Under X-ray its pipeline follows the MSAA setting and section too: built on a worker.
+    if (translucentPipeline_) {
+        const PipelineKey xray = translucentKey(key);
+        if (!pipelines_.request(xray, pass(xray.msaa))) return pipelines_.progress(xray);
+    }
+    return std::nullopt;
 }
 
 PipelineKey Renderer::hidingKey(bool hiding) const {
@@ -188,6 +206,8 @@ void Renderer::reloadShaders() {
     auto culler = std::make_shared<CullPasses>(device_, compiler_, cache);
     bool cached = false;
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
+    if (translucentPipeline_)
+        translucentPipeline_ = pipelines_.get(translucentKey(key), pass(key.msaa), cached);
     animator_ = std::move(animator);
     idPasses_ = std::move(idPasses);
     composed_.reset(); // their box of the hovered part's tiles is not written yet
@@ -235,6 +255,25 @@ void Renderer::setHidden(const scene::PartSet& hidden) {
     }
 }
 
+void Renderer::setTranslucent(const scene::Scene& scene, const scene::PartSet& parts) {
+    if (!sceneGpu_ || parts.partCount() != partCount_ || scene.uniquePartCount() != partCount_)
+        throw vk::Error("Renderer::setTranslucent: not a set over the current scene's parts");
+    if (translucent_ ? parts == *translucentSet_ : parts.empty()) return; // a redraw for nothing
+    ++changes_;
+    auto pipeline = translucentPipeline_;
+    if (!parts.empty() && !pipeline) {
+        const PipelineKey key = translucentKey(pipeline_->key);
+        bool cached = false;
+        pipeline = pipelines_.get(key, pass(key.msaa), cached);
+    }
+    translucent_ =
+        parts.empty()
+            ? nullptr
+            : std::make_shared<const std::vector<TranslucentDraw>>(translucentDraws(scene, parts));
+    translucentSet_ = parts.empty() ? nullptr : std::make_shared<const scene::PartSet>(parts);
+    translucentPipeline_ = std::move(pipeline);
+}
+
 // The draw list depends on the technique's split and ID data, the search batch it reads, the
 // mode's buffers, the draw settings and whether levels of detail are on; a switch that changes
 // none of them keeps it.
@@ -269,9 +308,9 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
         throw vk::Error("Renderer::record: targets of another MSAA setting than configured");
     VkCommandBuffer cmd = slot.cmd;
     for (const std::shared_ptr<const void>& used :
-         std::initializer_list<std::shared_ptr<const void>>{pipeline_, sceneGpu_, draws_, pick_,
-                                                            animator_, idPasses_, culler_,
-                                                            selected_, hidden_, visible_, target})
+         std::initializer_list<std::shared_ptr<const void>>{
+             pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, selected_, hidden_,
+             visible_, target, translucentPipeline_})
         slot.keep(used);
     slot.scenePass = true;
     composed_.reset(); // the images the composition reads are drawn again
@@ -339,6 +378,7 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     if (culling.frozen && plan.twoPasses)
         drawPhase(cmd, culling,
                   culling.reused ? gpu::CULL_PHASE_REUSED_LATE : gpu::CULL_PHASE_FROZEN_LATE);
+    if (!split) recordTranslucent(cmd);
     vkCmdEndRenderPass(cmd);
     stamp(StampEarlyDrawn);
     if (split) culler_->recordPyramid(cmd, targets, skippable ? &cull.dispatches : nullptr);
@@ -348,6 +388,7 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     if (split) {
         beginPass(cmd, targets, PassPart::Second, frame);
         drawPhase(cmd, culling, gpu::CULL_PHASE_LATE);
+        recordTranslucent(cmd);
         vkCmdEndRenderPass(cmd);
     }
     stamp(StampDrawn);

@@ -23,6 +23,7 @@
 #include "render/scene_gpu.h"
 #include "render/settings.h"
 #include "render/targets.h"
+#include "render/xray.h"
 #include "vk/shader_compiler.h"
 
 namespace render {
@@ -101,10 +102,11 @@ class Renderer {
     // previous configuration drawing.
     void configure(const scene::Scene& scene, const RenderSettings& settings);
     // The non-blocking path (the viewer, which keeps drawing meanwhile): whether configure()
-    // with these arguments would find its pipeline built. nullopt: it would, and costs no
-    // compile; else the build it needs, started on a worker unless it runs already (ask again,
-    // a frame later: the newest wish is the one asked for). Throws what configure() would
-    // refuse, and once the error of a build that failed (the next ask starts it again).
+    // with these arguments would find its pipeline (and X-ray's, while on) built. nullopt: it
+    // would, and costs no compile; else the build it needs, started on a worker unless it runs
+    // already (ask again, a frame later: the newest wish is the one asked for). Throws what
+    // configure() would refuse, and once the error of a build that failed (the next ask starts
+    // it again).
     std::optional<PipelineBuild> prepare(const scene::Scene& scene, const RenderSettings& settings);
     // The same for setHidden(hidden), which switches to the variant that discards hidden parts
     // (or back) when `hidden` is the first set hidden (or the last shown).
@@ -127,6 +129,11 @@ class Renderer {
     void setSelection(const scene::PartSet& selected);
     void setHidden(const scene::PartSet& hidden);
     const scene::PartSet& hidden() const { return hiddenSet_; }
+    // X-ray's translucent parts (render/xray.h, xrayParts): drawn over the picture after the
+    // scene pass's draws, never in the ID image, the depth or a pick; hide them with
+    // setHidden too. Over the scene last set (setScene empties it); the first non-empty set
+    // builds X-ray's pipeline (once per MSAA setting and section variant, then cached).
+    void setTranslucent(const scene::Scene& scene, const scene::PartSet& parts);
 
     // Forgets every cached pipeline and SPIR-V (shaders edited on disk) and rebuilds the
     // current pipeline. A compile error throws vk::ShaderError and the last good pipeline
@@ -203,6 +210,7 @@ class Renderer {
     void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
     void recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
                         const FrameCulling& culling, bool before) const;
+    void recordTranslucent(VkCommandBuffer cmd) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
     void recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
@@ -232,6 +240,10 @@ class Renderer {
     // occlusion culling draws first.
     std::shared_ptr<const vk::Buffer> selected_, hidden_, visible_;
     scene::PartSet hiddenSet_;
+    // X-ray's pass: its draws (none: no pass) and its pipeline, made for the drawn key.
+    std::shared_ptr<const std::vector<TranslucentDraw>> translucent_;
+    std::shared_ptr<const scene::PartSet> translucentSet_; // what translucent_ was made of
+    std::shared_ptr<const Pipeline> translucentPipeline_;
     uint64_t hiddenVersion_ = 0; // counts setHidden() calls: culling asks whether it changed
     uint64_t changes_ = 0;
     // What the composed image of `targets` was made from, blink aside, while nothing else

@@ -49,6 +49,9 @@ struct PipelineKey {
     // Nor this: set while a section plane is on (RenderSettings::section), for the variant
     // that cuts fragments away and draws caps (IDV_SECTION; late fragment tests, like hiding).
     bool section = false;
+    // Nor this: the X-ray pass's pipeline (render/xray.h), the floor's shaders drawing
+    // translucent (IDV_TRANSLUCENT): blended colour, no depth or ID written.
+    bool translucent = false;
 
     // The same key with what the technique ignores set to defaults, and passthrough only
     // where the technique has a geometry stage and the device offers it.

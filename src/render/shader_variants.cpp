@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include "render/xray.h"
+
 namespace render {
 
 std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
@@ -26,6 +28,7 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     defines.push_back({"IDV_HIDE_PARTS", key.hiding ? "1" : "0"});
     defines.push_back({"IDV_HIDE_IN_FRAGMENT", key.hiding && !dropEarlier ? "1" : "0"});
     defines.push_back({"IDV_SECTION", key.section ? "1" : "0"});
+    defines.push_back({"IDV_TRANSLUCENT", key.translucent ? "1" : "0"});
     defines.push_back({"IDV_GS_PASSTHROUGH", key.gsPassthrough ? "1" : "0"});
     defines.push_back({"IDV_TASK_CULLING", key.taskCulling ? "1" : "0"});
     defines.push_back({"IDV_RUN_OFFSET", key.runOffsets ? "1" : "0"});
@@ -97,6 +100,12 @@ std::vector<PipelineKey> allPipelineKeys() {
             section.section = section.hiding = section.taskCulling = section.runOffsets = true;
             keys.push_back(section.effective(true));
         }
+    // X-ray's pass: one pipeline, with the section variant.
+    for (bool section : {false, true}) {
+        PipelineKey xray = translucentKey(PipelineKey{});
+        xray.section = section;
+        keys.push_back(xray);
+    }
     return keys;
 }
 

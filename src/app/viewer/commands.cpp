@@ -125,6 +125,12 @@ std::vector<Command> table() {
          nullptr,
          "redo what undo took back",
          [](Viewer& v, Input&) { v.redo(); }},
+        {"xray",
+         {{GLFW_KEY_X, 0}},
+         nullptr,
+         "X-ray: the parts outside the selection translucent, not picked (nothing selected: "
+         "no change)",
+         [](Viewer& v, Input&) { v.setXray(!v.settings().xray); }},
         {"measure",
          {{GLFW_KEY_M, 0}},
          nullptr,

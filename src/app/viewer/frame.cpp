@@ -14,6 +14,7 @@
 #include "app/viewer/kept_view.h" // maxRecentFiles
 #include "app/viewer/viewer.h"
 #include "render/blink.h"
+#include "render/xray.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
 
@@ -122,7 +123,7 @@ void Viewer::act(const PanelActions& actions) {
     // The panel's buttons run the rows of the command table their keys run (commands.h).
     for (const auto& [asked, name] :
          {std::pair{actions.hide, "hide"}, std::pair{actions.isolate, "isolate"},
-          std::pair{actions.showAll, "show-all"}})
+          std::pair{actions.showAll, "show-all"}, std::pair{actions.xray, "xray"}})
         if (asked) findCommand(name)->run(*this, input_);
 }
 
@@ -229,25 +230,35 @@ render::FrameParams Viewer::frameParams(double seconds) {
     return params;
 }
 
-// Hands the selection and the hidden parts to the renderer when they changed. Hiding the
+// Hands the selection and the hidden parts to the renderer when they changed, with X-ray's
+// parts (render/xray.h): under X-ray a new selection hides and shows other parts. Hiding the
 // first part needs the hiding pipeline variant: until its worker has built it, the parts
-// stay drawn (asked again each frame); if it fails, nothing is hidden.
+// stay drawn (asked again each frame); if it fails, nothing is hidden and X-ray goes off.
 void Viewer::showParts() {
     render::Renderer& renderer = scene_.renderer();
     Selection& selection = input_.selection();
-    if (selection.selected() != shownSelected_) {
+    const bool newSelection = selection.selected() != shownSelected_;
+    if (newSelection) {
         renderer.setSelection(selection.selected());
         shownSelected_ = selection.selected();
     }
-    if (selection.hidden() == shownHidden_ && !scene_.pipelinePending()) return;
+    const bool xrayChanged = settings_.xray != shownXray_ || (settings_.xray && newSelection);
+    if (selection.hidden() == shownHidden_ && !xrayChanged && !scene_.pipelinePending()) return;
     try {
-        if (!scene_.showHidden(selection.hidden())) return;
+        const render::XrayParts parts =
+            render::xrayParts(settings_.xray, selection.selected(), selection.hidden());
+        if (!scene_.showHidden(parts.hidden)) return;
+        renderer.setTranslucent(scene_.scene(), parts.translucent);
         shownHidden_ = selection.hidden();
+        shownXray_ = settings_.xray;
     } catch (const std::exception& e) {
         scene_.fail(std::string("hiding parts: ") + e.what());
         selection.showAll();
+        settings_.xray = false;
         renderer.setHidden(selection.hidden());
+        renderer.setTranslucent(scene_.scene(), scene::PartSet(scene_.scene().uniquePartCount()));
         shownHidden_ = selection.hidden();
+        shownXray_ = false;
     }
 }
 
@@ -339,6 +350,7 @@ PanelInfo Viewer::panelInfo() const {
     info.selectedParts = &selection.selected();
     info.selectedRow = selectedRow_;
     info.hiddenCount = selection.hidden().size();
+    info.xray = settings_.xray;
     info.visibleParts = input_.visibleParts();
     info.idPassMs = mean(slots_.idPassMilliseconds(), 30);
     const render::Renderer& renderer = scene_.renderer();

@@ -392,6 +392,9 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Explode: // as the panel's slider sets it
         step(settings([f = float(v[0])](Options& s) { s.animation.explode = f; }), true);
         break;
+    case ScriptOp::Xray:
+        step([this, on = c.text == "on"] { viewer_.setXray(on); }, true);
+        break;
     case ScriptOp::Copies:
         step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);
         break;

@@ -68,6 +68,7 @@ struct PanelActions {
     std::optional<scene::PartRanges> hideParts, showParts; // a tree row's checkbox
     const scene::StandardView* view = nullptr;             // a standard view's button
     bool hide = false, isolate = false, showAll = false;
+    bool xray = false;               // the X-ray checkbox was clicked
     std::optional<std::string> open; // a model path entered in the panel, opened as a drop
     bool cancelLoad = false;         // stop the model loading (and those queued behind it)
     bool resetSettings = false;      // the kept settings back to the defaults
@@ -122,6 +123,7 @@ struct PanelInfo {
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
     uint32_t selectedCount = 0, hiddenCount = 0;
+    bool xray = false;                             // Options::xray
     const scene::PartSet* selectedParts = nullptr; // the tree highlights rows all selected
     // The deepest tree row whose parts are exactly the selection (scene::rowOfParts).
     std::optional<size_t> selectedRow;

@@ -116,6 +116,13 @@ void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& a
     ImGui::BeginDisabled(info.hiddenCount == 0);
     actions.showAll = ImGui::Button("show all (shift+H)");
     ImGui::EndDisabled();
+    bool xray = info.xray; // the command row changes it (and says so), as X does
+    actions.xray = ImGui::Checkbox("X-ray (X)", &xray);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the parts outside the selection drawn translucent: not in the ID "
+                          "image, not picked, not hiding the selection, so selected parts "
+                          "inside show and can be picked and measured in place. With nothing "
+                          "selected it changes nothing.");
 }
 
 } // namespace app

@@ -52,6 +52,7 @@ const CommandSpec commandSpecs[] = {
     {"view", ScriptOp::View, 0, "view NAME"},
     {"ortho", ScriptOp::Ortho, 0, "ortho on|off"},
     {"explode", ScriptOp::Explode, 1, "explode F (0 to 1)"},
+    {"xray", ScriptOp::Xray, 0, "xray on|off"},
     {"screenshot", ScriptOp::Screenshot, 0, "screenshot FILE"},
     {"drop", ScriptOp::Drop, 0, "drop FILE"},
     {"loaded", ScriptOp::Loaded, 0, "loaded"},
@@ -115,8 +116,9 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Freeze || spec->op == ScriptOp::Sort ||
                            spec->op == ScriptOp::Section || spec->op == ScriptOp::Screenshot ||
                            spec->op == ScriptOp::Drop || spec->op == ScriptOp::View ||
-                           spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Level ||
-                           spec->op == ScriptOp::Pipeline || spec->op == ScriptOp::Blink;
+                           spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Xray ||
+                           spec->op == ScriptOp::Level || spec->op == ScriptOp::Pipeline ||
+                           spec->op == ScriptOp::Blink;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
@@ -228,6 +230,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     case ScriptOp::Freeze:
     case ScriptOp::Sort:
     case ScriptOp::Ortho:
+    case ScriptOp::Xray:
         expectWord({"on", "off"});
         break;
     case ScriptOp::Pipeline:

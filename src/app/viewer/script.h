@@ -36,6 +36,7 @@
 //                           turns them all off
 //   3.8 view top            a standard view (scene/standard_view.h), as the keys 1, 3, 7, 0 do
 //   3.9 ortho on            orthographic projection (off: perspective), as O does
+//   3.9 xray on             X-ray on (off: off), as X and the panel's checkbox do
 //   3.95 explode 0.5        the exploded view, 0 (at rest) to 1, as the panel's slider
 //   4   screenshot out.png  the presented image, panel included
 //   4.5 drop model.glb      a file dropped on the window
@@ -92,6 +93,7 @@ enum class ScriptOp {
     View,
     Ortho,
     Explode,
+    Xray,
     Screenshot,
     Drop,
     Loaded,

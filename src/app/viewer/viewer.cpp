@@ -226,6 +226,11 @@ void Viewer::setOrtho(bool ortho) {
     events_.say(ortho ? "projection: orthographic" : "projection: perspective");
 }
 
+void Viewer::setXray(bool on) {
+    settings_.xray = on; // shown by the next frame's showParts
+    events_.say(on ? "xray: on" : "xray: off");
+}
+
 void Viewer::partsChanged() const {
     events_.say("hidden: " + std::to_string(input_.selection().hidden().size()) + " parts");
 }

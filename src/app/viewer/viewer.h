@@ -69,6 +69,8 @@ class Viewer {
     // script's `ortho`): the projection, a setting (Options::camera) the panel edits too.
     void turnTo(const scene::StandardView& view);
     void setOrtho(bool ortho);
+    // X (the panel's checkbox, the script's `xray`): X-ray on or off (Options::xray).
+    void setXray(bool on);
     void screenshot(const std::string& path) { screenshotPath_ = path; }
     // The next frame draws everything anew, as after a change: the scene pass, the whole
     // composition and the panel (tests compare what frames at rest show with it).
@@ -194,6 +196,7 @@ class Viewer {
     std::string title_, screenshotPath_;
     // The selection and hidden parts last handed to the renderer.
     scene::PartSet shownSelected_, shownHidden_;
+    bool shownXray_ = false; // Options::xray as the renderer's hidden and translucent parts show it
     uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
     std::optional<uint32_t> saidHovered_; // the hovered part last told
     Shell shell_;                         // the help, undo history and overlays (overlays.h)
