@@ -44,6 +44,17 @@ std::string unitWord(const scene::LengthUnit& unit) {
     return unit.symbol.empty() ? "none" : unit.symbol;
 }
 
+// Named as the clicks named it (A, or A and B), else by its tree node, else by its count.
+std::string selectionName(const std::vector<scene::TreeRow>& tree, const scene::PartSet& selected,
+                          const Things& things) {
+    if (things.a() && things.parts(selected.partCount()) == selected)
+        return things.b() ? "A and B" : things.a()->label;
+    if (const auto row = scene::rowOfParts(tree, selected); row && !tree[*row].path.empty())
+        return tree[*row].path;
+    const uint32_t n = selected.size();
+    return "selection of " + std::to_string(n) + (n == 1 ? " part" : " parts");
+}
+
 void addDistanceRows(const scene::Scene& scene, const InspectReport& report,
                      std::vector<InspectRow>& rows) {
     const scene::DistanceReport& d = *report.distance;
@@ -139,11 +150,6 @@ std::vector<std::string> Inspector::update(const scene::Scene& scene,
         InspectReport next;
         next.selectedParts = selected.size();
         if (next.selectedParts > 0) {
-            const auto row = scene::rowOfParts(tree, selected);
-            next.selectionName = row && !tree[*row].path.empty()
-                                     ? tree[*row].path
-                                     : "selection of " + std::to_string(next.selectedParts) +
-                                           (next.selectedParts == 1 ? " part" : " parts");
             bool allWhole = false;
             const std::vector<uint32_t> objects = touchedObjects(scene, selected, allWhole);
             // Solids: CAD scenes alone, whose B-rep gives volumes that mean something.
@@ -193,6 +199,7 @@ std::vector<std::string> Inspector::update(const scene::Scene& scene,
         if (report_.distance)
             said.push_back("inspect distance " + precise(report_.distance->distance) + " " + unit);
     }
+    if (report_.selectedParts) report_.selectionName = selectionName(tree, selected, things);
     report_.rows = inspectRows(scene, report_);
     return said;
 }
