@@ -190,8 +190,8 @@ void Input::clicked() {
     const auto hovered = selection_.hovered();
     std::optional<scene::Thing> thing;
     if (hovered) {
-        // The edge under the cursor makes the thing an edge once edges are picked
-        // (edge_info.h): pass the selected edge here.
+        // HOOK for edges (edge_info.h): at the face level (pendingLevel_ 0) the edge under the
+        // cursor, Selection's hovered edge, makes the thing that edge; pass it here.
         const std::optional<scene::EdgeRef> edge;
         thing = viewer_.thingOf(viewer_.partsAround(*hovered, pendingLevel_), *hovered, edge);
     }
@@ -199,9 +199,13 @@ void Input::clicked() {
         things_.add(std::move(*thing));
     else
         things_.click(std::move(thing));
-    // At the face level a click selects the part alone, at coarser ones the parts around it;
-    // the clicked part is the primary one (the panel details its face).
-    selection_.clickAround(things_.parts(partCount));
+    // A plain click at the face level selects the part alone (and what Selection::click
+    // takes with it); at coarser levels, and with Ctrl, A's and B's parts. The clicked part
+    // is the primary one (the panel details its face).
+    if (!pendingAdd_ && pendingLevel_ == 0)
+        selection_.click();
+    else
+        selection_.clickAround(things_.parts(partCount));
 }
 
 std::optional<std::pair<glm::vec2, glm::vec2>> Input::boxInWindow() const {
