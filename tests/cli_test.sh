@@ -234,6 +234,22 @@ if [[ -f $screw ]]; then
     expect cad-deflection 0 '"deflection":0\.5,' -- "$idview" --model "$screw" --deflection 0.5 --stats
     expect cad-pick 0 '"part":[0-9]+,"object":0,.*"name":"the product name"' -- \
         "$idview" --headless --validation --frames 1 --model "$screw" --size 160x100 --pick 80,50
+    # Exact inspection, printed without rendering (the values are checked in test_inspect).
+    num='-?[0-9][-+.e0-9]*'
+    vec="\\[$num,$num,$num\\]"
+    expect cad-properties 0 "^\\{\"object\":0,\"volume\":$num,\"area\":$num,\"center\":$vec,\"bbox\":\\{\"min\":$vec,\"max\":$vec,\"size\":$vec\\},\"closed\":true,\"unit\":\"mm\"\\}$" -- \
+        "$idview" --model "$screw" --properties 0
+    expect cad-properties-all 0 "^\\{\"object\":\"all\",\"objects\":1,\"volume\":$num," -- \
+        "$idview" --model "$screw" --properties all
+    expect cad-distance 0 "^\\{\"distance\":$num,\"p0\":$vec,\"p1\":$vec,\"source\":\"brep\".*\"unit\":\"mm\"\\}$" -- \
+        "$idview" --model "$screw" --distance 0,3
+    # With --headless, after the rendered run's lines.
+    expect cad-properties-headless 0 '^\{"object":0,"volume":' -- \
+        "$idview" --headless --frames 1 --size 64x48 --model "$screw" --pick 32,24 --properties 0
+    expect cad-distance-range 1 '^idview: error: --distance: part 99999 is not in the scene \(its parts are 0 to [0-9]+\)$' -- \
+        "$idview" --model "$screw" --distance 0,99999
+    expect cad-properties-range 1 '^idview: error: --properties: object 1 is not in the scene \(its objects are 0 to 0\)$' -- \
+        "$idview" --model "$screw" --properties 1
     expect cad-export 0 '"source":".*screw.glb".*"objects":1,' -- \
         bash -c '"$1" --model "$2" --export "$3" && "$1" --model "$3" --stats' _ "$idview" "$screw" "$work/screw.glb"
 fi
@@ -241,6 +257,7 @@ head -c 4000 /dev/urandom >"$work/junk.STEP"
 expect cad-junk 1 "^idview: error: $work/junk.STEP: not a readable STEP file" -- "$idview" --model "$work/junk.STEP" --stats
 : >"$work/empty.igs"
 expect cad-empty 1 "^idview: error: $work/empty.igs: the file is empty" -- "$idview" --model "$work/empty.igs" --stats
+expect distance-one-id 2 "--distance expects A,B \\(two unique part IDs\\), not '4'" -- "$idview" --distance 4
 expect cad-bad-deflection 2 '--deflection expects a length' -- "$idview" --deflection -2
 
 # The tessellation cache in a folder of this run: a miss, then a hit; --no-cache neither.

@@ -27,6 +27,10 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+
+#include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_mesh.h"
 #include "util/hash64.h"
@@ -122,6 +126,26 @@ void expectSameScene(const Scene& a, const Scene& b) {
     }
 }
 
+// The kept B-rep (Scene::brep) names each part's face: the face's exact area, measured now,
+// is the one the load recorded for that part (Geometry::partSurfaces) before any cache.
+void expectBrepFacesMatchParts(const Scene& scene) {
+    ASSERT_TRUE(scene.brep);
+    ASSERT_EQ(scene.brep->geometryCount(), scene.geometries.size());
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g)
+        EXPECT_EQ(scene.brep->has(g), scene.geometries[g].level == 0) << "geometry " << g;
+    for (uint32_t id = 0; id < scene.uniquePartCount(); ++id) {
+        const auto face = partFace(scene, id);
+        ASSERT_TRUE(face) << "part " << id;
+        const auto ref = scene.locate(id);
+        const Geometry& g = scene.geometries[scene.objects[ref->object].geometry];
+        GProp_GProps props;
+        BRepGProp::SurfaceProperties(*face, props);
+        EXPECT_NEAR(props.Mass(), g.partSurfaces[ref->localPart].area,
+                    1e-9 * std::max(1.0, props.Mass()))
+            << "part " << id;
+    }
+}
+
 TEST(Hash64, EveryBitOfTheInputCounts) {
     std::vector<unsigned char> bytes(67); // whole words and a tail
     for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<unsigned char>(i * 37);
@@ -137,6 +161,18 @@ TEST(Hash64, EveryBitOfTheInputCounts) {
     bytes[15] ^= 0x80;
     EXPECT_NE(util::hash64(bytes.data(), bytes.size()), base);
     EXPECT_NE(util::hash64(bytes.data(), bytes.size() - 1), base); // length counts
+}
+
+// IGES faces are sewn, which leaves them in another order than the shape's own face map; the
+// cache keeps the parts' order all the same.
+TEST_F(CadCache, ASewnShapeComesBackFaceForFace) {
+    const std::string bearing = "/usr/share/opencascade/data/iges/bearing.iges";
+    if (!fs::exists(bearing)) GTEST_SKIP() << bearing << " missing (package occt-misc)";
+    const CadLoadResult first = loadCadCached(bearing, {}, {}, 1);
+    const CadLoadResult second = loadCadCached(bearing, {}, {}, 1);
+    ASSERT_EQ(second.cache, "hit");
+    expectBrepFacesMatchParts(first.scene);
+    expectBrepFacesMatchParts(second.scene);
 }
 
 TEST_F(CadCache, SecondLoadIsAHitWithTheSameScene) {
@@ -157,6 +193,8 @@ TEST_F(CadCache, SecondLoadIsAHitWithTheSameScene) {
     // And both are what the loader makes without a cache, levels of detail included.
     const CadLoadResult plain = loadCad(kMotor.string(), {}, {}, 2);
     expectSameScene(plain.scene, second.scene);
+    expectBrepFacesMatchParts(first.scene);
+    expectBrepFacesMatchParts(second.scene);
     size_t levels = 0;
     for (const Geometry& g : second.scene.geometries) levels += g.level > 0;
     EXPECT_GT(levels, 0u);

@@ -312,6 +312,25 @@ TEST(Cli, PartFlags) {
         EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
 }
 
+// --distance takes two unique part IDs, --properties an object index or all.
+TEST(Cli, InspectionFlags) {
+    const auto o =
+        app::parseArgs(std::vector<std::string>{"--distance", "12,3", "--properties", "4"});
+    EXPECT_EQ(o.distance, (std::array<uint32_t, 2>{12, 3}));
+    EXPECT_EQ(o.propertiesObject, 4u);
+    EXPECT_FALSE(o.propertiesAll);
+    const auto all = app::parseArgs(std::vector<std::string>{"--properties", "all"});
+    EXPECT_TRUE(all.propertiesAll);
+    EXPECT_FALSE(all.propertiesObject);
+    EXPECT_FALSE(all.distance);
+    for (const auto& bad : std::vector<std::vector<std::string>>{{"--distance", "1"},
+                                                                 {"--distance", "1,2,3"},
+                                                                 {"--distance", "1,x"},
+                                                                 {"--properties", "some"},
+                                                                 {"--properties", "-1"}})
+        EXPECT_THROW(app::parseArgs(bad), app::UsageError) << bad[0] << " " << bad[1];
+}
+
 TEST(Cli, CadCacheAndTriangleLimitFlags) {
     const app::Options d;
     EXPECT_TRUE(d.scene.cadCache);

@@ -109,6 +109,12 @@ struct Options {
     // Headless face properties: each point picked (after --measure) and one JSON line of the
     // part's surface printed (scene/face_info.h).
     std::vector<Pixel> faceInfos;
+    // Exact inspection (scene/inspect.h), printed as JSON lines without rendering, as --tree
+    // is: the minimum distance between two unique parts; an object's volume, area, centre of
+    // mass and box, or every object's and their sum (propertiesAll).
+    std::optional<std::array<uint32_t, 2>> distance;
+    std::optional<uint32_t> propertiesObject;
+    bool propertiesAll = false;
     // Headless visibility: the parts --hide names are not drawn; --isolate draws only its
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;

@@ -357,6 +357,26 @@ const std::vector<Flag>& flags() {
                  "cylinders, radius and center for spheres; for other parts surface mesh and the "
                  "area of its triangles; {\"part\":null} on background; repeatable",
                  [](Options& o, auto& v) { o.faceInfos.push_back(parsePixel("--face-info", v)); }}),
+            {"--distance", "A,B",
+             "print one JSON line {distance,p0,p1,source,...,unit}: the minimum distance between "
+             "unique parts A and B and its closest points, exact from the B-rep for CAD files "
+             "(source brep), from the triangles otherwise (mesh); where both are circles or "
+             "cylinders also center_distance, axis_angle (degrees) and, for parallel axes, "
+             "axis_distance; where one is a plane, point_to_plane (the other's centre, signed "
+             "along the plane's outward normal); without --headless nothing is rendered and idview "
+             "exits",
+             [](Options& o, auto& v) { o.distance = parseDistance(v); }},
+            {"--properties", "OBJECT|all",
+             "print one JSON line {object,volume,area,center,bbox:{min,max,size},closed,unit} of "
+             "the object (a solid of a CAD file: exact, from the B-rep; meshes: from triangles, "
+             "volume 0 unless they close); all: one line per object and their sum "
+             "{object:\"all\",objects,...}; without --headless nothing is rendered and idview "
+             "exits",
+             [](Options& o, auto& v) {
+                 o.propertiesAll = v == "all";
+                 if (!o.propertiesAll)
+                     o.propertiesObject = parseCount("--properties", v, 0, 0xFFFFFFFEu);
+             }},
             headless({"--hide", "ID,...",
                       "headless: do not draw these unique parts (nor pick them)",
                       [](Options& o, auto& v) { o.hide = parseIds("--hide", v); }}),

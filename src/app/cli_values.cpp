@@ -113,6 +113,13 @@ std::array<Options::Pixel, 2> parseMeasure(const std::string& text) {
     return {Options::Pixel{v[0], v[1]}, Options::Pixel{v[2], v[3]}};
 }
 
+std::array<uint32_t, 2> parseDistance(const std::string& text) {
+    const std::vector<uint32_t> ids = parseIds("--distance", text);
+    if (ids.size() != 2)
+        throw UsageError("--distance expects A,B (two unique part IDs), not '" + text + "'");
+    return {ids[0], ids[1]};
+}
+
 void addSectionPlane(scene::Section& section, const std::string& text) {
     scene::SectionPlane plane;
     try {

@@ -30,6 +30,7 @@ std::vector<uint32_t> parseCounts(const std::string& flag, const std::string& te
 std::vector<uint32_t> parseIds(const std::string& flag, const std::string& text);
 render::PartSetQuery parseRect(const std::string& flag, const std::string& text); // X0,Y0,X1,Y1
 std::array<Options::Pixel, 2> parseMeasure(const std::string& text);
+std::array<uint32_t, 2> parseDistance(const std::string& text); // A,B: two unique part IDs
 // --section AXIS,VALUE[,flip]: into the first free plane; more than the planes are refused.
 void addSectionPlane(scene::Section& section, const std::string& text);
 // "RRGGBB" in hex, as displayed, and back.

@@ -18,6 +18,7 @@
 #include "scene/camera_path.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
+#include "scene/inspect.h"
 #include "util/cache_file.h"
 #include "util/json_number.h"
 #include "vk/check.h"
@@ -281,6 +282,8 @@ int runHeadless(const Options& options) {
     const scene::Scene& scene = loaded.scene;
     for (const auto& warning : loaded.warnings)
         std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
+    // Before rendering: a part or object not in the scene ends the run at once.
+    const std::vector<std::string> inspection = inspectionJson(options, scene);
     const float aspect = float(options.width) / float(options.height);
     HeadlessResult result =
         renderHeadless(options, scene, initialCamera(loaded, aspect, options.camera));
@@ -301,6 +304,7 @@ int runHeadless(const Options& options) {
     if (result.visibleParts)
         std::printf("%s\n",
                     partSetJson(*result.visibleParts, result.visibleCount, std::nullopt).c_str());
+    for (const std::string& line : inspection) std::printf("%s\n", line.c_str());
     if (options.stats)
         std::printf("%s\n", statsJson(loaded, options.render,
                                       FirstFrame{result.firstFrameMs, result.pipelineCache})
@@ -308,7 +312,8 @@ int runHeadless(const Options& options) {
 
     // With JSON lines, stdout carries only them; the summary goes to stderr.
     const bool json = !options.picks.empty() || options.measure || !options.faceInfos.empty() ||
-                      result.rectParts || result.visibleParts || options.stats;
+                      result.rectParts || result.visibleParts || options.stats ||
+                      !inspection.empty();
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()
@@ -352,6 +357,46 @@ scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene) {
     }
     if (isolate) hidden.invert();
     return hidden;
+}
+
+std::vector<std::string> inspectionJson(const Options& options, const scene::Scene& scene) {
+    std::vector<std::string> lines;
+    auto range = [](uint32_t count) {
+        return count == 0 ? std::string("it has none") : "0 to " + std::to_string(count - 1);
+    };
+    if (options.distance) {
+        const uint32_t count = scene.uniquePartCount();
+        scene::Thing sides[2];
+        for (size_t i = 0; i < 2; ++i) {
+            const uint32_t id = (*options.distance)[i];
+            if (id >= count)
+                throw std::invalid_argument("--distance: part " + std::to_string(id) +
+                                            " is not in the scene (its parts are " + range(count) +
+                                            ")");
+            sides[i].parts = {id};
+        }
+        const auto report = scene::measureDistance(scene, sides[0], sides[1]);
+        // In range but without a B-rep face: a face that did not come through the load whole.
+        if (!report)
+            throw std::invalid_argument("--distance: parts " + std::to_string(sides[0].parts[0]) +
+                                        " and " + std::to_string(sides[1].parts[0]) +
+                                        " give no distance");
+        lines.push_back(scene::distanceJson(*report));
+    }
+    const uint32_t objects = uint32_t(scene.objects.size());
+    if (options.propertiesObject && *options.propertiesObject >= objects)
+        throw std::invalid_argument(
+            "--properties: object " + std::to_string(*options.propertiesObject) +
+            " is not in the scene (its objects are " + range(objects) + ")");
+    std::vector<scene::SolidProperties> each;
+    for (uint32_t o = 0; o < objects; ++o)
+        if (options.propertiesAll || options.propertiesObject == o) {
+            each.push_back(*scene::objectProperties(scene, o));
+            lines.push_back(scene::propertiesJson(each.back()));
+        }
+    if (options.propertiesAll)
+        lines.push_back(scene::totalPropertiesJson(scene::sumProperties(each)));
+    return lines;
 }
 
 std::string partSetJson(const scene::PartSet& parts, uint32_t count,

@@ -105,6 +105,10 @@ float explodeAt(const Animation& animation, uint64_t frame);
 // naming an ID that is not in the scene.
 scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene);
 
+// The JSON lines of --distance and --properties (scene/inspect.h), in that order. Throws
+// std::invalid_argument naming a part or object that is not in the scene.
+std::vector<std::string> inspectionJson(const Options& options, const scene::Scene& scene);
+
 // The JSON lines of --select-rect and --visible-parts.
 std::string partSetJson(const scene::PartSet& parts, uint32_t count,
                         const std::optional<render::PartSetQuery>& rect);

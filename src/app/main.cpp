@@ -72,6 +72,11 @@ int listDevices(const app::Options& options) {
     return 0;
 }
 
+// --distance or --properties: answered from the loaded scene, nothing rendered.
+bool inspects(const app::Options& options) {
+    return options.distance || options.propertiesObject || options.propertiesAll;
+}
+
 void warn(const std::string& line) {
     std::fprintf(stderr, "idview: %s\n", line.c_str());
 }
@@ -95,7 +100,7 @@ int main(int argc, char** argv) {
     try {
         options = app::parseArgs(args);
         if (!options.help && !options.listRenderers && !options.listDevices && !options.stats &&
-            !options.tree && options.exportPath.empty() && !options.headless)
+            !options.tree && options.exportPath.empty() && !options.headless && !inspects(options))
             options = viewerOptions(args);
     } catch (const app::UsageError& e) {
         // One line and where to look: the usage would scroll it away.
@@ -112,11 +117,16 @@ int main(int argc, char** argv) {
         // --stats with --headless renders first, to say how long the first frame took.
         const bool renderedStats = options.stats && options.headless && !options.benchmark &&
                                    !options.tree && options.exportPath.empty();
-        if (!renderedStats && (options.stats || options.tree || !options.exportPath.empty())) {
+        // --distance and --properties need no image; with --headless they come with its lines.
+        if (!renderedStats && (options.stats || options.tree || !options.exportPath.empty() ||
+                               (inspects(options) && !options.headless))) {
             const app::LoadedScene loaded = app::loadScene(options.scene);
+            // Checked and answered before anything is written: a wrong ID leaves no file.
+            const std::vector<std::string> inspection = app::inspectionJson(options, loaded.scene);
             if (!options.exportPath.empty()) scene::writeGlb(loaded.scene, options.exportPath);
             if (options.stats) std::printf("%s\n", app::statsJson(loaded, options.render).c_str());
             if (options.tree) std::printf("%s\n", app::treeJson(loaded).c_str());
+            for (const std::string& line : inspection) std::printf("%s\n", line.c_str());
             return 0;
         }
         if (options.benchmark) return app::benchmarkCommand(options);

@@ -37,9 +37,9 @@ struct Thing {
 };
 
 struct DistanceReport {
-    double distance = 0.0;  // minimum distance between the two things
+    double distance = 0.0;       // minimum distance between the two things
     glm::dvec3 p0{0.0}, p1{0.0}; // its closest points, on a and on b
-    bool fromBrep = false;  // exact B-rep answer (CAD) or triangles (mesh scenes)
+    bool fromBrep = false;       // exact B-rep answer (CAD) or triangles (mesh scenes)
     // Where both sides are circles (edges) or cylinders (faces): their centres' distance,
     // and their axes' angle (degrees, 0..90) and, where parallel, the axes' distance.
     std::optional<double> centreDistance, axisAngleDegrees, axisDistance;
@@ -55,11 +55,11 @@ std::optional<DistanceReport> measureDistance(const Scene& scene, const Thing& a
 
 struct SolidProperties {
     uint32_t object = 0;
-    double volume = 0.0; // unit cubed; 0 for an open shell
-    double area = 0.0;   // unit squared, of every face
+    double volume = 0.0;    // unit cubed; 0 for an open shell
+    double area = 0.0;      // unit squared, of every face
     glm::dvec3 center{0.0}; // centre of mass (volume's; the surface's for an open shell)
-    Bounds bbox;         // world, exact (the B-rep's), mesh: the triangles'
-    bool closed = false; // a closed solid (its volume means something)
+    Bounds bbox;            // world, exact (the B-rep's), mesh: the triangles'
+    bool closed = false;    // a closed solid (its volume means something)
     LengthUnit unit;
 };
 
@@ -67,10 +67,19 @@ struct SolidProperties {
 // triangles close, the enclosed volume and its centre. nullopt for an object out of range.
 std::optional<SolidProperties> objectProperties(const Scene& scene, uint32_t object);
 
-// {"distance":D,"p0":[x,y,z],"p1":[x,y,z],...,"unit":"mm"}: the optional members where set.
+// Several objects together (a selection, a whole CAD file): volumes and areas summed, the
+// boxes united, the centre of mass weighted by volume (by area where one is open), closed
+// where all are; `object` holds the count.
+SolidProperties sumProperties(const std::vector<SolidProperties>& each);
+
+// {"distance":D,"p0":[x,y,z],"p1":[x,y,z],"source":"brep"|"mesh",...,"unit":"mm"}, then the
+// optional members where set: "center_distance", "axis_angle" (degrees), "axis_distance",
+// "point_to_plane".
 std::string distanceJson(const DistanceReport& report);
 // {"object":O,"volume":V,"area":A,"center":[..],"bbox":{"min":[..],"max":[..],"size":[..]},
 // "closed":true,"unit":"mm"}.
 std::string propertiesJson(const SolidProperties& properties);
+// A sum's line: {"object":"all","objects":N,"volume":...} as propertiesJson.
+std::string totalPropertiesJson(const SolidProperties& sum);
 
 } // namespace scene

@@ -6,6 +6,7 @@
 
 #include <BRep_Builder.hxx>
 #include <BinTools.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
@@ -73,7 +74,11 @@ std::shared_ptr<const BrepShapes> decodeBrep(std::string_view bytes) {
     std::istringstream binary{std::string(in.getBytes())};
     if (!in.done()) throw std::runtime_error("B-rep: bytes after the shapes");
     TopoDS_Shape all;
-    BinTools::Read(all, binary);
+    try {
+        BinTools::Read(all, binary);
+    } catch (const Standard_Failure& e) {
+        throw std::runtime_error(std::string("B-rep: ") + e.GetMessageString());
+    }
     if (all.IsNull()) throw std::runtime_error("B-rep: no shapes");
     impl->geometries.resize(count);
     TopoDS_Iterator child(all);

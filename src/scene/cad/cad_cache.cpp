@@ -39,11 +39,26 @@ CadCacheKey getKey(ByteReader& in) {
     return key;
 }
 
+// Every full-detail geometry has its shape, with a face for each of its parts' face numbers.
+void checkBrepMatches(const Scene& scene) {
+    if (scene.brep->geometryCount() != scene.geometries.size())
+        throw std::runtime_error("B-rep: another geometry count");
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g) {
+        const Geometry& geometry = scene.geometries[g];
+        if (scene.brep->has(g) != (geometry.level == 0))
+            throw std::runtime_error("B-rep: a shape for a level of detail, or none for a model");
+        for (uint32_t face : geometry.partFaces)
+            if (geometry.level == 0 && face >= scene.brep->faceCount(g))
+                throw std::runtime_error("B-rep: a face missing");
+    }
+}
+
 CadLoadResult getResult(ByteReader& in) {
     CadLoadResult r;
     r.scene = decodeScene(in);
     resultFields(in, r);
     r.scene.brep = decodeBrep(in.getBytes());
+    checkBrepMatches(r.scene);
     if (!in.done()) throw std::runtime_error("bytes after the load");
     return r;
 }
