@@ -1,7 +1,8 @@
 // test_things.cpp - the Inspect panel's things A and B (app/viewer/things.h): a click makes A,
 // Ctrl+click B, a third Ctrl+click replaces B, a plain click starts again, Esc and a new
-// scene forget them; their names from the assembly; and the sum of several solids'
-// properties (inspect_report.h): volumes and areas added, the centre weighted by volume.
+// scene forget them; their names from the assembly; and the Inspect panel's rows
+// (inspect_report.h): the sum of several solids (volumes and areas added, the centre
+// weighted by volume), every row naming its component, every value with its unit.
 #include <gtest/gtest.h>
 
 #include "app/viewer/inspect_report.h"
@@ -103,28 +104,32 @@ scene::SolidProperties solid(double volume, double area, glm::dvec3 center, bool
     return p;
 }
 
-TEST(InspectSum, VolumesAndAreasAddCentreWeighsByVolume) {
-    // A 1000 mm³ cube at the origin and a 3000 mm³ one at x = 40: the centre lies at x = 30.
-    const app::PropertiesSum sum =
-        app::sumProperties({solid(1000, 600, {0, 0, 0}), solid(3000, 1400, {40, 0, 8})});
-    EXPECT_EQ(sum.solids, 2u);
-    EXPECT_DOUBLE_EQ(sum.volume, 4000.0);
-    EXPECT_DOUBLE_EQ(sum.area, 2000.0);
-    EXPECT_DOUBLE_EQ(sum.center.x, 30.0);
-    EXPECT_DOUBLE_EQ(sum.center.z, 6.0);
-    EXPECT_TRUE(sum.closed);
-    EXPECT_FALSE(sum.byArea);
-    EXPECT_DOUBLE_EQ(sum.bbox.min.x, -1.0);
-    EXPECT_DOUBLE_EQ(sum.bbox.max.x, 41.0);
-    EXPECT_DOUBLE_EQ(sum.bbox.max.z, 9.0);
+// The rows of a selection's sum: a 1000 mm³ cube at the origin and a 3000 mm³ one at
+// x = 40: volumes and areas added, the centre of mass at x = 30 (weighted by volume).
+TEST(InspectSum, RowsSumVolumesAndAreasCentreWeighsByVolume) {
+    scene::Scene s;
+    s.unit = {"mm", "test"};
+    app::InspectReport report;
+    report.sum = scene::sumProperties({solid(1000, 600, {0, 0, 0}), solid(3000, 1400, {40, 0, 8})});
+    const auto rows = app::inspectRows(s, report);
+    ASSERT_EQ(rows.size(), 3u);
+    for (const auto& row : rows) EXPECT_EQ(row.component, "sum of 2 solids");
+    EXPECT_EQ(rows[0].text, "volume 4000 mm\u00b3");
+    EXPECT_EQ(rows[1].text, "surface area 2000 mm\u00b2");
+    EXPECT_EQ(rows[2].text, "centre of mass (30, 0, 6) mm");
 }
 
+// Open shells have no volume to weigh by: the centre is the surfaces', and says so.
 TEST(InspectSum, OpenShellsWeighByArea) {
-    const app::PropertiesSum sum =
-        app::sumProperties({solid(0, 100, {0, 0, 0}, false), solid(0, 300, {4, 0, 0}, false)});
-    EXPECT_FALSE(sum.closed);
-    EXPECT_TRUE(sum.byArea);
-    EXPECT_DOUBLE_EQ(sum.center.x, 3.0);
+    scene::Scene s;
+    s.unit = {"mm", "test"};
+    app::InspectReport report;
+    report.sum =
+        scene::sumProperties({solid(0, 100, {0, 0, 0}, false), solid(0, 300, {4, 0, 0}, false)});
+    const auto rows = app::inspectRows(s, report);
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0].text, "volume 0 mm\u00b3 (some are open shells)");
+    EXPECT_EQ(rows[2].text, "centre of the surfaces (3, 0, 0) mm");
 }
 
 // The panel's rows: each names its component and carries the unit.

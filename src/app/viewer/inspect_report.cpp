@@ -76,28 +76,6 @@ void addDistanceRows(const scene::Scene& scene, const InspectReport& report,
 
 } // namespace
 
-PropertiesSum sumProperties(const std::vector<scene::SolidProperties>& solids) {
-    PropertiesSum sum;
-    sum.bbox = scene::emptyBounds();
-    glm::dvec3 byVolume{0.0}, byArea{0.0};
-    for (const scene::SolidProperties& s : solids) {
-        ++sum.solids;
-        sum.volume += s.volume;
-        sum.area += s.area;
-        sum.closed = sum.closed && s.closed;
-        byVolume += s.volume * s.center;
-        byArea += s.area * s.center;
-        sum.bbox = scene::unite(sum.bbox, s.bbox);
-    }
-    // Open shells have no volume to weigh by: their surfaces' centre instead.
-    sum.byArea = !(sum.volume > 0.0);
-    if (!sum.byArea)
-        sum.center = byVolume / sum.volume;
-    else if (sum.area > 0.0)
-        sum.center = byArea / sum.area;
-    return sum;
-}
-
 std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectReport& report) {
     std::vector<InspectRow> rows;
     const scene::LengthUnit& unit = scene.unit;
@@ -121,11 +99,13 @@ std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectRepo
             {"selection", std::to_string(report.solidsLeftOut) + " more solids left out (at most " +
                               std::to_string(Inspector::maxSolids) + " are worked out)"});
     if (const auto& sum = report.sum) {
-        const std::string name = "sum of " + std::to_string(sum->solids) + " solids";
+        const std::string name = "sum of " + std::to_string(sum->object) + " solids";
+        // An open shell's volume means nothing: the centre is then the surfaces' (inspect.h).
+        const bool byVolume = sum->closed && sum->volume > 0.0;
         rows.push_back({name, "volume " + scene::formatVolume(sum->volume, unit) +
-                                  (sum->closed ? "" : " (of the closed ones)")});
+                                  (sum->closed ? "" : " (some are open shells)")});
         rows.push_back({name, "surface area " + scene::formatArea(sum->area, unit)});
-        rows.push_back({name, (sum->byArea ? "centre of the surfaces " : "centre of mass ") +
+        rows.push_back({name, (byVolume ? "centre of mass " : "centre of the surfaces ") +
                                   scene::formatPoint(sum->center, unit)});
     }
     if (report.a) rows.push_back({"A", report.a->label});
@@ -161,7 +141,7 @@ std::vector<std::string> Inspector::update(const scene::Scene& scene,
                 }
                 if (auto p = scene::objectProperties(scene, object)) next.solids.push_back(*p);
             }
-            if (next.solids.size() >= 2) next.sum = sumProperties(next.solids);
+            if (next.solids.size() >= 2) next.sum = scene::sumProperties(next.solids);
             // Whole solids: the union of their exact boxes; else the triangles' box.
             if (allWhole && !next.solids.empty() && !next.solidsLeftOut &&
                 next.solids.size() == objects.size()) {
@@ -177,8 +157,9 @@ std::vector<std::string> Inspector::update(const scene::Scene& scene,
                                precise(size.z) + " " + unit);
             }
             if (!next.solids.empty()) {
-                const PropertiesSum sum = next.sum ? *next.sum : sumProperties(next.solids);
-                said.push_back("inspect solids " + std::to_string(sum.solids) + " volume " +
+                const scene::SolidProperties sum =
+                    next.sum ? *next.sum : scene::sumProperties(next.solids);
+                said.push_back("inspect solids " + std::to_string(sum.object) + " volume " +
                                precise(sum.volume) + " area " + precise(sum.area) + " " + unit);
             }
         }

@@ -17,18 +17,6 @@
 
 namespace app {
 
-// Several solids as one: volumes and areas added, the centre of mass weighted by volume (by
-// area where no solid encloses one: open shells), the boxes joined.
-struct PropertiesSum {
-    uint32_t solids = 0;
-    double volume = 0.0, area = 0.0;
-    glm::dvec3 center{0.0};
-    bool closed = true;  // every solid closed: the volume means something
-    bool byArea = false; // the centre is the surfaces' (no solid had a volume)
-    scene::Bounds bbox;
-};
-PropertiesSum sumProperties(const std::vector<scene::SolidProperties>& solids);
-
 // One line of the panel: the component it is about (the selection's node, a solid's path,
 // A, B, or A and B) and what is said of it, every value with its unit.
 struct InspectRow {
@@ -43,7 +31,9 @@ struct InspectReport {
     bool exactBounds = false; // the B-rep's boxes of whole solids, else the triangles'
     std::vector<scene::SolidProperties> solids; // CAD scenes: each solid with a selected part
     uint32_t solidsLeftOut = 0;                 // past maxSolids
-    std::optional<PropertiesSum> sum;           // two solids or more
+    // Two solids or more: scene::sumProperties (volumes and areas added, the centre of mass
+    // weighted by volume, by area where one is open; `object` holds the count).
+    std::optional<scene::SolidProperties> sum;
     std::optional<scene::Thing> a, b;
     std::optional<scene::DistanceReport> distance; // A and B both there
     std::vector<InspectRow> rows;                  // what the panel shows
