@@ -226,8 +226,8 @@ if [[ ${#distances[@]} -ne 2 ]]; then
 elif "$idview" --help 2>&1 | grep -q -- '--distance'; then
     n=0
     for b in "$bolt_part" "$gear_part"; do
-        headless=$("$idview" --headless --scene procedural:preset=small --frames 1 \
-            --distance "$plate_part,$b" 2>/dev/null | sed -n 's/.*"distance":\([0-9.e+-]*\).*/\1/p')
+        headless=$("$idview" --scene procedural:preset=small --distance "$plate_part,$b" \
+            2>/dev/null | sed -n 's/.*"distance":\([0-9.e+-]*\).*/\1/p')
         awk -v a="${distances[$n]}" -v b="$headless" \
             'BEGIN{d = a - b; if (d < 0) d = -d; exit !(b != "" && d <= 1e-6 * (b < 1 ? 1 : b))}' &&
             echo "ok   inspect distance ${distances[$n]}: headless --distance $plate_part,$b says $headless" ||
