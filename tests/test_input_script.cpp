@@ -100,6 +100,18 @@ TEST(InputScript, BoxObjectAndModifiers) {
         EXPECT_THROW(app::parseScript(bad, "s.txt"), app::ScriptError) << bad;
 }
 
+// A Ctrl+click (thing B of the Inspect panel): the click holds Ctrl; a plain click nothing.
+TEST(InputScript, ClickWithCtrl) {
+    const auto commands = app::parseScript("1 click 10 20 ctrl\n2 click 10 20\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Click);
+    EXPECT_DOUBLE_EQ(commands[0].values[1], 20.0);
+    EXPECT_EQ(commands[0].mods, GLFW_MOD_CONTROL);
+    EXPECT_EQ(commands[1].mods, 0);
+    for (const char* bad : {"1 click 1 2 shift\n", "1 click 1 2 ctrl x\n", "1 click 1\n"})
+        EXPECT_THROW(app::parseScript(bad, "s.txt"), app::ScriptError) << bad;
+}
+
 TEST(InputScript, KeyNames) {
     EXPECT_EQ(app::scriptKeyCode("f"), GLFW_KEY_F);
     EXPECT_EQ(app::scriptKeyCode("F1"), GLFW_KEY_F1);
@@ -120,7 +132,8 @@ TEST(InputScript, BadLinesNameFileAndLine) {
     EXPECT_EQ(errorOf("1\n"), "s.txt:1: a command must follow the time");
     EXPECT_NE(errorOf("\n\n1 jump\n").find("s.txt:3: unknown command 'jump'"), std::string::npos);
     EXPECT_EQ(errorOf("1 move 10\n"), "s.txt:1: 'move' takes: move X Y");
-    EXPECT_EQ(errorOf("1 click 1 2 3\n"), "s.txt:1: 'click' takes: click X Y");
+    EXPECT_EQ(errorOf("1 click 1 2 3 4\n"), "s.txt:1: 'click' takes: click X Y [ctrl]");
+    EXPECT_EQ(errorOf("1 click 1 2 3\n"), "s.txt:1: a click holds ctrl or nothing, not '3'");
     EXPECT_EQ(errorOf("1 move ten 20\n"), "s.txt:1: 'ten' is not a number (move X Y)");
     EXPECT_EQ(errorOf("1 move -1 20\n"), "s.txt:1: window coordinates cannot be negative");
     EXPECT_EQ(errorOf("1 resize 0 20\n"),

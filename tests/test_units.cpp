@@ -24,6 +24,7 @@ TEST(Units, LengthsAreasAndPointsCarryTheirUnit) {
     EXPECT_EQ(scene::formatLength(1.0 / 3.0, mm), "0.333333 mm");
     EXPECT_EQ(scene::formatLength(2.0, scene::gltfUnit()), "2 m");
     EXPECT_EQ(scene::formatArea(628.3185307, mm), "628.319 mm\u00b2");
+    EXPECT_EQ(scene::formatVolume(1570.796327, mm), "1570.8 mm\u00b3");
     EXPECT_EQ(scene::formatPoint({1, -2.5, 0}, mm), "(1, -2.5, 0) mm");
     // A point at map coordinates keeps its centimetres (issue 35).
     EXPECT_EQ(scene::formatPoint({458002.4259, 5439009.5708, 121.9374771}, scene::gltfUnit()),
@@ -31,6 +32,7 @@ TEST(Units, LengthsAreasAndPointsCarryTheirUnit) {
     // No unit is said, not left out.
     EXPECT_EQ(scene::formatLength(3.0, scene::generatedUnit()), "3 (no unit)");
     EXPECT_EQ(scene::formatArea(3.0, scene::generatedUnit()), "3 (no unit)");
+    EXPECT_EQ(scene::formatVolume(3.0, scene::generatedUnit()), "3 (no unit)");
     EXPECT_EQ(scene::unitJsonMember(mm), "\"unit\":\"mm\"");
     EXPECT_EQ(scene::unitJsonMember(scene::generatedUnit()), "\"unit\":\"none\"");
 }

@@ -2,6 +2,7 @@
 # viewer_parts_test.sh IDVIEW LAVAPIPE_ICD - the viewer under Xvfb on lavapipe with validation,
 # as a user selects and looks: box selections, hide, isolate and show (with every renderer's
 # box), the assembly tree's checkboxes and rows, the selection levels and the double-click,
+# the Inspect panel's things A and B (click, Ctrl+click, Esc) and their distance,
 # loads refused past --max-triangles and cancelled, the standard views, the projection and F,
 # and paths typed into the panel's open field. Each session's counts are checked against
 # headless runs of the same view or --tree. Exit 77: skipped. The lavapipe environment, the
@@ -214,10 +215,20 @@ both=$(node_parts "gearbox module" "gearbox module/base plate")
     at level face
     at dblclick 470 260
     at frames 6
+    # The Inspect panel's things: a face of the base plate (A), Ctrl+click a bolt's (B), a
+    # third Ctrl+click a gear's (B again), then Esc.
+    at click 520 240
+    at frames 6
+    at click 350 180 ctrl
+    at frames 6
+    at click 350 240 ctrl
+    at frames 6
+    at key ESC
+    at frames 2
     at quit
 } >"$work/tree.txt"
 session tree --no-saved-settings
-tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | tr '\n' '|')
+tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | head -8 | tr '\n' '|')
 # The click at 470,260 lands on the base plate, object 0 (headless --pick says so): level
 # solid selects its parts, assembly every part under its group, a double-click the object.
 object0=$("$idview" --tree --scene procedural:preset=small | python3 -c '
@@ -237,6 +248,42 @@ if [[ $gearbox -gt $plate && $plate -gt $object0 && $object0 -gt 1 && $tree_even
     echo "ok   assembly tree and selection levels: hide, show, select and add nodes; solid, assembly, double-click ($gearbox, $plate, $object0 parts)"
 else
     fail "assembly tree events '$tree_events', expected '$want'"
+fi
+
+# The things the Inspect panel compares, named by their path and part as headless --pick
+# names the parts under those pixels, each click's A and B in turn; the distance of A and B
+# each time B is set, as headless --distance gives it for the same two parts.
+pick() { # pick X,Y: "PART PATH · part LOCAL" of the part headless --pick finds there
+    "$idview" --headless --scene procedural:preset=small --size 720x450 --frames 1 --pick "$1" \
+        2>/dev/null | python3 -c '
+import json, sys
+p = json.load(sys.stdin)
+print(p["part"], p["path"] + " \u00b7 part " + str(p["local_part"]))'
+}
+read -r plate_part plate_face < <(pick 520,240)
+read -r bolt_part bolt_face < <(pick 350,180)
+read -r gear_part gear_face < <(pick 350,240)
+things=$(sed -n 's/^idview: inspect things //p' "$work/tree.out" | paste -sd'#' -)
+want="gearbox module/base plate|none#gearbox module|none#gearbox module/base plate|none#"
+want+="$plate_face|none#$plate_face|$bolt_face#$plate_face|$gear_face#none|none"
+[[ $things == "$want" ]] && echo "ok   inspect things: a click makes A, Ctrl+click B, again B, Esc none" ||
+    fail "inspect things '$things', expected '$want'"
+distances=($(sed -n 's/^idview: inspect distance \([0-9.e+-]*\) none$/\1/p' "$work/tree.out"))
+if [[ ${#distances[@]} -ne 2 ]]; then
+    fail "expected two 'inspect distance D none' lines: $(grep 'inspect distance' "$work/tree.out")"
+elif "$idview" --help 2>&1 | grep -q -- '--distance'; then
+    n=0
+    for b in "$bolt_part" "$gear_part"; do
+        headless=$("$idview" --scene procedural:preset=small --distance "$plate_part,$b" \
+            2>/dev/null | sed -n 's/.*"distance":\([0-9.e+-]*\).*/\1/p')
+        awk -v a="${distances[$n]}" -v b="$headless" \
+            'BEGIN{d = a - b; if (d < 0) d = -d; exit !(b != "" && d <= 1e-6 * (b < 1 ? 1 : b))}' &&
+            echo "ok   inspect distance ${distances[$n]}: headless --distance $plate_part,$b says $headless" ||
+            fail "inspect distance ${distances[$n]}, headless --distance $plate_part,$b '$headless'"
+        n=$((n + 1))
+    done
+else
+    echo "note headless --distance missing: inspect distances ${distances[*]} not compared"
 fi
 
 # Loads that must not take the scene: a drop past --max-triangles fails in one line and the

@@ -40,6 +40,10 @@ std::string formatArea(double value, const LengthUnit& unit) {
     return withUnit(number(value), unit, "\u00b2");
 }
 
+std::string formatVolume(double value, const LengthUnit& unit) {
+    return withUnit(number(value), unit, "\u00b3");
+}
+
 std::string formatPoint(glm::dvec3 p, const LengthUnit& unit) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string.
     std::string text = "(";

@@ -27,6 +27,8 @@ LengthUnit generatedUnit();
 std::string formatLength(double value, const LengthUnit& unit);
 // "628.319 mm²".
 std::string formatArea(double value, const LengthUnit& unit);
+// "1570.8 mm³".
+std::string formatVolume(double value, const LengthUnit& unit);
 // "(1, 2.5, -3) mm": a coordinate or an offset vector.
 std::string formatPoint(glm::dvec3 p, const LengthUnit& unit);
 

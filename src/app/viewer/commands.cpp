@@ -53,7 +53,8 @@ std::vector<Command> table() {
         {"cancel",
          {{GLFW_KEY_ESCAPE, 0}},
          nullptr,
-         "cancel: the help, a box drag, measure mode, then the selection (never quits)",
+         "cancel: the help, a box drag, measure mode, then the selection and things A and B "
+         "(never quits)",
          cancel},
         {"quit",
          {{GLFW_KEY_Q, ctrl}},
@@ -161,6 +162,11 @@ std::vector<Command> table() {
          "select the part under the cursor (empty space: none)",
          nullptr},
         {"select-solid", {}, "Double-click", "select the solid (object) under the cursor", nullptr},
+        {"inspect-b",
+         {},
+         "Ctrl+click",
+         "add a second thing (B) to the clicked one (A): the Inspect panel gives their distance",
+         nullptr},
         {"box-select",
          {},
          "Shift / Ctrl / Alt + left drag",
@@ -242,7 +248,9 @@ std::optional<std::string> cancelOne(Viewer& viewer, Input& input) {
         viewer.toggleMeasure();
         return "measure";
     }
-    if (input.selection().escape()) {
+    // The selection and things A and B (things.h) go together: A's and B's parts are selected.
+    const bool hadThings = input.things().forget();
+    if (input.selection().escape() || hadThings) {
         viewer.selectionChanged();
         return "selection";
     }

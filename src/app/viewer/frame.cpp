@@ -11,6 +11,7 @@
 #include "app/headless.h" // cameraFrame
 #include "app/image_io.h"
 #include "app/viewer/commands.h"
+#include "app/viewer/inspect_panel.h"
 #include "app/viewer/kept_view.h" // maxRecentFiles
 #include "app/viewer/viewer.h"
 #include "render/blink.h"
@@ -87,6 +88,10 @@ void Viewer::drawPanel() {
         namedSelection_ = input_.selection().selected();
         selectedRow_ = scene::rowOfParts(tree_, namedSelection_);
     }
+    // Sizes, properties and distances: worked out when the selection or A and B changed.
+    for (const std::string& line :
+         inspect_.update(scene_.scene(), tree_, input_.selection().selected(), input_.things()))
+        events_.say(line);
     if (view_.panelVisible) act(app::drawPanel(settings_, view_, panelInfo()));
     // The box being dragged, over everything.
     if (const auto box = input_.boxInWindow())
@@ -96,6 +101,7 @@ void Viewer::drawPanel() {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
     edgeHover_.draw(viewProj_, glm::vec2(display.x, display.y));
+    drawInspect(inspect_.report(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
     drawOverlays();
     ImGui::Render();
 }
@@ -173,6 +179,7 @@ void Viewer::follow(SceneState::Change change) {
     input_.forgetParts(scene.uniquePartCount());
     measure_.forget();
     edgeHover_.forget();
+    inspect_.forget();
     startClean(change); // section, history: what belonged to the model before
     scene::AssemblyNode root = scene::assemblyTree(scene, treeRootName(scene_.loaded()));
     scene::sortNatural(root); // the panel lists siblings by name, --tree in scene order
@@ -343,6 +350,7 @@ PanelInfo Viewer::panelInfo() const {
     info.bounds = camera_.bounds();
     info.measuring = measure_.on();
     info.measureLines = measureLines(scene_.scene(), measure_.points());
+    info.inspect = &inspect_.report();
     if (const auto& face = info.selected.face;
         face && face->surface.kind == scene::SurfaceKind::Plane)
         info.selectedPlane = face->surface;

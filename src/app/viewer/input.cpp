@@ -84,7 +84,12 @@ void Input::onButton(int button, int action, int mods) {
     } else if (action == GLFW_RELEASE && drag_ && drag_->button == button) {
         const Drag done = *drag_;
         drag_.reset();
-        if (done.kind == DragKind::Box) {
+        if (done.kind == DragKind::Box && done.mode == SelectMode::Add && done.moved < clickSlop) {
+            // Ctrl+click, not a box of one pixel: thing B of the Inspect panel (things.h).
+            pendingClick_ = viewer_.nextFrame();
+            pendingLevel_ = viewer_.view().selectLevel;
+            pendingAdd_ = true;
+        } else if (done.kind == DragKind::Box) {
             // The parts come from the ID image of a frame after the release.
             box_ = Box{done.start, cursor_, done.mode, viewer_.nextFrame()};
         } else if (done.kind == DragKind::Orbit && done.moved < clickSlop) {
@@ -98,6 +103,7 @@ void Input::onButton(int button, int action, int mods) {
             pendingClick_ = viewer_.nextFrame();
             pendingLevel_ =
                 twice ? std::max(1u, viewer_.view().selectLevel) : viewer_.view().selectLevel;
+            pendingAdd_ = false;
         }
     }
 }
@@ -169,20 +175,37 @@ bool Input::readPick(const std::optional<render::PickReading>& pick) {
         pendingClick_.reset();
         return false;
     }
-    if (pendingClick_ && pick && pick->frame >= *pendingClick_ && pendingLevel_ > 0 &&
-        selection_.hovered()) {
-        selection_.clickAround(viewer_.partsAround(*selection_.hovered(), pendingLevel_));
-        selectedDepth_ = hoveredDepth_;
-        pendingClick_.reset();
-        return true;
-    }
     if (pendingClick_ && pick && pick->frame >= *pendingClick_) {
-        selection_.click();
-        selectedDepth_ = hoveredDepth_;
         pendingClick_.reset();
+        if (pendingAdd_ && !selection_.hovered()) return false; // Ctrl+click on empty space
+        clicked();
+        selectedDepth_ = hoveredDepth_;
         return true;
     }
     return false;
+}
+
+void Input::clicked() {
+    const uint32_t partCount = selection_.selected().partCount();
+    const auto hovered = selection_.hovered();
+    std::optional<scene::Thing> thing;
+    if (hovered) {
+        // At the face level an edge under the cursor (edge_hover.h) is the thing, not its face.
+        const std::optional<scene::EdgeRef> edge =
+            pendingLevel_ == 0 ? selection_.hoveredEdge() : std::nullopt;
+        thing = viewer_.thingOf(viewer_.partsAround(*hovered, pendingLevel_), *hovered, edge);
+    }
+    if (pendingAdd_)
+        things_.add(std::move(*thing));
+    else
+        things_.click(std::move(thing));
+    // A plain click at the face level selects the part alone (and what Selection::click
+    // takes with it); at coarser levels, and with Ctrl, A's and B's parts. The clicked part
+    // is the primary one (the panel details its face).
+    if (!pendingAdd_ && pendingLevel_ == 0)
+        selection_.click();
+    else
+        selection_.clickAround(things_.parts(partCount));
 }
 
 std::optional<std::pair<glm::vec2, glm::vec2>> Input::boxInWindow() const {
@@ -227,6 +250,7 @@ bool Input::readPartSets(const std::optional<render::PartSetReading>& reading, V
 
 void Input::forgetParts(uint32_t partCount) {
     selection_.reset(partCount);
+    things_.forget();
     pendingClick_.reset();
     pickingSince_.reset();
     hoverPick_.reset();
@@ -290,9 +314,24 @@ void Input::queue(const ScriptCommand& c) {
         break;
     case ScriptOp::Click:
         // Move first and let a frame pass, so the panel knows whether it is under the cursor.
+        // Ctrl is held as a hand holds it: down before the press, up after the release.
         step([this, v] { onCursor(v[0], v[1]); }, true);
-        step(press(GLFW_PRESS), false);
-        step(press(GLFW_RELEASE), true);
+        step(
+            [this, mods = c.mods, press] {
+                if (mods)
+                    onKey(GLFW_KEY_LEFT_CONTROL, glfwGetKeyScancode(GLFW_KEY_LEFT_CONTROL),
+                          GLFW_PRESS, mods);
+                press(GLFW_PRESS, mods)();
+            },
+            false);
+        step(
+            [this, mods = c.mods, press] {
+                press(GLFW_RELEASE, mods)();
+                if (mods)
+                    onKey(GLFW_KEY_LEFT_CONTROL, glfwGetKeyScancode(GLFW_KEY_LEFT_CONTROL),
+                          GLFW_RELEASE, 0);
+            },
+            true);
         break;
     case ScriptOp::DoubleClick: // both clicks in one step: well within doubleClickSeconds
         step([this, v] { onCursor(v[0], v[1]); }, true);

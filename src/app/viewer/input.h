@@ -18,6 +18,7 @@
 #include "app/viewer/key_queue.h"
 #include "app/viewer/script.h"
 #include "app/viewer/selection.h"
+#include "app/viewer/things.h"
 #include "render/pick.h"
 
 struct GLFWwindow;
@@ -81,6 +82,9 @@ class Input {
 
     const Selection& selection() const { return selection_; }
     Selection& selection() { return selection_; }
+    // Things A and B of the Inspect panel: a click makes A, a Ctrl+click B (things.h).
+    const Things& things() const { return things_; }
+    Things& things() { return things_; }
     float hoveredDepth() const { return hoveredDepth_; }
     float selectedDepth() const { return selectedDepth_; }
     // Esc's first cancel: a box being dragged is dropped; false when none was.
@@ -129,10 +133,14 @@ class Input {
     uint64_t visibleFrame_ = 0; // the frame visibleParts_ was counted in
     uint32_t visibleParts_ = 0;
     Selection selection_;
+    Things things_;
+    // The click's pick has come: its thing becomes A or B, and A's and B's parts the selection.
+    void clicked();
     float hoveredDepth_ = 0.0f, selectedDepth_ = 0.0f; // reversed: 0 is the far plane
     std::optional<render::PickReading> hoverPick_;
     std::optional<uint64_t> pendingClick_; // the frame whose pick the click selects from
     uint32_t pendingLevel_ = 0;            // what it selects (ViewSettings::selectLevel)
+    bool pendingAdd_ = false;              // a Ctrl+click: thing B (things.h)
     double lastClickTime_ = -1.0;          // glfwGetTime of the last click, for double-clicks
     glm::dvec2 lastClickAt_{-1.0, -1.0};
     std::optional<uint64_t> pickingSince_; // first frame of the current run of picks

@@ -56,7 +56,7 @@ std::vector<std::string> measureLines(const scene::Scene& scene,
 }
 
 void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& viewProj,
-                 glm::vec2 size, const scene::LengthUnit& unit) {
+                 glm::vec2 size, const scene::LengthUnit& unit, uint32_t colour) {
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     std::vector<ImVec2> screen;
     for (const MeasurePoint& p : points) {
@@ -65,7 +65,7 @@ void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& view
         const glm::vec2 ndc = glm::vec2(glm::dvec2(clip) / clip.w);
         screen.push_back(ImVec2((ndc.x * 0.5f + 0.5f) * size.x, (ndc.y * 0.5f + 0.5f) * size.y));
     }
-    const ImU32 colour = IM_COL32(255, 235, 59, 255), shadow = IM_COL32(0, 0, 0, 200);
+    const ImU32 shadow = IM_COL32(0, 0, 0, 200);
     if (screen.size() == 2) {
         draw->AddLine(screen[0], screen[1], shadow, 4.0f);
         draw->AddLine(screen[0], screen[1], colour, 2.0f);

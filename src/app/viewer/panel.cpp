@@ -13,6 +13,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/inspect_panel.h"
 #include "app/viewer/panel_layout.h"
 #include "app/viewer/panel_rendering.h"
 #include "app/viewer/panel_section.h"
@@ -235,6 +236,11 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     layout.mark("Assembly tree");
     if (ImGui::CollapsingHeader("Assembly tree", ImGuiTreeNodeFlags_DefaultOpen))
         assemblyTree(view, info, actions, layout);
+    // Below the tree: its rows grow and shrink with the selection, and the tree's rows, which
+    // a click selects from, stay where they are.
+    layout.mark("Inspect");
+    if (info.inspect && ImGui::CollapsingHeader("Inspect", ImGuiTreeNodeFlags_DefaultOpen))
+        inspectSection(*info.inspect);
     layout.mark("Rendering");
     if (ImGui::CollapsingHeader("Rendering")) rendering(settings, info, actions);
     layout.mark("Scene");

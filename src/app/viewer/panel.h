@@ -26,6 +26,8 @@
 
 namespace app {
 
+struct InspectReport; // inspect_report.h
+
 // The panel's distance from the window's top left corner, where it opens.
 constexpr float panelMargin = 8.0f;
 
@@ -128,7 +130,10 @@ struct PanelInfo {
     // The deepest tree row whose parts are exactly the selection (scene::rowOfParts).
     std::optional<size_t> selectedRow;
     uint32_t visibleParts = 0; // counted on the GPU in the newest completed frame
-    double idPassMs = 0.0;     // GPU time of the edge and part set passes
+    // The Inspect section's sizes, properties and distance, worked out when the selection or
+    // things A and B changed (inspect_report.h).
+    const InspectReport* inspect = nullptr;
+    double idPassMs = 0.0; // GPU time of the edge and part set passes
     // Culling: what the technique and mode get of the mode chosen, what the newest completed
     // frame drew of the totals, and the GPU time of the cull passes and the depth pyramid.
     std::string cullingApplied;

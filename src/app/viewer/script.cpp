@@ -31,7 +31,7 @@ const CommandSpec commandSpecs[] = {
     {"key", ScriptOp::Key, 0, "key NAME"},
     {"type", ScriptOp::Type, 0, "type TEXT"},
     {"move", ScriptOp::Move, 2, "move X Y"},
-    {"click", ScriptOp::Click, 2, "click X Y"},
+    {"click", ScriptOp::Click, 2, "click X Y [ctrl]"},
     {"dblclick", ScriptOp::DoubleClick, 2, "dblclick X Y"},
     {"level", ScriptOp::Level, 0, "level face|solid|assembly"},
     {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1"},
@@ -123,8 +123,9 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
     const bool fits = restOfLine || spec->op == ScriptOp::Node ? !args.empty()
-                      : spec->op == ScriptOp::Box ? args.size() == 4 || args.size() == 5
-                                                  : args.size() == expected;
+                      : spec->op == ScriptOp::Box   ? args.size() == 4 || args.size() == 5
+                      : spec->op == ScriptOp::Click ? args.size() == 2 || args.size() == 3
+                                                    : args.size() == expected;
     if (!fits) fail(std::string("'") + spec->name + "' takes: " + spec->usage);
     if (restOfLine) {
         const auto start = line.find(spec->name) + std::string(spec->name).size();
@@ -152,6 +153,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
             fail("a box adds or removes, not '" + args[4] + "' (" + spec->usage + ")");
     } else if (spec->op == ScriptOp::Box) {
         command.mods = GLFW_MOD_SHIFT;
+    }
+    if (spec->op == ScriptOp::Click && args.size() == 3) {
+        if (args[2] != "ctrl") fail("a click holds ctrl or nothing, not '" + args[2] + "'");
+        command.mods = GLFW_MOD_CONTROL;
     }
     for (size_t i = 0; i < spec->numbers; ++i)
         if (!parseNumber(args[i], command.values[i]))

@@ -10,7 +10,8 @@
 //   0.6 type /tmp/a b.glb   characters typed into the panel's focused field (the rest of the
 //                           line, ASCII), as GLFW hands them over
 //   1   move 320 200        cursor to window coordinates (top-left origin)
-//   1.2 click 320 200       move there, press and release the left button
+//   1.2 click 320 200       move there, press and release the left button; `click ... ctrl`
+//                           holds Ctrl (thing B of the Inspect panel, things.h)
 //   1.3 dblclick 320 200    move there and click twice at once (a double-click)
 //   1.4 level solid         what a click selects: face, solid or assembly (the panel's radio
 //                           buttons; face is a part of any model, solid its object)
@@ -112,7 +113,7 @@ struct ScriptCommand {
     ScriptOp op = ScriptOp::Quit;
     std::string text;               // key name, renderer or mode name, file path, node path
     int key = 0;                    // Key: the GLFW key code
-    int mods = 0;                   // Key, Box: GLFW modifier bits held
+    int mods = 0;                   // Key, Box, Click: GLFW modifier bits held
     std::array<double, 4> values{}; // coordinates, wheel steps, window size or sample count
     std::string where;              // "file:line", for messages while it runs
 };

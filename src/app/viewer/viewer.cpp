@@ -298,7 +298,9 @@ FrameWants Viewer::frameWants() const {
     wants.now = elapsed();
     wants.events = window_.events() + input_.stepsRun(); // scripted input counts as input
     wants.continuous = !view_.vsync;
-    wants.busy = input_.waiting() || !screenshotPath_.empty() || pendingZoom_ != 0.0f;
+    // A selection the Inspect section has not worked out yet: a frame to show it.
+    wants.busy = input_.waiting() || !screenshotPath_.empty() || pendingZoom_ != 0.0f ||
+                 inspect_.stale(input_.selection().selected(), input_.things());
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = input_.selection().hovered().has_value();
     wants.scriptWake = input_.wakeIn(wants.now);

@@ -15,6 +15,7 @@
 #include "app/viewer/events.h"
 #include "app/viewer/file_chooser.h"
 #include "app/viewer/input.h"
+#include "app/viewer/inspect_report.h"
 #include "app/viewer/measure.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/overlays.h"
@@ -89,6 +90,12 @@ class Viewer {
     bool actOnNode(const std::string& path, NodeAction action, SelectMode mode);
     // The parts a click at `level` selects around `part` (scene::partsAround).
     scene::PartSet partsAround(uint32_t part, uint32_t level) const;
+    // What a click on `part` that selects `parts` (or the edge `edge`) compares in the Inspect
+    // panel, named by the assembly tree (things.h).
+    scene::Thing thingOf(const scene::PartSet& parts, uint32_t part,
+                         std::optional<scene::EdgeRef> edge) const {
+        return makeThing(scene_.scene(), tree_, parts, part, edge);
+    }
     void quit() { window_.close(); }
     // Measure mode (M): clicks place points instead of selecting.
     void toggleMeasure();
@@ -161,6 +168,7 @@ class Viewer {
     OrbitCamera camera_;
     Measure measure_;
     EdgeHover edgeHover_; // the B-rep edges hovered and selected
+    Inspector inspect_;   // the Inspect section's report, worked out when the selection changes
     FileChooser chooser_; // Open...: its answer is taken between frames (openDrops)
     void chosen(const ChooserResult& result);
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
