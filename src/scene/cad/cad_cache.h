@@ -1,12 +1,12 @@
 // cad_cache.h - CAD tessellations kept on disk, so that a file opened again skips Open
 // CASCADE: one entry per file path and tessellation settings in util::cacheFolder()
 // (util/cache_file.h), holding what loadCad returned (the scene with its levels of detail, the
-// warnings, the deflection used, the face counts, the B-rep shapes). An entry is used only when its magic, format
-// version, key (the path, the file's size and content hash, the deflections and levels asked for)
-// and the checksum of its payload all match and the payload decodes to a valid scene; anything else
-// is a miss, and the entry is written anew (to a temporary file renamed over it, so that a
-// crash never leaves half an entry under the entry's name). This header stays free of Open
-// CASCADE types.
+// warnings, the deflection used, the face counts, the B-rep shapes). An entry is used only when its
+// magic, format version, key (the path, the file's size and content hash, the deflections and
+// levels asked for) and the checksum of its payload all match and the payload decodes to a valid
+// scene; anything else is a miss, and the entry is written anew (to a temporary file renamed over
+// it, so that a crash never leaves half an entry under the entry's name). This header stays free of
+// Open CASCADE types.
 //
 // Entry layout: "idviewTC" (8 bytes), format version (u32), key size (u64) and key, payload
 // size (u64), payload checksum (u64, hash64), payload. Host byte order.
