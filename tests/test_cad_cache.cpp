@@ -30,6 +30,7 @@
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 
+#include "cad_test_parts.h"
 #include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_mesh.h"
@@ -53,14 +54,10 @@ class CadCache : public ::testing::Test {
                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(root_);
         fs::create_directories(root_);
-        if (const char* old = std::getenv("XDG_CACHE_HOME")) saved_ = old;
-        setenv("XDG_CACHE_HOME", root_.c_str(), 1);
+        cacheHome_.emplace(root_);
     }
     void TearDown() override {
-        if (saved_)
-            setenv("XDG_CACHE_HOME", saved_->c_str(), 1);
-        else
-            unsetenv("XDG_CACHE_HOME");
+        cacheHome_.reset();
         std::error_code ignored;
         fs::remove_all(root_, ignored);
     }
@@ -72,7 +69,7 @@ class CadCache : public ::testing::Test {
         return found;
     }
     fs::path root_;
-    std::optional<std::string> saved_;
+    std::optional<cadtest::CacheHome> cacheHome_;
 };
 
 // Every array, name, per-part list and placement equal.

@@ -28,6 +28,7 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include "cad_test_parts.h"
 #include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/edge_info.h"
@@ -44,14 +45,8 @@ struct Plate {
 };
 
 Plate plateWithHole() {
-    const TopoDS_Shape box = BRepPrimAPI_MakeBox(40.0, 30.0, 10.0).Shape();
-    const TopoDS_Shape pin =
-        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5.0, 12.0).Shape();
-    BRepAlgoAPI_Cut cut(box, pin);
-    EXPECT_TRUE(cut.IsDone());
-    const fs::path path =
-        fs::temp_directory_path() / ("idview_edge_info_" + std::to_string(::getpid()) + ".brep");
-    EXPECT_TRUE(BRepTools::Write(cut.Shape(), path.c_str()));
+    const fs::path path = cadtest::writeBoxWithHole("edge_info", 40.0, 30.0, 10.0, 5.0);
+    EXPECT_FALSE(path.empty());
     Plate plate;
     plate.scene = loadCad(path.string(), {}).scene;
     BRep_Builder builder;

@@ -22,6 +22,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <gp_Ax2.hxx>
 
+#include "cad_test_parts.h"
 #include "scene/cad/brep_occt.h"
 #include "scene/edge_info.h"
 #include "scene/raycast.h"
@@ -33,14 +34,8 @@ namespace fs = std::filesystem;
 constexpr uint32_t W = 240, H = 150;
 
 app::LoadedScene plateWithHole() {
-    const TopoDS_Shape box = BRepPrimAPI_MakeBox(40.0, 30.0, 10.0).Shape();
-    const TopoDS_Shape pin =
-        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5.0, 12.0).Shape();
-    BRepAlgoAPI_Cut cut(box, pin);
-    EXPECT_TRUE(cut.IsDone());
-    const fs::path path =
-        fs::temp_directory_path() / ("idview_edge_pick_" + std::to_string(::getpid()) + ".brep");
-    EXPECT_TRUE(BRepTools::Write(cut.Shape(), path.c_str()));
+    const fs::path path = cadtest::writeBoxWithHole("edge_pick", 40.0, 30.0, 10.0, 5.0);
+    EXPECT_FALSE(path.empty());
     app::SceneSettings source;
     source.model = path.string();
     source.cadCache = false;

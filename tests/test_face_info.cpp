@@ -27,6 +27,7 @@
 #include <TopoDS.hxx>
 #include <gp_Ax2.hxx>
 
+#include "cad_test_parts.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/face_info.h"
@@ -39,14 +40,8 @@ using namespace scene;
 
 // The box with its hole, written as BREP and loaded as a user would.
 Scene boxWithHole() {
-    const TopoDS_Shape box = BRepPrimAPI_MakeBox(40.0, 30.0, 20.0).Shape();
-    const TopoDS_Shape pin =
-        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 15, -1), gp_Dir(0, 0, 1)), 5.0, 22.0).Shape();
-    BRepAlgoAPI_Cut cut(box, pin);
-    EXPECT_TRUE(cut.IsDone());
-    const fs::path path =
-        fs::temp_directory_path() / ("idview_face_info_" + std::to_string(::getpid()) + ".brep");
-    EXPECT_TRUE(BRepTools::Write(cut.Shape(), path.c_str()));
+    const fs::path path = cadtest::writeBoxWithHole("face_info", 40.0, 30.0, 20.0, 5.0);
+    EXPECT_FALSE(path.empty());
     Scene s = loadCad(path.string(), {}).scene;
     fs::remove(path);
     return s;

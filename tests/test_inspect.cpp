@@ -30,6 +30,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gp_Ax2.hxx>
 
+#include "cad_test_parts.h"
 #include "closed_cad_files.h"
 #include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_cache.h"
@@ -75,20 +76,16 @@ class Inspect : public ::testing::Test {
     void SetUp() override {
         folder_ = fs::temp_directory_path() / ("idview_inspect_" + std::to_string(::getpid()));
         fs::remove_all(folder_);
-        if (const char* old = std::getenv("XDG_CACHE_HOME")) saved_ = old;
-        setenv("XDG_CACHE_HOME", (folder_ / "cache").c_str(), 1);
+        cacheHome_.emplace(folder_ / "cache");
         path_ = writePlates(folder_);
     }
     void TearDown() override {
-        if (saved_)
-            setenv("XDG_CACHE_HOME", saved_->c_str(), 1);
-        else
-            unsetenv("XDG_CACHE_HOME");
+        cacheHome_.reset();
         std::error_code ignored;
         fs::remove_all(folder_, ignored);
     }
     fs::path folder_, path_;
-    std::optional<std::string> saved_;
+    std::optional<cadtest::CacheHome> cacheHome_;
 };
 
 // What the tests name in the plates' scene.

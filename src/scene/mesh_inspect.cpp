@@ -11,33 +11,14 @@
 #include <utility>
 
 #include "scene/bounds.h"
+#include "scene/closest_point.h"
 
 namespace scene {
 
 namespace {
 
 glm::dvec3 closestOnTriangle(const glm::dvec3& p, const Triangle& t) {
-    const glm::dvec3 &a = t[0], &b = t[1], &c = t[2];
-    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return a;
-    const glm::dvec3 bp = p - b;
-    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-    const glm::dvec3 cp = p - c;
-    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double sum = va + vb + vc;
-    // A degenerate triangle has no inside: its edges (tested above) hold the answer.
-    if (!(sum > 0)) return a;
-    return a + ab * (vb / sum) + ac * (vc / sum);
+    return scene::closestOnTriangle<glm::dvec3>(p, t[0], t[1], t[2]);
 }
 
 // The closest points of segments p0-p1 and q0-q1.

@@ -1,6 +1,8 @@
 // cad_mesh.cpp - Open CASCADE triangulations into scene geometry, at full detail and coarser.
 #include "scene/cad/cad_mesh.h"
 
+#include "scene/closest_point.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -108,29 +110,6 @@ class CountingFactory : public IMeshTools_MeshAlgoFactory {
     Handle(IMeshTools_MeshAlgoFactory) inner_ = new BRepMesh_MeshAlgoFactory;
     MeshBudget& budget_;
 };
-
-// The closest point of triangle a, b, c to p, by the triangle's Voronoi regions.
-glm::vec3 closestOnTriangle(glm::vec3 p, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
-    const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
-    const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return a;
-    const glm::vec3 bp = p - b;
-    const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return b;
-    const float vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-    const glm::vec3 cp = p - c;
-    const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return c;
-    const float vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-    const float va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const float sum = va + vb + vc;
-    if (!(sum > 0)) return a; // degenerate: its corners are as close as it gets
-    return a + ab * (vb / sum) + ac * (vc / sum);
-}
 
 // How far full detail's vertices (which lie on the surface) are from `level`'s triangles of
 // the same face, the largest over the faces: the mesher bounds its deflection only where it
