@@ -227,18 +227,19 @@ TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     EXPECT_EQ(errorOf("1 view sideways\n"),
               "s.txt:1: unknown view 'sideways' (known: " + scene::standardViewNames() + ")");
     EXPECT_EQ(errorOf("1 view\n"), "s.txt:1: 'view' takes: view NAME");
-    const auto on = app::parseScript("1 ortho on\n2 ortho off\n", "s.txt");
-    ASSERT_EQ(on.size(), 2u);
-    EXPECT_EQ(on[0].op, app::ScriptOp::Ortho);
-    EXPECT_EQ(on[0].text, "on");
-    EXPECT_EQ(on[1].text, "off");
-    EXPECT_EQ(errorOf("1 ortho yes\n"), "s.txt:1: 'ortho' takes on or off, not 'yes'");
-    const auto xray = app::parseScript("1 xray on\n2 xray off\n", "s.txt");
-    ASSERT_EQ(xray.size(), 2u);
-    EXPECT_EQ(xray[0].op, app::ScriptOp::Xray);
-    EXPECT_EQ(xray[0].text, "on");
-    EXPECT_EQ(xray[1].text, "off");
-    EXPECT_EQ(errorOf("1 xray\n"), "s.txt:1: 'xray' takes: xray on|off");
+    // The switches: on and off, nothing else; without a word the command's form.
+    for (const auto& [word, op] : {std::pair{std::string("ortho"), app::ScriptOp::Ortho},
+                                   std::pair{std::string("xray"), app::ScriptOp::Xray}}) {
+        const auto on = app::parseScript("1 " + word + " on\n2 " + word + " off\n", "s.txt");
+        ASSERT_EQ(on.size(), 2u) << word;
+        EXPECT_EQ(on[0].op, op) << word;
+        EXPECT_EQ(on[0].text, "on");
+        EXPECT_EQ(on[1].text, "off");
+        EXPECT_EQ(errorOf("1 " + word + " yes\n"),
+                  "s.txt:1: '" + word + "' takes on or off, not 'yes'");
+        EXPECT_EQ(errorOf("1 " + word + "\n"),
+                  "s.txt:1: '" + word + "' takes: " + word + " on|off");
+    }
     // The unknown-command message lists the commands, these two among them.
     const std::string unknown = errorOf("1 jump\n");
     EXPECT_NE(unknown.find(", view, ortho,"), std::string::npos) << unknown;
