@@ -100,6 +100,17 @@ const std::vector<Flag>& flags() {
                  msaa = parseCount("--msaa", v, 1, 8);
                  if (msaa & (msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
              }},
+            {"--clear", "PATH",
+             "how a frame starts and resolves: pass (the scene pass clears every image and "
+             "resolves MSAA), compute (it clears depth alone; a compute pass writes the "
+             "background and resolves) or auto, the faster of the two on this device, timed "
+             "once and kept beside the pipeline cache" +
+                 byDefault(render::clearPathName(d.render.clear)),
+             [](Options& o, auto& v) {
+                 const auto path = render::findClearPath(v);
+                 if (!path) throw UsageError("--clear expects auto, pass or compute, not " + v);
+                 o.render.clear = *path;
+             }},
             headless(
                 {"--frames", "N",
                  "frames to render headless" + byDefault(d.frames) + "; files hold the last one",

@@ -63,6 +63,12 @@ const ScenePass& Renderer::pass(uint32_t msaa) {
     return *found->second;
 }
 
+std::optional<ClearTiming> Renderer::clearTiming(uint32_t msaa) const {
+    auto found = clearTimings_.find(msaa);
+    if (found == clearTimings_.end()) return std::nullopt;
+    return found->second;
+}
+
 void Renderer::setScene(const scene::Scene& scene, const RenderSettings& settings) {
     apply(scene, settings, true);
 }

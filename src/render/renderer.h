@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "render/animator.h"
+#include "render/clear_choice.h"
 #include "render/culling.h"
 #include "render/draw_buffers.h"
 #include "render/draw_list.h"
@@ -158,6 +159,12 @@ class Renderer {
     const std::optional<HoveredTiles>& lastComposedTiles() const { return lastTiles_; }
 
     const RenderSettings& settings() const { return settings_; }
+    // The clear path the configured frames draw with (never Auto): RenderSettings::clear, or
+    // with Auto the faster of the two on this device (render/clear_choice.h).
+    ClearPath clearPath() const { return clearPath_; }
+    // What timing the paths found for `msaa` samples: with Auto, once they were timed (or
+    // read from the file beside the pipeline cache); nullopt before, or when a path was forced.
+    std::optional<ClearTiming> clearTiming(uint32_t msaa) const;
     // Counts the calls that may change what the scene pass draws beyond settings(): a scene
     // set, a configuration applied, hidden parts, shaders reloaded (app/viewer/pacer.h).
     uint64_t changes() const { return changes_; }
@@ -260,6 +267,8 @@ class Renderer {
     uint32_t partCount_ = 0;
     RenderStats stats_;
     SwitchReport lastSwitch_;
+    ClearPath clearPath_ = ClearPath::Pass;
+    std::map<uint32_t, ClearTiming> clearTimings_; // by sample count, with Auto
 };
 
 } // namespace render

@@ -13,7 +13,25 @@ PipelineKey PipelineKey::effective(bool devicePassthrough) const {
     if (technique->isFloor()) key.hiding = false; // no part IDs: nothing to hide by
     key.taskCulling = key.taskCulling && technique->usesMeshShader();
     key.runOffsets = key.runOffsets && technique->readsPrimitiveId() && mode->indirect;
+    if (key.msaa == 1) key.clear = ClearPath::Pass;
     return key;
+}
+
+const char* clearPathName(ClearPath path) {
+    switch (path) {
+    case ClearPath::Pass:
+        return "pass";
+    case ClearPath::Compute:
+        return "compute";
+    default:
+        return "auto";
+    }
+}
+
+std::optional<ClearPath> findClearPath(std::string_view name) {
+    for (ClearPath path : {ClearPath::Auto, ClearPath::Pass, ClearPath::Compute})
+        if (name == clearPathName(path)) return path;
+    return std::nullopt;
 }
 
 } // namespace render

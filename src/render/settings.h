@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include <glm/glm.hpp>
 
@@ -25,6 +27,20 @@ constexpr Range searchBatchRange{1, 32};
 constexpr Range nsearchFanOutRange{3, 16};
 constexpr Range nsearchLinearRange{0, 64};
 constexpr Range nsearchStepsRange{1, 64};
+
+// How a frame's images start and how multisampled ones become the single-sampled images
+// that everything after the scene pass reads (render/resolve.h). The rasterizer needs only
+// depth cleared: which samples no triangle covered is known from depth, so the background's
+// colour and ID can be written by the pass that resolves.
+// - Pass: the scene pass clears colour, IDs and depth and resolves MSAA at its end (fast
+//   where clears are nearly free);
+// - Compute: the pass clears depth alone and a compute pass writes the background and
+//   resolves (fast where the rasterizer writes memory slowly: the H100);
+// - Auto: the faster of the two on this device, timed once (render/clear_choice.h).
+// Both give the same ID image byte for byte and colour within 1 per channel.
+enum class ClearPath { Auto, Pass, Compute };
+const char* clearPathName(ClearPath path); // "auto", "pass", "compute"
+std::optional<ClearPath> findClearPath(std::string_view name);
 
 // What selects a pipeline. Fields the technique does not read are ignored: the pipeline
 // cache keys on PipelineKey::effective(), so switching them costs nothing.
@@ -52,6 +68,10 @@ struct PipelineKey {
     // Nor this: the X-ray pass's pipeline (render/xray.h), the floor's shaders drawing
     // translucent (IDV_TRANSLUCENT): blended colour, no depth or ID written.
     bool translucent = false;
+    // Nor this: the clear path the renderer draws with (never Auto). With MSAA the compute
+    // path's scene pass resolves nothing, which makes it another render pass for pipelines;
+    // at 1x the two are compatible and effective() drops it.
+    ClearPath clear = ClearPath::Pass;
 
     // The same key with what the technique ignores set to defaults, and passthrough only
     // where the technique has a geometry stage and the device offers it.
@@ -114,6 +134,7 @@ struct LodSettings {
 
 struct RenderSettings {
     PipelineKey pipeline;
+    ClearPath clear = ClearPath::Auto;
     DrawSettings draws;
     Shading shading;
     EdgeSettings edges;
