@@ -29,6 +29,9 @@ layout(local_size_x = ID_PASS_TILE, local_size_y = ID_PASS_TILE) in;
 
 #if IDV_PART_SET_SAMPLES
 layout(set = 0, binding = 0) uniform utexture2DMS ids;
+// A sample whose depth is the clear value (0, reversed depth) was covered by no triangle: on
+// the compute clear path its ID is whatever the image held (render/resolve.h).
+layout(set = 0, binding = 1) uniform texture2DMS depth;
 #else
 layout(set = 0, binding = 0, r32ui) uniform readonly uimage2D ids;
 #endif
@@ -73,7 +76,8 @@ void main() {
     // A sample showing the part of the sample before it adds nothing new.
     uint last = BACKGROUND_ID;
     for (uint s = 0u; s < query.samples; ++s) {
-        const uint id = inside ? texelFetch(ids, ivec2(p), int(s)).r : BACKGROUND_ID;
+        const bool covered = inside && texelFetch(depth, ivec2(p), int(s)).r != 0.0;
+        const uint id = covered ? texelFetch(ids, ivec2(p), int(s)).r : BACKGROUND_ID;
         add(id == last ? BACKGROUND_ID : id);
         last = id;
     }

@@ -66,7 +66,24 @@ struct PartSetResult {
     // followed by `words` uints of bitset
 };
 
+// resolve.comp, the compute clear path's end of the scene pass (render/resolve.h): the pass
+// cleared depth alone, so a sample whose depth is still the clear value (0, reversed depth)
+// was covered by no triangle, and its colour and ID are whatever the images held. Per pixel:
+// the ID is sample 0's where sample 0 is covered, else BACKGROUND_ID (integer IDs resolve to
+// sample 0, as the pass path's resolve does); the colour is the average of the samples, each
+// uncovered one counted as `background`. At 1x the images are the pass's own and only
+// uncovered pixels are written.
+IDV_CONST RESOLVE_KEEP_COLOR = 1u; // the pass cleared colour (X-ray blends over it): average it
+IDV_CONST RESOLVE_NO_IDS = 2u;     // the pipeline wrote no IDs (the floors): all background
+struct ResolvePush {
+    vec4 background; // the clear colour, linear as the colour image stores it
+    uvec2 extent;
+    uint samples;
+    uint flags;
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(ResolvePush) == 32);
 static_assert(sizeof(ComposePush) == 112 && offsetof(ComposePush, selectedAddress) == 48);
 static_assert(offsetof(ComposePush, blink) == 104);
 static_assert(sizeof(HoverBox) == 16);

@@ -247,9 +247,11 @@ TEST(Msaa, EveryTechniqueAndModeResolvesTheSameIdImage) {
 namespace {
 
 // The layer's synchronization validation over every technique and mode (and the no-id
-// floor), with what adds barriers: MSAA resolve, the pick's reset and copies, the animation's
-// compute pass, the edge and part set passes over the ID image, hidden parts (with MSAA) and
-// the readback. Any hazard it reports counts as a validation message.
+// floor), with what adds barriers: MSAA resolve, in the pass and in compute (the two clear
+// paths alternate, so that each technique meets both over the modes, and the switches
+// between them are checked too), the pick's reset and copies, the animation's compute pass,
+// the edge and part set passes over the ID image, hidden parts (with MSAA) and the readback.
+// Any hazard it reports counts as a validation message.
 TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
     Reference& ref = reference("small-x2");
     for (uint32_t msaa : {1u, 4u}) {
@@ -260,6 +262,8 @@ TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
                 configs.push_back(testing_support::settingsFor(t, m));
                 configs.back().pipeline.msaa = msaa;
                 configs.back().edges.on = true;
+                configs.back().clear =
+                    configs.size() % 2 ? render::ClearPath::Compute : render::ClearPath::Pass;
             }
         app::Options o = referenceOptions();
         o.selectRect = render::PartSetQuery{{10, 10}, {60, 50}};

@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "render/settings.h"
 #include "render/pipeline_file.h"
+#include "render/settings.h"
 
 namespace render {
 

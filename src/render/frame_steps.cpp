@@ -156,14 +156,16 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
 }
 
 void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
-                         VkDeviceAddress frame) const {
+                         VkDeviceAddress frame, bool clearColor) const {
+    // The compute path's pass ignores the values of what it does not clear.
     std::array<VkClearValue, 3> clears{};
-    clears[0].color = {{0.16f, 0.17f, 0.19f, 1.0f}};
+    clears[0].color = {
+        {backgroundColor.r, backgroundColor.g, backgroundColor.b, backgroundColor.a}};
     clears[1].color.uint32[0] = gpu::BACKGROUND_ID;
     clears[2].depthStencil = {0.0f, 0}; // reversed depth: 0 is the far plane
     auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
-    begin.renderPass = targets.pass().handle(part);
-    begin.framebuffer = targets.framebuffer(part);
+    begin.renderPass = targets.pass().handle(part, clearPath_, clearColor);
+    begin.framebuffer = targets.framebuffer(part, clearPath_);
     begin.renderArea = {{0, 0}, targets.extent()};
     begin.clearValueCount = static_cast<uint32_t>(clears.size());
     begin.pClearValues = clears.data();

@@ -24,7 +24,9 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
     createCompose(compiler, cache);
     partSet_ = createComputePipeline(device, compiler, cache, "part_set.comp",
                                      sizeof(gpu::PartSetPush), images_.get(), "part sets");
-    samples_ = pushDescriptorLayout(device, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE}, "multisampled IDs");
+    samples_ = pushDescriptorLayout(
+        device, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE},
+        "multisampled IDs and depth");
     // Culling's: the parts without their count, of the resolved IDs or of every sample.
     visibleParts_[0] =
         createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
@@ -167,10 +169,18 @@ void IdPasses::recordVisible(VkCommandBuffer cmd, const SceneTargets& targets,
     const VkExtent2D e = targets.extent();
     const PartSetQuery all{{0, 0}, {e.width - 1, e.height - 1}};
     if (targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT) {
-        // The second half of the pass left every sample's ID for shaders to read.
-        bindWithImage(device_, cmd, visibleParts_[1], VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE,
-                      {VK_NULL_HANDLE, targets.multisampledIds().view(),
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        // The second half of the pass left every sample's ID for shaders to read, and depth
+        // tells which samples a triangle covered.
+        const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+        bindWithImages(device_, cmd, visibleParts_[1],
+                       {{0,
+                         sampled,
+                         {VK_NULL_HANDLE, targets.multisampledIds().view(),
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}},
+                        {1,
+                         sampled,
+                         {VK_NULL_HANDLE, targets.depth().view(),
+                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}}});
         dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[1]);
         return;
     }

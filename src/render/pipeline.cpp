@@ -201,14 +201,22 @@ vk::Handle<VkSampler> texelFetchSampler(const vk::Device& device, const std::str
 
 void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
                    VkDescriptorType type, const VkDescriptorImageInfo& image) {
+    bindWithImages(device, cmd, pass, {{0, type, image}});
+}
+
+void bindWithImages(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
+                    const std::vector<BoundImage>& images) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
-    auto write = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = type;
-    write.pImageInfo = &image;
-    device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0, 1,
-                               &write);
+    std::vector<VkWriteDescriptorSet> writes(images.size());
+    for (size_t i = 0; i < images.size(); ++i) {
+        writes[i] = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
+        writes[i].dstBinding = images[i].binding;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = images[i].type;
+        writes[i].pImageInfo = &images[i].image;
+    }
+    device.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0,
+                               static_cast<uint32_t>(writes.size()), writes.data());
 }
 
 } // namespace render

@@ -56,6 +56,14 @@ vk::Handle<VkSampler> texelFetchSampler(const vk::Device& device, const std::str
 // Binds `pass` and pushes `image` as its binding 0 (a push descriptor set of one image).
 void bindWithImage(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
                    VkDescriptorType type, const VkDescriptorImageInfo& image);
+// Binds `pass` and pushes each of `images` at its binding (a push descriptor set).
+struct BoundImage {
+    uint32_t binding;
+    VkDescriptorType type;
+    VkDescriptorImageInfo image;
+};
+void bindWithImages(const vk::Device& device, VkCommandBuffer cmd, const ComputePipeline& pass,
+                    const std::vector<BoundImage>& images);
 
 vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
                                            const ScenePipelineInfo& info,

@@ -70,7 +70,7 @@ std::shared_ptr<const Pipeline> PipelineCache::get(const PipelineKey& key, const
         pending.worker.wait();
         pipeline = pending.result.get(); // a failed build throws its error
     } else {
-        pipeline = build(key, pass.handle(), pass.samples());
+        pipeline = build(key, pass.handle(PassPart::Whole, key.clear), pass.samples());
     }
     pipelines_.push_back(pipeline);
     return pipeline;
@@ -104,9 +104,10 @@ std::shared_ptr<const Pipeline> PipelineCache::request(const PipelineKey& key,
     if (progress(key)) return nullptr; // its worker is on it
     std::promise<std::shared_ptr<const Pipeline>> promise;
     Build pending{key, Clock::now(), promise.get_future(), {}};
-    pending.worker = std::async(
-        std::launch::async, [this, key, pass = pass.handle(), samples = pass.samples(),
-                             gate = gate_, wake = wake_, promise = std::move(promise)]() mutable {
+    pending.worker =
+        std::async(std::launch::async, [this, key, pass = pass.handle(PassPart::Whole, key.clear),
+                                        samples = pass.samples(), gate = gate_, wake = wake_,
+                                        promise = std::move(promise)]() mutable {
             {
                 std::unique_lock lock(gate->mutex);
                 gate->released.wait(lock, [&] { return !gate->held; });

@@ -41,7 +41,8 @@ Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler,
       pipelines_(device, compiler, pipelineCacheFolder),
       animator_(std::make_shared<Animator>(device, compiler, pipelines_.driverCache())),
       idPasses_(std::make_shared<IdPasses>(device, compiler, pipelines_.driverCache())),
-      culler_(std::make_shared<CullPasses>(device, compiler, pipelines_.driverCache())) {
+      culler_(std::make_shared<CullPasses>(device, compiler, pipelines_.driverCache())),
+      resolver_(std::make_shared<Resolver>(device, compiler, pipelines_.driverCache())) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -127,6 +128,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
     translucentPipeline_ = std::move(translucentPipeline);
+    clearPath_ = clearPathFor(settings.clear, key.msaa);
     if (newScene) {
         translucent_.reset();
         translucentSet_.reset();
@@ -154,8 +156,9 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
 }
 
 PipelineKey Renderer::keyFor(const scene::Scene& scene, const RenderSettings& settings,
-                             bool newScene) const {
+                             bool newScene) {
     PipelineKey wanted = settings.pipeline;
+    wanted.clear = clearPathFor(settings.clear, wanted.msaa);
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
     wanted.taskCulling = settings.culling.mode != CullMode::Off;
     wanted.runOffsets = settings.culling.mode != CullMode::Off;
@@ -315,8 +318,8 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     VkCommandBuffer cmd = slot.cmd;
     for (const std::shared_ptr<const void>& used :
          std::initializer_list<std::shared_ptr<const void>>{
-             pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, selected_, hidden_,
-             visible_, target, translucentPipeline_})
+             pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, resolver_,
+             selected_, hidden_, visible_, target, translucentPipeline_})
         slot.keep(used);
     slot.scenePass = true;
     composed_.reset(); // the images the composition reads are drawn again
@@ -379,7 +382,10 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
                                         sceneGpu_->clusterBoxesAddress()};
     if (cullOnGpu) culler_->recordCull(cmd, cull, inputs, firstPhase, mesh, skippable);
     stamp(StampEarlyCulled);
-    beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame);
+    // The compute path clears colour in the pass only under X-ray, which blends over it.
+    const bool compute = clearPath_ == ClearPath::Compute;
+    const bool clearColor = translucent_ && !translucent_->empty();
+    beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame, clearColor);
     drawPhase(cmd, culling, firstPhase);
     if (culling.frozen && plan.twoPasses)
         drawPhase(cmd, culling,
@@ -392,11 +398,15 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     if (skippable) culler_->recordCull(cmd, cull, inputs, gpu::CULL_PHASE_LATE, mesh, true);
     stamp(StampLateCulled);
     if (split) {
-        beginPass(cmd, targets, PassPart::Second, frame);
+        beginPass(cmd, targets, PassPart::Second, frame, clearColor);
         drawPhase(cmd, culling, gpu::CULL_PHASE_LATE);
         recordTranslucent(cmd);
         vkCmdEndRenderPass(cmd);
     }
+    if (compute)
+        resolver_->record(cmd, targets,
+                          (clearColor ? gpu::RESOLVE_KEEP_COLOR : 0u) |
+                              (draws_->key.technique->isFloor() ? gpu::RESOLVE_NO_IDS : 0u));
     stamp(StampDrawn);
     recordCounters(cmd, targets, culling, false);
     // The floors have no ID image to read: they keep a history of their own (cull.comp).

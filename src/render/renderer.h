@@ -21,6 +21,7 @@
 #include "render/id_passes.h"
 #include "render/pipeline_cache.h"
 #include "render/primitive_buffers.h"
+#include "render/resolve.h"
 #include "render/scene_gpu.h"
 #include "render/settings.h"
 #include "render/targets.h"
@@ -162,8 +163,8 @@ class Renderer {
     // The clear path the configured frames draw with (never Auto): RenderSettings::clear, or
     // with Auto the faster of the two on this device (render/clear_choice.h).
     ClearPath clearPath() const { return clearPath_; }
-    // What timing the paths found for `msaa` samples: with Auto, once they were timed (or
-    // read from the file beside the pipeline cache); nullopt before, or when a path was forced.
+    // What timing the paths found for `msaa` samples, once Auto has needed them (timed in this
+    // run, or read from the file beside the pipeline cache); nullopt before.
     std::optional<ClearTiming> clearTiming(uint32_t msaa) const;
     // Counts the calls that may change what the scene pass draws beyond settings(): a scene
     // set, a configuration applied, hidden parts, shaders reloaded (app/viewer/pacer.h).
@@ -199,8 +200,10 @@ class Renderer {
     };
     void apply(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
     // The effective key `settings` select; throws for what this device or scene cannot draw.
-    PipelineKey keyFor(const scene::Scene& scene, const RenderSettings& settings,
-                       bool newScene) const;
+    PipelineKey keyFor(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
+    // `wanted`, or for Auto the faster path at `msaa` samples: timed on first need, or read
+    // from the file beside the pipeline cache (clear_timer.cpp).
+    ClearPath clearPathFor(ClearPath wanted, uint32_t msaa);
     // The drawn pipeline's key with parts hidden or not.
     PipelineKey hidingKey(bool hiding) const;
     void bindGeometry(VkCommandBuffer cmd) const;
@@ -212,7 +215,7 @@ class Renderer {
     // none, or they are culled in two passes with room for the bits of what each pass drew.
     bool reusableMeshlets(const CullPlan& plan) const;
     void beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
-                   VkDeviceAddress frame) const;
+                   VkDeviceAddress frame, bool clearColor) const;
     void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
     void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
     void recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
@@ -231,6 +234,7 @@ class Renderer {
     std::shared_ptr<const Animator> animator_;
     std::shared_ptr<const IdPasses> idPasses_;
     std::shared_ptr<const CullPasses> culler_;
+    std::shared_ptr<const Resolver> resolver_;
     // gpu::PickData, shared by all frames in flight (ordered by barriers).
     std::shared_ptr<const vk::Buffer> pick_;
 

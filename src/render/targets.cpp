@@ -67,42 +67,56 @@ ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : sample
         throw vk::Error("MSAA needs the standard sample locations, which " +
                         std::string(props.deviceName) + " does not use");
     for (PassPart part : {PassPart::Whole, PassPart::First, PassPart::Second})
-        passes_[size_t(part)] = create(device, part);
+        for (ClearPath path : {ClearPath::Pass, ClearPath::Compute})
+            for (bool clearColor : {false, true})
+                passes_[variant(part, path, clearColor)] = create(device, part, path, clearColor);
 }
 
-vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part) const {
+vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part, ClearPath path,
+                                           bool clearColor) const {
     const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
     const bool first = part == PassPart::First, second = part == PassPart::Second;
+    const bool compute = path == ClearPath::Compute;
     // The first half keeps what it drew for the second; the second starts from it.
     const VkImageLayout kept = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     const VkImageLayout sampledDepth = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
-    auto colorAttachment = [&](VkFormat format, VkSampleCountFlagBits count) {
+    // What the compute resolve reads: every sample with MSAA, else the images it completes.
+    const VkImageLayout resolveReads =
+        msaa ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_GENERAL;
+    auto colorAttachment = [&](VkFormat format, VkSampleCountFlagBits count, bool cleared) {
         VkAttachmentDescription a{};
         a.format = format;
         a.samples = count;
-        a.loadOp = second ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.loadOp = second    ? VK_ATTACHMENT_LOAD_OP_LOAD
+                   : cleared ? VK_ATTACHMENT_LOAD_OP_CLEAR
+                             : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-        a.initialLayout = second ? kept : VK_IMAGE_LAYOUT_UNDEFINED; // cleared every frame
-        a.finalLayout = first ? kept : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        a.initialLayout = second ? kept : VK_IMAGE_LAYOUT_UNDEFINED; // started every frame
+        a.finalLayout = first     ? kept
+                        : compute ? resolveReads
+                                  : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         return a;
     };
-    // 0 colour, 1 IDs, 2 depth; with MSAA (but for the first half) also 3 and 4, the
-    // single-sample colour and IDs the multisampled ones resolve into.
-    std::vector<VkAttachmentDescription> attachments = {colorAttachment(colorFormat, samples_),
-                                                        colorAttachment(idFormat, samples_),
-                                                        colorAttachment(depthFormat_, samples_)};
+    // 0 colour, 1 IDs, 2 depth; on the pass path with MSAA (but for the first half) also 3 and
+    // 4, the single-sample colour and IDs the multisampled ones resolve into. The compute
+    // path clears depth alone (and colour under X-ray): the resolve writes the background.
+    std::vector<VkAttachmentDescription> attachments = {
+        colorAttachment(colorFormat, samples_, !compute || clearColor),
+        colorAttachment(idFormat, samples_, !compute),
+        colorAttachment(depthFormat_, samples_, true)};
     VkAttachmentDescription& depth = attachments[2];
-    // Depth is kept after every part: the pyramid reads it between the halves, and the
-    // composition reads it at the hovered pixel in every frame until the next scene pass.
+    // Depth is kept after every part: the pyramid reads it between the halves, the compute
+    // resolve after the pass, and the composition at the hovered pixel in every frame until
+    // the next scene pass.
     depth.initialLayout = second ? sampledDepth : VK_IMAGE_LAYOUT_UNDEFINED;
     depth.finalLayout = sampledDepth;
-    const bool resolve = msaa && !first;
+    const bool resolve = msaa && !first && !compute;
     std::array<VkAttachmentReference, 2> resolveRefs = {
         VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
         VkAttachmentReference{4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
-    if (msaa && !first) {
+    if (resolve) {
         // The multisampled contents are not kept past the resolve, but for the IDs after the
         // second half of a split pass: culling's visible-part pass reads every sample, so
         // that a part showing in any sample of a pixel is drawn first in the next frame.
@@ -115,7 +129,7 @@ vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part) co
             attachments[1].finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
         }
         for (VkFormat format : {colorFormat, idFormat}) {
-            attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT));
+            attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT, false));
             attachments.back().loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // fully overwritten
             attachments.back().initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
             attachments.back().finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
@@ -169,8 +183,11 @@ vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part) co
     info.dependencyCount = static_cast<uint32_t>(deps.size());
     info.pDependencies = deps.data();
     const char* names[] = {"scene pass", "scene pass, first half", "scene pass, second half"};
+    const std::string clears =
+        compute ? (clearColor ? ", clears depth and colour" : ", clears depth") : "";
     return vk::make(device, vkCreateRenderPass, info,
-                    std::string(names[size_t(part)]) + " (" + std::to_string(samples_) + "x MSAA)");
+                    std::string(names[size_t(part)]) + " (" + std::to_string(samples_) + "x MSAA" +
+                        clears + ")");
 }
 
 glm::vec2 ScenePass::sampleZero() const {
@@ -207,12 +224,14 @@ SceneTargets::SceneTargets(vk::Device& device, const ScenePass& pass, VkExtent2D
                        VK_IMAGE_ASPECT_DEPTH_BIT, "scene depth", samples);
     std::vector<VkImageView> views = {shaded_.view(), ids_.view(), depth_.view()};
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
-        // Rendered to and resolved within the pass; culling also reads every sample's ID.
-        const VkImageUsageFlags inPass = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+        // Rendered to, then resolved within the pass or by the compute resolve.
+        // The compute path's resolve reads every sample of both.
+        const VkImageUsageFlags inPass =
+            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
         msColor_ = vk::Image(device, extent, ScenePass::colorFormat, inPass,
                              VK_IMAGE_ASPECT_COLOR_BIT, "scene colour (MSAA)", samples);
-        msIds_ = vk::Image(device, extent, ScenePass::idFormat, inPass | VK_IMAGE_USAGE_SAMPLED_BIT,
-                           VK_IMAGE_ASPECT_COLOR_BIT, "scene part IDs (MSAA)", samples);
+        msIds_ = vk::Image(device, extent, ScenePass::idFormat, inPass, VK_IMAGE_ASPECT_COLOR_BIT,
+                           "scene part IDs (MSAA)", samples);
         views = {msColor_.view(), msIds_.view(), depth_.view(), shaded_.view(), ids_.view()};
     }
     auto info = vk::init<VkFramebufferCreateInfo>(VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO);

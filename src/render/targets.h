@@ -2,9 +2,10 @@
 // attachment and depth, multisampled or not. The window blits the (resolved) colour image to
 // the swapchain, so headless and windowed rendering share this pass unchanged.
 //
-// With MSAA the pass resolves colour (average) and IDs into single-sample images at its end.
-// Part IDs cannot be averaged: integer attachments resolve to sample 0, so sample 0 decides
-// which part a pixel shows, and the pick follows the same rule (see scene.frag).
+// With MSAA the pass (or, on the compute path, render/resolve.h) resolves colour (average)
+// and IDs into single-sample images. Part IDs cannot be averaged: they resolve to sample 0,
+// so sample 0 decides which part a pixel shows, and the pick follows the same rule (see
+// scene.frag).
 #pragma once
 
 #include <array>
@@ -12,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/settings.h"
 #include "shared.h"
 #include "vk/handle.h"
 #include "vk/resources.h"
@@ -36,8 +38,13 @@ class ScenePass {
 
     ScenePass(vk::Device& device, VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT);
 
-    VkRenderPass handle(PassPart part = PassPart::Whole) const {
-        return passes_[size_t(part)].get();
+    // The pass of `part` on `path` (Pass or Compute, render/settings.h). The compute path's
+    // pass clears depth alone, but for `clearColor`: X-ray blends over the background, so
+    // its frames clear colour too. At 1x every variant is compatible with every other; with
+    // MSAA the two paths' are not (one resolves), so pipelines are built per path.
+    VkRenderPass handle(PassPart part = PassPart::Whole, ClearPath path = ClearPath::Pass,
+                        bool clearColor = false) const {
+        return passes_[variant(part, path, clearColor)].get();
     }
     VkFormat depthFormat() const { return depthFormat_; }
     VkSampleCountFlagBits samples() const { return samples_; }
@@ -46,14 +53,22 @@ class ScenePass {
     glm::vec2 sampleZero() const;
 
   private:
-    vk::Handle<VkRenderPass> create(vk::Device& device, PassPart part) const;
+    static size_t variant(PassPart part, ClearPath path, bool clearColor) {
+        return size_t(part) * 4 + (path == ClearPath::Compute ? 2 : 0) + (clearColor ? 1 : 0);
+    }
+    vk::Handle<VkRenderPass> create(vk::Device& device, PassPart part, ClearPath path,
+                                    bool clearColor) const;
 
     VkSampleCountFlagBits samples_;
     VkFormat depthFormat_ = VK_FORMAT_UNDEFINED;
-    std::array<vk::Handle<VkRenderPass>, 3> passes_; // by PassPart
+    std::array<vk::Handle<VkRenderPass>, 12> passes_; // by variant()
 };
 
-// After the pass, the single-sample shaded colour and ID images are in TRANSFER_SRC_OPTIMAL
+// The colour of background pixels, as the pass clears it or the compute path writes it.
+constexpr glm::vec4 backgroundColor{0.16f, 0.17f, 0.19f, 1.0f};
+
+// After the pass (and on the compute path its resolve, render/resolve.h), the single-sample
+// shaded colour and ID images are in TRANSFER_SRC_OPTIMAL
 // layout and depth in DEPTH_STENCIL_READ_ONLY_OPTIMAL; after the composition (id_passes.h) the
 // composed colour is in TRANSFER_SRC_OPTIMAL. The pass must outlive the targets.
 class SceneTargets {
@@ -62,8 +77,12 @@ class SceneTargets {
 
     const ScenePass& pass() const { return pass_; }
     VkExtent2D extent() const { return extent_; }
-    VkFramebuffer framebuffer(PassPart part = PassPart::Whole) const {
-        return part == PassPart::First ? firstFramebuffer_.get() : framebuffer_.get();
+    // The compute path's passes and the first half render into the pass's own attachments
+    // alone (the first three); the pass path's whole pass and second half also resolve.
+    VkFramebuffer framebuffer(PassPart part = PassPart::Whole,
+                              ClearPath path = ClearPath::Pass) const {
+        return part == PassPart::First || path == ClearPath::Compute ? firstFramebuffer_.get()
+                                                                     : framebuffer_.get();
     }
     // The picture shown: the shaded colour with the highlights, edges and outlines composed
     // over it (id_passes.h). Headless readbacks and the window read this one.
@@ -72,9 +91,12 @@ class SceneTargets {
     // (a hover, a blink, a selection) needs no scene pass.
     const vk::Image& shaded() const { return shaded_; }
     const vk::Image& ids() const { return ids_; }
-    // With MSAA, the multisampled IDs: the second half of a split pass keeps them, in
-    // SHADER_READ_ONLY_OPTIMAL, for culling's visible-part pass to read every sample.
+    // With MSAA, the multisampled IDs and colour: the second half of a split pass keeps the
+    // IDs, and the compute path both, in SHADER_READ_ONLY_OPTIMAL, for culling's visible-part
+    // pass and the compute resolve to read every sample. Where a sample's depth is the clear
+    // value no triangle covered it, and on the compute path its ID and colour are undefined.
     const vk::Image& multisampledIds() const { return msIds_; }
+    const vk::Image& multisampledColor() const { return msColor_; }
     // Sampled by the depth pyramid between the two halves of the pass (layout
     // DEPTH_STENCIL_READ_ONLY_OPTIMAL then).
     const vk::Image& depth() const { return depth_; }

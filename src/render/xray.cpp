@@ -43,6 +43,7 @@ PipelineKey translucentKey(const PipelineKey& drawn) {
     key.technique = &floorTechnique();
     key.mode = findDrawMode("push");
     key.msaa = drawn.msaa;
+    key.clear = drawn.clear; // the pass it draws in
     key.section = drawn.section;
     key.translucent = true;
     return key.effective(false);
