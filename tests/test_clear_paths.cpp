@@ -256,9 +256,12 @@ TEST(ClearPaths, LevelsSectionsHiddenPartsAndEdgesDrawTheSameImages) {
     reportColourDifference("levels, section, hidden, edges", most);
 }
 
-// X-ray: the parts in a box in the middle selected, the rest drawn translucent, a few hidden,
-// edges on: the same images on both paths, and on each only the selection in the ID image.
-TEST(ClearPaths, XrayDrawsTheSameImages) {
+// X-ray: the parts in a box in the middle selected (a part set pass over the ID image), the
+// rest drawn translucent, a few hidden, edges on, picks in the middle and on background, the
+// visible parts counted, under synchronization validation (the resolve's barriers): the same
+// images, selection, picks, hovers and visible parts on both paths, and on each only the
+// selection in the ID image.
+TEST(ClearPaths, XrayPicksAndPartSetsAreTheSameOnBothPaths) {
     const app::LoadedScene loaded = smallScene();
     const scene::Camera camera = closeCamera(loaded);
     const std::vector<render::RenderSettings> configs = featureConfigs();
@@ -267,6 +270,12 @@ TEST(ClearPaths, XrayDrawsTheSameImages) {
     o.selectRect = render::PartSetQuery{{W / 2 - 10, H / 2 - 6}, {W / 2 + 10, H / 2 + 6}};
     o.xray = true;
     o.hide = {0, 1, 2, 3, 40, 41};
+    // Background, then points in the box: some of them on the selection.
+    o.picks = {{0, 0}};
+    for (uint32_t y = H / 2 - 6; y <= H / 2 + 6; y += 6)
+        for (uint32_t x = W / 2 - 10; x <= W / 2 + 10; x += 10) o.picks.push_back({x, y});
+    o.visibleParts = true;
+    o.syncValidation = true;
     const auto results = renderOnBothPaths(o, loaded.scene, camera, configs);
     ASSERT_EQ(results[1].size(), configs.size());
     int most = 0;
@@ -284,8 +293,25 @@ TEST(ClearPaths, XrayDrawsTheSameImages) {
             }
             EXPECT_GT(selected, 50u) << name;
             EXPECT_EQ(others, 0u) << name;
+            ASSERT_EQ(r.picks.size(), o.picks.size()) << name;
+            EXPECT_FALSE(r.picks.front().part.has_value()) << name << ": background picked";
+            EXPECT_GE(std::count_if(r.picks.begin(), r.picks.end(),
+                                    [](const render::PickReading& pick) { return pick.part; }),
+                      3)
+                << name << ": the box's picks found too little";
         }
-        EXPECT_TRUE(results[0][c].rectParts == results[1][c].rectParts) << name;
+        const app::HeadlessResult &pass = results[0][c], &compute = results[1][c];
+        EXPECT_TRUE(compute.rectParts == pass.rectParts) << name;
+        ASSERT_EQ(compute.picks.size(), pass.picks.size()) << name;
+        ASSERT_EQ(compute.hovers.size(), pass.hovers.size()) << name;
+        for (size_t i = 0; i < pass.picks.size(); ++i) {
+            EXPECT_EQ(compute.picks[i].part, pass.picks[i].part) << name << ", pick " << i;
+            EXPECT_EQ(compute.picks[i].depth, pass.picks[i].depth) << name << ", pick " << i;
+            EXPECT_EQ(compute.hovers[i].part, pass.hovers[i].part) << name << ", hover " << i;
+        }
+        EXPECT_TRUE(compute.visibleParts == pass.visibleParts) << name;
+        EXPECT_EQ(compute.visibleCount, pass.visibleCount) << name;
+        EXPECT_GT(pass.visibleCount, 2u) << name;
     }
     reportColourDifference("X-ray", most);
 }
