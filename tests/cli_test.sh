@@ -47,6 +47,8 @@ expect list-renderers 0 'per-draw' -- "$idview" --list-renderers
 expect list-devices 0 '^0: llvmpipe.* \| CPU \| driver .* \| Vulkan 1\.[0-9]+\.[0-9]+ \| usable$' -- "$idview" --list-devices
 expect no-such-index 1 '^idview: error: --device 7: there are only 1 Vulkan devices' -- "$idview" --headless --device 7
 expect no-such-name 1 'no Vulkan device name contains it' -- "$idview" --headless --device radeon
+expect clear-unknown 2 '^idview: --clear expects auto, pass or compute, not bogus$' -- \
+    "$idview" --headless --clear bogus
 expect msaa-not-power 2 '--msaa expects 1, 2, 4 or 8, not 3' -- "$idview" --headless --msaa 3
 expect msaa-unsupported 1 'MSAA 8x is not supported by llvmpipe.*\(it offers 1, 4\)' -- \
     "$idview" --headless --frames 1 --size 64x48 --msaa 8
