@@ -132,17 +132,19 @@ struct RowTimer {
     // with its switch), draws warm-up and timed frames, and reads the last frame's images.
     BenchmarkRow time(const scene::Scene& scene, const render::RenderSettings& settings,
                       bool first);
+
+  private:
+    // The CPU's times of the timed frames, and how many of them reused the culled lists.
+    struct CpuTimes {
+        std::vector<double> total, record;
+        uint64_t reusedFrames = 0;
+    };
+    // Draws the warm-up and timed frames as configured, the last one read back.
+    CpuTimes drawFrames();
 };
 
-BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSettings& settings,
-                            bool first) {
-    const render::PipelineKey& key = settings.pipeline;
-    if (first) {
-        rig.renderer.setScene(scene, settings);
-        rig.renderer.setHidden(hiddenParts(options, scene));
-    } else
-        rig.renderer.configure(scene, settings);
-    std::vector<double> cpuMs, recordMs;
+RowTimer::CpuTimes RowTimer::drawFrames() {
+    CpuTimes times;
     const uint32_t total = warmup + options.frames;
     uint64_t reusedBefore = 0;
     for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
@@ -159,12 +161,25 @@ BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSetti
         if (f + 1 == total) readback.record(slot.cmd, *rig.targets); // after the timing
         rig.slots.submit(slot);
         if (f >= warmup) {
-            cpuMs.push_back(
-                std::chrono::duration<double, std::milli>(Clock::now() - begun).count());
-            recordMs.push_back(std::chrono::duration<double, std::milli>(recorded - begun).count());
+            using Ms = std::chrono::duration<double, std::milli>;
+            times.total.push_back(Ms(Clock::now() - begun).count());
+            times.record.push_back(Ms(recorded - begun).count());
         }
     }
     rig.slots.finish();
+    times.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
+    return times;
+}
+
+BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSettings& settings,
+                            bool first) {
+    const render::PipelineKey& key = settings.pipeline;
+    if (first) {
+        rig.renderer.setScene(scene, settings);
+        rig.renderer.setHidden(hiddenParts(options, scene));
+    } else
+        rig.renderer.configure(scene, settings);
+    const CpuTimes cpu = drawFrames();
     const auto& all = rig.slots.gpuMilliseconds();
     const size_t timed = std::min<size_t>(options.frames, all.size());
     const std::vector<double> gpuMs(all.end() - long(timed), all.end());
@@ -189,7 +204,7 @@ BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSetti
     row.lodError = settings.lod.errorPixels;
     row.lodApplied = lodApplied(settings);
     row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
-    row.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
+    row.reusedFrames = cpu.reusedFrames;
     row.cullMsMedian = percentile(cullMs, 0.5);
     row.pyramidMsMedian = percentile(pyramidMs, 0.5);
     row.earlyMsMedian = percentile(earlyMs, 0.5);
@@ -198,8 +213,8 @@ BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSetti
     if (options.cameraPath != scene::CameraPath::None) row.gpuMsFrames = gpuMs;
     row.gpuMsMedian = percentile(gpuMs, 0.5);
     row.gpuMsP90 = percentile(gpuMs, 0.9);
-    row.cpuMsMedian = percentile(cpuMs, 0.5);
-    row.cpuRecordMsMedian = percentile(recordMs, 0.5);
+    row.cpuMsMedian = percentile(cpu.total, 0.5);
+    row.cpuRecordMsMedian = percentile(cpu.record, 0.5);
     row.idPassMsMedian = percentile(idPassMs, 0.5);
     const render::RenderStats& renderStats = rig.renderer.stats();
     row.draws = renderStats.draws;
