@@ -2,7 +2,8 @@
 # benchmark_test.sh IDVIEW LAVAPIPE_ICD - the benchmark smoke test: at a tiny size every
 # renderer x mode x culling mode and the floors (no-id, and no-id-mesh for the mesh
 # techniques) in every mode and culling mode run, with validation on, and the JSON and CSV
-# carry every field. Timings are printed, never asserted.
+# carry every field; every run reports the clear path it drew with and its fixed cost (a
+# frame that draws nothing). Timings are printed, never compared with a number.
 set -uo pipefail
 idview=$1
 icd=$2
@@ -29,12 +30,14 @@ cullings=$(awk '/^culling modes/{c=1;next} /^what each/{c=0} c{print $1}' <<<"$l
 [[ $(wc -w <<<"$renderers") -ge 2 && $(wc -w <<<"$modes") -ge 1 ]] || fail "renderer list: $renderers / $modes"
 # Every renderer and floor, in every mode and culling mode, as --list-renderers names them.
 rows=$((($(wc -w <<<"$renderers") + $(wc -w <<<"$floors")) * $(wc -w <<<"$modes") * 3))
-[[ $(grep -c '"renderer":' "$work/b.json") -eq $rows ]] ||
-    fail "expected $rows rows in the JSON, got $(grep -c '"renderer":' "$work/b.json")"
+# The results' rows, one a line (the fixed cost has a line of its own).
+grep '^  {"renderer":' "$work/b.json" >"$work/rows.json"
+[[ $(wc -l <"$work/rows.json") -eq $rows ]] ||
+    fail "expected $rows rows in the JSON, got $(wc -l <"$work/rows.json")"
 isFloor() { [[ " $floors " == *" $1 "* ]]; }
 for r in $floors $renderers; do
     for m in $modes; do for c in $cullings; do
-        row=$(grep "\"renderer\":\"$r\",\"mode\":\"$m\",\"culling\":\"$c\"" "$work/b.json")
+        row=$(grep "\"renderer\":\"$r\",\"mode\":\"$m\",\"culling\":\"$c\"" "$work/rows.json")
         [[ -n $row ]] || { fail "no row for $r + $m, culling $c"; continue; }
         for key in gpu_ms_median gpu_ms_p90 cpu_ms_median cpu_record_ms_median cull_ms_median \
             pyramid_ms_median draws \
@@ -85,22 +88,65 @@ grep -q '"skipped":\[\]' "$work/b.json" || fail "JSON lacks an empty skipped lis
 # none, so their image is the cleared one).
 floorRows=$(for f in $floors; do printf '"renderer":"%s",|' "$f"; done)
 floorRows=${floorRows%|}
-ids=$(grep '"renderer":' "$work/b.json" | grep -vE "$floorRows" | grep -o '"id_image_hash":"[0-9a-f]*"' | sort -u)
+ids=$(grep -vE "$floorRows" "$work/rows.json" | grep -o '"id_image_hash":"[0-9a-f]*"' | sort -u)
 [[ $(wc -l <<<"$ids") -eq 1 ]] || fail "part-ID rows drew different ID images: $ids"
-floorIds=$(grep -E "$floorRows" "$work/b.json" | grep -o '"id_image_hash":"[0-9a-f]*"' | sort -u)
+floorIds=$(grep -E "$floorRows" "$work/rows.json" | grep -o '"id_image_hash":"[0-9a-f]*"' | sort -u)
 [[ -n $floorIds && $floorIds != *"$ids"* ]] || fail "a floor wrote part IDs: $floorIds"
 grep -q "benchmark: \[$rows/$rows\]" "$work/progress.txt" || fail "progress lines on stderr"
 
-# CSV: a header and one row per renderer x mode, the floor first (two vertex-pipeline
-# renderers: only the no-id floor; one culling mode).
+# The clear path: asked auto (the default), which timed both paths on this device (or read
+# them from the file beside the pipeline cache) and drew with the faster.
+[[ $(sed -n 2p "$work/b.json") =~ ^\ \"clear\":\"auto\",\"clear_path\":\"(pass|compute)\",\"clear_timing\":(.*),$ ]] ||
+    fail "JSON's clear fields: $(sed -n 2p "$work/b.json")"
+ran=${BASH_REMATCH[1]} timing=${BASH_REMATCH[2]}
+if [[ $timing =~ ^\{\"samples\":4,\"pass_ms\":([0-9.]+),\"compute_ms\":([0-9.]+),\"remembered\":(true|false)\}$ ]]; then
+    # As render::ClearTiming::faster() decides; equal after the JSON's rounding, either.
+    faster=$(awk -v p="${BASH_REMATCH[1]}" -v c="${BASH_REMATCH[2]}" -v ran="$ran" 'BEGIN {
+        print (!(p > 0 && c > 0) ? "none" : (c < p ? "compute" : (c > p ? "pass" : ran))) }')
+    [[ $faster == "$ran" ]] || fail "auto drew with $ran, the faster was $faster: $timing"
+else
+    fail "auto reports no timing of the two paths at 4x MSAA: $timing"
+fi
+grep -qE "^clear $ran \(auto: pass [0-9.]+ ms, compute [0-9.]+ ms, (timed now|remembered)\)$" \
+    "$work/table.txt" || fail "the table's header lacks the clear path: $(sed -n 2p "$work/table.txt")"
+[[ $(grep -c "\"clear_path\":\"$ran\"" "$work/rows.json") -eq $rows &&
+    $(grep -c "^ \"fixed_cost\":.*\"clear_path\":\"$ran\"" "$work/b.json") -eq 1 ]] ||
+    fail "not every row (and the fixed cost) drew with $ran"
+# The fixed cost: once, the first technique in its first mode drawing nothing, culling off;
+# its ID image is the one no technique wrote (the floors'), and every row's time above it is
+# its median less the fixed cost's, within the JSON's rounding.
+fixedRow=$(grep '^ "fixed_cost":{' "$work/b.json")
+first=$(head -1 <<<"$renderers") firstMode=$(head -1 <<<"$modes")
+[[ $fixedRow =~ ^\ \"fixed_cost\":\{\"visible\":0\.000,\"renderer\":\"$first\",\"mode\":\"$firstMode\",\"culling\":\"off\", ]] ||
+    fail "fixed cost: not $first + $firstMode, culling off, visible 0: $fixedRow"
+for key in '"draws":0,' '"draws_drawn":0\.0,' '"triangles":0,' '"triangles_drawn":0\.0,' \
+    '"above_fixed_ms":0\.0000,' "${floorIds:-no floor ID image}"; do
+    [[ $fixedRow =~ $key ]] || fail "fixed cost lacks $key: $fixedRow"
+done
+fixedMs=$(sed -E 's/.*"gpu_ms_median":([0-9.]+),.*/\1/' <<<"$fixedRow")
+awk -v f="$fixedMs" 'BEGIN { exit !(f > 0) }' || fail "fixed cost has no GPU time: $fixedRow"
+sed -E 's/.*"gpu_ms_median":([0-9.]+),"gpu_ms_p90":[0-9.]+,"above_fixed_ms":(-?[0-9.]+),.*/\1 \2/' \
+    "$work/rows.json" | awk -v f="$fixedMs" 'NF != 2 || ($1 - f - $2)^2 > 1.5e-4^2 { bad++; print }
+        END { exit bad > 0 || NR == 0 }' || fail "above_fixed_ms is not gpu_ms_median - $fixedMs"
+grep -qE "^empty +$firstMode +off +[0-9.]+ +[0-9.]+ +0\.000 .* fixed cost: $first, nothing drawn$" \
+    "$work/table.txt" || fail "the table lacks the fixed-cost row"
+
+# CSV: a header, the fixed cost (visible 0) and one row per renderer x mode, the floor first
+# (two vertex-pipeline renderers: only the no-id floor; one culling mode). The clear path
+# forced: every row says so.
 set -- $renderers
 two="$1,$2"
 common+=(--culling occlusion)
-"$idview" "${common[@]}" --renderer "$two" --mode push --benchmark-out "$work/b.csv" \
+"$idview" "${common[@]}" --renderer "$two" --mode push --clear pass --benchmark-out "$work/b.csv" \
     >/dev/null 2>&1 || fail "csv run"
-[[ $(head -1 "$work/b.csv") == renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,color_image_hash,culling,draws_drawn,meshlets_drawn,triangles_drawn,cull_ms_median,pyramid_ms_median ]] ||
+[[ $(head -1 "$work/b.csv") == renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,color_image_hash,culling,draws_drawn,meshlets_drawn,triangles_drawn,cull_ms_median,pyramid_ms_median,above_fixed_ms,clear_path,visible ]] ||
     fail "csv header: $(head -1 "$work/b.csv")"
-[[ $(wc -l <"$work/b.csv") -eq 4 ]] || fail "csv rows (no-id, $two in push): $(cat "$work/b.csv")"
+[[ $(wc -l <"$work/b.csv") -eq 5 ]] || fail "csv rows (fixed cost, no-id, $two in push): $(cat "$work/b.csv")"
+[[ $(sed -n 2p "$work/b.csv") =~ ^$1,push,([0-9.]+),[0-9.]+,[0-9.]+,0,0,.*,off,0\.0,0\.0,0\.0,.*,0\.0000,pass,0\.000$ ]] ||
+    fail "csv's fixed cost: $(sed -n 2p "$work/b.csv")"
+tail -n +3 "$work/b.csv" | awk -F, -v f="${BASH_REMATCH[1]:-0}" \
+    '$23 != "pass" || $24 != "1.000" || ($3 - f - $22)^2 > 1.5e-4^2 { bad++; print }
+    END { exit bad > 0 || NR != 3 }' || fail "csv rows: above_fixed_ms, clear_path pass, visible 1"
 
 # The benchmark draws with the shading flags given: --colorize-draws changes every colour
 # image (one colour per draw call) and no ID image.
@@ -109,17 +155,24 @@ common+=(--culling occlusion)
 "$idview" "${common[@]}" --renderer "$two" --mode push --colorize-draws \
     --benchmark-out "$work/c.json" >/dev/null 2>&1 || fail "colorize json run"
 grep -q '"colorize_draws":true' "$work/c.json" || fail "JSON lacks colorize_draws true"
-for r in $(head -2 "$work/b.csv" | tail -1 | cut -d, -f1) $1 $2; do
-    plain=$(grep "^$r,push," "$work/b.csv" | cut -d, -f14,15)
-    colored=$(grep "^$r,push," "$work/c.csv" | cut -d, -f14,15)
+for r in $(sed -n 3p "$work/b.csv" | cut -d, -f1) $1 $2; do
+    plain=$(grep "^$r,push,.*,1\.000$" "$work/b.csv" | cut -d, -f14,15)
+    colored=$(grep "^$r,push,.*,1\.000$" "$work/c.csv" | cut -d, -f14,15)
     [[ -n $plain && ${plain%,*} == "${colored%,*}" ]] || fail "$r: --colorize-draws changed the IDs ($plain / $colored)"
     [[ ${plain#*,} != "${colored#*,}" ]] || fail "$r: --colorize-draws did not change the colours"
 done
-# A camera path: every timed frame's GPU time in path order, and the path in the settings.
+# A camera path: every timed frame's GPU time in path order, and the path in the settings;
+# the other clear path forced, and no timing of the two.
 "$idview" "${common[@]}" --renderer "$1" --mode mdi-baseinstance --camera-path dolly \
-    --benchmark-out "$work/p.json" >/dev/null 2>&1 || fail "camera path run"
+    --clear compute --benchmark-out "$work/p.json" >"$work/p.txt" 2>&1 || fail "camera path run"
 grep -q '"camera_path":"dolly"' "$work/p.json" || fail "JSON lacks camera_path dolly"
-[[ $(grep -c '"gpu_ms_frames":\[[0-9.]*,[0-9.]*,[0-9.]*\]' "$work/p.json") -eq 2 ]] ||
+grep -q '^ "clear":"compute","clear_path":"compute","clear_timing":null,$' "$work/p.json" ||
+    fail "forced compute: $(grep '"clear":' "$work/p.json")"
+[[ $(grep -cE '^( "fixed_cost":|  \{"renderer":).*"clear_path":"compute"' "$work/p.json") -eq 3 ]] ||
+    fail "rows (and the fixed cost) not drawn with compute"
+grep -q '^clear compute (forced)$' "$work/p.txt" || fail "table header: forced compute"
+# The fixed cost's frames too (it is timed like any row).
+[[ $(grep -c '"gpu_ms_frames":\[[0-9.]*,[0-9.]*,[0-9.]*\]' "$work/p.json") -eq 3 ]] ||
     fail "rows lack 3 frame times: $(grep -o '"gpu_ms_frames":[^]]*' "$work/p.json")"
 out=$("$idview" --benchmark --renderer "$1",nope 2>&1)
 [[ $? -eq 2 && $out == *"--renderer: unknown name 'nope'"* ]] || fail "bad renderer list: $out"

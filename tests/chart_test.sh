@@ -2,8 +2,8 @@
 # chart_test.sh ROOT - scripts/benchmark_chart.py on the committed H100 runs (the full runs and
 # the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are the
 # JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
-# scripts/path_chart.py on a committed camera-path run, and scripts/lod_chart.py on the
-# levels-of-detail runs, likewise.
+# scripts/path_chart.py on a committed camera-path run, scripts/lod_chart.py on the
+# levels-of-detail runs, and scripts/fixed_cost_chart.py on two small runs, likewise.
 set -uo pipefail
 root=$1
 runs=$root/docs/benchmarks/h100-2026-11-23-issue14/final
@@ -96,5 +96,45 @@ for line, path in zip(lines, paths):
                 abs(tris - row["triangles_drawn"] / 1e3) > 0.51):
             sys.exit(f"{path} column {k}: {got[3 * k:3 * k + 3]}")
 PY
+# scripts/fixed_cost_chart.py on two lavapipe runs (1x and 4x MSAA) committed for it, made by
+#   idview --benchmark --size 64x48 --frames 3 --scene procedural:preset=small --copies 1
+#     --msaa M --renderer vertex-fs,tri-fs,mesh-fs --mode mdi-baseinstance
+#     --culling off,occlusion --benchmark-out tests/benchmark_runs/lavapipe-Mx.json
+# a PNG, and per renderer (floors first) and run the fixed cost, the part above it and their
+# sum as the JSON has them; a run from before the fixed cost is refused by name.
+fixedRuns=("$root/tests/benchmark_runs/lavapipe-1x.json" "$root/tests/benchmark_runs/lavapipe-4x.json")
+/usr/bin/python3 "$root/scripts/fixed_cost_chart.py" "${fixedRuns[@]}" -o "$work/fixed.png" \
+    >"$work/fixed.txt" 2>"$work/err.txt" || fail "fixed cost chart script: $(cat "$work/err.txt")"
+[[ $(head -c 8 "$work/fixed.png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] ||
+    fail "no fixed cost PNG written"
+/usr/bin/python3 - "$work/fixed.txt" "${fixedRuns[@]}" <<'PY' || fail "fixed cost table does not match the JSON"
+import json, sys
+table, paths = sys.argv[1], sys.argv[2:]
+runs = [json.load(open(p)) for p in paths]
+names = []
+for run in runs:
+    for row in run["results"]:
+        if (row["mode"] == "mdi-baseinstance" and row["culling"] == "occlusion" and
+                row["renderer"] not in names):
+            names.append(row["renderer"])
+floors = {r["floor"] for run in runs for r in run["results"]}
+names.sort(key=lambda n: n not in floors)
+lines = open(table).read().splitlines()[1:]
+if [l.split()[0] for l in lines] != names:
+    sys.exit(f"renderers {[l.split()[0] for l in lines]} != {names}")
+for line in lines:
+    got = [float(x) for x in line.split()[1:]]
+    for k, run in enumerate(runs):
+        row = next(r for r in run["results"] if r["renderer"] == line.split()[0] and
+                   r["mode"] == "mdi-baseinstance" and r["culling"] == "occlusion")
+        want = [run["fixed_cost"]["gpu_ms_median"], row["above_fixed_ms"], row["gpu_ms_median"]]
+        if any(abs(g - w) > 5.01e-4 for g, w in zip(got[3 * k:3 * k + 3], want)):
+            sys.exit(f"{line} != {want}")
+        if abs(want[0] + want[1] - want[2]) > 1.5e-4:
+            sys.exit(f"{paths[k]}: fixed + above != median for {row['renderer']}")
+PY
+out=$(/usr/bin/python3 "$root/scripts/fixed_cost_chart.py" "${files[0]}" -o "$work/old.png" 2>&1)
+[[ $? -ne 0 && $out == *"no fixed_cost"* && ! -e $work/old.png ]] ||
+    fail "a run without a fixed cost: $out"
 echo "chart_test: $failures failed"
 exit $((failures > 0))

@@ -1,4 +1,5 @@
-// benchmark.cpp - the timing loop, and the table, JSON and CSV it reports.
+// benchmark.cpp - the timing loop: the rows, then the fixed cost (benchmark_report.cpp has
+// the table, JSON and CSV).
 #include "app/benchmark.h"
 
 #include <algorithm>
@@ -6,11 +7,9 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <tuple>
 
 #include "app/headless.h"
-#include "app/json.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "scene/camera_path.h"
@@ -99,18 +98,6 @@ void countDrawn(BenchmarkRow& row, const std::vector<gpu::CullStats>& stats, boo
         row.levelTrianglesDrawn[l] = percentile(levels[l], 0.5);
 }
 
-std::string hex(uint64_t value) {
-    char text[24];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-    return text;
-}
-
-std::string fixed(double value, int digits) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
-    return text;
-}
-
 } // namespace
 
 uint64_t imageHash(const void* data, size_t bytes) {
@@ -127,6 +114,145 @@ double percentile(std::vector<double> values, double fraction) {
     return values[std::min(rank, values.size() - 1)];
 }
 
+namespace {
+
+// What stays the same over every row of a run: the rig, the camera and its path, and the
+// frame counter the animation and frame slots run on.
+struct RowTimer {
+    const Options& options;
+    Offscreen& rig;
+    Readback& readback;
+    scene::Camera start;
+    scene::Bounds bounds;
+    render::FrameParams params;
+    uint32_t warmup = 0;
+    uint64_t frameNumber = 0;
+
+    // Configures `settings` (a setScene for the first row, which times the scene's upload
+    // with its switch), draws warm-up and timed frames, and reads the last frame's images.
+    BenchmarkRow time(const scene::Scene& scene, const render::RenderSettings& settings,
+                      bool first);
+
+  private:
+    // The CPU's times of the timed frames, and how many of them reused the culled lists.
+    struct CpuTimes {
+        std::vector<double> total, record;
+        uint64_t reusedFrames = 0;
+    };
+    // Draws the warm-up and timed frames as configured, the last one read back.
+    CpuTimes drawFrames();
+};
+
+RowTimer::CpuTimes RowTimer::drawFrames() {
+    CpuTimes times;
+    const uint32_t total = warmup + options.frames;
+    uint64_t reusedBefore = 0;
+    for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
+        if (f == warmup) reusedBefore = rig.renderer.reusedFrames();
+        render::FrameSlot& slot = rig.slots.begin(frameNumber);
+        // --animate: objects move while being timed, the compute pass included.
+        params.explode = explodeAt(options.animation, frameNumber);
+        params.setView(cameraFrame(scene::cameraOnPath(options.cameraPath, start, bounds,
+                                                       f < warmup ? 0 : f - warmup, options.frames),
+                                   rig.extent));
+        const auto begun = Clock::now();
+        rig.renderer.record(slot, rig.targets, params);
+        const auto recorded = Clock::now();
+        if (f + 1 == total) readback.record(slot.cmd, *rig.targets); // after the timing
+        rig.slots.submit(slot);
+        if (f >= warmup) {
+            using Ms = std::chrono::duration<double, std::milli>;
+            times.total.push_back(Ms(Clock::now() - begun).count());
+            times.record.push_back(Ms(recorded - begun).count());
+        }
+    }
+    rig.slots.finish();
+    times.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
+    return times;
+}
+
+BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSettings& settings,
+                            bool first) {
+    const render::PipelineKey& key = settings.pipeline;
+    if (first) {
+        rig.renderer.setScene(scene, settings);
+        rig.renderer.setHidden(hiddenParts(options, scene));
+    } else
+        rig.renderer.configure(scene, settings);
+    const CpuTimes cpu = drawFrames();
+    const auto& all = rig.slots.gpuMilliseconds();
+    const size_t timed = std::min<size_t>(options.frames, all.size());
+    const std::vector<double> gpuMs(all.end() - long(timed), all.end());
+    const auto& passes = rig.slots.idPassMilliseconds();
+    const std::vector<double> idPassMs(passes.end() - long(timed), passes.end());
+    std::vector<double> cullMs, pyramidMs, earlyMs, lateMs;
+    for (auto t = rig.slots.frameTimes().end() - long(timed); t != rig.slots.frameTimes().end();
+         ++t) {
+        cullMs.push_back(t->cullMs);
+        pyramidMs.push_back(t->pyramidMs);
+        earlyMs.push_back(t->earlyMs);
+        lateMs.push_back(t->lateMs);
+    }
+    const std::vector<gpu::CullStats> stats(rig.slots.cullStats().end() - long(timed),
+                                            rig.slots.cullStats().end());
+
+    BenchmarkRow row;
+    row.renderer = key.technique->name;
+    row.mode = key.mode->name;
+    const render::CullMode cull = settings.culling.mode;
+    row.culling = render::cullModeName(cull);
+    row.lodError = settings.lod.errorPixels;
+    row.lodApplied = lodApplied(settings);
+    row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
+    row.reusedFrames = cpu.reusedFrames;
+    row.cullMsMedian = percentile(cullMs, 0.5);
+    row.pyramidMsMedian = percentile(pyramidMs, 0.5);
+    row.earlyMsMedian = percentile(earlyMs, 0.5);
+    row.lateMsMedian = percentile(lateMs, 0.5);
+    countDrawn(row, stats, key.technique->usesMeshShader());
+    if (options.cameraPath != scene::CameraPath::None) row.gpuMsFrames = gpuMs;
+    row.gpuMsMedian = percentile(gpuMs, 0.5);
+    row.gpuMsP90 = percentile(gpuMs, 0.9);
+    row.cpuMsMedian = percentile(cpu.total, 0.5);
+    row.cpuRecordMsMedian = percentile(cpu.record, 0.5);
+    row.idPassMsMedian = percentile(idPassMs, 0.5);
+    const render::RenderStats& renderStats = rig.renderer.stats();
+    row.draws = renderStats.draws;
+    row.triangles = renderStats.triangles;
+    row.idBytes = renderStats.idBufferBytes;
+    row.geometryBytes = renderStats.geometryBytes;
+    row.addedVertices = renderStats.addedVertices;
+    row.addedVertexBytes = renderStats.addedVertexBytes;
+    row.meshlets = rig.renderer.cullTotals().meshlets;
+    row.frames = options.frames;
+    row.switchMs = rig.renderer.lastSwitch().ms;
+    row.pipelineCached = rig.renderer.lastSwitch().pipelineCached;
+    // Read after the frames: with Auto the path may be settled by the first frame's timing.
+    row.clearPath = render::clearPathName(rig.renderer.clearPath());
+    const std::vector<uint32_t> ids = readback.idValues();
+    const std::vector<uint8_t> color = readback.colorBytes();
+    row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
+    row.colorImageHash = imageHash(color.data(), color.size());
+    row.floor = render::floorOf(*key.technique).name;
+    return row;
+}
+
+// The fixed cost's settings: the first technique that knows parts (the floor where only
+// floors run), in its mode, drawing no object, culling off and full detail, so that what is
+// timed is the frame's clears, empty pass and resolve.
+render::RenderSettings emptyFrame(const std::vector<render::RenderSettings>& list) {
+    auto chosen = std::find_if(list.begin(), list.end(), [](const render::RenderSettings& s) {
+        return !s.pipeline.technique->isFloor();
+    });
+    render::RenderSettings settings = chosen != list.end() ? *chosen : list.front();
+    settings.draws.visible = 0.0f;
+    settings.culling.mode = render::CullMode::Off;
+    settings.lod.errorPixels = 0.0f;
+    return settings;
+}
+
+} // namespace
+
 BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) {
     const scene::Scene& scene = loaded.scene;
     BenchmarkReport report;
@@ -139,8 +265,6 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
     report.frames = options.frames;
     report.settings = options.render;
     report.cameraPath = scene::cameraPathName(options.cameraPath);
-    // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
-    const uint32_t warmup = std::clamp(options.frames / 5, 5u, 50u);
 
     vk::Instance instance({options.validation, {}, options.syncValidation});
     {
@@ -158,101 +282,25 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         // As headless and the viewer open the scene; with a path, timed frame f is frame f
         // of the path (the warm-up frames stay at its start).
         const scene::Camera start = initialCamera(loaded, aspect, options.camera);
-        const scene::Bounds bounds =
-            options.cameraPath == scene::CameraPath::None ? scene::Bounds{} : scene.bounds();
-        render::FrameParams params = cameraFrame(start, rig.extent);
+        RowTimer timer{options,
+                       rig,
+                       readback,
+                       start,
+                       options.cameraPath == scene::CameraPath::None ? scene::Bounds{}
+                                                                     : scene.bounds(),
+                       cameraFrame(start, rig.extent)};
+        // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
+        timer.warmup = std::clamp(options.frames / 5, 5u, 50u);
         // --visible-parts: every frame counts the parts it shows, as the viewer's panel does.
         if (options.visibleParts)
-            params.partSets = {{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}}};
+            timer.params.partSets = {{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}}};
         std::map<std::tuple<std::string, std::string, render::CullMode, float>, double> floorMs;
-        uint64_t frameNumber = 0;
         for (size_t i = 0; i < list.size(); ++i) {
-            const render::PipelineKey& key = list[i].pipeline;
-            if (i == 0) { // the scene's upload is timed with the first switch
-                rig.renderer.setScene(scene, list[i]);
-                rig.renderer.setHidden(hiddenParts(options, scene));
-                report.hiddenParts = rig.renderer.hidden().size();
-            } else
-                rig.renderer.configure(scene, list[i]);
-            std::vector<double> cpuMs, recordMs;
-            const uint32_t total = warmup + options.frames;
-            uint64_t reusedBefore = 0;
-            for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
-                if (f == warmup) reusedBefore = rig.renderer.reusedFrames();
-                render::FrameSlot& slot = rig.slots.begin(frameNumber);
-                // --animate: objects move while being timed, the compute pass included.
-                params.explode = explodeAt(options.animation, frameNumber);
-                params.setView(
-                    cameraFrame(scene::cameraOnPath(options.cameraPath, start, bounds,
-                                                    f < warmup ? 0 : f - warmup, options.frames),
-                                rig.extent));
-                const auto start = Clock::now();
-                rig.renderer.record(slot, rig.targets, params);
-                const auto recorded = Clock::now();
-                if (f + 1 == total) readback.record(slot.cmd, *rig.targets); // after the timing
-                rig.slots.submit(slot);
-                if (f >= warmup) {
-                    cpuMs.push_back(
-                        std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-                    recordMs.push_back(
-                        std::chrono::duration<double, std::milli>(recorded - start).count());
-                }
-            }
-            rig.slots.finish();
-            const auto& all = rig.slots.gpuMilliseconds();
-            const size_t timed = std::min<size_t>(options.frames, all.size());
-            const std::vector<double> gpuMs(all.end() - long(timed), all.end());
-            const auto& passes = rig.slots.idPassMilliseconds();
-            const std::vector<double> idPassMs(passes.end() - long(timed), passes.end());
-            std::vector<double> cullMs, pyramidMs, earlyMs, lateMs;
-            for (auto t = rig.slots.frameTimes().end() - long(timed);
-                 t != rig.slots.frameTimes().end(); ++t) {
-                cullMs.push_back(t->cullMs);
-                pyramidMs.push_back(t->pyramidMs);
-                earlyMs.push_back(t->earlyMs);
-                lateMs.push_back(t->lateMs);
-            }
-            const std::vector<gpu::CullStats> stats(rig.slots.cullStats().end() - long(timed),
-                                                    rig.slots.cullStats().end());
-
-            BenchmarkRow row;
-            row.renderer = key.technique->name;
-            row.mode = key.mode->name;
-            const render::CullMode cull = list[i].culling.mode;
-            row.culling = render::cullModeName(cull);
-            row.lodError = list[i].lod.errorPixels;
-            row.lodApplied = lodApplied(list[i]);
-            row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
-            row.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
-            row.cullMsMedian = percentile(cullMs, 0.5);
-            row.pyramidMsMedian = percentile(pyramidMs, 0.5);
-            row.earlyMsMedian = percentile(earlyMs, 0.5);
-            row.lateMsMedian = percentile(lateMs, 0.5);
-            countDrawn(row, stats, key.technique->usesMeshShader());
-            if (options.cameraPath != scene::CameraPath::None) row.gpuMsFrames = gpuMs;
-            row.gpuMsMedian = percentile(gpuMs, 0.5);
-            row.gpuMsP90 = percentile(gpuMs, 0.9);
-            row.cpuMsMedian = percentile(cpuMs, 0.5);
-            row.cpuRecordMsMedian = percentile(recordMs, 0.5);
-            row.idPassMsMedian = percentile(idPassMs, 0.5);
-            row.draws = rig.renderer.stats().draws;
-            row.triangles = rig.renderer.stats().triangles;
-            const render::RenderStats& renderStats = rig.renderer.stats();
-            row.idBytes = renderStats.idBufferBytes;
-            row.geometryBytes = renderStats.geometryBytes;
-            row.addedVertices = renderStats.addedVertices;
-            row.addedVertexBytes = renderStats.addedVertexBytes;
-            row.meshlets = rig.renderer.cullTotals().meshlets;
-            row.frames = options.frames;
-            row.switchMs = rig.renderer.lastSwitch().ms;
-            row.pipelineCached = rig.renderer.lastSwitch().pipelineCached;
-            const std::vector<uint32_t> ids = readback.idValues();
-            const std::vector<uint8_t> color = readback.colorBytes();
-            row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
-            row.colorImageHash = imageHash(color.data(), color.size());
-            row.floor = render::floorOf(*key.technique).name;
-            const auto floorKey = std::tuple(row.floor, row.mode, cull, row.lodError);
-            if (key.technique->isFloor()) floorMs[floorKey] = row.gpuMsMedian;
+            BenchmarkRow row = timer.time(scene, list[i], i == 0);
+            if (i == 0) report.hiddenParts = rig.renderer.hidden().size();
+            const auto floorKey =
+                std::tuple(row.floor, row.mode, list[i].culling.mode, row.lodError);
+            if (list[i].pipeline.technique->isFloor()) floorMs[floorKey] = row.gpuMsMedian;
             const double floor = floorMs[floorKey];
             row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
             report.rows.push_back(row);
@@ -265,122 +313,21 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
                          row.cullMsMedian, row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian,
                          row.drawsDrawn, row.draws);
         }
+        // After the rows, so that theirs are timed as they were before it existed.
+        report.fixedCost = timer.time(scene, emptyFrame(list), false);
+        const BenchmarkRow& empty = report.fixedCost;
+        for (BenchmarkRow& row : report.rows)
+            row.aboveFixedMs = row.gpuMsMedian - empty.gpuMsMedian;
+        report.clearPath = render::clearPathName(rig.renderer.clearPath());
+        report.clearTiming = rig.renderer.clearTiming(options.render.pipeline.msaa);
+        std::fprintf(stderr,
+                     "benchmark: fixed cost (%s + %s, culling off, nothing drawn): GPU %.3f ms, "
+                     "%zu draws, %llu triangles; clear path %s\n",
+                     empty.renderer.c_str(), empty.mode.c_str(), empty.gpuMsMedian, empty.draws,
+                     static_cast<unsigned long long>(empty.triangles), report.clearPath.c_str());
     }
     report.validationMessages = instance.validationMessages();
     return report;
-}
-
-std::string benchmarkJson(const BenchmarkReport& r) {
-    std::ostringstream out;
-    const render::RenderSettings& s = r.settings;
-    out << "{\"device\":{\"name\":" << jsonString(r.deviceName)
-        << ",\"driver\":" << jsonString(r.driver) << ",\"api\":" << jsonString(r.api) << "},\n"
-        << " \"settings\":{\"size\":" << jsonString(r.size) << ",\"msaa\":" << s.pipeline.msaa
-        << ",\"scene\":" << jsonString(r.scene) << ",\"copies\":" << r.copies
-        << ",\"lod_levels\":" << r.lodLevels << ",\"lod_level\":" << r.lodLevel
-        << ",\"levels\":" << levelStatsJson(r.levels)
-        << ",\"search_batch\":" << s.pipeline.searchBatch << ",\"frames\":" << r.frames
-        << ",\"visible\":" << fixed(s.draws.visible, 3)
-        << ",\"sort_draws\":" << (s.draws.sortDraws ? "true" : "false")
-        << ",\"part_weight\":" << fixed(s.shading.partWeight, 3)
-        << ",\"colorize_draws\":" << (s.shading.colorizeDraws ? "true" : "false")
-        << ",\"tint_levels\":" << (s.shading.tintLevels ? "true" : "false")
-        << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false")
-        << ",\"edges\":" << (s.edges.on ? "true" : "false") << ",\"edge_width\":" << s.edges.width
-        << ",\"hidden_parts\":" << r.hiddenParts << ",\"camera_path\":" << jsonString(r.cameraPath)
-        << "},\n"
-        << " \"results\":[";
-    for (size_t i = 0; i < r.rows.size(); ++i) {
-        const BenchmarkRow& row = r.rows[i];
-        out << (i ? ",\n  " : "\n  ") << "{\"renderer\":" << jsonString(row.renderer)
-            << ",\"mode\":" << jsonString(row.mode) << ",\"culling\":" << jsonString(row.culling)
-            << ",\"culling_applied\":" << jsonString(row.cullingApplied)
-            << ",\"lod_error\":" << fixed(row.lodError, 3)
-            << ",\"lod_applied\":" << (row.lodApplied ? "true" : "false")
-            << ",\"gpu_ms_median\":" << fixed(row.gpuMsMedian, 4)
-            << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
-            << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4)
-            << ",\"cpu_record_ms_median\":" << fixed(row.cpuRecordMsMedian, 4)
-            << ",\"id_pass_ms_median\":" << fixed(row.idPassMsMedian, 4)
-            << ",\"cull_ms_median\":" << fixed(row.cullMsMedian, 4)
-            << ",\"pyramid_ms_median\":" << fixed(row.pyramidMsMedian, 4)
-            << ",\"early_draw_ms_median\":" << fixed(row.earlyMsMedian, 4)
-            << ",\"late_draw_ms_median\":" << fixed(row.lateMsMedian, 4)
-            << ",\"reused_frames\":" << row.reusedFrames << ",\"draws\":" << row.draws
-            << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1) << ",\"triangles\":" << row.triangles
-            << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)
-            << ",\"meshlets_drawn\":" << fixed(row.meshletsDrawn, 1)
-            << ",\"triangles_drawn_by_level\":[";
-        for (size_t l = 0; l < row.levelTrianglesDrawn.size(); ++l)
-            out << (l ? "," : "") << fixed(row.levelTrianglesDrawn[l], 1);
-        out << "]"
-            << ",\"id_bytes\":" << row.idBytes << ",\"geometry_bytes\":" << row.geometryBytes
-            << ",\"added_vertices\":" << row.addedVertices
-            << ",\"added_vertex_bytes\":" << row.addedVertexBytes
-            << ",\"meshlets\":" << row.meshlets << ",\"floor\":" << jsonString(row.floor)
-            << ",\"ratio_to_floor\":" << fixed(row.ratioToFloor, 3) << ",\"id_image_hash\":\""
-            << hex(row.idImageHash) << "\""
-            << ",\"color_image_hash\":\"" << hex(row.colorImageHash) << "\""
-            << ",\"switch_ms\":" << fixed(row.switchMs, 3)
-            << ",\"pipeline_cached\":" << (row.pipelineCached ? "true" : "false");
-        if (!row.gpuMsFrames.empty()) {
-            out << ",\"gpu_ms_frames\":[";
-            for (size_t f = 0; f < row.gpuMsFrames.size(); ++f)
-                out << (f ? "," : "") << fixed(row.gpuMsFrames[f], 4);
-            out << "]";
-        }
-        out << "}";
-    }
-    out << "\n ],\n \"skipped\":[";
-    for (size_t i = 0; i < r.skipped.size(); ++i)
-        out << (i ? "," : "") << "{\"renderer\":" << jsonString(r.skipped[i].first)
-            << ",\"reason\":" << jsonString(r.skipped[i].second) << "}";
-    out << "]}\n";
-    return out.str();
-}
-
-std::string benchmarkCsv(const BenchmarkReport& r) {
-    std::ostringstream out;
-    out << "renderer,mode,gpu_ms_median,gpu_ms_p90,cpu_ms_median,draws,triangles,id_bytes,"
-           "geometry_bytes,added_vertices,meshlets,floor,ratio_to_floor,id_image_hash,"
-           "color_image_hash,culling,draws_drawn,meshlets_drawn,triangles_drawn,cull_ms_median,"
-           "pyramid_ms_median\n";
-    for (const BenchmarkRow& row : r.rows)
-        out << row.renderer << ',' << row.mode << ',' << fixed(row.gpuMsMedian, 4) << ','
-            << fixed(row.gpuMsP90, 4) << ',' << fixed(row.cpuMsMedian, 4) << ',' << row.draws << ','
-            << row.triangles << ',' << row.idBytes << ',' << row.geometryBytes << ','
-            << row.addedVertices << ',' << row.meshlets << ',' << row.floor << ','
-            << fixed(row.ratioToFloor, 3) << ',' << hex(row.idImageHash) << ','
-            << hex(row.colorImageHash) << ',' << row.culling << ',' << fixed(row.drawsDrawn, 1)
-            << ',' << fixed(row.meshletsDrawn, 1) << ',' << fixed(row.trianglesDrawn, 1) << ','
-            << fixed(row.cullMsMedian, 4) << ',' << fixed(row.pyramidMsMedian, 4) << '\n';
-    return out.str();
-}
-
-std::string benchmarkTable(const BenchmarkReport& r) {
-    std::ostringstream out;
-    out << r.deviceName << " (" << r.driver << ", Vulkan " << r.api << "), " << r.size << ", "
-        << r.settings.pipeline.msaa << "x MSAA, " << r.scene << " x" << r.copies
-        << ", search batch " << r.settings.pipeline.searchBatch << ", " << r.frames << " frames"
-        << (r.cameraPath == "none" ? "" : ", camera path " + r.cameraPath) << "\n";
-    char line[240];
-    std::snprintf(line, sizeof line, "%-14s %-17s %-9s %9s %9s %9s %7s %7s %8s %7s %s\n",
-                  "renderer", "mode", "culling", "GPU ms", "GPU p90", "CPU ms", "cull ms",
-                  "draws %", "tris %", "x floor", "floor");
-    out << line;
-    auto percentOf = [](double part, double total) { return total > 0 ? 100 * part / total : 0.0; };
-    for (const BenchmarkRow& row : r.rows) {
-        std::snprintf(line, sizeof line,
-                      "%-14s %-17s %-9s %9.3f %9.3f %9.3f %7.3f %7.1f %8.1f %7.3f %s\n",
-                      row.renderer.c_str(), row.mode.c_str(), row.culling.c_str(), row.gpuMsMedian,
-                      row.gpuMsP90, row.cpuMsMedian, row.cullMsMedian + row.pyramidMsMedian,
-                      percentOf(row.drawsDrawn, double(row.draws)),
-                      percentOf(row.trianglesDrawn, double(row.triangles)), row.ratioToFloor,
-                      row.floor.c_str());
-        out << line;
-    }
-    for (const auto& [name, why] : r.skipped) out << name << ": skipped, " << why << "\n";
-    return out.str();
 }
 
 int benchmarkCommand(const Options& options) {

@@ -1,13 +1,17 @@
 // benchmark.h - `idview --headless --benchmark`: every chosen renderer x mode, and the no-id
-// floor in each mode, timed on one device with the same scene, camera and settings.
+// floor in each mode, timed on one device with the same scene, camera and settings, and the
+// frame that draws nothing (the fixed cost every row pays). The report's formats are in
+// benchmark_report.cpp.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/cli.h"
 #include "app/scene_source.h"
+#include "render/clear_choice.h"
 
 namespace app {
 
@@ -37,7 +41,11 @@ struct BenchmarkRow {
     std::string floor; // the floor row of this row's kind (render::floorOf)
     // gpuMsMedian / the floor's gpuMsMedian in the same mode and culling mode
     double ratioToFloor = 0;
-    uint32_t frames = 0; // timed frames (after warm-up)
+    // gpuMsMedian - BenchmarkReport::fixedCost's: what drawing this row costs beyond a frame
+    // that draws nothing (0 for the fixed-cost row itself).
+    double aboveFixedMs = 0;
+    std::string clearPath; // the clear path its frames drew with (Renderer::clearPath)
+    uint32_t frames = 0;   // timed frames (after warm-up)
     // Timed frames that drew the last culled frame's lists again, the view standing still.
     uint64_t reusedFrames = 0;
     // FNV-1a of the last frame's ID and colour images: every part-ID row of one run must
@@ -58,6 +66,16 @@ struct BenchmarkReport {
     std::string cameraPath;                // --camera-path, "none" when the camera stands still
     uint32_t hiddenParts = 0;              // --hide / --isolate
     std::vector<BenchmarkRow> rows;        // floor rows first, then renderer-major order
+    // The fixed cost: the frame that draws nothing (draws.visible 0), timed like a row, once
+    // per run after the rows, with the first chosen technique and mode and culling off. Its
+    // clears and resolve are what no culling or level of detail touches; culling's passes
+    // and pyramid, which an empty frame with culling on would time too, are culling's cost
+    // and count above it.
+    BenchmarkRow fixedCost;
+    std::string clearPath; // the clear path the renderer drew with (never "auto")
+    // With --clear auto: both paths' empty-frame times at this MSAA, as the renderer found
+    // them (timed now or read from the file beside the pipeline cache).
+    std::optional<render::ClearTiming> clearTiming;
     // Techniques left out because the device cannot run them, each with the reason.
     std::vector<std::pair<std::string, std::string>> skipped;
     uint32_t validationMessages = 0;
