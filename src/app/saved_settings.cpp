@@ -43,6 +43,9 @@ std::string valueText(const render::DrawMode* mode) {
 std::string valueText(render::CullMode mode) {
     return render::cullModeName(mode);
 }
+std::string valueText(render::ClearPath path) {
+    return render::clearPathName(path);
+}
 std::string valueText(const glm::vec3& color) {
     return hexColor(color);
 }
@@ -67,6 +70,7 @@ const std::vector<Kept>& keptSettings() {
         kept("--renderer", FIELD(render.pipeline.technique)),
         kept("--mode", FIELD(render.pipeline.mode)),
         kept("--msaa", FIELD(render.pipeline.msaa)),
+        kept("--clear", FIELD(render.clear)),
         kept("--search-batch", FIELD(render.pipeline.searchBatch)),
         kept("--nsearch-n", FIELD(render.pipeline.nsearch.n)),
         kept("--nsearch-guess", FIELD(render.pipeline.nsearch.guess)),

@@ -9,10 +9,17 @@
 #include <optional>
 #include <string>
 
+#include <vulkan/vulkan.h>
+
 #include "render/pipeline_file.h"
 #include "render/settings.h"
 
 namespace render {
+
+// The size both paths are timed at: a full-HD frame, large enough that what a clear or a
+// resolve costs per pixel dominates a dispatch's or a pass's fixed overhead, small enough to
+// time in a blink on a software rasterizer.
+constexpr uint32_t clearTimingWidth = 1920, clearTimingHeight = 1080;
 
 // What the timing of one MSAA setting found: the median GPU time of a frame that draws
 // nothing, from the first command to the resolved images, on each path.

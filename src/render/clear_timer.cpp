@@ -13,10 +13,7 @@
 namespace render {
 namespace {
 
-// A full-HD frame: large enough that what a clear or a resolve costs per pixel dominates a
-// dispatch's or a pass's fixed overhead, small enough to time in a blink on a software
-// rasterizer.
-constexpr VkExtent2D kTimedExtent{1920, 1080};
+constexpr VkExtent2D kTimedExtent{clearTimingWidth, clearTimingHeight};
 constexpr uint32_t kRounds = 3;         // the paths alternate, so drift hits both alike
 constexpr uint32_t kFramesPerRound = 4; // per path
 

@@ -331,6 +331,8 @@ PanelInfo Viewer::panelInfo() const {
     info.cachedPipelines = scene_.renderer().cachedPipelines();
     info.idBytes = scene_.idBytes();
     info.sampleCounts = scene_.sampleCounts();
+    info.clearPath = scene_.renderer().clearPath();
+    info.clearTiming = scene_.renderer().clearTiming(scene_.renderer().settings().pipeline.msaa);
     info.fps = fps_;
     info.continuous = !presenter_.vsync();
     const auto& gpu = slots_.gpuMilliseconds();

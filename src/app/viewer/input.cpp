@@ -440,6 +440,10 @@ void Input::queue(const ScriptCommand& c) {
     case ScriptOp::Msaa:
         step(settings([n = uint32_t(v[0])](Options& s) { s.render.pipeline.msaa = n; }), true);
         break;
+    case ScriptOp::Clear: // checked when the script was parsed
+        step(settings([p = *render::findClearPath(c.text)](Options& s) { s.render.clear = p; }),
+             true);
+        break;
     case ScriptOp::Screenshot:
         step([this, path = c.text] { viewer_.screenshot(path); }, true);
         break;

@@ -120,6 +120,8 @@ struct PanelInfo {
     size_t cachedPipelines = 0;
     scene::IdDataBytes idBytes;
     VkSampleCountFlags sampleCounts = VK_SAMPLE_COUNT_1_BIT; // offered by the device
+    render::ClearPath clearPath = render::ClearPath::Pass;   // the one drawing (never Auto)
+    std::optional<render::ClearTiming> clearTiming;          // Auto's, at the MSAA drawn
     double fps = 0.0, gpuMs = 0.0, cpuRecordMs = 0.0;
     bool continuous = false;       // vsync off: a scene pass every frame, so fps means something
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first

@@ -128,6 +128,35 @@ void culling(render::CullSettings& c, const PanelInfo& info) {
                        counted(info.drawn.triangles, info.totals.triangles).c_str());
 }
 
+// How frames start and resolve (render/settings.h ClearPath): auto shows the path it chose
+// and, on hover, the empty-frame times it chose by.
+void clearPathCombo(render::ClearPath& clear, const PanelInfo& info) {
+    std::string current = render::clearPathName(clear);
+    if (clear == render::ClearPath::Auto)
+        current += std::string(" (") + render::clearPathName(info.clearPath) + ")";
+    if (ImGui::BeginCombo(fitLabel("clear").c_str(), current.c_str())) {
+        for (render::ClearPath p :
+             {render::ClearPath::Auto, render::ClearPath::Pass, render::ClearPath::Compute})
+            if (ImGui::Selectable(render::clearPathName(p), p == clear)) clear = p;
+        ImGui::EndCombo();
+    }
+    if (!ImGui::IsItemHovered()) return;
+    std::string tip = "pass: the scene pass clears colour, IDs and depth and resolves MSAA\n"
+                      "compute: it clears depth alone; a compute pass writes the background "
+                      "and resolves\nauto: the faster of the two on this device (--clear)";
+    if (info.clearTiming) {
+        char line[128];
+        std::snprintf(line, sizeof line,
+                      "\n\nan empty %ux%u frame at %ux: pass %.3f ms, compute %.3f ms (%s)",
+                      render::clearTimingWidth, render::clearTimingHeight,
+                      info.clearTiming->samples, info.clearTiming->passMs,
+                      info.clearTiming->computeMs,
+                      info.clearTiming->remembered ? "timed before, kept" : "timed now");
+        tip += line;
+    }
+    ImGui::SetTooltip("%s", tip.c_str());
+}
+
 // Levels of detail: how many the scene has (a reload), the error the cull pass chooses them
 // by, the tint, and the triangles the newest frame drew at each.
 void levelsOfDetail(Options& settings, const PanelInfo& info) {
@@ -191,6 +220,7 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
         }
         ImGui::EndCombo();
     }
+    clearPathCombo(s.clear, info);
     // Edge settings stay in place, greyed while edges are off: E moves nothing below.
     render::EdgeSettings& edges = s.edges;
     ImGui::BeginDisabled(!edges.on);

@@ -47,6 +47,7 @@ const CommandSpec commandSpecs[] = {
     {"sort", ScriptOp::Sort, 0, "sort on|off"},
     {"defaults", ScriptOp::Defaults, 0, "defaults"},
     {"msaa", ScriptOp::Msaa, 1, "msaa 1|2|4|8"},
+    {"clear", ScriptOp::Clear, 0, "clear auto|pass|compute"},
     {"copies", ScriptOp::Copies, 1, "copies N"},
     {"section", ScriptOp::Section, 0, "section AXIS,VALUE[,flip] | off"},
     {"view", ScriptOp::View, 0, "view NAME"},
@@ -212,6 +213,10 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (n != 1.0 && n != 2.0 && n != 4.0 && n != 8.0) fail("msaa takes 1, 2, 4 or 8");
         break;
     }
+    case ScriptOp::Clear:
+        if (!render::findClearPath(command.text))
+            fail("clear takes auto, pass or compute, not '" + command.text + "'");
+        break;
     case ScriptOp::Renderer:
         if (!render::findTechnique(command.text))
             fail("unknown renderer '" + command.text + "' (known: " + render::techniqueNames() +

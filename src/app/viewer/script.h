@@ -89,6 +89,7 @@ enum class ScriptOp {
     Sort,
     Defaults,
     Msaa,
+    Clear,
     Copies,
     Section,
     View,
