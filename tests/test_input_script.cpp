@@ -139,6 +139,8 @@ TEST(InputScript, BadLinesNameFileAndLine) {
     EXPECT_EQ(errorOf("1 resize 0 20\n"),
               "s.txt:1: window size must be whole numbers from 1 to 16384");
     EXPECT_EQ(errorOf("1 msaa 3\n"), "s.txt:1: msaa takes 1, 2, 4 or 8");
+    EXPECT_EQ(errorOf("1 clear fast\n"),
+              "s.txt:1: 'clear' takes auto, pass or compute, not 'fast'");
     EXPECT_NE(errorOf("1 key HYPER\n").find("s.txt:1: unknown key 'HYPER'"), std::string::npos);
     EXPECT_NE(errorOf("1 renderer fastest\n").find("s.txt:1: unknown renderer 'fastest'"),
               std::string::npos);

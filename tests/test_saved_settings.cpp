@@ -42,6 +42,7 @@ Options changed() {
     key.technique = render::findTechnique("tri-fs");
     key.mode = render::findDrawMode("push");
     key.msaa = 4;
+    o.render.clear = render::ClearPath::Compute;
     key.searchBatch = 7;
     key.nsearch = {5, false, 3, 9};
     o.render.draws.sortDraws = false;

@@ -25,6 +25,7 @@ std::string describePipeline(const PipelineKey& key) {
     if (key.hiding) text += ", hiding parts";
     if (key.section) text += ", section";
     if (key.translucent) text += ", translucent";
+    if (key.clear == ClearPath::Compute) text += ", compute resolve"; // MSAA's other pass
     if (key.taskCulling || key.runOffsets) text += ", culling";
     return text;
 }

@@ -119,7 +119,7 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
                            spec->op == ScriptOp::Drop || spec->op == ScriptOp::View ||
                            spec->op == ScriptOp::Ortho || spec->op == ScriptOp::Xray ||
                            spec->op == ScriptOp::Level || spec->op == ScriptOp::Pipeline ||
-                           spec->op == ScriptOp::Blink;
+                           spec->op == ScriptOp::Blink || spec->op == ScriptOp::Clear;
     // A box may name its mode after the corners; an object's name is the rest of the line.
     const size_t expected = takesText ? 1 : spec->numbers;
     const bool restOfLine = spec->op == ScriptOp::Object || spec->op == ScriptOp::Type;
@@ -213,10 +213,6 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         if (n != 1.0 && n != 2.0 && n != 4.0 && n != 8.0) fail("msaa takes 1, 2, 4 or 8");
         break;
     }
-    case ScriptOp::Clear:
-        if (!render::findClearPath(command.text))
-            fail("clear takes auto, pass or compute, not '" + command.text + "'");
-        break;
     case ScriptOp::Renderer:
         if (!render::findTechnique(command.text))
             fail("unknown renderer '" + command.text + "' (known: " + render::techniqueNames() +
@@ -248,6 +244,9 @@ ScriptCommand parseLine(const std::string& line, const std::string& where) {
         break;
     case ScriptOp::Blink:
         expectWord({"strong", "weak", "clock"});
+        break;
+    case ScriptOp::Clear:
+        expectWord({"auto", "pass", "compute"});
         break;
     case ScriptOp::View:
         if (!scene::findStandardView(command.text))
