@@ -110,25 +110,18 @@ void IdPasses::transition(VkCommandBuffer cmd, const SceneTargets& targets, Move
     const std::array<VkImage, 3> images = {targets.ids().handle(), targets.shaded().handle(),
                                            targets.color().handle()};
     for (uint32_t i = 0; i < barriers.size(); ++i) {
-        VkImageMemoryBarrier& b = barriers[i];
-        b = vk::init<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
-        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = images[i];
-        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        if (toGeneral) {
-            const bool composed = images[i] == targets.color().handle();
-            const bool discard = composed && move == Move::ToGeneral;
-            b.srcAccessMask = composed ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-            b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-            b.oldLayout =
-                discard ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-            b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-        } else {
-            b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-            b.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
-            b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        }
+        const bool composed = images[i] == targets.color().handle();
+        const bool discard = composed && move == Move::ToGeneral;
+        barriers[i] =
+            toGeneral
+                ? vk::colorImageBarrier(
+                      images[i], composed ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                      discard ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                      VK_IMAGE_LAYOUT_GENERAL)
+                : vk::colorImageBarrier(images[i], VK_ACCESS_SHADER_WRITE_BIT,
+                                        VK_ACCESS_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     }
     const VkPipelineStageFlags src = toGeneral ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                                      VK_PIPELINE_STAGE_TRANSFER_BIT |

@@ -3,6 +3,7 @@
 
 #include <array>
 
+#include "vk/barrier.h"
 #include "vk/check.h"
 #include "vk/debug.h"
 
@@ -26,26 +27,19 @@ void Resolver::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
     const bool msaa = targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT;
     std::array<VkImageMemoryBarrier, 2> barriers{};
     const std::array<VkImage, 2> images = {targets.ids().handle(), targets.shaded().handle()};
-    for (size_t i = 0; i < barriers.size(); ++i) {
-        VkImageMemoryBarrier& b = barriers[i];
-        b = vk::init<VkImageMemoryBarrier>(VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER);
-        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = images[i];
-        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        if (before) {
-            // 1x: the pass drew into these images and left them in GENERAL; with MSAA they
-            // are overwritten whole once the last frame's readers are done.
-            b.srcAccessMask = msaa ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-            b.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            b.oldLayout = msaa ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_GENERAL;
-            b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-        } else {
-            b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-            b.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
-            b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        }
-    }
+    for (size_t i = 0; i < barriers.size(); ++i)
+        // Before, 1x: the pass drew into these images and left them in GENERAL; with MSAA
+        // they are overwritten whole once the last frame's readers are done.
+        barriers[i] =
+            before
+                ? vk::colorImageBarrier(images[i], msaa ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                                        VK_ACCESS_SHADER_WRITE_BIT,
+                                        msaa ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_GENERAL,
+                                        VK_IMAGE_LAYOUT_GENERAL)
+                : vk::colorImageBarrier(images[i], VK_ACCESS_SHADER_WRITE_BIT,
+                                        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+                                        VK_IMAGE_LAYOUT_GENERAL,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     const VkPipelineStageFlags src = before ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                                   VK_PIPELINE_STAGE_TRANSFER_BIT |
                                                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT
