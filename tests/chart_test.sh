@@ -3,7 +3,8 @@
 # the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are the
 # JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
 # scripts/path_chart.py on a committed camera-path run, scripts/lod_chart.py on the
-# levels-of-detail runs, and scripts/fixed_cost_chart.py on two small runs, likewise.
+# levels-of-detail runs, and scripts/fixed_cost_chart.py on the clear paths' runs, likewise;
+# and docs/benchmarks.md holds the tables scripts/clear_tables.py prints from those runs.
 set -uo pipefail
 root=$1
 runs=$root/docs/benchmarks/h100-2026-11-23-issue14/final
@@ -96,13 +97,12 @@ for line, path in zip(lines, paths):
                 abs(tris - row["triangles_drawn"] / 1e3) > 0.51):
             sys.exit(f"{path} column {k}: {got[3 * k:3 * k + 3]}")
 PY
-# scripts/fixed_cost_chart.py on two lavapipe runs (1x and 4x MSAA) committed for it, made by
-#   idview --benchmark --size 64x48 --frames 3 --scene procedural:preset=small --copies 1
-#     --msaa M --renderer vertex-fs,tri-fs,mesh-fs --mode mdi-baseinstance
-#     --culling off,occlusion --benchmark-out tests/benchmark_runs/lavapipe-Mx.json
-# a PNG, and per renderer (floors first) and run the fixed cost, the part above it and their
-# sum as the JSON has them; a run from before the fixed cost is refused by name.
-fixedRuns=("$root/tests/benchmark_runs/lavapipe-1x.json" "$root/tests/benchmark_runs/lavapipe-4x.json")
+# scripts/fixed_cost_chart.py on the H100 runs of every technique (1x and 4x MSAA, culling
+# off and occlusion, h100-2026-11-26-clear): a PNG, and per renderer (floors first) and run
+# the fixed cost, the part above it and their sum as the JSON has them; a run from before the
+# fixed cost is refused by name.
+clearRuns=$root/docs/benchmarks/h100-2026-11-26-clear
+fixedRuns=("$clearRuns/techniques-1x.json" "$clearRuns/techniques-4x.json")
 /usr/bin/python3 "$root/scripts/fixed_cost_chart.py" "${fixedRuns[@]}" -o "$work/fixed.png" \
     >"$work/fixed.txt" 2>"$work/err.txt" || fail "fixed cost chart script: $(cat "$work/err.txt")"
 [[ $(head -c 8 "$work/fixed.png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] ||
@@ -136,5 +136,17 @@ PY
 out=$(/usr/bin/python3 "$root/scripts/fixed_cost_chart.py" "${files[0]}" -o "$work/old.png" 2>&1)
 [[ $? -ne 0 && $out == *"no fixed_cost"* && ! -e $work/old.png ]] ||
     fail "a run without a fixed cost: $out"
+# The page's tables of the fixed cost and of every technique are the script's, line for line.
+for args in "targets $clearRuns" "techniques ${fixedRuns[*]}"; do
+    # shellcheck disable=SC2086 # the arguments are words on purpose
+    /usr/bin/python3 "$root/scripts/clear_tables.py" $args >"$work/tables.md" 2>"$work/err.txt" ||
+        fail "clear_tables.py $args: $(cat "$work/err.txt")"
+    [[ $(grep -c '^| ' "$work/tables.md") -ge 14 ]] || fail "clear_tables.py $args: too few rows"
+    while IFS= read -r line; do
+        [[ $line == "| "* ]] || continue
+        grep -qxF -- "$line" "$root/docs/benchmarks.md" ||
+            fail "docs/benchmarks.md lacks the line clear_tables.py $args prints: $line"
+    done <"$work/tables.md"
+done
 echo "chart_test: $failures failed"
 exit $((failures > 0))
