@@ -216,9 +216,9 @@ BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSetti
     row.cpuMsMedian = percentile(cpu.total, 0.5);
     row.cpuRecordMsMedian = percentile(cpu.record, 0.5);
     row.idPassMsMedian = percentile(idPassMs, 0.5);
+    row.draws = rig.renderer.stats().draws;
+    row.triangles = rig.renderer.stats().triangles;
     const render::RenderStats& renderStats = rig.renderer.stats();
-    row.draws = renderStats.draws;
-    row.triangles = renderStats.triangles;
     row.idBytes = renderStats.idBufferBytes;
     row.geometryBytes = renderStats.geometryBytes;
     row.addedVertices = renderStats.addedVertices;

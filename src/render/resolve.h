@@ -8,11 +8,11 @@
 #pragma once
 
 #include "render/pipeline.h"
-#include "render/targets.h"
-#include "shared.h"
+#include "render/targets.h" // and shared.h, whose RESOLVE_* flags record() takes
 
 namespace render {
 
+// One per renderer, with both its pipelines (1x and multisampled) made up front.
 class Resolver {
   public:
     Resolver(vk::Device& device, const vk::ShaderCompiler& compiler,
