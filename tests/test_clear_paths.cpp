@@ -118,6 +118,17 @@ int expectSameImages(const app::HeadlessResult& pass, const app::HeadlessResult&
     return most;
 }
 
+// expectSameImages for every case (IDs included: the floors' are background on both paths);
+// the largest colour difference among them.
+int expectSameImagesInEveryCase(const std::array<std::vector<app::HeadlessResult>, 2>& results,
+                                const std::vector<render::RenderSettings>& configs) {
+    int most = 0;
+    for (size_t c = 0; c < configs.size(); ++c)
+        most = std::max(most,
+                        expectSameImages(results[0][c], results[1][c], true, nameOf(configs[c])));
+    return most;
+}
+
 void reportColourDifference(const char* test, int most) {
     std::printf("[ clear    ] %s: colour differs by at most %d per channel between the paths\n",
                 test, most);
@@ -149,11 +160,7 @@ TEST_P(EveryTechnique, BothPathsDrawTheSameImagesAndEachAgreesWithItself) {
     const auto results = renderOnBothPaths(o, loaded.scene, camera, configs);
     ASSERT_EQ(results[1].size(), configs.size());
 
-    int most = 0;
-    // The floors write no IDs: on both paths their ID image is background throughout.
-    for (size_t c = 0; c < configs.size(); ++c)
-        most = std::max(most,
-                        expectSameImages(results[0][c], results[1][c], true, nameOf(configs[c])));
+    const int most = expectSameImagesInEveryCase(results, configs);
     reportColourDifference("every technique", most);
 
     for (size_t p = 0; p < kPaths.size(); ++p) {
@@ -241,10 +248,9 @@ TEST(ClearPaths, LevelsSectionsHiddenPartsAndEdgesDrawTheSameImages) {
     const auto results = renderOnBothPaths(o, loaded.scene, camera, configs);
     ASSERT_EQ(results[1].size(), configs.size());
 
-    int most = 0;
+    const int most = expectSameImagesInEveryCase(results, configs);
     for (size_t c = 0; c < configs.size(); ++c) {
         const std::string name = nameOf(configs[c]);
-        most = std::max(most, expectSameImages(results[0][c], results[1][c], true, name));
         for (size_t p = 0; p < kPaths.size(); ++p) {
             const app::HeadlessResult& r = results[p][c];
             for (uint32_t hidden : o.hide)
@@ -285,10 +291,9 @@ TEST(ClearPaths, XrayPicksAndPartSetsAreTheSameOnBothPaths) {
     o.syncValidation = true;
     const auto results = renderOnBothPaths(o, loaded.scene, camera, configs);
     ASSERT_EQ(results[1].size(), configs.size());
-    int most = 0;
+    const int most = expectSameImagesInEveryCase(results, configs);
     for (size_t c = 0; c < configs.size(); ++c) {
         const std::string name = nameOf(configs[c]);
-        most = std::max(most, expectSameImages(results[0][c], results[1][c], true, name));
         for (size_t p = 0; p < kPaths.size(); ++p) {
             const app::HeadlessResult& r = results[p][c];
             ASSERT_TRUE(r.rectParts.has_value()) << name;
