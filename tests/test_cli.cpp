@@ -4,7 +4,6 @@
 #include "app/benchmark.h"
 #include "app/cli.h"
 #include "app/headless.h"
-#include "app/json.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "scene/mesh_builder.h"
@@ -258,12 +257,6 @@ TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
         {"--visible", "1.5"},       {"--visible", "-0.1"},    {"--copy-axes", ""},
         {"--copy-axes", "xw"},      {"--copy-axes", "xx"},    {"--ignore-materials=1"}};
     for (const auto& args : bad) EXPECT_THROW(parseArgs(args), UsageError) << args[0];
-}
-
-TEST(Json, StringsEscapeQuotesBackslashesAndControlCharacters) {
-    EXPECT_EQ(app::jsonString("bolt M10 #1"), "\"bolt M10 #1\"");
-    EXPECT_EQ(app::jsonString("a\"b\\c\n\x01\x7f\xc3\xa9"),
-              "\"a\\\"b\\\\c\\u000a\\u0001\\u007f\xc3\xa9\"");
 }
 
 TEST(PickJson, NameAndPathFollowLocalPartAndAreEscaped) {

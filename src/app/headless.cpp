@@ -9,7 +9,6 @@
 #include <stdexcept>
 
 #include "app/image_io.h"
-#include "app/json.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "render/frame_slots.h"
@@ -22,69 +21,11 @@
 #include "scene/face_info.h"
 #include "scene/inspect.h"
 #include "util/cache_file.h"
-#include "util/json_number.h"
 #include "vk/check.h"
 #include "vk/context.h"
 #include "vk/shader_compiler.h"
 
 namespace app {
-
-std::string pickJson(const scene::Scene& scene, const render::PickReading& pick) {
-    char head[64];
-    std::snprintf(head, sizeof head, "{\"x\":%u,\"y\":%u,", pick.pixel.x, pick.pixel.y);
-    const auto info = pick.part ? scene::describePart(scene, *pick.part) : std::nullopt;
-    if (!info)
-        return std::string(head) + "\"part\":null,\"object\":null,\"local_part\":null,"
-                                   "\"name\":null,\"path\":null,\"depth\":null}";
-    char ids[128], depth[48];
-    std::snprintf(ids, sizeof ids, "\"part\":%u,\"object\":%u,\"local_part\":%u,",
-                  info->uniquePartId, info->object, info->localPart);
-    // CAD files: the B-rep face (face numbers skip faces that did not triangulate).
-    if (info->face)
-        std::snprintf(ids + std::strlen(ids), sizeof ids - std::strlen(ids), "\"face\":%u,",
-                      *info->face);
-    std::snprintf(depth, sizeof depth, ",\"depth\":%.9g}", double(pick.depth));
-    return std::string(head) + ids + "\"name\":" + jsonString(info->name) +
-           ",\"path\":" + jsonString(info->path) + depth;
-}
-
-std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& pick,
-                         const std::optional<scene::EdgeRef>& edge) {
-    const std::string head =
-        "{\"x\":" + std::to_string(pick.pixel.x) + ",\"y\":" + std::to_string(pick.pixel.y) + ",";
-    const auto report = edge ? scene::edgeReport(scene, *edge) : std::nullopt;
-    if (report) return head + scene::edgeReportJson(*report).substr(1);
-    return head + "\"part\":" + (pick.part ? std::to_string(*pick.part) : std::string("null")) +
-           ",\"edge\":null}";
-}
-
-std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
-                        const std::array<std::optional<uint32_t>, 2>& parts,
-                        const scene::LengthUnit& unit) {
-    // Every digit of a double: points far from the origin read back exactly.
-    auto point = [](const std::optional<glm::dvec3>& p) {
-        return p ? util::jsonVector(*p) : std::string("null");
-    };
-    const auto& [p0, p1] = points;
-    std::string distance = "null";
-    std::optional<glm::dvec3> delta;
-    if (p0 && p1) {
-        delta = *p1 - *p0;
-        distance = util::jsonNumber(glm::length(*delta));
-    }
-    auto part = [&](size_t i) {
-        return parts[i] ? std::to_string(*parts[i]) : std::string("null");
-    };
-    return "{\"p0\":" + point(p0) + ",\"p1\":" + point(p1) + ",\"distance\":" + distance +
-           ",\"delta\":" + point(delta) + ",\"parts\":[" + part(0) + "," + part(1) + "]," +
-           scene::unitJsonMember(unit) + "}";
-}
-
-std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& unit) {
-    std::array<std::optional<uint32_t>, 2> parts;
-    for (size_t i = 0; i < 2 && i < result.measured.size(); ++i) parts[i] = result.measured[i].part;
-    return measureJson(result.measuredPoints, parts, unit);
-}
 
 namespace {
 
@@ -336,10 +277,8 @@ int runHeadless(const Options& options) {
                     partSetJson(*result.rectParts, result.rectCount, options.selectRect).c_str());
     for (const auto& pick : result.picks) std::printf("%s\n", pickJson(scene, pick).c_str());
     if (options.measure) std::printf("%s\n", measureJson(result, scene.unit).c_str());
-    for (const auto& pick : result.faceInfoPicks) {
-        const auto report = pick.part ? scene::faceReport(scene, *pick.part) : std::nullopt;
-        std::printf("%s\n", report ? scene::faceReportJson(*report).c_str() : "{\"part\":null}");
-    }
+    for (const auto& pick : result.faceInfoPicks)
+        std::printf("%s\n", faceInfoJson(scene, pick).c_str());
     for (size_t i = 0; i < result.edgeInfoPicks.size(); ++i)
         std::printf("%s\n",
                     edgeInfoJson(scene, result.edgeInfoPicks[i], result.edgeInfoEdges[i]).c_str());
@@ -399,64 +338,6 @@ scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene) {
     }
     if (isolate) hidden.invert();
     return hidden;
-}
-
-std::vector<std::string> inspectionJson(const Options& options, const scene::Scene& scene) {
-    std::vector<std::string> lines;
-    auto range = [](uint32_t count) {
-        return count == 0 ? std::string("it has none") : "0 to " + std::to_string(count - 1);
-    };
-    if (options.distance) {
-        const uint32_t count = scene.uniquePartCount();
-        scene::Thing sides[2];
-        for (size_t i = 0; i < 2; ++i) {
-            const uint32_t id = (*options.distance)[i];
-            if (id >= count)
-                throw std::invalid_argument("--distance: part " + std::to_string(id) +
-                                            " is not in the scene (its parts are " + range(count) +
-                                            ")");
-            sides[i].parts = {id};
-        }
-        const auto report = scene::measureDistance(scene, sides[0], sides[1]);
-        // In range but without a B-rep face: a face that did not come through the load whole.
-        if (!report)
-            throw std::invalid_argument("--distance: parts " + std::to_string(sides[0].parts[0]) +
-                                        " and " + std::to_string(sides[1].parts[0]) +
-                                        " give no distance");
-        lines.push_back(scene::distanceJson(*report));
-    }
-    const uint32_t objects = uint32_t(scene.objects.size());
-    if (options.propertiesObject && *options.propertiesObject >= objects)
-        throw std::invalid_argument(
-            "--properties: object " + std::to_string(*options.propertiesObject) +
-            " is not in the scene (its objects are " + range(objects) + ")");
-    std::vector<scene::SolidProperties> each;
-    for (uint32_t o = 0; o < objects; ++o)
-        if (options.propertiesAll || options.propertiesObject == o) {
-            each.push_back(*scene::objectProperties(scene, o));
-            lines.push_back(scene::propertiesJson(each.back()));
-        }
-    if (options.propertiesAll)
-        lines.push_back(scene::totalPropertiesJson(scene::sumProperties(each)));
-    return lines;
-}
-
-std::string partSetJson(const scene::PartSet& parts, uint32_t count,
-                        const std::optional<render::PartSetQuery>& rect) {
-    std::string json = "{";
-    if (rect)
-        json += "\"rect\":[" + std::to_string(rect->min.x) + "," + std::to_string(rect->min.y) +
-                "," + std::to_string(rect->max.x) + "," + std::to_string(rect->max.y) + "],";
-    std::string list;
-    // Appended piece by piece: GCC 12 warns (-Wrestrict) on "literal" + to_string() here.
-    for (uint32_t id : parts.ids()) {
-        if (!list.empty()) list += ',';
-        list += std::to_string(id);
-    }
-    const std::string counted = "\"count\":" + std::to_string(count);
-    // --select-rect names the parts first, --visible-parts the count.
-    if (rect) return json + "\"parts\":[" + list + "]," + counted + "}";
-    return json + counted + ",\"parts\":[" + list + "]}";
 }
 
 int exitCode(uint32_t validationMessages) {

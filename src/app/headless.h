@@ -66,6 +66,8 @@ struct HeadlessResult {
 // One --pick JSON line: {"x","y","part","object","local_part","name","path","depth"}, with
 // nulls for every field but x and y on background.
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
+// --face-info's line: scene::faceReportJson of the picked part, or {"part":null}.
+std::string faceInfoJson(const scene::Scene& scene, const render::PickReading& pick);
 // --edge-info's line: {"x","y"} then edgeReportJson's members, or {"x","y","part","edge":null}.
 std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& pick,
                          const std::optional<scene::EdgeRef>& edge);
