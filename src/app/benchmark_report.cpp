@@ -49,7 +49,6 @@ void rowMembers(util::JsonWriter& json, const BenchmarkRow& row) {
         .member("pyramid_ms_median", ms(row.pyramidMsMedian))
         .member("early_draw_ms_median", ms(row.earlyMsMedian))
         .member("late_draw_ms_median", ms(row.lateMsMedian))
-        .member("reused_frames", row.reusedFrames)
         .member("draws", row.draws)
         .member("draws_drawn", count(row.drawsDrawn))
         .member("triangles", row.triangles)
