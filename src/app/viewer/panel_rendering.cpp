@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/panel_commands.h"
 #include "app/viewer/panel_widgets.h"
 #include "render/culling.h"
 #include "render/technique.h"
@@ -98,28 +99,22 @@ std::string counted(uint64_t drawn, uint64_t total) {
 
 // The culling mode, freezing its lists, what this technique and mode get of it, and what the
 // newest frame drew.
-void culling(render::CullSettings& c, const PanelInfo& info) {
+void culling(const render::CullSettings& c, const PanelInfo& info, PanelActions& actions) {
     if (ImGui::BeginCombo(fitLabel("culling").c_str(), render::cullModeName(c.mode))) {
         for (const render::CullModeEntry& entry : render::cullModes()) {
-            if (ImGui::Selectable(entry.name, entry.mode == c.mode)) c.mode = entry.mode;
+            if (ImGui::Selectable(entry.name, entry.mode == c.mode) && entry.mode != c.mode)
+                actions.ask({CommandId::Culling, entry.mode});
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.description);
         }
         ImGui::EndCombo();
     }
-    ImGui::BeginDisabled(c.mode == render::CullMode::Off);
-    ImGui::Checkbox("freeze culling", &c.freeze);
+    ImGui::BeginDisabled(!info.can(CommandId::Freeze));
+    switchCheckbox("freeze culling", CommandId::Freeze, c.freeze, actions);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("keep drawing what the last culled frame chose while the camera "
                           "moves: fly around to see what was left out");
     textDisabledWrapped(info.cullingApplied.c_str());
-    if (info.listsReused) {
-        textDisabledWrapped("still view: the last culled frame's lists drawn again");
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("the view has not changed since two frames were culled: what "
-                              "they drew is drawn again without culling, so the cull and "
-                              "pyramid times fall to nothing until the camera moves");
-    }
     ImGui::TextWrapped("draws drawn    %s", counted(info.drawn.draws, info.totals.draws).c_str());
     if (info.totals.meshlets)
         ImGui::TextWrapped("meshlets       %s",
@@ -130,14 +125,15 @@ void culling(render::CullSettings& c, const PanelInfo& info) {
 
 // How frames start and resolve (render/settings.h ClearPath): auto shows the path it chose
 // and, on hover, the empty-frame times it chose by.
-void clearPathCombo(render::ClearPath& clear, const PanelInfo& info) {
+void clearPathCombo(render::ClearPath clear, const PanelInfo& info, PanelActions& actions) {
     std::string current = render::clearPathName(clear);
     if (clear == render::ClearPath::Auto)
         current += std::string(" (") + render::clearPathName(info.clearPath) + ")";
     if (ImGui::BeginCombo(fitLabel("clear").c_str(), current.c_str())) {
         for (render::ClearPath p :
              {render::ClearPath::Auto, render::ClearPath::Pass, render::ClearPath::Compute})
-            if (ImGui::Selectable(render::clearPathName(p), p == clear)) clear = p;
+            if (ImGui::Selectable(render::clearPathName(p), p == clear) && p != clear)
+                actions.ask({CommandId::Clear, p});
         ImGui::EndCombo();
     }
     if (!ImGui::IsItemHovered()) return;
@@ -192,13 +188,17 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     }
 }
 
-} // namespace
-
-void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) {
-    render::RenderSettings& s = settings.render;
+// What draws: the renderer, its mode and the settings it reads, and how frames are sampled,
+// cleared and resolved. The renderer, mode, MSAA and clear path are commands (a script line
+// asks for them too); the rest the panel edits in place.
+void pipeline(render::RenderSettings& s, const PanelInfo& info, PanelActions& actions) {
     render::PipelineKey& key = s.pipeline;
-    techniqueCombo(key.technique, info);
-    registryCombo("per-draw mode", key.mode, render::drawModes());
+    const render::Technique* technique = key.technique;
+    techniqueCombo(technique, info);
+    if (technique != key.technique) actions.ask({CommandId::Renderer, technique});
+    const render::DrawMode* mode = key.mode;
+    registryCombo("per-draw mode", mode, render::drawModes());
+    if (mode != key.mode) actions.ask({CommandId::Mode, mode});
     if (key.technique->readsSearchBatch())
         sliderOnRelease("search batch", key.searchBatch, render::searchBatchRange);
     if (key.technique->narySearch) narySearch(key.nsearch);
@@ -206,7 +206,7 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     ImGui::SliderFloat(fitLabel("part weight").c_str(), &s.shading.partWeight, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("colorize draws", &s.shading.colorizeDraws);
     ImGui::Checkbox("ignore materials", &s.shading.ignoreMaterials);
-    ImGui::Checkbox("sort draws once", &s.draws.sortDraws);
+    switchCheckbox("sort draws once", CommandId::Sort, s.draws.sortDraws, actions);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("sort the draw list by geometry, then material, when it is built "
                           "(--no-sort-draws: scene order)");
@@ -216,13 +216,16 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
         for (uint32_t n = 1; n <= 8; n *= 2) {
             if (!(info.sampleCounts & n)) continue; // only what the device renders
             std::snprintf(label, sizeof label, "%ux", n);
-            if (ImGui::Selectable(label, n == key.msaa)) key.msaa = n;
+            if (ImGui::Selectable(label, n == key.msaa) && n != key.msaa)
+                actions.ask({CommandId::Msaa, n});
         }
         ImGui::EndCombo();
     }
-    clearPathCombo(s.clear, info);
-    // Edge settings stay in place, greyed while edges are off: E moves nothing below.
-    render::EdgeSettings& edges = s.edges;
+    clearPathCombo(s.clear, info, actions);
+}
+
+// Edge settings stay in place, greyed while edges are off: E moves nothing below.
+void edgeSettings(render::EdgeSettings& edges) {
     ImGui::BeginDisabled(!edges.on);
     const render::Range widths = render::edgeWidthRange;
     ImGui::SliderScalar(fitLabel("edge width").c_str(), ImGuiDataType_U32, &edges.width,
@@ -233,12 +236,21 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     sameLineIfFits(checkboxWidth("hovered"));
     ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
     ImGui::EndDisabled();
-    culling(s.culling, info);
+}
+
+} // namespace
+
+void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) {
+    pipeline(settings.render, info, actions);
+    edgeSettings(settings.render.edges);
+    culling(settings.render.culling, info, actions);
     levelsOfDetail(settings, info);
     // The exploded view, by assembly level (scene/explode.h); --animate's loop, for the
     // benchmark, has no place here.
-    ImGui::SliderFloat(fitLabel("explode").c_str(), &settings.animation.explode, 0.0f, 1.0f, "%.2f",
+    float explode = settings.animation.explode;
+    ImGui::SliderFloat(fitLabel("explode").c_str(), &explode, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
+    if (explode != settings.animation.explode) actions.ask({CommandId::Explode, explode});
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("move the parts apart, assembly level by level: sub-assemblies from "
                           "their assembly's centre, their parts within them (--explode F)");
@@ -248,17 +260,18 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
                        last.pipelineCached ? "cached" : "built",
                        last.drawsKept ? ", draws kept" : "");
     ImGui::TextWrapped("pipelines cached %zu (R clears)", info.cachedPipelines);
-    actions.resetSettings = ImGui::Button("Reset to defaults");
+    commandButton("Reset to defaults", CommandId::Defaults, info, actions);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the settings kept between runs (renderer, mode, MSAA, edges, "
                           "culling, levels of detail, projection) back to the defaults");
 }
 
-void sceneSection(SceneSettings& s, const PanelInfo& info) {
+void sceneSection(SceneSettings& s, const PanelInfo& info, PanelActions& actions) {
     int copies = int(s.copies);
     if (ImGui::InputInt(fitLabel("model copies").c_str(), &copies, 1, 4,
-                        ImGuiInputTextFlags_EnterReturnsTrue))
-        s.copies = uint32_t(std::clamp(copies, 1, 256));
+                        ImGuiInputTextFlags_EnterReturnsTrue) &&
+        uint32_t(std::clamp(copies, 1, 256)) != s.copies)
+        actions.ask({CommandId::Copies, uint32_t(std::clamp(copies, 1, 256))});
     ImGui::TextUnformatted("copies along");
     for (uint32_t bit = 0; bit < 3; ++bit) {
         bool on = s.copyAxes & (1u << bit);
