@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# chart_test.sh ROOT - scripts/benchmark_chart.py on the committed H100 runs (the full runs
+# chart_test.sh ROOT BUILD - scripts/benchmark_chart.py on the committed H100 runs (the full runs
 # and the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are
 # the JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
 # scripts/path_chart.py on a committed camera-path run, scripts/lod_chart.py on the
 # levels-of-detail runs, and scripts/fixed_cost_chart.py on the clear paths' runs, likewise.
-# Then docs/benchmarks.md's tables are what scripts/bench_tables.py prints from the runs they
-# cite.
+# Then the generated parts of the docs: docs/benchmarks.md's tables are what
+# scripts/bench_tables.py prints from the runs they cite, and the counts of tests in
+# docs/testing.md and docs/reliability.md what scripts/test_counts.py finds in BUILD.
 set -uo pipefail
 root=$1
+build=$2
 runs=$root/docs/benchmarks/h100-2026-11-23-issue14/final
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -147,5 +149,9 @@ sed '0,/^| empty frame (`--visible 0`) | [0-9.]*/s//| empty frame (`--visible 0`
 cmp -s "$root/docs/benchmarks.md" "$work/changed.md" && fail "the page has no empty frame row to change"
 out=$(/usr/bin/python3 "$root/scripts/bench_tables.py" --check "$work/changed.md" 2>&1)
 [[ $? -ne 0 && $out == *"9.999"* ]] || fail "a changed table passed: $out"
+# The counts of tests in docs/testing.md and docs/reliability.md are the build's.
+/usr/bin/python3 "$root/scripts/test_counts.py" --check "$build" >"$work/counts.txt" 2>&1 ||
+    fail "test counts: $(cat "$work/counts.txt")"
+cat "$work/counts.txt" # says so where this build cannot tell
 echo "chart_test: $failures failed"
 exit $((failures > 0))
