@@ -18,8 +18,9 @@ docs/benchmarks/ that the table cites, so that the page repeats the runs and not
 
 A block's arguments: KIND FOLDER [commit=HASH] [KEY=VALUE...]. The commit is the build the
 folder's runs were made with (the JSON does not record it; h100-runs.sh writes it into the
-folder's runs.txt, which is read where no commit= is given).
+folder's runs*.txt, read where no commit= is given).
 """
+import glob
 import os
 import sys
 
@@ -43,8 +44,7 @@ def split(args):
 def commit_of(folder, params):
     if "commit" in params:
         return params["commit"]
-    log = os.path.join(runs.BENCH, folder, "runs.txt")
-    if os.path.exists(log):
+    for log in sorted(glob.glob(os.path.join(runs.BENCH, folder, "runs*.txt"))):
         with open(log) as f:
             for line in f:
                 if line.startswith("commit: "):

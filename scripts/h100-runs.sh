@@ -2,14 +2,15 @@
 # h100-runs.sh [OPTIONS] IDVIEW OUT - makes the run folder that docs/benchmarks.md's tables
 # need: every `idview --headless --benchmark` run the page cites, with exactly the flags it
 # cites, each into OUT/NAME.json (its table on stdout in NAME.txt, its progress in NAME.log),
-# and a line per run in OUT/runs.txt (name, seconds, command). IDVIEW is the program or the
+# and a line per run in OUT/runs.txt (name, seconds, command; runs-partN.txt with --part, so
+# that the parts' files unpack side by side into one folder). IDVIEW is the program or the
 # bundle's `run` (shared/gpu/README.md); Motor-c.brep is read from --models.
 #
 #   --part N        only the runs of part N (1 to 4; default: all), each part one command
 #                   of the device, under 9 minutes (the estimates below)
 #   --only A,B      only the runs named
 #   --models DIR    where Motor-c.brep is (default: IDVIEW's folder/models)
-#   --commit HASH   the build's commit, written into runs.txt (bench_tables.py cites it)
+#   --commit HASH   the build's commit, written into the runs file (bench_tables.py cites it)
 #   --pack FILE     after each run, pack OUT into FILE (.tgz), so a command stopped by its
 #                   time limit still returns every run it finished
 #   --extra 'ARGS'  flags added to every command after its own (later flags win), e.g.
@@ -50,12 +51,14 @@ if [[ $# -ne 2 ]]; then
     exit 2
 fi
 idview=$1 out=$2
+log=$out/runs.txt
+[[ $part == all ]] || log=$out/runs-part$part.txt
 models=${models:-$(dirname "$idview")/models}
 # The parts hidden or isolated by the hiding runs: every third unique part ID below 3,000.
 thirds=$(seq -s, 0 3 2997)
 if [[ $list -eq 0 ]]; then
     mkdir -p "$out"
-    [[ -z $commit ]] || echo "commit: $commit" >>"$out/runs.txt"
+    [[ -z $commit ]] || echo "commit: $commit" >>"$log"
 fi
 
 # run PART NAME FLAGS...: one benchmark run. bench_tables.py reads the runs from --list.
@@ -78,11 +81,11 @@ run() {
         >"$out/$name.txt" 2>"$out/$name.log" || status=$?
     if [[ $status -ne 0 ]]; then
         echo "h100-runs: $name failed (exit $status): $(tail -1 "$out/$name.log")" >&2
-        echo "$name: failed (exit $status) after $((SECONDS - start)) s: $line" >>"$out/runs.txt"
+        echo "$name: failed (exit $status) after $((SECONDS - start)) s: $line" >>"$log"
         rm -f "$out/$name.json"
         failed=$((failed + 1))
     else
-        echo "$name: $((SECONDS - start)) s: $line" >>"$out/runs.txt"
+        echo "$name: $((SECONDS - start)) s: $line" >>"$log"
     fi
     [[ -z $pack ]] || tar -czf "$pack" -C "$out" .
 }
@@ -162,7 +165,7 @@ for msaa in 1 4; do
 done
 [[ $list -eq 1 ]] && exit 0
 if [[ $failed -gt 0 ]]; then
-    echo "h100-runs: $failed run(s) failed, in $out (runs.txt says which)" >&2
+    echo "h100-runs: $failed run(s) failed, in $out ($(basename "$log") says which)" >&2
     exit 1
 fi
 echo "h100-runs: done, in $out" >&2
