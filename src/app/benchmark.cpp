@@ -134,10 +134,9 @@ struct RowTimer {
                       bool first);
 
   private:
-    // The CPU's times of the timed frames, and how many of them reused the culled lists.
+    // The CPU's times of the timed frames.
     struct CpuTimes {
         std::vector<double> total, record;
-        uint64_t reusedFrames = 0;
     };
     // Draws the warm-up and timed frames as configured, the last one read back.
     CpuTimes drawFrames();
@@ -146,9 +145,7 @@ struct RowTimer {
 RowTimer::CpuTimes RowTimer::drawFrames() {
     CpuTimes times;
     const uint32_t total = warmup + options.frames;
-    uint64_t reusedBefore = 0;
     for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
-        if (f == warmup) reusedBefore = rig.renderer.reusedFrames();
         render::FrameSlot& slot = rig.slots.begin(frameNumber);
         // --animate: objects move while being timed, the compute pass included.
         params.explode = explodeAt(options.animation, frameNumber);
@@ -167,7 +164,6 @@ RowTimer::CpuTimes RowTimer::drawFrames() {
         }
     }
     rig.slots.finish();
-    times.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
     return times;
 }
 
@@ -204,7 +200,6 @@ BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSetti
     row.lodError = settings.lod.errorPixels;
     row.lodApplied = lodApplied(settings);
     row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
-    row.reusedFrames = cpu.reusedFrames;
     row.cullMsMedian = percentile(cullMs, 0.5);
     row.pyramidMsMedian = percentile(pyramidMs, 0.5);
     row.earlyMsMedian = percentile(earlyMs, 0.5);

@@ -43,7 +43,7 @@ std::string rowJson(const BenchmarkRow& row) {
         << ",\"pyramid_ms_median\":" << fixed(row.pyramidMsMedian, 4)
         << ",\"early_draw_ms_median\":" << fixed(row.earlyMsMedian, 4)
         << ",\"late_draw_ms_median\":" << fixed(row.lateMsMedian, 4)
-        << ",\"reused_frames\":" << row.reusedFrames << ",\"draws\":" << row.draws
+        << ",\"draws\":" << row.draws
         << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1) << ",\"triangles\":" << row.triangles
         << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)
         << ",\"meshlets_drawn\":" << fixed(row.meshletsDrawn, 1)

@@ -258,7 +258,6 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                         : std::nullopt);
             }
             const uint64_t timedBefore = slots.timedFrames();
-            const uint64_t reusedBefore = renderer.reusedFrames();
             for (uint32_t frame = 0; frame < options.frames; ++frame, ++frameNumber) {
                 render::FrameSlot& slot = slots.begin(frameNumber);
                 params.explode = explodeAt(options.animation, frameNumber);
@@ -292,7 +291,6 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                                      slots.frameTimes().end());
             result.cullStats.assign(slots.cullStats().end() - long(timed), slots.cullStats().end());
             result.cullTotals = renderer.cullTotals();
-            result.reusedFrames = renderer.reusedFrames() - reusedBefore;
             result.color = readback.colorBytes();
             result.ids = readback.idValues();
             result.pipelineCache = renderer.driverCache().status();

@@ -53,7 +53,6 @@ struct HeadlessResult {
     std::vector<render::FrameTimes> frameTimes;
     std::vector<gpu::CullStats> cullStats;
     render::CullCounts cullTotals;
-    uint64_t reusedFrames = 0; // timed frames that drew the last culled lists again (still view)
     std::string deviceName;
     // From just before the device was created to the first frame's fence (all of the
     // sequence's results hold the same), and the pipeline cache's status when it was read.

@@ -367,7 +367,6 @@ PanelInfo Viewer::panelInfo() const {
     const render::PipelineKey& key = renderer.settings().pipeline;
     info.cullingApplied =
         render::describeCulling(*key.technique, *key.mode, renderer.settings().culling.mode);
-    info.listsReused = renderer.lastFrameReused();
     info.lodChosen =
         render::cullPlan(*key.technique, *key.mode, renderer.settings().culling.mode).gpuLists;
     info.totals = renderer.cullTotals();

@@ -139,7 +139,6 @@ struct PanelInfo {
     // Culling: what the technique and mode get of the mode chosen, what the newest completed
     // frame drew of the totals, and the GPU time of the cull passes and the depth pyramid.
     std::string cullingApplied;
-    bool listsReused = false; // a still view: the last culled frame's lists drawn again
     render::CullCounts drawn, totals;
     double cullMs = 0.0, pyramidMs = 0.0;
     // Levels of detail: whether the technique, mode and culling chosen have the cull pass

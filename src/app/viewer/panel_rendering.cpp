@@ -113,13 +113,6 @@ void culling(render::CullSettings& c, const PanelInfo& info) {
         ImGui::SetTooltip("keep drawing what the last culled frame chose while the camera "
                           "moves: fly around to see what was left out");
     textDisabledWrapped(info.cullingApplied.c_str());
-    if (info.listsReused) {
-        textDisabledWrapped("still view: the last culled frame's lists drawn again");
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("the view has not changed since two frames were culled: what "
-                              "they drew is drawn again without culling, so the cull and "
-                              "pyramid times fall to nothing until the camera moves");
-    }
     ImGui::TextWrapped("draws drawn    %s", counted(info.drawn.draws, info.totals.draws).c_str());
     if (info.totals.meshlets)
         ImGui::TextWrapped("meshlets       %s",
