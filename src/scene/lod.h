@@ -17,7 +17,7 @@
 namespace scene {
 
 // Levels 0 (full detail) to maxLevels - 1.
-constexpr uint32_t maxLevels = 4;
+constexpr uint32_t maxLevels = gpu::LOD_MAX_LEVELS; // CullStats counts each
 
 struct LodOptions {
     uint32_t levels = maxLevels; // including full detail: 1 builds none
