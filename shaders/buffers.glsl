@@ -1,14 +1,16 @@
-// buffers.glsl - what every idview shader includes first: the extensions the shared structs
-// need, the shared.h family, and every buffer-reference type the shaders read or write
-// memory through, each declared here once. A shader names a buffer by the address a struct
-// of shared.h holds (FrameData::objectsAddress...) cast to one of these. None is declared
-// readonly or writeonly, so that one type serves the shaders that read it and the one that
-// writes it.
+// buffers.glsl - what every idview shader includes first: the extensions the shared code
+// needs (all here, so that no include adds one after code), the shared.h family, and every
+// buffer-reference type the shaders read or write memory through, each declared here once. A shader
+// names a buffer by the address a struct of shared.h holds (FrameData::objectsAddress...) cast to
+// one of these. None is declared readonly or writeonly, so that one type serves the shaders that
+// read it and the one that writes it.
 #ifndef IDVIEW_BUFFERS_GLSL
 #define IDVIEW_BUFFERS_GLSL
 
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_buffer_reference : require
+#extension GL_EXT_control_flow_attributes : require
+#extension GL_EXT_shader_atomic_int64 : require
 
 #include "shared.h"
 

@@ -4,8 +4,6 @@
 // Draws or (draw, cluster | meshlet) pairs are spread over workgroups of CULL_GROUP_SIZE;
 // compaction keeps the list's order, so where two surfaces share a depth, the one drawn
 // first wins, as without culling.
-#extension GL_EXT_control_flow_attributes : require
-
 #include "cull_decide.glsl"
 #include "cull_draws.glsl"
 #include "cull_runs.glsl"

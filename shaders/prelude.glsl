@@ -1,8 +1,5 @@
 // prelude.glsl - what every shader of the scene pipelines starts with: the shared structs and
 // buffer references (buffers.glsl), the push constant block and the loads every stage makes.
-#extension GL_EXT_control_flow_attributes : require
-#extension GL_EXT_shader_atomic_int64 : require
-
 #include "buffers.glsl"
 
 layout(push_constant, std430) uniform PushBlock {

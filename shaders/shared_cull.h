@@ -119,9 +119,6 @@ IDV_CONST PYRAMID_GROUP = 32;
 IDV_CONST PYRAMID_LEVELS_PER_PASS = 6;
 IDV_CONST PYRAMID_MAX_LEVELS = 16;
 
-// Levels of detail, full detail included (scene/lod.h's maxLevels is this).
-IDV_CONST LOD_MAX_LEVELS = 4;
-
 // A draw's box for culling, in its geometry's coordinates, for mesh draws where its meshlet
 // bits start (each draw's run of bits starting on a word, so a task workgroup's 32 have one
 // word to themselves), its clusters (CullPush::clusterBoxesAddress) and, for runs and mesh

@@ -36,6 +36,19 @@ IDV_CONST FRAME_HIDING = 4u;           // some part is hidden: culling skips dra
 // Shade each object in the colour of the level of detail it is drawn at (shading.glsl).
 IDV_CONST FRAME_TINT_LEVELS = 8u;
 
+// Levels of detail, full detail included (scene/lod.h's maxLevels is this).
+IDV_CONST LOD_MAX_LEVELS = 4;
+// FRAME_TINT_LEVELS's colours (linear RGB), which the panel's legend shows too: grey full
+// detail, then blue, yellow and red.
+#define IDV_LEVEL_TINTS                                                                            \
+    vec3(0.75, 0.75, 0.75), vec3(0.1, 0.55, 0.95), vec3(0.95, 0.75, 0.1), vec3(0.9, 0.2, 0.3)
+#ifdef __cplusplus
+inline const vec3 LEVEL_TINTS[LOD_MAX_LEVELS] = {IDV_LEVEL_TINTS};
+#else
+const vec3 LEVEL_TINTS[LOD_MAX_LEVELS] = vec3[](IDV_LEVEL_TINTS);
+#endif
+#undef IDV_LEVEL_TINTS
+
 // Section planes (scene/section.h, whose maxSectionPlanes is this).
 IDV_CONST SECTION_PLANES_MAX = 3u;
 

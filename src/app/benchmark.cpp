@@ -49,9 +49,9 @@ rows(const Options& options, const vk::DeviceInfo& device,
         settings.pipeline.mode = &mode;
         settings.culling.mode = cull;
         settings.lod.errorPixels = lodError;
-        // Levels of detail are chosen by the cull pass alone: where there is none, a row
-        // with an error would time full detail again.
-        if (lodError > 0.0f && !render::cullPlan(technique, mode, cull).gpuLists) return;
+        // Levels of detail are chosen only where the cull pass lists the draws: elsewhere a
+        // row with an error would time full detail again.
+        if (lodError > 0.0f && !render::levelsChosenIn(mode)) return;
         list.push_back(settings);
     };
     for (float lodError : options.benchmarkLodErrors)
@@ -71,10 +71,7 @@ rows(const Options& options, const vk::DeviceInfo& device,
 
 // Whether the row's levels of detail were chosen (else it drew full detail).
 bool lodApplied(const render::RenderSettings& settings) {
-    return settings.lod.errorPixels > 0.0f &&
-           render::cullPlan(*settings.pipeline.technique, *settings.pipeline.mode,
-                            settings.culling.mode)
-               .gpuLists;
+    return settings.lod.errorPixels > 0.0f && render::levelsChosenIn(*settings.pipeline.mode);
 }
 
 // Median over the frames of what the culling let through.

@@ -86,7 +86,8 @@ std::vector<Flag> cullingFlags(const Options& d) {
     return {
         {"--culling", "MODE",
          "leave out what cannot show, the images unchanged: off, frustum or occlusion "
-         "(two-phase, against the last ID image and a depth pyramid)" +
+         "(two-phase: first what passed the last frame's test, then the rest against a depth "
+         "pyramid of that)" +
              byDefault(render::cullModeName(d.render.culling.mode)) +
              "; what each per-draw mode gets: --list-renderers; with --benchmark a comma "
              "list or all (default)",
@@ -100,8 +101,9 @@ std::vector<Flag> cullingFlags(const Options& d) {
          [](Options& o, auto&) { o.render.culling.freeze = true; }},
         {"--lod-error", "PX",
          "draw each object at its coarsest level of detail whose error stays under PX "
-         "pixels, chosen on the GPU by the cull pass (culling on, mdi modes; elsewhere full "
-         "detail); 0 is full detail; builds every level unless --lod-levels says otherwise" +
+         "pixels, chosen on the GPU by the cull pass (mdi modes, culling on or off; push mode "
+         "draws full detail); 0 is full detail; builds every level unless --lod-levels says "
+         "otherwise" +
              byDefault(d.render.lod.errorPixels) + "; with --benchmark a comma list",
          [](Options& o, auto& v) {
              o.benchmarkLodErrors.clear();

@@ -25,8 +25,8 @@ const std::vector<CullModeEntry>& cullModes() {
         {CullMode::Off, "off", "draw every object every frame"},
         {CullMode::Frustum, "frustum", "leave out what lies outside the view frustum"},
         {CullMode::Occlusion, "occlusion",
-         "frustum, and two-phase occlusion: what the last ID image showed first, then the "
-         "rest against a depth pyramid of that"},
+         "frustum, and two-phase occlusion: what passed the last frame's test first, then "
+         "the rest against a depth pyramid of that"},
     };
     return list;
 }

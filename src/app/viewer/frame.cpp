@@ -347,8 +347,7 @@ PanelInfo Viewer::panelInfo() const {
     const render::PipelineKey& key = renderer.settings().pipeline;
     info.cullingApplied =
         render::describeCulling(*key.technique, *key.mode, renderer.settings().culling.mode);
-    info.lodChosen =
-        render::cullPlan(*key.technique, *key.mode, renderer.settings().culling.mode).gpuLists;
+    info.lodChosen = render::levelsChosenIn(*key.mode);
     info.totals = renderer.cullTotals();
     if (!slots_.cullStats().empty())
         info.drawn = render::countsOf(slots_.cullStats().back(), key.technique->usesMeshShader());

@@ -52,8 +52,8 @@ void timing(const PanelInfo& info) {
                           "compute passes over the ID image after the scene pass");
     ImGui::TextWrapped("cull, pyramid [ms] %.3f, %.3f", info.cullMs, info.pyramidMs);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("time of the cull passes (and the visible-part pass culling reads) "
-                          "and of the depth pyramid; included in Render");
+        ImGui::SetTooltip("time of the cull passes and of the depth pyramid; included in "
+                          "Render");
     ImGui::TextWrapped("CPU record [ms]  %.3f", info.cpuRecordMs);
     if (!info.gpuHistory.empty())
         ImGui::PlotLines("##gpu", info.gpuHistory.data(), int(info.gpuHistory.size()), 0,

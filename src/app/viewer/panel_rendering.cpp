@@ -3,6 +3,7 @@
 #include "app/viewer/panel_rendering.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <type_traits>
@@ -17,6 +18,14 @@
 
 namespace app {
 namespace {
+
+// A linear colour as the panel shows it: sRGB-encoded, as the swapchain shows the picture.
+ImVec4 displayed(glm::vec3 linear) {
+    auto encode = [](float c) {
+        return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    };
+    return {encode(linear.r), encode(linear.g), encode(linear.b), 1.0f};
+}
 
 std::string bytes(uint64_t value) {
     char text[32];
@@ -168,20 +177,16 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", !usable && settings.scene.lodLevels < 2
                                     ? "build levels of detail first (LOD levels built)"
-                                : !usable ? "levels are chosen by the cull pass: culling "
-                                            "frustum or occlusion in an mdi mode"
+                                : !usable ? "levels are chosen by the cull pass, which "
+                                            "lists the draws in the mdi modes: push mode "
+                                            "draws full detail"
                                           : "each object drawn at its coarsest level whose "
                                             "error stays under this many pixels; 0: full "
                                             "detail");
     ImGui::Checkbox("tint by level", &settings.render.shading.tintLevels);
-    // The colours of shading.glsl's levelTint, as displayed.
-    static const ImVec4 tints[] = {{0.87f, 0.87f, 0.87f, 1},
-                                   {0.35f, 0.76f, 0.98f, 1},
-                                   {0.98f, 0.88f, 0.35f, 1},
-                                   {0.95f, 0.48f, 0.58f, 1}};
     if (settings.render.lod.errorPixels <= 0.0f || !usable) return;
     for (uint32_t l = 0; l < info.drawn.levelTriangles.size(); ++l) {
-        ImGui::TextColored(tints[l], "level %u", l);
+        ImGui::TextColored(displayed(gpu::LEVEL_TINTS[l]), "level %u", l);
         ImGui::SameLine();
         ImGui::TextWrapped("%llu triangles",
                            static_cast<unsigned long long>(info.drawn.levelTriangles[l]));
