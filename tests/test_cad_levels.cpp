@@ -1,13 +1,15 @@
 // test_cad_levels.cpp - CAD levels of detail (scene/cad/cad_levels.h): coarser tessellations of
 // the same faces, one part each, no face lost, as close to full detail as their recorded
 // error says (measured here both ways, vertex by vertex), within the memory the policy allows,
-// and as free of cracks between faces as full detail.
+// and as free of cracks between faces as full detail; a cancel stops them in words.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <string>
 #include <tuple>
 
 #include "scene/cad/cad_loader.h"
@@ -156,5 +158,29 @@ TEST(CadLevels, CoarserTessellationsOfTheSameFaces) {
         }
         EXPECT_GE(levels, 1u) << name;
         EXPECT_LE(double(levelBytes), double(policy.memory) * double(fullBytes)) << name;
+    }
+}
+
+// Cancelling while the levels are made, between tessellations (the first half of the stage)
+// or while their errors are measured on every thread (the second), stops the load in words.
+TEST(CadLevels, ACancelStopsTheLevelsStage) {
+    const fs::path path = kData / "occ/Motor-c.brep";
+    if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    for (double at : {0.2, 0.7}) {
+        std::atomic<bool> cancel{false};
+        double last = 0.0;
+        const auto progress = [&](const char* stage, double fraction) {
+            if (std::string(stage) != "levels of detail") return;
+            last = fraction;
+            if (fraction >= at) cancel = true;
+        };
+        try {
+            loadCad(path.string(), {}, progress, maxLevels, &cancel);
+            ADD_FAILURE() << "a load cancelled at " << at << " of its levels finished";
+        } catch (const ModelError& e) {
+            EXPECT_EQ(std::string(e.what()), path.string() + ": cancelled");
+        }
+        EXPECT_TRUE(cancel);
+        EXPECT_LT(last, 1.0) << "the stage ran to its end";
     }
 }
