@@ -28,8 +28,11 @@ bool clusterPasses(FrameData frame, uint d, uint drawBits, uint pair) {
 // Whether the early pass draws the cluster of `pair` (of `object`, CULL_PAIR_* bits
 // `pairBits`): the clusters before its object's history end, so that the early clusters of an
 // object are always its first ones and no cluster is drawn after a later one (where two tie
-// in depth, the first drawn wins).
+// in depth, the first drawn wins); in a still view each cluster with history by itself
+// (shared_cull.h says why no order changes then).
 bool earlyCluster(uint pair, uint object, uint pairBits) {
+    if ((cullFrame().flags & FRAME_VIEW_UNCHANGED) != 0u)
+        return (pairBits & CULL_PAIR_HISTORY) != 0u;
     return pair < cullState().values[historyEndWord(object)];
 }
 

@@ -23,8 +23,13 @@
 // CULL_PAIR_HISTORY bit of a cluster, the bit of a meshlet (meshletBits). It decides what
 // the early pass draws. For runs, an object's early clusters are its first ones, up to its
 // last cluster with history (its history end, a word per object), so that its clusters
-// keep their order; a mesh draw goes early where one of its meshlets has history, and the
-// task shader draws those meshlets. Every technique, the floors included, culls by this.
+// keep their order where two tie in depth; a mesh draw goes early where one of its meshlets
+// has history, and the task shader draws those meshlets. Every technique, the floors
+// included, culls by this.
+// A still view (FRAME_VIEW_UNCHANGED: nothing moved since a frame culled in two passes)
+// draws each cluster with history early by itself: one without lay wholly behind that
+// frame's early depth, so behind its final depth, which this frame draws again; drawn late,
+// it writes no sample and ties none, so no order can change.
 //
 // Phase (CullPush::phase,  | cull.comp steps, runs           | cull.comp steps, draws   | task
 // shader draws DrawPush::cullPhase)     |                                 | |

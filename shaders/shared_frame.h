@@ -35,6 +35,10 @@ IDV_CONST FRAME_IGNORE_MATERIALS = 2u; // every object shaded with NEUTRAL_MATER
 IDV_CONST FRAME_HIDING = 4u;           // some part is hidden: culling skips draws of hidden parts
 // Shade each object in the colour of the level of detail it is drawn at (shading.glsl).
 IDV_CONST FRAME_TINT_LEVELS = 8u;
+// The view, the placement, the hidden parts, the cut, the levels and the targets are those of
+// the frame before, which culled in two passes: its history is exact for this one (a still
+// view, shared_cull.h).
+IDV_CONST FRAME_VIEW_UNCHANGED = 16u;
 
 // Levels of detail, full detail included (scene/lod.h's maxLevels is this).
 IDV_CONST LOD_MAX_LEVELS = 4;

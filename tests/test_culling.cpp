@@ -36,8 +36,9 @@ struct PathCase {
     uint32_t msaa;
     Pipelines pipelines;
     // The camera stands still instead of flying the dolly path: every frame culls again from
-    // the history the one before left, which settles on what the view shows. Only occlusion
-    // culling keeps a history, so a still case leaves frustum out.
+    // the history the one before left, from the second frame on each cluster with history
+    // by itself (FRAME_VIEW_UNCHANGED). Only occlusion culling keeps a history, so a still
+    // case leaves frustum out.
     bool still = false;
     // Orthographic: the opening view zoomed in to a third of the fitted distance (so the
     // frustum leaves parts out), orbiting the target about the up axis, since an ortho dolly
@@ -213,6 +214,39 @@ INSTANTIATE_TEST_SUITE_P(
                pipelinesName(info.param.pipelines) + (info.param.still ? "_still" : "") +
                (info.param.ortho ? "_ortho" : "") + (info.param.section ? "_section" : "");
     });
+
+// In a still view cluster runs draw first just the clusters that passed the last frame's
+// test, each by itself (FRAME_VIEW_UNCHANGED): fewer triangles than an object's first
+// clusters up to the last that passed (what a moving view draws first), with the images of
+// culling off either way.
+TEST(CullingStill, ClusterRunsDrawFewerTrianglesOnceTheViewStandsStill) {
+    const app::LoadedScene loaded = app::loadScene(app::SceneSettings{});
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
+    const std::filesystem::path moving = testing_support::shaderCopy("still-as-moving");
+    testing_support::replaceInFile(moving / "cull_runs.glsl",
+                                   "if ((cullFrame().flags & FRAME_VIEW_UNCHANGED) != 0u)",
+                                   "if (false)");
+    std::vector<render::RenderSettings> configs;
+    for (render::CullMode mode : {render::CullMode::Off, render::CullMode::Occlusion}) {
+        configs.push_back(testing_support::settingsFor(*render::findTechnique("vertex-fs"),
+                                                       *render::findDrawMode("mdi-baseinstance")));
+        configs.back().culling.mode = mode;
+    }
+    app::Options o = testing_support::headlessOptions(W, H, kFrames);
+    const auto still = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    o.shaderDir = moving.string();
+    const auto asMoving = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
+    std::filesystem::remove_all(moving);
+    ASSERT_EQ(still.size(), 2u);
+    ASSERT_EQ(asMoving.size(), 2u);
+    EXPECT_EQ(still.front().validationMessages, 0u);
+    EXPECT_TRUE(still[1].ids == still[0].ids);
+    EXPECT_TRUE(still[1].color == still[0].color);
+    EXPECT_TRUE(asMoving[1].ids == still[0].ids);
+    const uint64_t drawn = render::countsOf(still[1].cullStats.back(), false).triangles;
+    const uint64_t drawnAsMoving = render::countsOf(asMoving[1].cullStats.back(), false).triangles;
+    EXPECT_LT(drawn, drawnAsMoving);
+}
 
 // The per-frame histories (counters, GPU times) are in frame order, whichever frame slot
 // the run ends on: the counters of a run along the dolly path equal those of the same run

@@ -40,13 +40,26 @@ CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     return counts;
 }
 
-Renderer::FrameCulling Renderer::planFrame(const FrameParams& params) {
+Renderer::FrameCulling Renderer::planFrame(const FrameParams& params, const SceneTargets& targets) {
     FrameCulling c;
     c.plan = cullingPlan();
     // Freezing draws the lists of the last culled frame; until there is one, it culls.
     const bool culledBefore = culledLists_.lock() == draws_->cull;
     c.frozen = settings_.culling.freeze && c.plan.culls() && culledBefore;
     if (c.plan.culls() && !c.frozen) culledLists_ = draws_->cull;
+    std::optional<CulledView> view;
+    if (c.plan.twoPasses && !c.frozen)
+        view = CulledView{params.viewProj,
+                          params.origin,
+                          params.explode,
+                          hiddenVersion_,
+                          targets.extent().width,
+                          targets.extent().height,
+                          uint32_t(targets.pass().samples()),
+                          settings_.lod.errorPixels,
+                          settings_.section};
+    c.viewUnchanged = view && culledBefore && view == lastCulledView_;
+    lastCulledView_ = view;
     if (!c.plan.cpuFrustum) return c;
     if (c.frozen) {
         c.objectShown = frozenObjects_;
@@ -77,7 +90,8 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
                   (shading.tintLevels ? gpu::FRAME_TINT_LEVELS : 0u) |
                   (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u) |
-                  (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u);
+                  (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u) |
+                  (culling.viewUnchanged ? gpu::FRAME_VIEW_UNCHANGED : 0u);
     frame.sampleZero = targets.pass().sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();

@@ -212,6 +212,7 @@ void Renderer::reloadShaders() {
     idPasses_ = std::move(idPasses);
     composed_.reset(); // their box of the hovered part's tiles is not written yet
     culler_ = std::move(culler);
+    lastCulledView_.reset(); // the history is of what the old shaders found
 }
 
 void Renderer::setSelection(const scene::PartSet& selected) {
@@ -227,6 +228,7 @@ void Renderer::setSelection(const scene::PartSet& selected) {
 void Renderer::setHidden(const scene::PartSet& hidden) {
     if (!sceneGpu_ || hidden.partCount() != partCount_)
         throw vk::Error("Renderer::setHidden: not a set over the current scene's parts");
+    ++hiddenVersion_;
     ++changes_;
     auto pipeline = pipeline_;
     if (hidden.empty() != hiddenSet_.empty()) {
@@ -310,7 +312,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     composed_.reset(); // the images the composition reads are drawn again
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
-    FrameCulling culling = planFrame(params);
+    FrameCulling culling = planFrame(params, targets);
     const gpu::FrameData frame = frameData(targets, params, culling);
     vkCmdUpdateBuffer(cmd, slot.frameData.handle(), 0, sizeof frame, &frame);
     slot.pickPixel = params.pickPixel;

@@ -188,6 +188,7 @@ class Renderer {
     struct FrameCulling {
         CullPlan plan;
         bool frozen = false;              // drawing the lists of the last culled frame
+        bool viewUnchanged = false;       // FRAME_VIEW_UNCHANGED
         std::vector<uint8_t> objectShown; // push mode: the CPU's frustum test per object
         Issued issued;                    // push mode: the first pass's draws
     };
@@ -205,7 +206,7 @@ class Renderer {
                              const FrameCulling& culling) const;
     // This frame's culling; remembers what freezing needs (the lists culled, push mode's
     // objects shown).
-    FrameCulling planFrame(const FrameParams& params);
+    FrameCulling planFrame(const FrameParams& params, const SceneTargets& targets);
     void beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
                    VkDeviceAddress frame, bool clearColor) const;
     void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
@@ -248,6 +249,20 @@ class Renderer {
     // again once there are some), and the objects push mode's CPU test showed then.
     std::weak_ptr<const CullBuffers> culledLists_;
     std::vector<uint8_t> frozenObjects_;
+    // What the last frame was drawn with, where it culled in two passes: a frame drawn with
+    // the same is a still view (FRAME_VIEW_UNCHANGED).
+    struct CulledView {
+        glm::mat4 viewProj;
+        glm::dvec3 origin; // what viewProj and the objects' matrices are relative to
+        float explode;
+        uint64_t hiddenVersion;
+        uint32_t width, height, samples; // of the targets
+        float lodErrorPixels;            // which levels of detail are drawn
+        scene::Section section;          // a cut shows what the view hid before
+        bool operator==(const CulledView&) const = default;
+    };
+    std::optional<CulledView> lastCulledView_;
+    uint64_t hiddenVersion_ = 0; // counts setHidden() calls
     uint64_t changes_ = 0;
     // What the composed image of `targets` was made from, blink aside, while nothing else
     // wrote to the images it reads: a scene pass, a new selection or new ID passes forget it.
