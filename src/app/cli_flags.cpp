@@ -157,6 +157,11 @@ const std::vector<Flag>& flags() {
              "~/.cache/idview): CAD files' tessellations, and the driver's compiled pipelines "
              "(then kept in memory only)",
              [](Options& o, auto&) { o.scene.cadCache = false; }},
+            {"--progress", nullptr,
+             "CAD files: print the load's progress on stderr even when it is no terminal (a "
+             "pipe, a log), from the start; at a terminal it shows once a load has taken a "
+             "second",
+             [](Options& o, auto&) { o.scene.progress = true; }},
             {"--scene", "SPEC",
              "built-in scene instead of a model: assembly, tiles (the test layout) or "
              "procedural[:preset=small|car-like][,seed=N]",
