@@ -11,17 +11,16 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <functional>
 #include <mutex>
-#include <thread>
 
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
 #include "render/technique.h"
 #include "test_support.h"
+#include "util/deadline.h"
 #include "vk/check.h"
 
 // Every call of this test binary (idview_core is linked into it) to a Vulkan function that
@@ -40,7 +39,7 @@ Fn loaderFunction(const char* name) {
 // opens. While a switch runs (watched), the waiting functions below open the gate first, so
 // that a switch that waits fails its checks instead of hanging; a wait they do not see (a
 // driver lock: lavapipe builds a pipeline under the lock its queue thread holds while it runs
-// a frame) has the gate opened after a minute (SafetyNet).
+// a frame) has the gate opened after a minute (Lifetimes' safety net).
 class FrameGate {
   public:
     void create(VkDevice device) {
@@ -254,33 +253,6 @@ TEST(PipelineCache, SwitchingBackIsALookupAndRClearsEveryLevel) {
 // vkCreateGraphicsPipelines the driver itself waits for the frames in flight; there the
 // frames are not held and the fence says nothing about idview.) Validation on: an object
 // destroyed while a frame in flight uses it is an error.
-// Opens the gate after a minute, should a switch wait for the held frames in a way the gate
-// does not see (a driver lock): the switch then fails its checks instead of hanging. Only a
-// safety net: a switch that waits for nothing returns in milliseconds.
-class SafetyNet {
-  public:
-    SafetyNet()
-        : thread_([this] {
-              std::unique_lock lock(mutex_);
-              if (!done_.wait_for(lock, std::chrono::minutes(1), [this] { return finished_; }))
-                  gate.open();
-          }) {}
-    ~SafetyNet() {
-        {
-            const std::lock_guard lock(mutex_);
-            finished_ = true;
-        }
-        done_.notify_one();
-        thread_.join();
-    }
-
-  private:
-    std::mutex mutex_;
-    std::condition_variable done_;
-    bool finished_ = false;
-    std::thread thread_;
-};
-
 TEST(Lifetimes, NoSwitchWaitsForTheFramesInFlight) {
     const app::LoadedScene heavy = load("procedural:preset=small,seed=1", 64);
     const app::LoadedScene light = load("procedural:preset=small,seed=1");
@@ -328,7 +300,10 @@ TEST(Lifetimes, NoSwitchWaitsForTheFramesInFlight) {
             gate.arm(false);
             hostWaits = 0;
             {
-                const SafetyNet net;
+                // Should the switch wait for the held frames in a way the gate does not see (a
+                // driver lock), the gate opens after a minute, and the switch fails its
+                // checks instead of hanging. A switch that waits for nothing takes milliseconds.
+                const util::Deadline safetyNet(std::chrono::minutes(1), [] { gate.open(); });
                 gate.watch(true);
                 s.run();
                 gate.watch(false);
