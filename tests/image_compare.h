@@ -53,8 +53,11 @@ ImageDifference compare(const std::vector<T>& actual, const std::vector<T>& expe
     std::ostringstream text;
     if (actual.size() != expected.size() || width == 0 || actual.size() % channels != 0) {
         d.sizesDiffer = true;
-        text << "the " << what << " images differ in size: " << actual.size() / channels
-             << " pixels against " << expected.size() / channels << " expected";
+        if (width == 0)
+            text << "the " << what << " images were compared without a width";
+        else
+            text << "the " << what << " images differ in size: " << actual.size() / channels
+                 << " pixels against " << expected.size() / channels << " expected";
         d.message = text.str();
         return d;
     }
