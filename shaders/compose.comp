@@ -6,11 +6,9 @@
 // the scene pass leaves its images untouched, a viewer at rest runs this pass alone when the
 // hover, the blink or the selection changes, and for a step of the blink only over the tiles
 // of the hovered part (shared_id_passes.h has the rules).
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_buffer_reference : require
 #extension GL_KHR_shader_subgroup_vote : require
 
-#include "shared.h"
+#include "buffers.glsl"
 
 layout(local_size_x = ID_PASS_TILE, local_size_y = ID_PASS_TILE) in;
 
@@ -25,16 +23,6 @@ layout(set = 0, binding = 3) uniform sampler2D depthImage;
 
 layout(push_constant, std430) uniform ComposeBlock {
     ComposePush compose;
-};
-
-layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer PartBits {
-    uint words[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 8) writeonly buffer HoverRef {
-    uint64_t value;
-};
-layout(buffer_reference, std430, buffer_reference_align = 8) buffer HoverBoxRef {
-    HoverBox box;
 };
 
 // The widest window (the selection's outline) reaches LO pixels up-left and HI down-right;
@@ -76,7 +64,7 @@ Window look(ivec2 p, int w, uint hovered) {
 
 bool isSelected(uint id) {
     return compose.selectedAddress != 0ul && id != BACKGROUND_ID &&
-           (PartBits(compose.selectedAddress).words[id >> 5] & (1u << (id & 31u))) != 0u;
+           (UintsRef(compose.selectedAddress).values[id >> 5] & (1u << (id & 31u))) != 0u;
 }
 
 // Hovered: the colour turned towards its inverse by the blink's weight. Inverting a mid-grey
@@ -144,7 +132,7 @@ void main() {
     const bool hovering = all(lessThan(compose.hoverPixel, compose.extent));
     const uint hovered = hovering ? imageLoad(ids, ivec2(compose.hoverPixel)).r : BACKGROUND_ID;
     if (hovering && pixel == compose.hoverPixel)
-        HoverRef(compose.hoverAddress).value = hoverValue(hovered);
+        Uint64Ref(compose.hoverAddress).value = hoverValue(hovered);
 
     const ivec2 p = ivec2(gl_LocalInvocationID.xy) + ivec2(LO);
     const uint id = lines ? tileIds[at(p)] : imageLoad(ids, ivec2(pixel)).r;

@@ -3,18 +3,19 @@
 // frustum and against the depth pyramid, and bit ranges of the part bitsets. Something is
 // dropped only where no sample of it could pass: the margins below cover the rounding by
 // which the vertex shader's positions may differ from the box's corners computed here, and
-// the rasterizer's snapping of vertices to its sub-pixel grid.
-// Needs shared.h and GL_EXT_buffer_reference before it.
+// the rasterizer's snapping of vertices to its sub-pixel grid (CULL_RELATIVE_MARGIN, which the
+// CPU's frustum test shares, is in shared_cull.h).
+#ifndef IDVIEW_CULL_GLSL
+#define IDVIEW_CULL_GLSL
 
-// The tests can be made wrong on purpose (tests/test_culling.cpp): every screen rectangle
-// shrunk by this many pixels on each side must change the images.
+#include "buffers.glsl"
+
+// The tests can be made wrong on purpose (tests/test_culling_edges.cpp): every screen
+// rectangle shrunk by this many pixels on each side must change the images.
 #ifndef IDV_CULL_SHRINK_PIXELS
 #define IDV_CULL_SHRINK_PIXELS 0
 #endif
 
-// Boxes are inflated by this fraction of the largest coordinate magnitude involved (world
-// position and eye): 16 float ulps, several times the rounding of one matrix product.
-const float CULL_RELATIVE_MARGIN = 1.0 / 524288.0;
 // Screen rectangles grow by this much on each side (vertices snap to 1/256 pixel).
 const float CULL_PIXEL_MARGIN = 1.0 / 16.0;
 // Depth comparisons keep this much apart, relative to the depth, for the rasterizer's depth
@@ -27,36 +28,28 @@ const float CULL_DEPTH_MARGIN = 1.0 / 1048576.0;
 const int CULL_DRAW_SPAN = 16;
 const int CULL_MESHLET_SPAN = 8;
 
-layout(buffer_reference, std430, buffer_reference_align = 4) buffer CullWordsRef {
-    uint words[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer PyramidRef {
-    PyramidHeader header;
-    float depth[];
-};
-
 // Whether any (all) of the bits [first, first + count) of a bitset are set.
 bool anyBitInRange(uint64_t address, uint first, uint count) {
     if (count == 0u) return false;
-    CullWordsRef bits = CullWordsRef(address);
+    UintsRef bits = UintsRef(address);
     uint last = first + count - 1u;
     for (uint w = first >> 5; w <= (last >> 5); ++w) {
         uint lo = w == (first >> 5) ? (first & 31u) : 0u;
         uint hi = w == (last >> 5) ? (last & 31u) : 31u;
         uint mask = (0xFFFFFFFFu >> (31u - hi)) & (0xFFFFFFFFu << lo);
-        if ((bits.words[w] & mask) != 0u) return true;
+        if ((bits.values[w] & mask) != 0u) return true;
     }
     return false;
 }
 
 bool allBitsInRange(uint64_t address, uint first, uint count) {
-    CullWordsRef bits = CullWordsRef(address);
+    UintsRef bits = UintsRef(address);
     uint last = first + count - 1u;
     for (uint w = first >> 5; count != 0u && w <= (last >> 5); ++w) {
         uint lo = w == (first >> 5) ? (first & 31u) : 0u;
         uint hi = w == (last >> 5) ? (last & 31u) : 31u;
         uint mask = (0xFFFFFFFFu >> (31u - hi)) & (0xFFFFFFFFu << lo);
-        if ((bits.words[w] & mask) != mask) return false;
+        if ((bits.values[w] & mask) != mask) return false;
     }
     return true;
 }
@@ -93,9 +86,8 @@ BoxView viewBox(FrameData frame, mat4 world, vec3 boxMin, vec3 boxMax) {
     [[unroll]] for (uint i = 0u; i < 8u; ++i) {
         vec4 p = c + ((i & 1u) != 0u ? ex : -ex) + ((i & 2u) != 0u ? ey : -ey) +
                  ((i & 4u) != 0u ? ez : -ez);
-        uint outside = (p.x < -p.w ? 1u : 0u) | (p.x > p.w ? 2u : 0u) |
-                       (p.y < -p.w ? 4u : 0u) | (p.y > p.w ? 8u : 0u) |
-                       (p.z < 0.0 ? 16u : 0u) | (p.z > p.w ? 32u : 0u);
+        uint outside = (p.x < -p.w ? 1u : 0u) | (p.x > p.w ? 2u : 0u) | (p.y < -p.w ? 4u : 0u) |
+                       (p.y > p.w ? 8u : 0u) | (p.z < 0.0 ? 16u : 0u) | (p.z > p.w ? 32u : 0u);
         outsideAll &= outside;
         outsideAny |= outside;
         if (p.w <= 0.0 || p.z > p.w) {
@@ -170,8 +162,8 @@ bool lodChosen(FrameData frame, mat4 world, DrawCull c) {
     // w is linear over the box, so its nearest corner has the smallest.
     mat4 mvp = frame.viewProj * world;
     vec3 halfSize = max(c.lodBoxMax - c.lodBoxMin, vec3(0.0)) * 0.5;
-    float w = (mvp * vec4((c.lodBoxMin + c.lodBoxMax) * 0.5, 1.0)).w -
-              abs(mvp[0].w) * halfSize.x - abs(mvp[1].w) * halfSize.y - abs(mvp[2].w) * halfSize.z;
+    float w = (mvp * vec4((c.lodBoxMin + c.lodBoxMax) * 0.5, 1.0)).w - abs(mvp[0].w) * halfSize.x -
+              abs(mvp[1].w) * halfSize.y - abs(mvp[2].w) * halfSize.z;
     float depth = w / max(wScale, 1e-30);
     if (!(depth > 0.0)) return finest;
     // The largest error in model units that stays under the pixels asked at that depth.
@@ -180,3 +172,5 @@ bool lodChosen(FrameData frame, mat4 world, DrawCull c) {
     bool nextFits = c.lodNextError < budget;
     return fits && !nextFits;
 }
+
+#endif

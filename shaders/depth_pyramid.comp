@@ -6,10 +6,8 @@
 // from the last level of the pass before. Each workgroup reduces a tile of its first level
 // down to one texel in shared memory; texels past an edge are left out, so a texel covers
 // exactly its pixels and the occlusion test (cull.glsl) stays conservative.
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_buffer_reference : require
 
-#include "shared.h"
+#include "buffers.glsl"
 
 layout(local_size_x = PYRAMID_GROUP, local_size_y = PYRAMID_GROUP) in;
 
@@ -21,11 +19,6 @@ layout(set = 0, binding = 0) uniform sampler2D depthImage;
 
 layout(push_constant, std430) uniform PyramidBlock {
     PyramidPush pyramid;
-};
-
-layout(buffer_reference, std430, buffer_reference_align = 16) buffer PyramidRef {
-    PyramidHeader header;
-    float depth[];
 };
 
 // Level-by-level halves of the tile: PYRAMID_GROUP texels a side, then half of that, ...

@@ -1,37 +1,6 @@
-// prelude.glsl - what every idview shader starts with: extensions, the shared structs, the
-// buffer-reference views of the scene buffers and the push constant block.
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_buffer_reference : require
-#extension GL_EXT_control_flow_attributes : require
-#extension GL_EXT_shader_atomic_int64 : require
-
-#include "shared.h"
-
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer FrameRef {
-    FrameData frame;
-};
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer ObjectsRef {
-    ObjectData objects[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer MaterialsRef {
-    Material materials[];
-};
-
-layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer DrawsRef {
-    DrawData draws[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer UintsRef {
-    uint values[];
-};
-
-layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer RunCommandsRef {
-    RunCommand commands[];
-};
-
-// Written only by the fragment at the pick pixel; `last` is read by every fragment.
-layout(buffer_reference, std430, buffer_reference_align = 8) buffer PickRef {
-    PickData pick;
-};
+// prelude.glsl - what every shader of the scene pipelines starts with: the shared structs and
+// buffer references (buffers.glsl), the push constant block and the loads every stage makes.
+#include "buffers.glsl"
 
 layout(push_constant, std430) uniform PushBlock {
     DrawPush push;

@@ -3,10 +3,9 @@
 // ID where no triangle covered a sample, and with MSAA the resolve of colour (average) and
 // IDs (sample 0) into the single-sample images every later pass reads. shared_id_passes.h
 // has the rules; render/resolve.h records it.
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_samplerless_texture_functions : require
 
-#include "shared.h"
+#include "buffers.glsl"
 
 layout(local_size_x = ID_PASS_TILE, local_size_y = ID_PASS_TILE) in;
 

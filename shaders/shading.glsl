@@ -42,7 +42,5 @@ vec3 capColor(vec3 base, vec2 fragCoord) {
 // FRAME_TINT_LEVELS: a colour per level of detail, full detail first (the panel's legend
 // shows the same ones), far apart in hue so that neighbouring objects read apart.
 vec3 levelTint(uint level) {
-    const vec3 tints[LOD_MAX_LEVELS] = vec3[](vec3(0.75, 0.75, 0.75), vec3(0.1, 0.55, 0.95),
-                                              vec3(0.95, 0.75, 0.1), vec3(0.9, 0.2, 0.3));
-    return tints[min(level, LOD_MAX_LEVELS - 1u)];
+    return LEVEL_TINTS[min(level, LOD_MAX_LEVELS - 1u)];
 }

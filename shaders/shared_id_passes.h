@@ -1,6 +1,6 @@
 // shared_id_passes.h - the passes over the resolved ID image, recorded after the scene pass
-// (render/id_passes.h); part of shared.h's family, included by it inside namespace gpu. Both
-// run in 16x16 workgroups, one invocation per pixel.
+// (render/id_passes.h), and the compute clear path's resolve (render/resolve.h). Part of
+// shared.h's family (include shared.h). All run in 16x16 workgroups, one invocation per pixel.
 #ifndef IDVIEW_SHARED_ID_PASSES_H
 #define IDVIEW_SHARED_ID_PASSES_H
 
@@ -58,7 +58,7 @@ struct PartSetPush {
     uvec2 rectMin;          // inclusive, pixels
     uvec2 rectMax;          // inclusive
     uint words;             // bitset words: ceil(unique parts / 32)
-    uint samples;           // IDV_PART_SET_SAMPLES: samples per pixel of the image
+    uint unused;            // pads to 8 bytes
 };
 struct PartSetResult {
     uint count;

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# chart_test.sh ROOT - scripts/benchmark_chart.py on the committed H100 runs (the full runs and
-# the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are the
-# JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
+# chart_test.sh ROOT BUILD - scripts/benchmark_chart.py on the committed H100 runs (the full runs
+# and the re-run of the part-vertex techniques): it writes a PNG, and the ratios it prints are
+# the JSON's ratio_to_floor for every technique it plots, a later file's row winning. Then
 # scripts/path_chart.py on a committed camera-path run, scripts/lod_chart.py on the
-# levels-of-detail runs, and scripts/fixed_cost_chart.py on the clear paths' runs, likewise;
-# and docs/benchmarks.md holds the tables scripts/clear_tables.py prints from those runs.
+# levels-of-detail runs, and scripts/fixed_cost_chart.py on the clear paths' runs, likewise.
+# Then the generated parts of the docs: docs/benchmarks.md's tables are what
+# scripts/bench_tables.py prints from the runs they cite, and the counts of tests in
+# docs/testing.md and docs/reliability.md what scripts/test_counts.py finds in BUILD.
 set -uo pipefail
 root=$1
+build=$2
 runs=$root/docs/benchmarks/h100-2026-11-23-issue14/final
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -136,17 +139,19 @@ PY
 out=$(/usr/bin/python3 "$root/scripts/fixed_cost_chart.py" "${files[0]}" -o "$work/old.png" 2>&1)
 [[ $? -ne 0 && $out == *"no fixed_cost"* && ! -e $work/old.png ]] ||
     fail "a run without a fixed cost: $out"
-# The page's tables of the fixed cost and of every technique are the script's, line for line.
-for args in "targets $clearRuns" "techniques ${fixedRuns[*]}"; do
-    # shellcheck disable=SC2086 # the arguments are words on purpose
-    /usr/bin/python3 "$root/scripts/clear_tables.py" $args >"$work/tables.md" 2>"$work/err.txt" ||
-        fail "clear_tables.py $args: $(cat "$work/err.txt")"
-    [[ $(grep -c '^| ' "$work/tables.md") -ge 14 ]] || fail "clear_tables.py $args: too few rows"
-    while IFS= read -r line; do
-        [[ $line == "| "* ]] || continue
-        grep -qxF -- "$line" "$root/docs/benchmarks.md" ||
-            fail "docs/benchmarks.md lacks the line clear_tables.py $args prints: $line"
-    done <"$work/tables.md"
-done
+# Every table of docs/benchmarks.md is what scripts/bench_tables.py prints from the run folder
+# it cites, and every run the tables read is one scripts/h100-runs.sh makes.
+/usr/bin/python3 "$root/scripts/bench_tables.py" --check "$root/docs/benchmarks.md" \
+    >"$work/tables.txt" 2>&1 || fail "docs/benchmarks.md: $(cat "$work/tables.txt")"
+# A copy of the page with one number of a table changed fails, naming the number.
+sed '0,/^| empty frame (`--visible 0`) | [0-9.]*/s//| empty frame (`--visible 0`) | 9.999/' \
+    "$root/docs/benchmarks.md" >"$work/changed.md"
+cmp -s "$root/docs/benchmarks.md" "$work/changed.md" && fail "the page has no empty frame row to change"
+out=$(/usr/bin/python3 "$root/scripts/bench_tables.py" --check "$work/changed.md" 2>&1)
+[[ $? -ne 0 && $out == *"9.999"* ]] || fail "a changed table passed: $out"
+# The counts of tests in docs/testing.md and docs/reliability.md are the build's.
+/usr/bin/python3 "$root/scripts/test_counts.py" --check "$build" >"$work/counts.txt" 2>&1 ||
+    fail "test counts: $(cat "$work/counts.txt")"
+cat "$work/counts.txt" # says so where this build cannot tell
 echo "chart_test: $failures failed"
 exit $((failures > 0))

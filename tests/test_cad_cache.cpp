@@ -4,6 +4,7 @@
 // changed file are each a miss whose entry is written anew and then valid. And --max-triangles
 // (scene::loadCad): the mesher stops between faces once the budget is spent, and the refusal
 // is one line naming the file and a larger deflection, which leads under the limit.
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -34,6 +35,7 @@
 #include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_mesh.h"
+#include "scene/lod.h"
 #include "util/hash64.h"
 
 namespace {
@@ -173,13 +175,13 @@ TEST_F(CadCache, ASewnShapeComesBackFaceForFace) {
 }
 
 TEST_F(CadCache, SecondLoadIsAHitWithTheSameScene) {
-    const CadLoadResult first = loadCadCached(kMotor.string(), {}, {}, 2);
+    const CadLoadResult first = loadCadCached(kMotor.string(), {}, {}, maxLevels);
     EXPECT_EQ(first.cache, "miss");
     EXPECT_EQ(first.cacheNote, "no entry");
     ASSERT_EQ(entries().size(), 1u);
     bool progressed = false;
     const CadLoadResult second = loadCadCached(
-        kMotor.string(), {}, [&](const char*, double) { progressed = true; }, 2);
+        kMotor.string(), {}, [&](const char*, double) { progressed = true; }, maxLevels);
     EXPECT_EQ(second.cache, "hit");
     EXPECT_FALSE(progressed); // Open CASCADE never ran
     expectSameScene(first.scene, second.scene);
@@ -188,13 +190,18 @@ TEST_F(CadCache, SecondLoadIsAHitWithTheSameScene) {
     EXPECT_EQ(first.faces, second.faces);
     EXPECT_EQ(first.facesFailed, second.facesFailed);
     // And both are what the loader makes without a cache, levels of detail included.
-    const CadLoadResult plain = loadCad(kMotor.string(), {}, {}, 2);
+    const CadLoadResult plain = loadCad(kMotor.string(), {}, {}, maxLevels);
     expectSameScene(plain.scene, second.scene);
     expectBrepFacesMatchParts(first.scene);
     expectBrepFacesMatchParts(second.scene);
-    size_t levels = 0;
-    for (const Geometry& g : second.scene.geometries) levels += g.level > 0;
+    // Levels of detail came back, several deep.
+    size_t levels = 0, deepest = 0;
+    for (const Geometry& g : second.scene.geometries) {
+        levels += g.level > 0;
+        deepest = std::max<size_t>(deepest, g.level);
+    }
     EXPECT_GT(levels, 0u);
+    EXPECT_GE(deepest, 2u);
     // Other settings are another entry.
     EXPECT_EQ(loadCadCached(kMotor.string(), {}, {}, 1).cache, "miss");
     EXPECT_EQ(entries().size(), 2u);

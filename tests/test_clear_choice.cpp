@@ -93,8 +93,9 @@ std::pair<ClearPath, ClearTiming> autoWith(const std::filesystem::path& home, ui
         const auto file =
             rig.renderer.driverCache().file().parent_path() / render::clearTimingFileName(id);
         std::filesystem::remove(file);
-        if (const auto contents = text(id))
+        if (const auto contents = text(id)) {
             EXPECT_EQ(util::writeFileAtomically(file, {*contents}), "");
+        }
         const app::LoadedScene loaded = app::loadScene(o.scene);
         rig.renderer.setScene(loaded.scene, o.render);
         result.first = rig.renderer.clearPath();

@@ -1,10 +1,13 @@
 // test_cli.cpp - command-line parsing: every flag, both value spellings, and every refusal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+
 #include "app/benchmark.h"
 #include "app/cli.h"
+#include "app/cli_flags.h"
 #include "app/headless.h"
-#include "app/json.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "scene/mesh_builder.h"
@@ -137,14 +140,48 @@ TEST(Cli, RefusesBadCommandLines) {
     }
 }
 
+// --help lists every flag of the table once, with its value, under its group's heading, and
+// no two flags share a name (the parser would take the last).
 TEST(Cli, UsageListsEveryFlag) {
     const std::string text = app::usage();
+    const std::vector<app::FlagGroup>& groups = app::flagGroups();
+    std::vector<size_t> headings;
+    for (const app::FlagGroup& group : groups) {
+        const std::string heading = std::string("\n").append(group.title).append(":\n");
+        headings.push_back(text.find(heading));
+        ASSERT_NE(headings.back(), std::string::npos) << group.title;
+        if (headings.size() > 1) {
+            EXPECT_GT(headings.back(), headings[headings.size() - 2]);
+        }
+    }
+    headings.push_back(text.find("\nExit codes:"));
+    std::set<std::string> names;
+    size_t flagCount = 0;
+    for (size_t g = 0; g < groups.size(); ++g) {
+        EXPECT_FALSE(groups[g].flags.empty()) << groups[g].title;
+        for (const app::Flag& flag : groups[g].flags) {
+            ++flagCount;
+            EXPECT_TRUE(names.insert(flag.name).second) << flag.name << " twice";
+            // "  --name VALUE" then its help, on the line or (long names) the next.
+            std::string line = std::string("\n  ").append(flag.name);
+            if (flag.value) line.append(" ").append(flag.value);
+            const size_t at = std::min(text.find(line + " "), text.find(line + "\n"));
+            EXPECT_TRUE(at > headings[g] && at < headings[g + 1])
+                << line << " is not under " << groups[g].title;
+        }
+    }
+    EXPECT_EQ(app::flags().size(), flagCount);
+    // Counted apart from the table: every line of the help that starts "  --" is a flag's.
+    size_t lines = 0;
+    for (size_t at = text.find("\n  --"); at != std::string::npos; at = text.find("\n  --", at + 1))
+        ++lines;
+    EXPECT_EQ(lines, flagCount);
     for (const char* flag :
          {"--headless",    "--size",           "--frames",       "--screenshot", "--id-image",
           "--validation",  "--device",         "--list-devices", "--renderer",   "--mode",
           "--part-weight", "--colorize-draws", "--scene",        "--shader-dir", "--model",
           "--parts",       "--copies",         "--stats",        "--export",     "--search-batch"})
-        EXPECT_NE(text.find(flag), std::string::npos) << flag;
+        EXPECT_TRUE(names.count(flag)) << flag;
 }
 
 TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
@@ -258,12 +295,6 @@ TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
         {"--visible", "1.5"},       {"--visible", "-0.1"},    {"--copy-axes", ""},
         {"--copy-axes", "xw"},      {"--copy-axes", "xx"},    {"--ignore-materials=1"}};
     for (const auto& args : bad) EXPECT_THROW(parseArgs(args), UsageError) << args[0];
-}
-
-TEST(Json, StringsEscapeQuotesBackslashesAndControlCharacters) {
-    EXPECT_EQ(app::jsonString("bolt M10 #1"), "\"bolt M10 #1\"");
-    EXPECT_EQ(app::jsonString("a\"b\\c\n\x01\x7f\xc3\xa9"),
-              "\"a\\\"b\\\\c\\u000a\\u0001\\u007f\xc3\xa9\"");
 }
 
 TEST(PickJson, NameAndPathFollowLocalPartAndAreEscaped) {

@@ -36,10 +36,9 @@ struct PathCase {
     const char* scene; // "default" or "cad"
     uint32_t msaa;
     Pipelines pipelines;
-    // The camera stands still instead of flying the dolly path: from the second frame on,
-    // cluster runs draw first the clusters that passed the last frame's test, each by itself
-    // (FRAME_VIEW_UNCHANGED), and from the fourth on every two-pass culling draws its last
-    // lists again. Only occlusion culling does either, so a still case leaves frustum out.
+    // The camera stands still instead of flying the dolly path: every frame culls again from
+    // the history the one before left, which settles on what the view shows. Only occlusion
+    // culling keeps a history, so a still case leaves frustum out.
     bool still = false;
     // Orthographic: the opening view zoomed in to a third of the fitted distance (so the
     // frustum leaves parts out), orbiting the target about the up axis, since an ortho dolly
@@ -144,24 +143,6 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
             EXPECT_TRUE(testing_support::sameColours(r.frames[f].color, ref.frames[f].color, W))
                 << name << ", frame " << f;
         }
-        // A still view draws the lists of its third frame (the second culled as still) again
-        // from the fourth on, where they are drawn in two phases (GPU-built lists, and push
-        // mode's meshlets); a moving one culls every frame. A reused frame draws what that frame
-        // drew: the task shader counts the meshlets again, and finds the same ones.
-        const render::CullPlan plan =
-            render::cullPlan(*s.pipeline.technique, *s.pipeline.mode, s.culling.mode);
-        const bool reuses = c.still && plan.twoPasses;
-        EXPECT_EQ(r.reusedFrames, reuses ? kFrames - 3 : 0u) << name;
-        if (reuses && r.cullStats.size() == kFrames) {
-            const bool mesh = s.pipeline.technique->usesMeshShader();
-            const render::CullCounts last = render::countsOf(r.cullStats[2], mesh);
-            for (uint32_t f = 3; f < kFrames; ++f) {
-                const render::CullCounts again = render::countsOf(r.cullStats[f], mesh);
-                EXPECT_EQ(again.draws, last.draws) << name << ", frame " << f;
-                EXPECT_EQ(again.meshlets, last.meshlets) << name << ", frame " << f;
-                EXPECT_EQ(again.triangles, last.triangles) << name << ", frame " << f;
-            }
-        }
         // The path goes inside the assembly, so every culling mode leaves something out
         // (where there is more than the one object the CAD file is, or smaller draws, or
         // meshlets), and never more than there is.
@@ -218,37 +199,6 @@ INSTANTIATE_TEST_SUITE_P(
                pipelinesName(info.param.pipelines) + (info.param.still ? "_still" : "") +
                (info.param.ortho ? "_ortho" : "") + (info.param.section ? "_section" : "");
     });
-
-// In a still view cluster runs draw first just the clusters that passed the last frame's
-// test: fewer triangles than an object's first clusters up to the last that passed (what a
-// moving view draws first), with the images of culling off either way.
-TEST(CullingStill, ClusterRunsDrawFewerTrianglesOnceTheViewStandsStill) {
-    const app::LoadedScene loaded = app::loadScene(app::SceneSettings{});
-    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
-    const std::filesystem::path moving = testing_support::shaderCopy("still-as-moving");
-    testing_support::replaceInFile(moving / "cull_runs.glsl", "FRAME_VIEW_UNCHANGED) != 0u",
-                                   "FRAME_VIEW_UNCHANGED) == 17u");
-    std::vector<render::RenderSettings> configs;
-    for (render::CullMode mode : {render::CullMode::Off, render::CullMode::Occlusion}) {
-        configs.push_back(testing_support::settingsFor(*render::findTechnique("vertex-fs"),
-                                                       *render::findDrawMode("mdi-baseinstance")));
-        configs.back().culling.mode = mode;
-    }
-    app::Options o = testing_support::headlessOptions(W, H, kFrames);
-    const auto still = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
-    o.shaderDir = moving.string();
-    const auto asMoving = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
-    std::filesystem::remove_all(moving);
-    ASSERT_EQ(still.size(), 2u);
-    ASSERT_EQ(asMoving.size(), 2u);
-    EXPECT_EQ(still.front().validationMessages, 0u);
-    EXPECT_TRUE(still[1].ids == still[0].ids);
-    EXPECT_TRUE(still[1].color == still[0].color);
-    EXPECT_TRUE(asMoving[1].ids == still[0].ids);
-    const uint64_t drawn = render::countsOf(still[1].cullStats.back(), false).triangles;
-    const uint64_t drawnAsMoving = render::countsOf(asMoving[1].cullStats.back(), false).triangles;
-    EXPECT_LT(drawn, drawnAsMoving);
-}
 
 // The per-frame histories (counters, GPU times) are in frame order, whichever frame slot
 // the run ends on: the counters of a run along the dolly path equal those of the same run

@@ -1,7 +1,9 @@
-// test_input_script.cpp - the viewer's --script format: every command parses, bad lines name
-// file and line, and the player hands commands out in time order.
+// test_input_script.cpp - the viewer's --script format: every kind of line parses (input,
+// waits, and the command table's rows by name), bad lines name file and line, and the player
+// hands lines out in time order.
 #include <gtest/gtest.h>
 
+#include "app/viewer/commands.h"
 #include "app/viewer/script.h"
 #include "render/technique.h"
 #include "scene/standard_view.h"
@@ -20,9 +22,13 @@ std::string errorOf(const std::string& text) {
     return "(no error)";
 }
 
+app::Command command(app::CommandId id, app::Argument argument = {}) {
+    return {id, std::move(argument)};
+}
+
 } // namespace
 
-TEST(InputScript, ParsesEveryCommand) {
+TEST(InputScript, ParsesEveryKindOfLine) {
     const std::string technique = render::techniques().back().name;
     const auto commands = app::parseScript("# a comment\n"
                                            "0.5 key V\n"
@@ -54,22 +60,25 @@ TEST(InputScript, ParsesEveryCommand) {
     EXPECT_DOUBLE_EQ(commands[3].values[3], 4.0);
     EXPECT_DOUBLE_EQ(commands[4].values[0], -2.0);
     EXPECT_EQ(commands[5].op, app::ScriptOp::Resize);
-    EXPECT_EQ(commands[6].text, technique);
-    EXPECT_EQ(commands[7].op, app::ScriptOp::Mode);
-    EXPECT_DOUBLE_EQ(commands[8].values[0], 4.0);
-    EXPECT_EQ(commands[9].text, "out.png");
+    EXPECT_EQ(commands[6].op, app::ScriptOp::Command);
+    EXPECT_EQ(commands[6].command,
+              command(app::CommandId::Renderer, render::findTechnique(technique)));
+    EXPECT_EQ(commands[7].command,
+              command(app::CommandId::Mode, render::findDrawMode("mdi-attribute")));
+    EXPECT_EQ(commands[8].command, command(app::CommandId::Msaa, 4u));
+    EXPECT_EQ(commands[9].command, command(app::CommandId::Screenshot, std::string("out.png")));
     EXPECT_EQ(commands[10].key, GLFW_KEY_ESCAPE);
     EXPECT_EQ(commands[10].where, "s.txt:13");
     EXPECT_EQ(commands[11].op, app::ScriptOp::Drop);
     EXPECT_EQ(commands[11].text, "m.glb");
-    EXPECT_EQ(commands[12].op, app::ScriptOp::Quit);
+    EXPECT_EQ(commands[12].command, command(app::CommandId::Quit));
 }
 
 // The panel's Cancel as a script line: no arguments.
 TEST(InputScript, Cancel) {
     const auto commands = app::parseScript("1 drop m.step\n2 cancel\n", "s.txt");
     ASSERT_EQ(commands.size(), 2u);
-    EXPECT_EQ(commands[1].op, app::ScriptOp::Cancel);
+    EXPECT_EQ(commands[1].command, command(app::CommandId::Cancel));
     EXPECT_THROW(app::parseScript("1 cancel now\n", "s.txt"), app::ScriptError);
 }
 
@@ -89,8 +98,8 @@ TEST(InputScript, BoxObjectAndModifiers) {
     EXPECT_EQ(commands[0].mods, GLFW_MOD_SHIFT); // a plain box replaces, as Shift+drag does
     EXPECT_EQ(commands[1].mods, GLFW_MOD_CONTROL);
     EXPECT_EQ(commands[2].mods, GLFW_MOD_ALT);
-    EXPECT_EQ(commands[3].op, app::ScriptOp::Object);
-    EXPECT_EQ(commands[3].text, "bolt M10 #12"); // the rest of the line, spaces inside kept
+    // The rest of the line, spaces inside kept.
+    EXPECT_EQ(commands[3].command, command(app::CommandId::Object, std::string("bolt M10 #12")));
     EXPECT_EQ(commands[4].key, GLFW_KEY_H);
     EXPECT_EQ(commands[4].mods, GLFW_MOD_SHIFT);
     EXPECT_EQ(commands[5].key, GLFW_KEY_E);
@@ -149,7 +158,7 @@ TEST(InputScript, BadLinesNameFileAndLine) {
         EXPECT_EQ(errorOf("1 renderer " + std::string(t.name) + "\n"), "(no error)") << t.name;
     EXPECT_NE(errorOf("1 mode pull\n").find("s.txt:1: unknown mode 'pull'"), std::string::npos);
     EXPECT_EQ(errorOf("1 quit now\n"), "s.txt:1: 'quit' takes: quit");
-    EXPECT_EQ(errorOf("1 screenshot\n"), "s.txt:1: 'screenshot' takes: screenshot FILE");
+    EXPECT_EQ(errorOf("1 screenshot\n"), "(no error)"); // F12's: in the Pictures folder
     EXPECT_EQ(errorOf("1 section y,0,flip\n2 section off\n3 section x,-2.5\n"), "(no error)");
     EXPECT_NE(errorOf("1 section w,0\n").find("s.txt:1: 'section' expects AXIS,VALUE"),
               std::string::npos);
@@ -160,6 +169,8 @@ TEST(InputScript, BadLinesNameFileAndLine) {
               "s.txt:1: 'level' takes face, solid or assembly, not 'body'");
     EXPECT_EQ(errorOf("1 dblclick -1 4\n"), "s.txt:1: window coordinates cannot be negative");
     EXPECT_EQ(errorOf("1 node hide\n2 node select a/b c\n"), "(no error)");
+    EXPECT_EQ(app::parseScript("1 node add a/b c \n", "s.txt")[0].command,
+              command(app::CommandId::Node, app::NodeTarget{app::NodeAction::Add, "a/b c", 0}));
     EXPECT_NE(errorOf("1 node drop a\n").find("not 'drop'"), std::string::npos);
 }
 
@@ -178,7 +189,7 @@ TEST(InputScript, PlayerHandsOutCommandsInTimeOrder) {
     const auto rest = player.due(10.0);
     ASSERT_EQ(rest.size(), 2u);
     EXPECT_EQ(rest[0].text, "A");
-    EXPECT_EQ(rest[1].op, app::ScriptOp::Quit);
+    EXPECT_EQ(rest[1].command, command(app::CommandId::Quit));
     EXPECT_TRUE(player.finished());
     EXPECT_FALSE(player.nextTime().has_value());
 }
@@ -198,10 +209,9 @@ TEST(InputScript, FramesWaitsAWholeNumberOfFrames) {
 TEST(InputScript, SortAndDefaults) {
     const auto commands = app::parseScript("1 sort off\n2 sort on\n3 defaults\n", "s.txt");
     ASSERT_EQ(commands.size(), 3u);
-    EXPECT_EQ(commands[0].op, app::ScriptOp::Sort);
-    EXPECT_EQ(commands[0].text, "off");
-    EXPECT_EQ(commands[1].text, "on");
-    EXPECT_EQ(commands[2].op, app::ScriptOp::Defaults);
+    EXPECT_EQ(commands[0].command, command(app::CommandId::Sort, app::Switch::Off));
+    EXPECT_EQ(commands[1].command, command(app::CommandId::Sort, app::Switch::On));
+    EXPECT_EQ(commands[2].command, command(app::CommandId::Defaults));
     EXPECT_EQ(errorOf("1 sort maybe\n"), "s.txt:1: 'sort' takes on or off, not 'maybe'");
     EXPECT_THROW(app::parseScript("1 defaults now\n", "s.txt"), app::ScriptError);
 }
@@ -223,37 +233,37 @@ TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     for (const scene::StandardView& view : scene::standardViews()) {
         const auto commands = app::parseScript("1 view " + std::string(view.name) + "\n", "s.txt");
         ASSERT_EQ(commands.size(), 1u);
-        EXPECT_EQ(commands[0].op, app::ScriptOp::View);
-        EXPECT_EQ(commands[0].text, view.name);
+        EXPECT_EQ(commands[0].command, command(app::CommandId::View, &view));
     }
     EXPECT_EQ(errorOf("1 view sideways\n"),
               "s.txt:1: unknown view 'sideways' (known: " + scene::standardViewNames() + ")");
     EXPECT_EQ(errorOf("1 view\n"), "s.txt:1: 'view' takes: view NAME");
-    // The switches: on and off, nothing else; without a word the command's form.
-    for (const auto& [word, op] : {std::pair{std::string("ortho"), app::ScriptOp::Ortho},
-                                   std::pair{std::string("xray"), app::ScriptOp::Xray}}) {
-        const auto on = app::parseScript("1 " + word + " on\n2 " + word + " off\n", "s.txt");
-        ASSERT_EQ(on.size(), 2u) << word;
-        EXPECT_EQ(on[0].op, op) << word;
-        EXPECT_EQ(on[0].text, "on");
-        EXPECT_EQ(on[1].text, "off");
+    // The switches: on and off, nothing else; without a word they toggle, as their keys do.
+    for (const auto& [word, id] : {std::pair{std::string("ortho"), app::CommandId::Ortho},
+                                   std::pair{std::string("xray"), app::CommandId::Xray}}) {
+        const auto on =
+            app::parseScript("1 " + word + " on\n2 " + word + " off\n3 " + word + "\n", "s.txt");
+        ASSERT_EQ(on.size(), 3u) << word;
+        EXPECT_EQ(on[0].command, command(id, app::Switch::On));
+        EXPECT_EQ(on[1].command, command(id, app::Switch::Off));
+        EXPECT_EQ(on[2].command, command(id, app::Switch::Toggle));
         EXPECT_EQ(errorOf("1 " + word + " yes\n"),
                   "s.txt:1: '" + word + "' takes on or off, not 'yes'");
-        EXPECT_EQ(errorOf("1 " + word + "\n"),
-                  "s.txt:1: '" + word + "' takes: " + word + " on|off");
+        EXPECT_EQ(errorOf("1 " + word + " on off\n"),
+                  "s.txt:1: '" + word + "' takes: " + word + " [on|off]");
     }
-    // The unknown-command message lists the commands, these two among them.
+    // The unknown-command message lists the input lines and the commands, these among them.
     const std::string unknown = errorOf("1 jump\n");
-    EXPECT_NE(unknown.find(", view, ortho,"), std::string::npos) << unknown;
+    for (const char* name : {" key,", " pipeline,", " view,", " ortho,", " copies)"})
+        EXPECT_NE(unknown.find(name), std::string::npos) << name << " in " << unknown;
 }
 
 // `explode F`, the panel's slider: 0 to 1.
 TEST(InputScript, ExplodeTakesZeroToOne) {
     const auto commands = app::parseScript("1 explode 0.6\n2 explode 0\n", "s.txt");
     ASSERT_EQ(commands.size(), 2u);
-    EXPECT_EQ(commands[0].op, app::ScriptOp::Explode);
-    EXPECT_EQ(commands[0].values[0], 0.6);
-    EXPECT_EQ(commands[1].values[0], 0.0);
+    EXPECT_EQ(commands[0].command, command(app::CommandId::Explode, 0.6f));
+    EXPECT_EQ(commands[1].command, command(app::CommandId::Explode, 0.0f));
     EXPECT_EQ(errorOf("1 explode 1.5\n"), "s.txt:1: explode takes a number from 0 to 1");
     EXPECT_EQ(errorOf("1 explode -1\n"), "s.txt:1: explode takes a number from 0 to 1");
     EXPECT_EQ(errorOf("1 explode wide\n"), "s.txt:1: 'wide' is not a number (explode F (0 to 1))");

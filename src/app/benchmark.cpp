@@ -1,25 +1,22 @@
-// benchmark.cpp - the timing loop: the rows, then the fixed cost (benchmark_report.cpp has
-// the table, JSON and CSV).
+// benchmark.cpp - the rows a benchmark times, each drawn by the frame loop (frame_loop.h),
+// then the fixed cost (benchmark_report.cpp has the table, JSON and CSV).
 #include "app/benchmark.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <tuple>
 
+#include "app/frame_loop.h"
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "scene/camera_path.h"
-#include "scene/explode.h"
 #include "vk/check.h"
 
 namespace app {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // The settings of every row: the options' own, with the floors first in every chosen mode
 // (what each row is divided by: no-id always, and the mesh floor when a mesh technique
@@ -52,9 +49,9 @@ rows(const Options& options, const vk::DeviceInfo& device,
         settings.pipeline.mode = &mode;
         settings.culling.mode = cull;
         settings.lod.errorPixels = lodError;
-        // Levels of detail are chosen by the cull pass alone: where there is none, a row
-        // with an error would time full detail again.
-        if (lodError > 0.0f && !render::cullPlan(technique, mode, cull).gpuLists) return;
+        // Levels of detail are chosen only where the cull pass lists the draws: elsewhere a
+        // row with an error would time full detail again.
+        if (lodError > 0.0f && !render::levelsChosenIn(mode)) return;
         list.push_back(settings);
     };
     for (float lodError : options.benchmarkLodErrors)
@@ -74,10 +71,7 @@ rows(const Options& options, const vk::DeviceInfo& device,
 
 // Whether the row's levels of detail were chosen (else it drew full detail).
 bool lodApplied(const render::RenderSettings& settings) {
-    return settings.lod.errorPixels > 0.0f &&
-           render::cullPlan(*settings.pipeline.technique, *settings.pipeline.mode,
-                            settings.culling.mode)
-               .gpuLists;
+    return settings.lod.errorPixels > 0.0f && render::levelsChosenIn(*settings.pipeline.mode);
 }
 
 // Median over the frames of what the culling let through.
@@ -116,126 +110,89 @@ double percentile(std::vector<double> values, double fraction) {
 
 namespace {
 
-// What stays the same over every row of a run: the rig, the camera and its path, and the
-// frame counter the animation and frame slots run on.
-struct RowTimer {
-    const Options& options;
-    Offscreen& rig;
-    Readback& readback;
-    scene::Camera start;
-    scene::Bounds bounds;
-    render::FrameParams params;
-    uint32_t warmup = 0;
-    uint64_t frameNumber = 0;
-
-    // Configures `settings` (a setScene for the first row, which times the scene's upload
-    // with its switch), draws warm-up and timed frames, and reads the last frame's images.
-    BenchmarkRow time(const scene::Scene& scene, const render::RenderSettings& settings,
-                      bool first);
-
-  private:
-    // The CPU's times of the timed frames, and how many of them reused the culled lists.
-    struct CpuTimes {
-        std::vector<double> total, record;
-        uint64_t reusedFrames = 0;
-    };
-    // Draws the warm-up and timed frames as configured, the last one read back.
-    CpuTimes drawFrames();
-};
-
-RowTimer::CpuTimes RowTimer::drawFrames() {
-    CpuTimes times;
-    const uint32_t total = warmup + options.frames;
-    uint64_t reusedBefore = 0;
-    for (uint32_t f = 0; f < total; ++f, ++frameNumber) {
-        if (f == warmup) reusedBefore = rig.renderer.reusedFrames();
-        render::FrameSlot& slot = rig.slots.begin(frameNumber);
-        // --animate: objects move while being timed, the compute pass included.
-        params.explode = explodeAt(options.animation, frameNumber);
-        params.setView(cameraFrame(scene::cameraOnPath(options.cameraPath, start, bounds,
-                                                       f < warmup ? 0 : f - warmup, options.frames),
-                                   rig.extent));
-        const auto begun = Clock::now();
-        rig.renderer.record(slot, rig.targets, params);
-        const auto recorded = Clock::now();
-        if (f + 1 == total) readback.record(slot.cmd, *rig.targets); // after the timing
-        rig.slots.submit(slot);
-        if (f >= warmup) {
-            using Ms = std::chrono::duration<double, std::milli>;
-            times.total.push_back(Ms(Clock::now() - begun).count());
-            times.record.push_back(Ms(recorded - begun).count());
-        }
-    }
-    rig.slots.finish();
-    times.reusedFrames = rig.renderer.reusedFrames() - reusedBefore;
-    return times;
-}
-
-BenchmarkRow RowTimer::time(const scene::Scene& scene, const render::RenderSettings& settings,
-                            bool first) {
+// A row's names: what was asked for and what the technique and mode made of it.
+BenchmarkRow namedRow(const render::RenderSettings& settings) {
     const render::PipelineKey& key = settings.pipeline;
-    if (first) {
-        rig.renderer.setScene(scene, settings);
-        rig.renderer.setHidden(hiddenParts(options, scene));
-    } else
-        rig.renderer.configure(scene, settings);
-    const CpuTimes cpu = drawFrames();
-    const auto& all = rig.slots.gpuMilliseconds();
-    const size_t timed = std::min<size_t>(options.frames, all.size());
-    const std::vector<double> gpuMs(all.end() - long(timed), all.end());
-    const auto& passes = rig.slots.idPassMilliseconds();
-    const std::vector<double> idPassMs(passes.end() - long(timed), passes.end());
-    std::vector<double> cullMs, pyramidMs, earlyMs, lateMs;
-    for (auto t = rig.slots.frameTimes().end() - long(timed); t != rig.slots.frameTimes().end();
-         ++t) {
-        cullMs.push_back(t->cullMs);
-        pyramidMs.push_back(t->pyramidMs);
-        earlyMs.push_back(t->earlyMs);
-        lateMs.push_back(t->lateMs);
-    }
-    const std::vector<gpu::CullStats> stats(rig.slots.cullStats().end() - long(timed),
-                                            rig.slots.cullStats().end());
-
     BenchmarkRow row;
     row.renderer = key.technique->name;
     row.mode = key.mode->name;
-    const render::CullMode cull = settings.culling.mode;
-    row.culling = render::cullModeName(cull);
+    row.culling = render::cullModeName(settings.culling.mode);
+    row.cullingApplied = render::describeCulling(*key.technique, *key.mode, settings.culling.mode);
     row.lodError = settings.lod.errorPixels;
     row.lodApplied = lodApplied(settings);
-    row.cullingApplied = render::describeCulling(*key.technique, *key.mode, cull);
-    row.reusedFrames = cpu.reusedFrames;
+    row.floor = render::floorOf(*key.technique).name;
+    return row;
+}
+
+// The timed frames' medians (and every frame's GPU time along a camera path), and the last
+// frame's images' hashes.
+void addTimes(BenchmarkRow& row, const TimedFrames& timed, bool mesh, bool path) {
+    std::vector<double> cullMs, pyramidMs, earlyMs, lateMs;
+    for (const render::FrameTimes& t : timed.steps) {
+        cullMs.push_back(t.cullMs);
+        pyramidMs.push_back(t.pyramidMs);
+        earlyMs.push_back(t.earlyMs);
+        lateMs.push_back(t.lateMs);
+    }
     row.cullMsMedian = percentile(cullMs, 0.5);
     row.pyramidMsMedian = percentile(pyramidMs, 0.5);
     row.earlyMsMedian = percentile(earlyMs, 0.5);
     row.lateMsMedian = percentile(lateMs, 0.5);
-    countDrawn(row, stats, key.technique->usesMeshShader());
-    if (options.cameraPath != scene::CameraPath::None) row.gpuMsFrames = gpuMs;
-    row.gpuMsMedian = percentile(gpuMs, 0.5);
-    row.gpuMsP90 = percentile(gpuMs, 0.9);
-    row.cpuMsMedian = percentile(cpu.total, 0.5);
-    row.cpuRecordMsMedian = percentile(cpu.record, 0.5);
-    row.idPassMsMedian = percentile(idPassMs, 0.5);
-    row.draws = rig.renderer.stats().draws;
-    row.triangles = rig.renderer.stats().triangles;
-    const render::RenderStats& renderStats = rig.renderer.stats();
-    row.idBytes = renderStats.idBufferBytes;
-    row.geometryBytes = renderStats.geometryBytes;
-    row.addedVertices = renderStats.addedVertices;
-    row.addedVertexBytes = renderStats.addedVertexBytes;
-    row.meshlets = rig.renderer.cullTotals().meshlets;
-    row.frames = options.frames;
-    row.switchMs = rig.renderer.lastSwitch().ms;
-    row.pipelineCached = rig.renderer.lastSwitch().pipelineCached;
-    // Read after the frames: with Auto the path may be settled by the first frame's timing.
-    row.clearPath = render::clearPathName(rig.renderer.clearPath());
-    const std::vector<uint32_t> ids = readback.idValues();
-    const std::vector<uint8_t> color = readback.colorBytes();
-    row.idImageHash = imageHash(ids.data(), ids.size() * sizeof(uint32_t));
-    row.colorImageHash = imageHash(color.data(), color.size());
-    row.floor = render::floorOf(*key.technique).name;
-    return row;
+    countDrawn(row, timed.cullStats, mesh);
+    if (path) row.gpuMsFrames = timed.gpuMs;
+    row.gpuMsMedian = percentile(timed.gpuMs, 0.5);
+    row.gpuMsP90 = percentile(timed.gpuMs, 0.9);
+    row.cpuMsMedian = percentile(timed.cpuMs, 0.5);
+    row.cpuRecordMsMedian = percentile(timed.cpuRecordMs, 0.5);
+    row.idPassMsMedian = percentile(timed.idPassMs, 0.5);
+    const HeadlessResult::Images& last = timed.last;
+    row.idImageHash = imageHash(last.ids.data(), last.ids.size() * sizeof(uint32_t));
+    row.colorImageHash = imageHash(last.color.data(), last.color.size());
 }
+
+// What the configuration holds on the GPU, and how the switch to it went.
+void addRendererStats(BenchmarkRow& row, const render::Renderer& renderer) {
+    const render::RenderStats& stats = renderer.stats();
+    row.draws = stats.draws;
+    row.triangles = stats.triangles;
+    row.idBytes = stats.idBufferBytes;
+    row.geometryBytes = stats.geometryBytes;
+    row.addedVertices = stats.addedVertices;
+    row.addedVertexBytes = stats.addedVertexBytes;
+    row.meshlets = renderer.cullTotals().meshlets;
+    row.switchMs = renderer.lastSwitch().ms;
+    row.pipelineCached = renderer.lastSwitch().pipelineCached;
+    // Read after the frames: with Auto the path may be settled by the first frame's timing.
+    row.clearPath = render::clearPathName(renderer.clearPath());
+}
+
+// What stays the same over every row of a run: the rig, the frames' loop and the parameters
+// every frame starts from.
+struct RowTimer {
+    const Options& options;
+    Offscreen& rig;
+    FrameLoop loop;
+    render::FrameParams params;
+    FrameRun frames; // each row's warm-up before its timed frames
+
+    // Configures `settings` (a setScene for the first row, which times the scene's upload
+    // with its switch), draws warm-up and timed frames, and reads the last frame's images.
+    BenchmarkRow time(const scene::Scene& scene, const render::RenderSettings& settings,
+                      bool first) {
+        if (first) {
+            rig.renderer.setScene(scene, settings);
+            rig.renderer.setHidden(hiddenParts(options, scene));
+        } else
+            rig.renderer.configure(scene, settings);
+        const TimedFrames timed = loop.run(params, frames);
+        BenchmarkRow row = namedRow(settings);
+        addTimes(row, timed, settings.pipeline.technique->usesMeshShader(),
+                 options.cameraPath != scene::CameraPath::None);
+        addRendererStats(row, rig.renderer);
+        row.frames = options.frames;
+        return row;
+    }
+};
 
 // The fixed cost's settings: the first technique that knows parts (the floor where only
 // floors run), in its mode, drawing no object, culling off and full detail, so that what is
@@ -251,21 +208,66 @@ render::RenderSettings emptyFrame(const std::vector<render::RenderSettings>& lis
     return settings;
 }
 
-} // namespace
-
-BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) {
-    const scene::Scene& scene = loaded.scene;
+// What the report says of the run before any row is timed.
+BenchmarkReport reportHeader(const Options& options, const LoadedScene& loaded) {
     BenchmarkReport report;
     report.size = std::to_string(options.width) + "x" + std::to_string(options.height);
     report.scene = loaded.source;
     report.copies = loaded.settings.copies;
     report.lodLevels = loaded.settings.lodLevels;
     report.lodLevel = loaded.settings.lodLevel;
-    if (report.lodLevels > 1) report.levels = scene::levelStats(scene);
+    if (report.lodLevels > 1) report.levels = scene::levelStats(loaded.scene);
     report.frames = options.frames;
     report.settings = options.render;
     report.cameraPath = scene::cameraPathName(options.cameraPath);
+    return report;
+}
 
+// Every row of `list` in turn, each divided by its floor's time (floors come first).
+void timeRows(RowTimer& timer, const scene::Scene& scene,
+              const std::vector<render::RenderSettings>& list, BenchmarkReport& report) {
+    std::map<std::tuple<std::string, std::string, render::CullMode, float>, double> floorMs;
+    for (size_t i = 0; i < list.size(); ++i) {
+        BenchmarkRow row = timer.time(scene, list[i], i == 0);
+        if (i == 0) report.hiddenParts = timer.rig.renderer.hidden().size();
+        const auto floorKey = std::tuple(row.floor, row.mode, list[i].culling.mode, row.lodError);
+        if (list[i].pipeline.technique->isFloor()) floorMs[floorKey] = row.gpuMsMedian;
+        const double floor = floorMs[floorKey];
+        row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
+        report.rows.push_back(row);
+        std::fprintf(stderr,
+                     "benchmark: [%zu/%zu] %s + %s, culling %s, LOD error %g: GPU %.3f ms "
+                     "(cull %.3f, pyramid %.3f; + %.3f ID passes), CPU %.3f ms, %.0f of "
+                     "%zu draws\n",
+                     i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(),
+                     row.culling.c_str(), double(row.lodError), row.gpuMsMedian, row.cullMsMedian,
+                     row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian, row.drawsDrawn,
+                     row.draws);
+    }
+}
+
+// After the rows, so that theirs are timed as they were before it existed: the frame that
+// draws nothing, and every row's time above it.
+void timeFixedCost(RowTimer& timer, const scene::Scene& scene,
+                   const std::vector<render::RenderSettings>& list, BenchmarkReport& report) {
+    report.fixedCost = timer.time(scene, emptyFrame(list), false);
+    const BenchmarkRow& empty = report.fixedCost;
+    for (BenchmarkRow& row : report.rows) row.aboveFixedMs = row.gpuMsMedian - empty.gpuMsMedian;
+    const render::Renderer& renderer = timer.rig.renderer;
+    report.clearPath = render::clearPathName(renderer.clearPath());
+    report.clearTiming = renderer.clearTiming(timer.options.render.pipeline.msaa);
+    std::fprintf(stderr,
+                 "benchmark: fixed cost (%s + %s, culling off, nothing drawn): GPU %.3f ms, "
+                 "%zu draws, %llu triangles; clear path %s\n",
+                 empty.renderer.c_str(), empty.mode.c_str(), empty.gpuMsMedian, empty.draws,
+                 static_cast<unsigned long long>(empty.triangles), report.clearPath.c_str());
+}
+
+} // namespace
+
+BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) {
+    const scene::Scene& scene = loaded.scene;
+    BenchmarkReport report = reportHeader(options, loaded);
     vk::Instance instance({options.validation, {}, options.syncValidation});
     {
         Offscreen rig(instance, options);
@@ -276,55 +278,20 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         const auto list = rows(options, info, report.skipped);
         for (const auto& [name, why] : report.skipped)
             std::fprintf(stderr, "benchmark: %s skipped: %s\n", name.c_str(), why.c_str());
-        Readback readback(rig.device, rig.extent);
 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
         // As headless and the viewer open the scene; with a path, timed frame f is frame f
         // of the path (the warm-up frames stay at its start).
         const scene::Camera start = initialCamera(loaded, aspect, options.camera);
-        RowTimer timer{options,
-                       rig,
-                       readback,
-                       start,
-                       options.cameraPath == scene::CameraPath::None ? scene::Bounds{}
-                                                                     : scene.bounds(),
-                       cameraFrame(start, rig.extent)};
+        RowTimer timer{options, rig, FrameLoop(rig, options, scene, start),
+                       cameraFrame(start, rig.extent), FrameRun{}};
         // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
-        timer.warmup = std::clamp(options.frames / 5, 5u, 50u);
+        timer.frames.warmup = std::clamp(options.frames / 5, 5u, 50u);
         // --visible-parts: every frame counts the parts it shows, as the viewer's panel does.
         if (options.visibleParts)
             timer.params.partSets = {{{0, 0}, {rig.extent.width - 1, rig.extent.height - 1}}};
-        std::map<std::tuple<std::string, std::string, render::CullMode, float>, double> floorMs;
-        for (size_t i = 0; i < list.size(); ++i) {
-            BenchmarkRow row = timer.time(scene, list[i], i == 0);
-            if (i == 0) report.hiddenParts = rig.renderer.hidden().size();
-            const auto floorKey =
-                std::tuple(row.floor, row.mode, list[i].culling.mode, row.lodError);
-            if (list[i].pipeline.technique->isFloor()) floorMs[floorKey] = row.gpuMsMedian;
-            const double floor = floorMs[floorKey];
-            row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
-            report.rows.push_back(row);
-            std::fprintf(stderr,
-                         "benchmark: [%zu/%zu] %s + %s, culling %s, LOD error %g: GPU %.3f ms "
-                         "(cull %.3f, pyramid %.3f; + %.3f ID passes), CPU %.3f ms, %.0f of "
-                         "%zu draws\n",
-                         i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(),
-                         row.culling.c_str(), double(row.lodError), row.gpuMsMedian,
-                         row.cullMsMedian, row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian,
-                         row.drawsDrawn, row.draws);
-        }
-        // After the rows, so that theirs are timed as they were before it existed.
-        report.fixedCost = timer.time(scene, emptyFrame(list), false);
-        const BenchmarkRow& empty = report.fixedCost;
-        for (BenchmarkRow& row : report.rows)
-            row.aboveFixedMs = row.gpuMsMedian - empty.gpuMsMedian;
-        report.clearPath = render::clearPathName(rig.renderer.clearPath());
-        report.clearTiming = rig.renderer.clearTiming(options.render.pipeline.msaa);
-        std::fprintf(stderr,
-                     "benchmark: fixed cost (%s + %s, culling off, nothing drawn): GPU %.3f ms, "
-                     "%zu draws, %llu triangles; clear path %s\n",
-                     empty.renderer.c_str(), empty.mode.c_str(), empty.gpuMsMedian, empty.draws,
-                     static_cast<unsigned long long>(empty.triangles), report.clearPath.c_str());
+        timeRows(timer, scene, list, report);
+        timeFixedCost(timer, scene, list, report);
     }
     report.validationMessages = instance.validationMessages();
     return report;

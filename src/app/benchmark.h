@@ -46,8 +46,6 @@ struct BenchmarkRow {
     double aboveFixedMs = 0;
     std::string clearPath; // the clear path its frames drew with (Renderer::clearPath)
     uint32_t frames = 0;   // timed frames (after warm-up)
-    // Timed frames that drew the last culled frame's lists again, the view standing still.
-    uint64_t reusedFrames = 0;
     // FNV-1a of the last frame's ID and colour images: every part-ID row of one run must
     // show the same ID image, and the colour shows that the shading settings took effect.
     uint64_t idImageHash = 0, colorImageHash = 0;

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "app/benchmark.h"
-#include "app/json.h"
+#include "util/json_writer.h"
 
 namespace app {
 namespace {
@@ -21,67 +21,100 @@ std::string fixed(double value, int digits) {
     return text;
 }
 
-const char* boolean(bool value) {
-    return value ? "true" : "false";
+// GPU and CPU milliseconds with four decimals, as the JSON and CSV have always had them.
+util::Fixed ms(double value) {
+    return {value, 4};
 }
 
-// The fields of one row, without braces: a result's, or the fixed cost's.
-std::string rowJson(const BenchmarkRow& row) {
-    std::ostringstream out;
-    out << "\"renderer\":" << jsonString(row.renderer) << ",\"mode\":" << jsonString(row.mode)
-        << ",\"culling\":" << jsonString(row.culling)
-        << ",\"culling_applied\":" << jsonString(row.cullingApplied)
-        << ",\"lod_error\":" << fixed(row.lodError, 3)
-        << ",\"lod_applied\":" << boolean(row.lodApplied)
-        << ",\"gpu_ms_median\":" << fixed(row.gpuMsMedian, 4)
-        << ",\"gpu_ms_p90\":" << fixed(row.gpuMsP90, 4)
-        << ",\"above_fixed_ms\":" << fixed(row.aboveFixedMs, 4)
-        << ",\"cpu_ms_median\":" << fixed(row.cpuMsMedian, 4)
-        << ",\"cpu_record_ms_median\":" << fixed(row.cpuRecordMsMedian, 4)
-        << ",\"id_pass_ms_median\":" << fixed(row.idPassMsMedian, 4)
-        << ",\"cull_ms_median\":" << fixed(row.cullMsMedian, 4)
-        << ",\"pyramid_ms_median\":" << fixed(row.pyramidMsMedian, 4)
-        << ",\"early_draw_ms_median\":" << fixed(row.earlyMsMedian, 4)
-        << ",\"late_draw_ms_median\":" << fixed(row.lateMsMedian, 4)
-        << ",\"reused_frames\":" << row.reusedFrames << ",\"draws\":" << row.draws
-        << ",\"draws_drawn\":" << fixed(row.drawsDrawn, 1) << ",\"triangles\":" << row.triangles
-        << ",\"triangles_drawn\":" << fixed(row.trianglesDrawn, 1)
-        << ",\"meshlets_drawn\":" << fixed(row.meshletsDrawn, 1)
-        << ",\"triangles_drawn_by_level\":[";
-    for (size_t l = 0; l < row.levelTrianglesDrawn.size(); ++l)
-        out << (l ? "," : "") << fixed(row.levelTrianglesDrawn[l], 1);
-    out << "]"
-        << ",\"id_bytes\":" << row.idBytes << ",\"geometry_bytes\":" << row.geometryBytes
-        << ",\"added_vertices\":" << row.addedVertices
-        << ",\"added_vertex_bytes\":" << row.addedVertexBytes << ",\"meshlets\":" << row.meshlets
-        << ",\"floor\":" << jsonString(row.floor)
-        << ",\"ratio_to_floor\":" << fixed(row.ratioToFloor, 3) << ",\"id_image_hash\":\""
-        << hex(row.idImageHash) << "\""
-        << ",\"color_image_hash\":\"" << hex(row.colorImageHash) << "\""
-        << ",\"switch_ms\":" << fixed(row.switchMs, 3)
-        << ",\"pipeline_cached\":" << boolean(row.pipelineCached)
-        << ",\"clear_path\":" << jsonString(row.clearPath);
+// Medians of counts over frames: one decimal (a median of two frames may end in .5).
+util::Fixed count(double value) {
+    return {value, 1};
+}
+
+// The members of one row: a result's, or the fixed cost's.
+void rowMembers(util::JsonWriter& json, const BenchmarkRow& row) {
+    json.member("renderer", row.renderer)
+        .member("mode", row.mode)
+        .member("culling", row.culling)
+        .member("culling_applied", row.cullingApplied)
+        .member("lod_error", util::Fixed{row.lodError, 3})
+        .member("lod_applied", row.lodApplied)
+        .member("gpu_ms_median", ms(row.gpuMsMedian))
+        .member("gpu_ms_p90", ms(row.gpuMsP90))
+        .member("above_fixed_ms", ms(row.aboveFixedMs))
+        .member("cpu_ms_median", ms(row.cpuMsMedian))
+        .member("cpu_record_ms_median", ms(row.cpuRecordMsMedian))
+        .member("id_pass_ms_median", ms(row.idPassMsMedian))
+        .member("cull_ms_median", ms(row.cullMsMedian))
+        .member("pyramid_ms_median", ms(row.pyramidMsMedian))
+        .member("early_draw_ms_median", ms(row.earlyMsMedian))
+        .member("late_draw_ms_median", ms(row.lateMsMedian))
+        .member("draws", row.draws)
+        .member("draws_drawn", count(row.drawsDrawn))
+        .member("triangles", row.triangles)
+        .member("triangles_drawn", count(row.trianglesDrawn))
+        .member("meshlets_drawn", count(row.meshletsDrawn))
+        .beginArray("triangles_drawn_by_level");
+    for (double triangles : row.levelTrianglesDrawn) json.value(count(triangles));
+    json.endArray()
+        .member("id_bytes", row.idBytes)
+        .member("geometry_bytes", row.geometryBytes)
+        .member("added_vertices", row.addedVertices)
+        .member("added_vertex_bytes", row.addedVertexBytes)
+        .member("meshlets", row.meshlets)
+        .member("floor", row.floor)
+        .member("ratio_to_floor", util::Fixed{row.ratioToFloor, 3})
+        .member("id_image_hash", hex(row.idImageHash))
+        .member("color_image_hash", hex(row.colorImageHash))
+        .member("switch_ms", util::Fixed{row.switchMs, 3})
+        .member("pipeline_cached", row.pipelineCached)
+        .member("clear_path", row.clearPath);
     if (!row.gpuMsFrames.empty()) {
-        out << ",\"gpu_ms_frames\":[";
-        for (size_t f = 0; f < row.gpuMsFrames.size(); ++f)
-            out << (f ? "," : "") << fixed(row.gpuMsFrames[f], 4);
-        out << "]";
+        json.beginArray("gpu_ms_frames");
+        for (double frameMs : row.gpuMsFrames) json.value(ms(frameMs));
+        json.endArray();
     }
-    return out.str();
 }
 
 // The clear path asked for, the one that ran and, with auto, what its timing found.
-std::string clearJson(const BenchmarkReport& r) {
-    std::ostringstream out;
-    out << "\"clear\":" << jsonString(render::clearPathName(r.settings.clear))
-        << ",\"clear_path\":" << jsonString(r.clearPath) << ",\"clear_timing\":";
+void clearMembers(util::JsonWriter& json, const BenchmarkReport& r) {
+    json.member("clear", render::clearPathName(r.settings.clear)).member("clear_path", r.clearPath);
     if (const auto& t = r.clearTiming)
-        out << "{\"samples\":" << t->samples << ",\"pass_ms\":" << fixed(t->passMs, 4)
-            << ",\"compute_ms\":" << fixed(t->computeMs, 4)
-            << ",\"remembered\":" << boolean(t->remembered) << "}";
+        json.beginObject("clear_timing")
+            .member("samples", t->samples)
+            .member("pass_ms", ms(t->passMs))
+            .member("compute_ms", ms(t->computeMs))
+            .member("remembered", t->remembered)
+            .endObject();
     else
-        out << "null";
-    return out.str();
+        json.key("clear_timing").null();
+}
+
+// The settings every row shares.
+void settingsObject(util::JsonWriter& json, const BenchmarkReport& r) {
+    const render::RenderSettings& s = r.settings;
+    json.beginObject("settings")
+        .member("size", r.size)
+        .member("msaa", s.pipeline.msaa)
+        .member("scene", r.scene)
+        .member("copies", r.copies)
+        .member("lod_levels", r.lodLevels)
+        .member("lod_level", r.lodLevel)
+        .key("levels");
+    levelStatsArray(json, r.levels);
+    json.member("search_batch", s.pipeline.searchBatch)
+        .member("frames", r.frames)
+        .member("visible", util::Fixed{s.draws.visible, 3})
+        .member("sort_draws", s.draws.sortDraws)
+        .member("part_weight", util::Fixed{s.shading.partWeight, 3})
+        .member("colorize_draws", s.shading.colorizeDraws)
+        .member("tint_levels", s.shading.tintLevels)
+        .member("ignore_materials", s.shading.ignoreMaterials)
+        .member("edges", s.edges.on)
+        .member("edge_width", s.edges.width)
+        .member("hidden_parts", r.hiddenParts)
+        .member("camera_path", r.cameraPath)
+        .endObject();
 }
 
 // For the table's header: "clear compute (auto: pass 0.790 ms, compute 0.308 ms, timed)".
@@ -101,35 +134,31 @@ std::string clearSummary(const BenchmarkReport& r) {
 } // namespace
 
 std::string benchmarkJson(const BenchmarkReport& r) {
-    std::ostringstream out;
-    const render::RenderSettings& s = r.settings;
-    out << "{\"device\":{\"name\":" << jsonString(r.deviceName)
-        << ",\"driver\":" << jsonString(r.driver) << ",\"api\":" << jsonString(r.api) << "},\n "
-        << clearJson(r) << ",\n"
-        << " \"settings\":{\"size\":" << jsonString(r.size) << ",\"msaa\":" << s.pipeline.msaa
-        << ",\"scene\":" << jsonString(r.scene) << ",\"copies\":" << r.copies
-        << ",\"lod_levels\":" << r.lodLevels << ",\"lod_level\":" << r.lodLevel
-        << ",\"levels\":" << levelStatsJson(r.levels)
-        << ",\"search_batch\":" << s.pipeline.searchBatch << ",\"frames\":" << r.frames
-        << ",\"visible\":" << fixed(s.draws.visible, 3)
-        << ",\"sort_draws\":" << (s.draws.sortDraws ? "true" : "false")
-        << ",\"part_weight\":" << fixed(s.shading.partWeight, 3)
-        << ",\"colorize_draws\":" << (s.shading.colorizeDraws ? "true" : "false")
-        << ",\"tint_levels\":" << (s.shading.tintLevels ? "true" : "false")
-        << ",\"ignore_materials\":" << (s.shading.ignoreMaterials ? "true" : "false")
-        << ",\"edges\":" << (s.edges.on ? "true" : "false") << ",\"edge_width\":" << s.edges.width
-        << ",\"hidden_parts\":" << r.hiddenParts << ",\"camera_path\":" << jsonString(r.cameraPath)
-        << "},\n"
-        << " \"fixed_cost\":{\"visible\":0.000," << rowJson(r.fixedCost) << "},\n"
-        << " \"results\":[";
-    for (size_t i = 0; i < r.rows.size(); ++i)
-        out << (i ? ",\n  " : "\n  ") << "{" << rowJson(r.rows[i]) << "}";
-    out << "\n ],\n \"skipped\":[";
-    for (size_t i = 0; i < r.skipped.size(); ++i)
-        out << (i ? "," : "") << "{\"renderer\":" << jsonString(r.skipped[i].first)
-            << ",\"reason\":" << jsonString(r.skipped[i].second) << "}";
-    out << "]}\n";
-    return out.str();
+    // One line per part (device, clear path, settings, fixed cost) and per result, for
+    // readers that take a file line by line (tests/benchmark_test.sh).
+    util::JsonWriter json;
+    json.beginObject()
+        .beginObject("device")
+        .member("name", r.deviceName)
+        .member("driver", r.driver)
+        .member("api", r.api)
+        .endObject()
+        .newline(1);
+    clearMembers(json, r);
+    json.newline(1);
+    settingsObject(json, r);
+    json.newline(1).beginObject("fixed_cost").member("visible", util::Fixed{0.0, 3});
+    rowMembers(json, r.fixedCost);
+    json.endObject().newline(1).beginArray("results");
+    for (const BenchmarkRow& row : r.rows) {
+        json.newline(2).beginObject();
+        rowMembers(json, row);
+        json.endObject();
+    }
+    json.newline(1).endArray().newline(1).beginArray("skipped");
+    for (const auto& [renderer, reason] : r.skipped)
+        json.beginObject().member("renderer", renderer).member("reason", reason).endObject();
+    return json.endArray().endObject().text() + "\n";
 }
 
 std::string benchmarkCsv(const BenchmarkReport& r) {

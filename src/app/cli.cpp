@@ -77,8 +77,14 @@ Options parseArgs(const std::vector<std::string>& args) {
     return parseArgs(args, Options{});
 }
 
-Options parseArgs(const std::vector<std::string>& args, Options start) {
-    Options options = std::move(start);
+namespace {
+
+bool given(const Options& options, const char* name) {
+    return std::find(options.given.begin(), options.given.end(), name) != options.given.end();
+}
+
+// Each argument through its flag (--name value or --name=value), recorded in Options::given.
+void applyFlags(const std::vector<std::string>& args, Options& options) {
     for (size_t i = 0; i < args.size(); ++i) {
         std::string name = args[i], value;
         bool inlineValue = false;
@@ -101,43 +107,50 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
         flag->apply(options, value);
         options.given.push_back(name);
     }
-    auto given = [&](const char* name) {
-        return std::find(options.given.begin(), options.given.end(), name) != options.given.end();
-    };
+}
+
+// --benchmark: its defaults where the flags are not given. Otherwise the lists (and "all")
+// are the benchmark's: one name each.
+void settleBenchmarkLists(Options& options) {
     if (options.benchmark) {
-        if (!given("--size")) options.width = 2560, options.height = 1440;
-        if (!given("--msaa")) options.render.pipeline.msaa = 4;
-        if (!given("--copies")) options.scene.copies = 3;
-        if (!given("--frames")) options.frames = 200;
-        if (!given("--renderer")) options.benchmarkTechniques = techniqueList("all");
-        if (!given("--mode")) options.benchmarkModes = modeList("all");
-        if (!given("--culling")) options.benchmarkCulling = cullingList("all");
-        if (!given("--lod-error")) options.benchmarkLodErrors = {options.render.lod.errorPixels};
-    } else {
-        // One name each: the lists (and "all") are the benchmark's.
-        const bool oneEach = (!given("--renderer") || options.benchmarkTechniques.size() == 1) &&
-                             (!given("--mode") || options.benchmarkModes.size() == 1) &&
-                             (!given("--culling") || options.benchmarkCulling.size() == 1);
-        if (!oneEach)
-            throw UsageError("--renderer, --mode and --culling take one name each unless "
-                             "--benchmark is given");
-        if (options.benchmarkLodErrors.size() > 1)
-            throw UsageError("--lod-error takes one value unless --benchmark is given");
-        options.benchmarkTechniques.clear();
-        options.benchmarkModes.clear();
-        options.benchmarkCulling.clear();
-        options.benchmarkLodErrors.clear();
+        if (!given(options, "--size")) options.width = 2560, options.height = 1440;
+        if (!given(options, "--msaa")) options.render.pipeline.msaa = 4;
+        if (!given(options, "--copies")) options.scene.copies = 3;
+        if (!given(options, "--frames")) options.frames = 200;
+        if (!given(options, "--renderer")) options.benchmarkTechniques = techniqueList("all");
+        if (!given(options, "--mode")) options.benchmarkModes = modeList("all");
+        if (!given(options, "--culling")) options.benchmarkCulling = cullingList("all");
+        if (!given(options, "--lod-error"))
+            options.benchmarkLodErrors = {options.render.lod.errorPixels};
+        return;
     }
+    const bool oneEach =
+        (!given(options, "--renderer") || options.benchmarkTechniques.size() == 1) &&
+        (!given(options, "--mode") || options.benchmarkModes.size() == 1) &&
+        (!given(options, "--culling") || options.benchmarkCulling.size() == 1);
+    if (!oneEach)
+        throw UsageError("--renderer, --mode and --culling take one name each unless "
+                         "--benchmark is given");
+    if (options.benchmarkLodErrors.size() > 1)
+        throw UsageError("--lod-error takes one value unless --benchmark is given");
+    options.benchmarkTechniques.clear();
+    options.benchmarkModes.clear();
+    options.benchmarkCulling.clear();
+    options.benchmarkLodErrors.clear();
+}
+
+// Levels of detail, and the exploded view's two forms.
+void settleLevelsAndAnimation(Options& options) {
     if (options.scene.lodLevel >= options.scene.lodLevels)
         throw UsageError("--lod-level " + std::to_string(options.scene.lodLevel) +
                          " needs --lod-levels " + std::to_string(options.scene.lodLevel + 1) +
                          " or more");
     // Levels to choose from: all of them unless the levels built are given.
-    if (options.render.lod.errorPixels > 0.0f && !given("--lod-levels"))
-        options.scene.lodLevels = scene::maxLevels;
-    if (options.render.lod.errorPixels > 0.0f && options.scene.lodLevels < 2)
+    const bool chosen = options.render.lod.errorPixels > 0.0f;
+    if (chosen && !given(options, "--lod-levels")) options.scene.lodLevels = scene::maxLevels;
+    if (chosen && options.scene.lodLevels < 2)
         throw UsageError("--lod-error needs --lod-levels 2 or more");
-    if (options.render.lod.errorPixels > 0.0f && options.scene.lodLevel > 0)
+    if (chosen && options.scene.lodLevel > 0)
         throw UsageError("--lod-error and --lod-level cannot be combined: --lod-level draws one "
                          "level everywhere");
     if (options.animation.time && !options.animation.animate)
@@ -145,9 +158,10 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
     if (options.animation.animate && options.animation.explode > 0.0f)
         throw UsageError("--explode and --animate cannot be combined: --animate runs the "
                          "exploded view from 0 to 1 and back");
-    auto outside = [&](const Options::Pixel& p) {
-        return p.x >= options.width || p.y >= options.height;
-    };
+}
+
+// Every pixel a flag names lies in the image.
+void checkPixels(const Options& options) {
     std::vector<Options::Pixel> pixels = options.picks;
     pixels.insert(pixels.end(), options.faceInfos.begin(), options.faceInfos.end());
     pixels.insert(pixels.end(), options.edgeInfos.begin(), options.edgeInfos.end());
@@ -159,10 +173,20 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
         pixels.push_back({rect->max.x, rect->max.y});
     }
     for (const auto& p : pixels)
-        if (outside(p))
+        if (p.x >= options.width || p.y >= options.height)
             throw UsageError("pixel " + std::to_string(p.x) + "," + std::to_string(p.y) +
                              " is outside the " + std::to_string(options.width) + "x" +
                              std::to_string(options.height) + " image");
+}
+
+} // namespace
+
+Options parseArgs(const std::vector<std::string>& args, Options start) {
+    Options options = std::move(start);
+    applyFlags(args, options);
+    settleBenchmarkLists(options);
+    settleLevelsAndAnimation(options);
+    checkPixels(options);
     if (!options.hide.empty() && !options.isolate.empty())
         throw UsageError("--hide and --isolate cannot be combined: --isolate hides the rest");
     return options;
@@ -174,14 +198,18 @@ Options parseArgs(int argc, char** argv) {
 
 std::string usage() {
     std::string text = "usage: idview [OPTIONS]\n"
-                       "Renders a CAD assembly and knows which part is at every pixel.\n\n";
-    for (const auto& f : flags()) {
-        std::string left = std::string("  ") + f.name + (f.value ? std::string(" ") + f.value : "");
-        if (left.size() < 26)
-            left.resize(26, ' ');
-        else
-            left += "\n" + std::string(26, ' ');
-        text += left + f.help + "\n";
+                       "Renders a CAD assembly and knows which part is at every pixel.\n";
+    for (const FlagGroup& group : flagGroups()) {
+        text.append("\n").append(group.title).append(":\n");
+        for (const Flag& f : group.flags) {
+            std::string left =
+                std::string("  ") + f.name + (f.value ? std::string(" ") + f.value : "");
+            if (left.size() < 26)
+                left.resize(26, ' ');
+            else
+                left.append("\n").append(26, ' ');
+            text += left + f.help + "\n";
+        }
     }
     text += "\nExit codes: 0 ok, 1 error (no device, missing features, I/O), 2 bad command line,\n"
             "3 validation messages were reported (with --validation).\n";

@@ -1,5 +1,6 @@
-// cli_flags.h - the command line's flag table (cli_flags.cpp): per flag its name, the value
-// it takes, its help line and what it writes into Options. cli.cpp parses with it.
+// cli_flags.h - the command line's flag table (cli_flags*.cpp): per flag its name, the value
+// it takes, its help line and what it writes into Options, in groups by concern (the help
+// prints one heading per group). cli.cpp parses with it.
 #pragma once
 
 #include <functional>
@@ -20,6 +21,14 @@ struct Flag {
     bool headlessOnly = false;
 };
 
+struct FlagGroup {
+    const char* title; // the help's heading
+    std::vector<Flag> flags;
+};
+
+// Every flag, group by group, in the order --help lists them.
+const std::vector<FlagGroup>& flagGroups();
+// The same flags in one list.
 const std::vector<Flag>& flags();
 
 } // namespace app

@@ -53,7 +53,6 @@ struct HeadlessResult {
     std::vector<render::FrameTimes> frameTimes;
     std::vector<gpu::CullStats> cullStats;
     render::CullCounts cullTotals;
-    uint64_t reusedFrames = 0; // timed frames that drew the last culled lists again (still view)
     std::string deviceName;
     // From just before the device was created to the first frame's fence (all of the
     // sequence's results hold the same), and the pipeline cache's status when it was read.
@@ -66,6 +65,8 @@ struct HeadlessResult {
 // One --pick JSON line: {"x","y","part","object","local_part","name","path","depth"}, with
 // nulls for every field but x and y on background.
 std::string pickJson(const scene::Scene& scene, const render::PickReading& pick);
+// --face-info's line: scene::faceReportJson of the picked part, or {"part":null}.
+std::string faceInfoJson(const scene::Scene& scene, const render::PickReading& pick);
 // --edge-info's line: {"x","y"} then edgeReportJson's members, or {"x","y","part","edge":null}.
 std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& pick,
                          const std::optional<scene::EdgeRef>& edge);

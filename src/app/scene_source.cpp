@@ -1,25 +1,20 @@
-// scene_source.cpp - scene loading by source, copies, and the --stats report.
+// scene_source.cpp - scene loading by source, copies, and the opening camera (the --stats
+// and --tree JSON are in scene_report.cpp).
 #include "app/scene_source.h"
 
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
-#include "app/json.h"
 #include "app/progress_lines.h"
-#include "render/draw_list.h"
-#include "scene/assembly_tree.h"
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/lod.h"
-#include "scene/part_data.h"
 #include "scene/procedural/generator.h"
 #include "scene/procedural/procedural.h"
 
@@ -178,102 +173,6 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const Camer
     camera.ortho = view.ortho;
     if (view.ortho) scene::fitPlanes(camera, bounds);
     return camera;
-}
-
-namespace {
-
-void appendNode(std::string& out, const scene::AssemblyNode& node) {
-    out += "{\"name\":" + jsonString(node.name);
-    if (node.object) {
-        out.append(",\"object\":").append(std::to_string(*node.object));
-        out.append(",\"parts\":[").append(std::to_string(node.firstPart)).append(",");
-        out.append(std::to_string(node.partCount)).append("]");
-    }
-    if (!node.object || !node.children.empty()) {
-        out += ",\"children\":[";
-        for (size_t i = 0; i < node.children.size(); ++i) {
-            if (i) out += ",";
-            appendNode(out, node.children[i]);
-        }
-        out += "]";
-    }
-    out += "}";
-}
-
-} // namespace
-
-std::string treeRootName(const LoadedScene& loaded) {
-    const std::filesystem::path source(loaded.source);
-    return source.has_extension() ? source.filename().string() : loaded.source;
-}
-
-std::string treeJson(const LoadedScene& loaded) {
-    std::string out;
-    appendNode(out, scene::assemblyTree(loaded.scene, treeRootName(loaded)));
-    return out;
-}
-
-std::string levelStatsJson(const std::vector<scene::LevelStats>& levels) {
-    std::ostringstream json;
-    json << "[";
-    for (size_t l = 0; l < levels.size(); ++l) {
-        const scene::LevelStats& v = levels[l];
-        json << (l ? "," : "") << "{\"level\":" << l << ",\"geometries\":" << v.geometries
-             << ",\"unique_triangles\":" << v.uniqueTriangles << ",\"vertices\":" << v.vertices
-             << ",\"bytes\":" << v.bytes << ",\"triangles\":" << v.drawnTriangles
-             << ",\"max_error\":" << std::setprecision(6) << v.maxError << "}";
-    }
-    json << "]";
-    return json.str();
-}
-
-std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,
-                      const std::optional<FirstFrame>& first) {
-    const scene::Scene& s = loaded.scene;
-    const render::PipelineKey& key = settings.pipeline;
-    const scene::IdDataBytes bytes = scene::idDataBytes(s, key.searchBatch);
-    std::ostringstream json;
-    json.precision(3);
-    json << std::fixed << "{\"source\":" << jsonString(loaded.source) << ",\"part_mode\":"
-         << jsonString(loaded.cad ? "faces" : scene::partModeName(loaded.settings.parts))
-         << ",\"copies\":" << loaded.settings.copies << ",\"objects\":" << s.objects.size()
-         << ",\"geometries\":" << s.geometries.size() << ",\"parts\":" << s.uniquePartCount()
-         << ",\"geometry_parts\":" << s.parts.size() << ",\"triangles\":" << s.drawnTriangleCount()
-         << ",\"unique_triangles\":" << s.indices.size() / 3
-         << ",\"vertices\":" << s.vertices.size() << ",\"load_ms\":" << loaded.loadMs
-         << ",\"read_ms\":" << loaded.readMs << ",\"tessellation_ms\":" << loaded.tessellationMs
-         << ",\"faces_failed\":" << loaded.facesFailed << "," << scene::unitJsonMember(s.unit)
-         << ",\"deflection\":" << std::defaultfloat << std::setprecision(6) << loaded.deflection
-         << std::fixed << std::setprecision(3) << ",\"cache\":" << jsonString(loaded.cache)
-         << ",\"cache_note\":" << jsonString(loaded.cacheNote) << ",\"cache_ms\":" << loaded.cacheMs
-         << ",\"search_batch\":" << key.searchBatch
-         << ",\"triangle_part_id_bytes\":" << bytes.trianglePartIds
-         << ",\"part_triangle_count_bytes\":" << bytes.partTriangleCounts
-         << ",\"part_triangle_offset_bytes\":" << bytes.partTriangleOffsets
-         << ",\"lod_ms\":" << loaded.lodMs << ",\"lod_level\":" << loaded.settings.lodLevel
-         << ",\"lod_levels\":" << levelStatsJson(scene::levelStats(s));
-    // What the chosen renderer and mode would draw and upload, derived geometry included.
-    const render::DerivedGeometry geometry = render::buildDerivedGeometry(s, *key.technique);
-    const render::DerivedPrimitives derived = geometry.view();
-    const render::RenderStats r = render::statsFor(
-        render::buildDrawList(s, key, settings.draws, derived), *key.mode, derived);
-    json << ",\"renderer\":" << jsonString(key.technique->name)
-         << ",\"mode\":" << jsonString(key.mode->name) << ",\"draws\":" << r.draws
-         << ",\"drawn_triangles\":" << r.triangles << ",\"pipelines\":" << r.pipelines
-         << ",\"id_buffer_bytes\":" << r.idBufferBytes << ",\"per_draw_bytes\":" << r.perDrawBytes
-         << ",\"indirect_bytes\":" << r.indirectBytes << ",\"geometry_bytes\":" << r.geometryBytes
-         << ",\"added_vertices\":" << r.addedVertices
-         << ",\"added_vertex_bytes\":" << r.addedVertexBytes << ",\"meshlets\":" << r.meshlets;
-    json << ",\"warnings\":[";
-    for (size_t i = 0; i < loaded.warnings.size(); ++i)
-        json << (i ? "," : "") << jsonString(loaded.warnings[i]);
-    json << "]";
-    if (first)
-        json << ",\"first_frame_ms\":" << first->ms
-             << ",\"pipeline_cache\":" << jsonString(first->pipelineCache) << "}";
-    else
-        json << ",\"first_frame_ms\":null,\"pipeline_cache\":null}";
-    return json.str();
 }
 
 } // namespace app

@@ -16,6 +16,10 @@
 #include "scene/lod.h"
 #include "scene/scene.h"
 
+namespace util {
+class JsonWriter;
+}
+
 namespace app {
 
 // A parsed --scene value: "assembly", "tiles" or "procedural[:preset=NAME][,seed=N]".
@@ -106,8 +110,9 @@ struct FirstFrame {
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,
                       const std::optional<FirstFrame>& first = std::nullopt);
 // What each level of detail holds (scene::levelStats), as a JSON array for --stats and the
-// benchmark.
-std::string levelStatsJson(const std::vector<scene::LevelStats>& levels);
+// benchmark: [{"level","geometries","unique_triangles","vertices","bytes","triangles",
+// "max_error"},...].
+void levelStatsArray(util::JsonWriter& json, const std::vector<scene::LevelStats>& levels);
 
 // --tree: the scene's assembly tree (scene/assembly_tree.h) as nested
 // {"name","children":[...]}, each leaf {"name","object","parts":[first unique part, count]};

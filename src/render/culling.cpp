@@ -14,9 +14,6 @@
 namespace render {
 namespace {
 
-// shaders/cull.glsl's margin: boxes grow by this fraction of the coordinate magnitudes.
-constexpr float relativeMargin = 1.0f / 524288.0f;
-
 uint32_t groupsOf(uint32_t count, uint32_t size) {
     return (count + size - 1) / size;
 }
@@ -28,8 +25,8 @@ const std::vector<CullModeEntry>& cullModes() {
         {CullMode::Off, "off", "draw every object every frame"},
         {CullMode::Frustum, "frustum", "leave out what lies outside the view frustum"},
         {CullMode::Occlusion, "occlusion",
-         "frustum, and two-phase occlusion: what the last ID image showed first, then the "
-         "rest against a depth pyramid of that"},
+         "frustum, and two-phase occlusion: what passed the last frame's test first, then "
+         "the rest against a depth pyramid of that"},
     };
     return list;
 }
@@ -53,20 +50,34 @@ std::string cullModeNames() {
     return text;
 }
 
-CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode culling) {
+CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode culling, bool levels) {
     CullPlan plan;
-    if (culling == CullMode::Off) return plan;
-    plan.gpuLists = mode.indirect;
-    plan.cpuFrustum = !mode.indirect;
-    plan.taskShader = technique.usesMeshShader();
+    const bool on = culling != CullMode::Off;
+    plan.levels = levels && levelsChosenIn(mode);
+    plan.gpuLists = mode.indirect && (on || plan.levels);
+    plan.clusterRuns = plan.gpuLists && on && technique.drawsClusterRuns();
+    plan.cpuFrustum = !mode.indirect && on;
+    // Lists written by cull.comp name each mesh draw in a MeshTaskCommand, which the task
+    // shader reads, culling or not.
+    plan.taskShader = technique.usesMeshShader() && (on || plan.gpuLists);
     // Push mode draws from the CPU, which does not know what the GPU found occluded; the
     // task shader does, so push mode's mesh draws still get the two phases for meshlets.
     plan.twoPasses = culling == CullMode::Occlusion && (plan.gpuLists || plan.taskShader);
+    plan.firstPhase = !on              ? gpu::CULL_PHASE_NONE
+                      : plan.twoPasses ? gpu::CULL_PHASE_EARLY
+                                       : gpu::CULL_PHASE_FRUSTUM;
     return plan;
 }
 
+bool levelsChosenIn(const DrawMode& mode) {
+    return mode.indirect;
+}
+
 std::string describeCulling(const Technique& technique, const DrawMode& mode, CullMode culling) {
-    if (culling == CullMode::Off) return "none";
+    const std::string levels = levelsChosenIn(mode)
+                                   ? "; levels of detail chosen per object on the GPU (--lod-error)"
+                                   : "; no levels of detail (they need an mdi mode)";
+    if (culling == CullMode::Off) return "none" + levels;
     const bool occlusion = culling == CullMode::Occlusion;
     const bool meshTechnique = technique.usesMeshShader();
     const std::string tests =
@@ -83,8 +94,7 @@ std::string describeCulling(const Technique& technique, const DrawMode& mode, Cu
     else if (meshTechnique)
         text += std::string("; task shader: meshlets by frustum") +
                 (occlusion ? " and depth pyramid" : "");
-    if (mode.indirect) text += "; levels of detail chosen per object (--lod-error)";
-    return text;
+    return text + levels;
 }
 
 bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3 eye,
@@ -100,7 +110,7 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
     const float smallest = std::max(std::min({scales.x, scales.y, scales.z}), 1e-30f);
     const float reach = glm::length(glm::vec3(world[3])) + glm::length(eye) +
                         (glm::length(center) + glm::length(half)) * largest;
-    half += reach * relativeMargin / smallest;
+    half += reach * gpu::CULL_RELATIVE_MARGIN / smallest;
     const glm::mat4 mvp = viewProj * world;
     uint32_t outsideAll = 63;
     for (uint32_t i = 0; i < 8; ++i) {
@@ -124,45 +134,35 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
       pairGroupCount(groupsOf(pairCount, gpu::CULL_GROUP_SIZE)),
       // Without a cluster (no triangles) the lists are whole draws, of nothing.
       clusterRuns(runs && pairCount != 0),
-      listCommandBytes(clusterRuns ? uint32_t(sizeof(gpu::RunCommand)) : bytesPerCommand),
-      listCapacity(runs ? std::max(drawCount, pairCount) : drawCount),
-      objectCount(runs ? objects : 0) {
+      listCapacity(clusterRuns ? std::max(drawCount, pairCount) : drawCount),
+      objectCount(clusterRuns ? objects : 0) {
     const VkBufferUsageFlags shader =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    const VkDeviceSize drawsAtLeastOne = std::max<VkDeviceSize>(drawCount, 1);
     draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
     pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, shader,
-                       "cull (draw, cluster) pairs");
-    // Zeros: nothing passed a test yet (what the floors' early pass and, for cluster runs,
-    // the early pass's clusters read); cluster runs add the pairs' bits, the objects' ends of
-    // history and whether the last late pass ran.
-    state = upload.add(
-        std::vector<uint32_t>(drawsAtLeastOne + (runs ? pairCount + objects + 1 : 0), 0u), shader,
-        "cull state");
-    groups = vk::Buffer(
-        device, std::max<VkDeviceSize>(std::max(groupCount, runs ? pairGroupCount : 0), 1) * 4,
-        shader, 0, "cull workgroup counts");
+                       "cull pairs' draws");
+    // Zeros: no history yet, so the first early pass draws nothing and the late pass the rest.
+    const size_t stateWords =
+        std::max<size_t>(drawCount, 1) + (clusterRuns ? size_t(pairCount) + objectCount : 0);
+    state = upload.add(std::vector<uint32_t>(stateWords, 0u), shader, "cull state");
+    groups = vk::Buffer(device, std::max<VkDeviceSize>(std::max(groupCount, pairGroupCount), 1) * 4,
+                        shader, 0, "cull workgroup counts");
+    const uint32_t largestCommand = std::max(listCommandBytes(clusterRuns), commandBytes);
     const char* names[2] = {"culled draws (early or only pass)", "culled draws (late pass)"};
     for (int i = 0; i < 2; ++i)
         lists[i] = vk::Buffer(
-            device, std::max<VkDeviceSize>(listCapacity, 1) * std::max(listCommandBytes, 4u),
+            device, std::max<VkDeviceSize>(listCapacity, 1) * std::max(largestCommand, 4u),
             shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, 0, names[i]);
     stats = vk::Buffer(device, sizeof(gpu::CullStats),
                        shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                        0, "cull counters");
-    dispatches =
-        vk::Buffer(device, sizeof(gpu::CullDispatches),
-                   shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                   0, "late cull dispatches");
-    // Zeros: no meshlet passed a test yet, so the first early pass draws none of them and
-    // the late pass tests them all. The second third: what the late pass draws (chosen by
-    // cull.comp in the mdi modes, recorded by the task shader in push mode); the last: what
-    // the early pass drew (FrameData::lateMeshletWord or lateDrawnWord, earlyMeshletWord).
+    // Zeros: no meshlet has history yet. The first half is the history, the second what the
+    // late pass chose to draw (FrameData::lateMeshletWord).
     meshletWords = (meshletBitCount + 31) / 32;
     if (meshletBitCount)
-        meshletBits = upload.add(std::vector<uint32_t>(3 * meshletWords, 0u), shader,
-                                 "meshlet visibility bits");
+        meshletBits =
+            upload.add(std::vector<uint32_t>(2 * meshletWords, 0u), shader, "meshlet history bits");
 }
 
 CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
@@ -180,27 +180,40 @@ CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
                                                {{"IDV_PYRAMID_MSAA", msaa ? "1" : "0"}});
 }
 
-gpu::CullDispatches CullPasses::fullDispatches(const SceneTargets& targets,
-                                               const CullBuffers& buffers) {
-    gpu::CullDispatches d{};
-    const gpu::PyramidHeader& header = targets.pyramidHeader();
-    for (uint32_t pass = 0; pass < gpu::CULL_PYRAMID_PASSES; ++pass) {
-        const uint32_t level = pass * gpu::PYRAMID_LEVELS_PER_PASS;
-        if (level >= header.levels) continue; // no such pass: never dispatched
-        d.pyramid[pass] = {groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
-                           groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1, 0};
+namespace {
+
+// The steps of one pass over a list (shared_cull.h's table).
+std::vector<uint32_t> cullSteps(const CullPlan& plan, uint32_t phase, bool mesh, bool runs) {
+    const bool late = phase == gpu::CULL_PHASE_LATE;
+    std::vector<uint32_t> steps;
+    steps.reserve(5); // the most a pass takes
+    if (plan.levels && !late) steps.push_back(gpu::CULL_STEP_LEVELS);
+    steps.push_back(gpu::CULL_STEP_DECIDE);
+    if (runs) {
+        steps.push_back(gpu::CULL_STEP_CLUSTERS);
+        steps.push_back(gpu::CULL_STEP_RUNS_COUNT);
+        steps.push_back(gpu::CULL_STEP_RUNS_COMPACT);
+        return steps;
     }
-    d.lateCull = {buffers.groupCount, 1, 1, 0};
-    d.lateClusters = {buffers.pairGroupCount, 1, 1, 0};
-    return d;
+    if (late && mesh) {
+        steps.push_back(gpu::CULL_STEP_MESHLETS);
+        steps.push_back(gpu::CULL_STEP_COUNT);
+    }
+    steps.push_back(gpu::CULL_STEP_COMPACT);
+    return steps;
 }
 
+bool overPairs(uint32_t step) {
+    return step == gpu::CULL_STEP_CLUSTERS || step == gpu::CULL_STEP_MESHLETS ||
+           step == gpu::CULL_STEP_RUNS_COUNT || step == gpu::CULL_STEP_RUNS_COMPACT;
+}
+
+} // namespace
+
 void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
-                            const CullInputs& inputs, uint32_t phase, bool meshDraws,
-                            bool indirect) const {
-    vk::CmdLabel label(device_.debug(), cmd,
-                       phase == gpu::CULL_PHASE_LATE ? "cull draws (late)" : "cull draws");
+                            const CullInputs& inputs, const CullPlan& plan, uint32_t phase) const {
     const bool late = phase == gpu::CULL_PHASE_LATE;
+    vk::CmdLabel label(device_.debug(), cmd, late ? "cull draws (late)" : "cull draws");
     // Earlier reads of what this pass writes (the last frame's draws of these lists, the
     // early pass's state) are done; the counters' reset and earlier passes' writes are seen.
     const VkPipelineStageFlags before = VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
@@ -210,6 +223,8 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
                       VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    const bool mesh = plan.taskShader;
+    const bool runs = plan.clusterRuns && buffers.clusterRuns;
     gpu::CullPush push{};
     push.frameAddress = inputs.frame;
     push.drawsAddress = inputs.draws;
@@ -219,7 +234,6 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     push.clusterBoxesAddress = inputs.clusterBoxes;
     push.pairCount = buffers.pairCount;
     push.objectCount = buffers.objectCount;
-    push.dispatchesAddress = indirect ? buffers.dispatches.address() : 0;
     push.targetAddress = buffers.lists[late ? 1 : 0].address();
     push.stateAddress = buffers.state.address();
     push.groupsAddress = buffers.groups.address();
@@ -227,37 +241,15 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     push.drawCount = buffers.drawCount;
     push.phase = phase;
     push.commandWords = buffers.commandBytes / 4;
-    push.flags = (meshDraws ? gpu::CULL_MESH_DRAWS : 0u) |
-                 (buffers.clusterRuns ? gpu::CULL_CLUSTER_RUNS : 0u);
+    push.flags = (mesh ? gpu::CULL_MESH_DRAWS : 0u) | (runs ? gpu::CULL_CLUSTER_RUNS : 0u);
     push.groupCount = buffers.groupCount;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
-    // Draws of several clusters are tested cluster by cluster where the frustum or the
-    // pyramid decides; a list of one workgroup needs no count of the workgroups before it.
-    // Mesh tasks' pairs are their meshlets, tested here in the late phase only.
-    const bool byClusters =
-        buffers.pairCount != 0 && (late || (phase == gpu::CULL_PHASE_FRUSTUM && !meshDraws));
-    std::vector<uint32_t> steps{gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_COMPACT};
-    // Cluster runs: every pass marks clusters, then lists their runs.
-    if (buffers.clusterRuns && buffers.pairCount != 0)
-        steps = {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_CLUSTERS, gpu::CULL_STEP_RUNS_COUNT,
-                 gpu::CULL_STEP_RUNS_COMPACT};
-    else if (byClusters)
-        steps = {gpu::CULL_STEP_DECIDE, gpu::CULL_STEP_CLUSTERS, gpu::CULL_STEP_COUNT,
-                 gpu::CULL_STEP_COMPACT};
-    else if (buffers.groupCount == 1)
-        steps = {gpu::CULL_STEP_BOTH};
+    const std::vector<uint32_t> steps = cullSteps(plan, phase, mesh, runs);
     for (uint32_t step : steps) {
         push.step = step;
         vkCmdPushConstants(cmd, cull_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
                            &push);
-        const bool clusters = step == gpu::CULL_STEP_CLUSTERS ||
-                              step == gpu::CULL_STEP_RUNS_COUNT ||
-                              step == gpu::CULL_STEP_RUNS_COMPACT;
-        if (late && indirect)
-            vkCmdDispatchIndirect(cmd, buffers.dispatches.handle(),
-                                  clusters ? offsetof(gpu::CullDispatches, lateClusters)
-                                           : offsetof(gpu::CullDispatches, lateCull));
-        else if (const uint32_t groups = clusters ? buffers.pairGroupCount : buffers.groupCount)
+        if (const uint32_t groups = overPairs(step) ? buffers.pairGroupCount : buffers.groupCount)
             vkCmdDispatch(cmd, groups, 1, 1);
         // Each step reads what the one before wrote.
         if (step != steps.back())
@@ -265,16 +257,14 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     }
-    // The draws read the commands and the count, the late phase its dispatches; the task
-    // shader the state.
+    // The draws read the commands and the count; the task shader the state.
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT |
                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
 }
 
-void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
-                               const vk::Buffer* dispatches) const {
+void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const {
     vk::CmdLabel label(device_.debug(), cmd, "depth pyramid");
     const gpu::PyramidHeader& header = targets.pyramidHeader();
     // Earlier readers of the pyramid (the last frame's late pass, in the cull and the task
@@ -296,14 +286,8 @@ void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
         push.level = level;
         vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
                            &push);
-        if (dispatches)
-            vkCmdDispatchIndirect(cmd, dispatches->handle(),
-                                  offsetof(gpu::CullDispatches, pyramid) +
-                                      level / gpu::PYRAMID_LEVELS_PER_PASS *
-                                          sizeof(gpu::CullDispatch));
-        else
-            vkCmdDispatch(cmd, groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
-                          groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1);
+        vkCmdDispatch(cmd, groupsOf(header.level[level].width, gpu::PYRAMID_GROUP),
+                      groupsOf(header.level[level].height, gpu::PYRAMID_GROUP), 1);
         // The next pass reads this one's last level; after the last, the cull and task
         // shaders read them all.
         vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,

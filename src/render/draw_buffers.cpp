@@ -45,7 +45,6 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
         cull.firstCluster = sceneGpu.clusterStart()[firstPart];
         cull.clusterCount = sceneGpu.clusterStart()[firstPart + d.partCount] - cull.firstCluster;
         cull.firstPair = static_cast<uint32_t>(pairs.size());
-        cull.partsToEnd = scene.geometries[g].partCount - d.firstPart;
         // The box around the object's own geometry, and the errors the level choice weighs.
         const uint32_t full = scene.objects[d.object].geometry;
         cull.lodBoxMin = whole(full).min;
@@ -232,7 +231,7 @@ Issued recordPushDraws(const DrawContext& c, const std::vector<uint8_t>& objectS
     return pushDraws(c, &objectShown);
 }
 
-void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase) {
+void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase, bool runs) {
     const DrawBuffers& b = c.buffers;
     const CullBuffers& cull = *b.cull;
     const uint32_t maxDraws = cull.listCapacity;
@@ -246,13 +245,14 @@ void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase) {
         pushPhase(c, cull.lists[which].address(), phase);
         c.device.meshCommands().drawIndirectCount(c.cmd, cull.lists[which].handle(), 0,
                                                   cull.stats.handle(), countOffset, maxDraws,
-                                                  cull.listCommandBytes);
+                                                  cull.listCommandBytes(false));
     } else {
         // gl_DrawID indexes the list: the techniques that read gl_PrimitiveID find where
         // their run starts (RunCommand::runOffset).
-        if (cull.clusterRuns) pushPhase(c, cull.lists[which].address(), phase);
+        runs = runs && cull.clusterRuns;
+        if (runs) pushPhase(c, cull.lists[which].address(), phase);
         vkCmdDrawIndexedIndirectCount(c.cmd, cull.lists[which].handle(), 0, cull.stats.handle(),
-                                      countOffset, maxDraws, cull.listCommandBytes);
+                                      countOffset, maxDraws, cull.listCommandBytes(runs));
     }
 }
 

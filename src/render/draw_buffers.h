@@ -25,9 +25,9 @@ struct DrawBuffers {
     PipelineKey key;     // effective key it was built for (technique, mode, batch)
     DrawSettings inputs; // and the draw settings
     bool levels = false; // and whether the list holds every level of detail (DrawList)
-    // Culling: the GPU state (shared by the frames in flight, mutable while recording), the
-    // bytes of one indirect command, and the meshlets all draws launch.
-    std::shared_ptr<CullBuffers> cull;
+    // Culling: the GPU state (shared by the frames in flight), the bytes of one indirect
+    // command, and the meshlets all draws launch.
+    std::shared_ptr<const CullBuffers> cull;
     uint32_t commandBytes = 0;
     uint64_t meshletTotal = 0;
     // Push mode: each object's box, for the CPU's frustum test.
@@ -63,8 +63,8 @@ struct Issued {
 };
 Issued recordPushDraws(const DrawContext& c, const std::vector<uint8_t>& objectShown,
                        uint32_t phase);
-// mdi modes with culling: list `which` (0 early or only, 1 late) of the cull pass, drawn by
-// the count it wrote.
-void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase);
+// The mdi modes' lists cull.comp wrote: list `which` (0 early or only, 1 late), drawn by the
+// count it wrote; runs of clusters (RunCommand) or whole draws.
+void recordCulledDraws(const DrawContext& c, uint32_t which, uint32_t phase, bool runs);
 
 } // namespace render

@@ -92,6 +92,112 @@ RenderStats statsFor(const DrawList& list, const DrawMode& mode, const DerivedPr
     return stats;
 }
 
+namespace {
+
+// Where each geometry's data starts in a technique's ID buffer, how wide its elements are, and
+// the buffer's bytes.
+struct IdData {
+    std::vector<uint32_t> start, width;
+    std::vector<uint8_t> bytes;
+};
+
+// The packed part indices of the techniques that read one per vertex or meshlet triangle.
+scene::PackedPartIndices packedPartIndices(const scene::Scene& scene, IdBuffer ids,
+                                           const DerivedPrimitives& derived) {
+    scene::PackedPartIndices packed;
+    const scene::PartVertices* partVertices = derived.partVertices;
+    const scene::Meshlets* meshlets = derived.meshlets;
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g) {
+        const scene::Geometry& geometry = scene.geometries[g];
+        if (ids == IdBuffer::VertexPartIds) {
+            packed.append(partVertices->localPart.data() + partVertices->firstVertex[g],
+                          partVertices->vertexCount[g], geometry.partCount);
+        } else if (ids == IdBuffer::MeshletTrianglePartIds) {
+            packed.append(meshlets->localPart.data() + meshlets->geometryFirstTriangle[g],
+                          geometry.triangleCount, geometry.partCount);
+        } else {
+            const uint32_t first = meshlets->geometryFirstVertex[g];
+            const uint32_t end = g + 1 < scene.geometries.size()
+                                     ? meshlets->geometryFirstVertex[g + 1]
+                                     : uint32_t(meshlets->vertexPart.size());
+            packed.append(meshlets->vertexPart.data() + first, end - first, geometry.partCount);
+        }
+    }
+    return packed;
+}
+
+// The ID data `key`'s technique reads, for every geometry of the scene.
+IdData idData(const scene::Scene& scene, const PipelineKey& key, const DerivedPrimitives& derived) {
+    IdData data;
+    data.start.assign(scene.geometries.size(), 0);
+    data.width.assign(scene.geometries.size(), 0);
+    auto takeGeometries = [&](const auto& geometries) {
+        for (size_t g = 0; g < geometries.size(); ++g) {
+            data.start[g] = geometries[g].byteOffset;
+            data.width[g] = geometries[g].elementBytes;
+        }
+    };
+    switch (key.technique->ids) {
+    case IdBuffer::None:
+        break;
+    case IdBuffer::TrianglePartIds: {
+        scene::TrianglePartIds ids = scene::buildTrianglePartIds(scene);
+        takeGeometries(ids.geometries);
+        data.bytes = std::move(ids.bytes);
+        break;
+    }
+    case IdBuffer::PartTriangleCounts: {
+        scene::PartTriangleCounts counts = scene::buildPartTriangleCounts(scene, key.searchBatch);
+        data.start = counts.geometryOffsets;
+        data.bytes = bytesOf(counts.counts);
+        break;
+    }
+    case IdBuffer::PartTriangleOffsets: {
+        scene::PartTriangleOffsets offsets = scene::buildPartTriangleOffsets(scene);
+        data.start = offsets.geometryOffsets;
+        data.bytes = bytesOf(offsets.offsets);
+        break;
+    }
+    case IdBuffer::VertexPartIds:
+    case IdBuffer::MeshletTrianglePartIds:
+    case IdBuffer::MeshletVertexPartIds: {
+        scene::PackedPartIndices ids = packedPartIndices(scene, key.technique->ids, derived);
+        takeGeometries(ids.geometries);
+        data.bytes = std::move(ids.bytes);
+        break;
+    }
+    }
+    return data;
+}
+
+// The draws of every object shown, full detail first, then each coarser level's (where
+// `levels`), in the same order within each.
+std::vector<DrawItem> drawRanges(const scene::Scene& scene, const PipelineKey& key,
+                                 const DrawSettings& draws, bool levels, size_t& fullDetailDraws) {
+    std::vector<DrawItem> all;
+    const size_t visible = visibleObjectCount(draws.visible, scene.objects.size());
+    for (uint32_t level = 0; level < (levels ? scene::maxLevels : 1u); ++level) {
+        std::vector<DrawItem> ranges =
+            splitDraws(scene, key.technique->split, key.searchBatch, level);
+        // Before sorting, so "first" means scene order; draws come in object order.
+        std::erase_if(ranges, [&](const DrawItem& d) { return d.object >= visible; });
+        if (draws.sortDraws) {
+            auto order = [&](const DrawItem& d) {
+                const scene::Object& o = scene.objects[d.object];
+                return std::tuple(o.geometry, o.material, d.object, d.firstPart);
+            };
+            std::stable_sort(
+                ranges.begin(), ranges.end(),
+                [&](const DrawItem& a, const DrawItem& b) { return order(a) < order(b); });
+        }
+        all.insert(all.end(), ranges.begin(), ranges.end());
+        if (level == 0) fullDetailDraws = all.size();
+    }
+    return all;
+}
+
+} // namespace
+
 DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
                        const DerivedPrimitives& derived, bool levels) {
     const Technique& technique = *key.technique;
@@ -102,77 +208,9 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const 
         throw std::invalid_argument(std::string(technique.name) +
                                     ": its derived geometry was not given");
     DrawList list;
-    // Full detail first, then each coarser level's draws: the same order within each.
-    const size_t visible = visibleObjectCount(draws.visible, scene.objects.size());
-    for (uint32_t level = 0; level < (levels ? scene::maxLevels : 1u); ++level) {
-        std::vector<DrawItem> ranges = splitDraws(scene, technique.split, key.searchBatch, level);
-        // Before sorting, so "first" means scene order; draws come in object order.
-        std::erase_if(ranges, [&](const DrawItem& d) { return d.object >= visible; });
-        if (draws.sortDraws) {
-            auto key = [&](const DrawItem& d) {
-                const scene::Object& o = scene.objects[d.object];
-                return std::tuple(o.geometry, o.material, d.object, d.firstPart);
-            };
-            std::stable_sort(ranges.begin(), ranges.end(),
-                             [&](const DrawItem& a, const DrawItem& b) { return key(a) < key(b); });
-        }
-        list.ranges.insert(list.ranges.end(), ranges.begin(), ranges.end());
-        if (level == 0) list.fullDetailDraws = list.ranges.size();
-    }
-
-    // Where each geometry's data starts in the ID buffer, and how wide its elements are.
-    std::vector<uint32_t> geometryStart(scene.geometries.size(), 0);
-    std::vector<uint32_t> geometryWidth(scene.geometries.size(), 0);
-    switch (technique.ids) {
-    case IdBuffer::None:
-        break;
-    case IdBuffer::TrianglePartIds: {
-        scene::TrianglePartIds ids = scene::buildTrianglePartIds(scene);
-        for (size_t g = 0; g < ids.geometries.size(); ++g) {
-            geometryStart[g] = ids.geometries[g].byteOffset;
-            geometryWidth[g] = ids.geometries[g].elementBytes;
-        }
-        list.idBytes = std::move(ids.bytes);
-        break;
-    }
-    case IdBuffer::PartTriangleCounts: {
-        scene::PartTriangleCounts counts = scene::buildPartTriangleCounts(scene, key.searchBatch);
-        geometryStart = counts.geometryOffsets;
-        list.idBytes = bytesOf(counts.counts);
-        break;
-    }
-    case IdBuffer::PartTriangleOffsets: {
-        scene::PartTriangleOffsets offsets = scene::buildPartTriangleOffsets(scene);
-        geometryStart = offsets.geometryOffsets;
-        list.idBytes = bytesOf(offsets.offsets);
-        break;
-    }
-    case IdBuffer::VertexPartIds:
-    case IdBuffer::MeshletTrianglePartIds:
-    case IdBuffer::MeshletVertexPartIds: {
-        scene::PackedPartIndices ids;
-        for (uint32_t g = 0; g < scene.geometries.size(); ++g) {
-            const scene::Geometry& geometry = scene.geometries[g];
-            if (technique.ids == IdBuffer::VertexPartIds) {
-                ids.append(partVertices->localPart.data() + partVertices->firstVertex[g],
-                           partVertices->vertexCount[g], geometry.partCount);
-            } else if (technique.ids == IdBuffer::MeshletTrianglePartIds) {
-                ids.append(meshlets->localPart.data() + meshlets->geometryFirstTriangle[g],
-                           geometry.triangleCount, geometry.partCount);
-            } else {
-                const uint32_t first = meshlets->geometryFirstVertex[g];
-                const uint32_t end = g + 1 < scene.geometries.size()
-                                         ? meshlets->geometryFirstVertex[g + 1]
-                                         : uint32_t(meshlets->vertexPart.size());
-                ids.append(meshlets->vertexPart.data() + first, end - first, geometry.partCount);
-            }
-            geometryStart[g] = ids.geometries[g].byteOffset;
-            geometryWidth[g] = ids.geometries[g].elementBytes;
-        }
-        list.idBytes = std::move(ids.bytes);
-        break;
-    }
-    }
+    list.ranges = drawRanges(scene, key, draws, levels, list.fullDetailDraws);
+    IdData ids = idData(scene, key, derived);
+    list.idBytes = std::move(ids.bytes);
 
     vk::faultPoint("draw list"); // the CPU side of a switch can fail too (out of memory)
     list.data.reserve(list.ranges.size());
@@ -185,8 +223,8 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const 
         data.partCount = d.partCount;
         // Counts are indexed per part, so a batch starts at its first part's entry.
         data.idsOffset =
-            geometryStart[g] + (technique.ids == IdBuffer::PartTriangleCounts ? d.firstPart : 0u);
-        data.idsWidth = geometryWidth[g];
+            ids.start[g] + (technique.ids == IdBuffer::PartTriangleCounts ? d.firstPart : 0u);
+        data.idsWidth = ids.width[g];
         if (technique.ids == IdBuffer::MeshletVertexPartIds) // see DrawData::idsOffset
             data.idsOffset -= meshlets->geometryFirstVertex[g] * data.idsWidth;
         data.drawIndex = i;

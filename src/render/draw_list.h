@@ -24,7 +24,7 @@ size_t visibleObjectCount(float fraction, size_t objects);
 struct DrawList {
     // Full detail's draws, then, where the list has levels of detail, those of each coarser
     // level in turn (DrawItem::level): the cull pass draws one level of each object, and
-    // whatever draws without it (culling off, push mode) the first fullDetailDraws.
+    // whatever draws without its lists (push mode) the first fullDetailDraws.
     std::vector<DrawItem> ranges;
     size_t fullDetailDraws = 0;
     std::vector<gpu::DrawData> data; // data[i].drawIndex == i

@@ -204,13 +204,12 @@ void FrameSlots::collect(FrameSlot& slot) {
     const double period = device_.info().timestampPeriodNs;
     auto ms = [&](Stamp from, Stamp to) { return double(ticks[to] - ticks[from]) * period * 1e-6; };
     FrameTimes t;
-    t.sceneMs = ms(StampStart, StampVisibility);
-    t.cullMs = ms(StampStart, StampEarlyCulled) + ms(StampPyramid, StampLateCulled) +
-               ms(StampDrawn, StampVisibility);
+    t.sceneMs = ms(StampStart, StampDrawn);
+    t.cullMs = ms(StampStart, StampEarlyCulled) + ms(StampPyramid, StampLateCulled);
     t.pyramidMs = ms(StampEarlyDrawn, StampPyramid);
     t.earlyMs = ms(StampEarlyCulled, StampEarlyDrawn);
     t.lateMs = ms(StampLateCulled, StampDrawn);
-    t.idPassMs = ms(StampVisibility, StampIdPasses);
+    t.idPassMs = ms(StampDrawn, StampIdPasses);
     gpu::CullStats stats;
     std::memcpy(&stats, slot.cullReadback.mapped(), sizeof stats);
     gpuMs_.push_back(t.sceneMs);

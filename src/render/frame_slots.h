@@ -27,16 +27,15 @@ enum Stamp : uint32_t {
     StampEarlyDrawn,  // the depth pyramid starts
     StampPyramid,     // the late cull starts
     StampLateCulled,  // the second half starts
-    StampDrawn,       // the scene pass is done; the visible-part pass for culling starts
-    StampVisibility,  // the passes over the ID image (edges, part sets) start
-    StampIdPasses,    // they are done
+    StampDrawn,       // the scene pass is done; the passes over the ID image start
+    StampIdPasses,    // they are done (edges, part sets)
     StampCount
 };
 
 // What a frame's timestamps and culling counters say, once its fence has signalled.
 struct FrameTimes {
-    double sceneMs = 0.0;   // StampStart to StampVisibility: drawing, culling included
-    double cullMs = 0.0;    // the cull passes and the visible-part pass culling needs
+    double sceneMs = 0.0;   // StampStart to StampDrawn: drawing, culling included
+    double cullMs = 0.0;    // the cull passes
     double pyramidMs = 0.0; // building the depth pyramid
     double earlyMs = 0.0;   // drawing the first (or whole) half of the scene pass
     double lateMs = 0.0;    // drawing its second half (occlusion culling), or 0

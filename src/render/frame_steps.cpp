@@ -40,46 +40,16 @@ CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     return counts;
 }
 
-Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
-                                           const SceneTargets& targets) const {
+Renderer::FrameCulling Renderer::planFrame(const FrameParams& params) {
     FrameCulling c;
     c.plan = cullingPlan();
-    CullBuffers& cull = *draws_->cull;
-    // A frozen frame draws the lists of the last culled one; until there is one, it culls.
-    const bool freeze = settings_.culling.freeze && c.plan.on() && cull.culled;
-    // Whether this frame is placed as the last one culled in two passes was (the GPU's lists,
-    // or push mode's task shader).
-    std::optional<CullBuffers::View> view;
-    if (c.plan.twoPasses && !freeze)
-        view = CullBuffers::View{params.viewProj,
-                                 params.origin,
-                                 params.explode,
-                                 hiddenVersion_,
-                                 targets.extent().width,
-                                 targets.extent().height,
-                                 uint32_t(targets.pass().samples()),
-                                 settings_.lod.errorPixels,
-                                 settings_.section};
-    c.viewUnchanged = view && cull.lastView == view;
-    // A still view, culled still twice in a row: the second time, the first half drew just
-    // what passed a test against the whole depth of the view (the first time, against the
-    // depth of what the frame before had drawn first, nothing at all after a move). Those
-    // lists, drawn again as they are in one pass, draw that frame's image, which is culling
-    // off's, so nothing is culled again while the view stands. The task shader draws the
-    // meshlets that frame's passes drew (CULL_PHASE_REUSED*), which it recorded, or in the
-    // mdi modes cull.comp for the late pass (FrameData::lateMeshletWord).
-    c.reused = c.viewUnchanged && cull.stillCulls >= 2 && reusableMeshlets(c.plan);
-    c.frozen = freeze || c.reused;
-    cull.lastReused = c.reused;
-    if (c.reused) {
-        ++cull.reusedFrames;
-    } else {
-        cull.lastView = view;
-        cull.stillCulls = c.viewUnchanged ? cull.stillCulls + 1 : 0;
-    }
+    // Freezing draws the lists of the last culled frame; until there is one, it culls.
+    const bool culledBefore = culledLists_.lock() == draws_->cull;
+    c.frozen = settings_.culling.freeze && c.plan.culls() && culledBefore;
+    if (c.plan.culls() && !c.frozen) culledLists_ = draws_->cull;
     if (!c.plan.cpuFrustum) return c;
     if (c.frozen) {
-        c.objectShown = cull.frozenObjects;
+        c.objectShown = frozenObjects_;
         return c;
     }
     // Push mode: the CPU tests each object's box, placed as the animation places it.
@@ -90,14 +60,8 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params,
             !outsideFrustum(params.viewProj,
                             sceneGpu_->worldAt(uint32_t(o), params.explode, params.origin),
                             params.eye, draws_->objectBoxes[o]);
-    cull.frozenObjects = c.objectShown;
+    frozenObjects_ = c.objectShown;
     return c;
-}
-
-bool Renderer::reusableMeshlets(const CullPlan& plan) const {
-    if (!draws_->meshlets) return true;
-    const CullBuffers& cull = *draws_->cull;
-    return plan.twoPasses && cull.meshletWords != 0 && (!plan.gpuLists || cull.pairCount != 0);
 }
 
 gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParams& params,
@@ -113,9 +77,7 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.flags = (shading.colorizeDraws ? gpu::FRAME_COLORIZE_DRAWS : 0u) |
                   (shading.tintLevels ? gpu::FRAME_TINT_LEVELS : 0u) |
                   (shading.ignoreMaterials ? gpu::FRAME_IGNORE_MATERIALS : 0u) |
-                  (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u) |
-                  (draws_->key.technique->isFloor() ? gpu::FRAME_BOUNDS_HISTORY : 0u) |
-                  (culling.viewUnchanged ? gpu::FRAME_VIEW_UNCHANGED : 0u);
+                  (pipeline_->key.hiding ? gpu::FRAME_HIDING : 0u);
     frame.sampleZero = targets.pass().sampleZero();
     frame.objectsAddress = sceneGpu_->objectsAddress();
     frame.materialsAddress = sceneGpu_->materialsAddress();
@@ -133,21 +95,15 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     frame.selectedAddress = selected_->address();
     frame.hiddenAddress = hidden_->address();
     const CullBuffers& cull = *draws_->cull;
-    frame.visibleAddress = visible_->address() + sizeof(gpu::PartSetResult);
     frame.pyramidAddress = targets.pyramid().address();
     frame.drawCullAddress = cull.draws.address();
     frame.meshletBitsAddress = cull.meshletBits.address();
     frame.cullStatsAddress = cull.stats.address();
     if (culling.plan.gpuLists) frame.cullStateAddress = cull.state.address();
-    // cull.comp tests the late pass's meshlets where it makes the lists; in push mode the
-    // task shader tests them and records what it drew. Either way a still view draws them
-    // again, with those the early pass recorded.
-    if (reusableMeshlets(culling.plan) && draws_->meshlets) {
-        (culling.plan.gpuLists ? frame.lateMeshletWord : frame.lateDrawnWord) = cull.meshletWords;
-        frame.earlyMeshletWord = 2 * cull.meshletWords;
-    }
-    // Levels are chosen where cull.comp makes the lists; elsewhere full detail is drawn.
-    if (draws_->levels && culling.plan.gpuLists) frame.lodErrorPixels = settings_.lod.errorPixels;
+    // Where cull.comp lists mesh draws it tests the late pass's meshlets; in push mode the
+    // task shader does.
+    if (culling.plan.gpuLists && draws_->meshlets) frame.lateMeshletWord = cull.meshletWords;
+    if (culling.plan.levels) frame.lodErrorPixels = settings_.lod.errorPixels;
     for (uint32_t p = 0; p < gpu::SECTION_PLANES_MAX; ++p)
         frame.sectionPlanes[p] = glm::vec4(settings_.section.planes[p].equation(params.origin));
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
@@ -183,15 +139,14 @@ void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassP
     vkCmdPushConstants(cmd, pipelines_.layout(), pushStages_, 0, sizeof push, &push);
 }
 
-// The draws of one phase: the whole list, the GPU's culled list, or push mode's shown objects.
+// The draws of one phase: the whole list, the GPU's list, or push mode's shown objects.
 void Renderer::drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const {
     const DrawContext context{cmd, device_, pipelines_.layout(), pushStages_, *draws_};
-    const bool late = phase == gpu::CULL_PHASE_LATE || phase == gpu::CULL_PHASE_FROZEN_LATE ||
-                      phase == gpu::CULL_PHASE_REUSED_LATE;
+    const bool late = phase == gpu::CULL_PHASE_LATE || phase == gpu::CULL_PHASE_FROZEN_LATE;
     if (!culling.plan.on()) {
         recordAllDraws(context);
     } else if (culling.plan.gpuLists) {
-        recordCulledDraws(context, late ? 1 : 0, phase);
+        recordCulledDraws(context, late ? 1 : 0, phase, culling.plan.clusterRuns);
     } else {
         const Issued issued = recordPushDraws(context, culling.objectShown, phase);
         if (!late) culling.issued = issued;
@@ -200,13 +155,12 @@ void Renderer::drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t ph
 
 // Before the scene pass (`before`): zero what the GPU counts this frame; a frozen list keeps
 // its counts, which are the draws' count buffer. After it: what the CPU knows.
-void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
-                              const FrameCulling& culling, bool before) const {
+void Renderer::recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const {
     const vk::Buffer& stats = draws_->cull->stats;
     const bool mesh = draws_->meshlets != nullptr;
     if (before) {
         // The last frame's reads of the counters (indirect count, copies) are done, and what
-        // it wrote for this frame to read (visible parts, meshlet bits) is seen.
+        // it wrote for this frame to read (the history) is seen.
         vk::memoryBarrier(cmd,
                           VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT |
                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -215,10 +169,6 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
         const bool all = culling.plan.gpuLists && !culling.frozen;
         const VkDeviceSize from = all ? 0 : offsetof(gpu::CullStats, meshlets);
         vkCmdFillBuffer(cmd, stats.handle(), from, sizeof(gpu::CullStats) - from, 0);
-        if (all && culling.plan.twoPasses) {
-            const gpu::CullDispatches full = CullPasses::fullDispatches(targets, *draws_->cull);
-            vkCmdUpdateBuffer(cmd, draws_->cull->dispatches.handle(), 0, sizeof full, &full);
-        }
         vk::memoryBarrier(
             cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
             VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT,

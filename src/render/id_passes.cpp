@@ -24,17 +24,6 @@ IdPasses::IdPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
     createCompose(compiler, cache);
     partSet_ = createComputePipeline(device, compiler, cache, "part_set.comp",
                                      sizeof(gpu::PartSetPush), images_.get(), "part sets");
-    samples_ = pushDescriptorLayout(
-        device, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE},
-        "multisampled IDs and depth");
-    // Culling's: the parts without their count, of the resolved IDs or of every sample.
-    visibleParts_[0] =
-        createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
-                              images_.get(), "visible parts", {{"IDV_PART_SET_COUNT", "0"}});
-    visibleParts_[1] =
-        createComputePipeline(device, compiler, cache, "part_set.comp", sizeof(gpu::PartSetPush),
-                              samples_.get(), "visible parts, every sample",
-                              {{"IDV_PART_SET_COUNT", "0"}, {"IDV_PART_SET_SAMPLES", "1"}});
 }
 
 void IdPasses::createCompose(const vk::ShaderCompiler& compiler, const DiskPipelineCache& cache) {
@@ -142,45 +131,9 @@ void IdPasses::dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
     push.rectMin = glm::min(query.min, last);
     push.rectMax = glm::min(query.max, last);
     push.words = words;
-    push.samples = uint32_t(targets.pass().samples());
     vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
     const glm::uvec2 size = push.rectMax - push.rectMin + 1u;
     vkCmdDispatch(cmd, groups(size.x), groups(size.y), 1);
-}
-
-void IdPasses::recordVisible(VkCommandBuffer cmd, const SceneTargets& targets,
-                             const vk::Buffer& visible, uint32_t words) const {
-    vk::CmdLabel label(device_.debug(), cmd, "visible parts for culling");
-    // This frame's culling has read the last image's parts (compute, task shader).
-    vk::memoryBarrier(
-        cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
-        VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    vkCmdFillBuffer(cmd, visible.handle(), 0, visible.size(), 0);
-    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    const VkExtent2D e = targets.extent();
-    const PartSetQuery all{{0, 0}, {e.width - 1, e.height - 1}};
-    if (targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT) {
-        // The second half of the pass left every sample's ID for shaders to read, and depth
-        // tells which samples a triangle covered.
-        const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-        bindWithImages(device_, cmd, visibleParts_[1],
-                       {{0,
-                         sampled,
-                         {VK_NULL_HANDLE, targets.multisampledIds().view(),
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}},
-                        {1,
-                         sampled,
-                         {VK_NULL_HANDLE, targets.depth().view(),
-                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}}});
-        dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[1]);
-        return;
-    }
-    transition(cmd, targets, Move::ToGeneral);
-    bindImages(cmd, targets, visibleParts_[0]);
-    dispatchPartSet(cmd, targets, all, visible.address(), words, visibleParts_[0]);
-    transition(cmd, targets, Move::Back);
 }
 
 void IdPasses::record(VkCommandBuffer cmd, const SceneTargets& targets,

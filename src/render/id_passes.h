@@ -4,7 +4,7 @@
 // unique parts inside pixel rectangles (part_set.comp: box selection, the visible parts),
 // copied to the frame slot's readback like the pick. They run after the scene pass, or alone
 // over the images the last one left (a viewer at rest). With MSAA they see the resolved IDs,
-// sample 0 of each pixel, as the pick does; only culling's visible parts read every sample.
+// sample 0 of each pixel, as the pick does.
 #pragma once
 
 #include <optional>
@@ -32,13 +32,6 @@ class IdPasses {
                 const std::optional<HoveredTiles>& tiles, const std::vector<PartSetQuery>& queries,
                 uint32_t words, const vk::Buffer& results, const vk::Buffer& readback) const;
 
-    // Culling's visible-part pass: every unique part of the ID image into `visible` (a
-    // gpu::PartSetResult, then `words` words), cleared first; with MSAA, of every sample of
-    // the multisampled IDs that the second half of a split pass keeps. The next frame's
-    // culling reads it: what the last image showed is drawn first.
-    void recordVisible(VkCommandBuffer cmd, const SceneTargets& targets, const vk::Buffer& visible,
-                       uint32_t words) const;
-
   private:
     void createCompose(const vk::ShaderCompiler& compiler, const DiskPipelineCache& cache);
     void dispatchPartSet(VkCommandBuffer cmd, const SceneTargets& targets,
@@ -53,14 +46,12 @@ class IdPasses {
     void transition(VkCommandBuffer cmd, const SceneTargets& targets, Move move) const;
 
     vk::Device& device_;
-    vk::Handle<VkDescriptorSetLayout> images_;  // pushed per frame: IDs, colour
-    vk::Handle<VkDescriptorSetLayout> samples_; // pushed per frame: the multisampled IDs
+    vk::Handle<VkDescriptorSetLayout> images_; // pushed per frame: IDs, colour
     // Pushed per frame: IDs, composed colour, shaded colour, depth (read with texelFetch).
     vk::Handle<VkDescriptorSetLayout> composeImages_;
     vk::Handle<VkSampler> depthSampler_;
     ComputePipeline compose_[2]; // depth single-sampled, multisampled
     ComputePipeline partSet_;
-    ComputePipeline visibleParts_[2]; // culling's: of the resolved IDs, of every sample
 };
 
 } // namespace render

@@ -62,74 +62,66 @@ createComputePipeline(vk::Device& device, const vk::ShaderCompiler& compiler,
     return out;
 }
 
-vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
-                                           const ScenePipelineInfo& scene,
-                                           const std::vector<ShaderStage>& stages,
-                                           const std::string& name) {
-    std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
-    for (const auto& s : stages) {
-        auto info = vk::init<VkPipelineShaderStageCreateInfo>(
-            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
-        info.stage = s.stage;
-        info.module = s.module.get();
-        info.pName = "main";
-        stageInfos.push_back(info);
+namespace {
+
+// What the vertex pipelines read per vertex (positions and normals), and mdi-attribute's draw
+// index per instance. It points into itself, so it is made in place and never copied.
+struct VertexInput {
+    explicit VertexInput(bool drawIndexAttribute) {
+        bindings = {{gpu::BINDING_VERTICES, sizeof(gpu::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+        attributes = {{gpu::LOC_POSITION, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
+                       offsetof(gpu::Vertex, position)},
+                      {gpu::LOC_NORMAL, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
+                       offsetof(gpu::Vertex, normal)}};
+        if (drawIndexAttribute) {
+            // One uint per instance; each indirect draw's firstInstance selects its element.
+            bindings.push_back(
+                {gpu::BINDING_DRAW_INDICES, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE});
+            attributes.push_back(
+                {gpu::LOC_DRAW_INDEX, gpu::BINDING_DRAW_INDICES, VK_FORMAT_R32_UINT, 0});
+        }
+        info = vk::init<VkPipelineVertexInputStateCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
+        info.vertexBindingDescriptionCount = static_cast<uint32_t>(bindings.size());
+        info.pVertexBindingDescriptions = bindings.data();
+        info.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
+        info.pVertexAttributeDescriptions = attributes.data();
     }
+    VertexInput(const VertexInput&) = delete;
+    VertexInput& operator=(const VertexInput&) = delete;
 
-    std::vector<VkVertexInputBindingDescription> bindings = {
-        {gpu::BINDING_VERTICES, sizeof(gpu::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    std::vector<VkVertexInputAttributeDescription> attributes = {
-        {gpu::LOC_POSITION, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
-         offsetof(gpu::Vertex, position)},
-        {gpu::LOC_NORMAL, gpu::BINDING_VERTICES, VK_FORMAT_R32G32B32_SFLOAT,
-         offsetof(gpu::Vertex, normal)},
-    };
-    if (scene.drawIndexAttribute) {
-        // One uint per instance; each indirect draw's firstInstance selects its element.
-        bindings.push_back(
-            {gpu::BINDING_DRAW_INDICES, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE});
-        attributes.push_back(
-            {gpu::LOC_DRAW_INDEX, gpu::BINDING_DRAW_INDICES, VK_FORMAT_R32_UINT, 0});
-    }
-    auto vertexInput = vk::init<VkPipelineVertexInputStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO);
-    vertexInput.vertexBindingDescriptionCount = static_cast<uint32_t>(bindings.size());
-    vertexInput.pVertexBindingDescriptions = bindings.data();
-    vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
-    vertexInput.pVertexAttributeDescriptions = attributes.data();
+    std::vector<VkVertexInputBindingDescription> bindings;
+    std::vector<VkVertexInputAttributeDescription> attributes;
+    VkPipelineVertexInputStateCreateInfo info;
+};
 
-    auto assembly = vk::init<VkPipelineInputAssemblyStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-
-    auto viewport = vk::init<VkPipelineViewportStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-
-    // No culling: CAD exports often mix windings, and the shading is two-sided.
+// No culling of back faces: CAD exports often mix windings, and the shading is two-sided.
+VkPipelineRasterizationStateCreateInfo rasterState() {
     auto raster = vk::init<VkPipelineRasterizationStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO);
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_NONE;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
+    return raster;
+}
 
-    auto multisample = vk::init<VkPipelineMultisampleStateCreateInfo>(
-        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
-    multisample.rasterizationSamples = scene.samples;
-
+VkPipelineDepthStencilStateCreateInfo depthState(bool translucent) {
     auto depth = vk::init<VkPipelineDepthStencilStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO);
     depth.depthTestEnable = VK_TRUE;
     // A translucent surface hides nothing behind it: depth stays the opaque parts'.
-    depth.depthWriteEnable = scene.translucent ? VK_FALSE : VK_TRUE;
+    depth.depthWriteEnable = translucent ? VK_FALSE : VK_TRUE;
     // Reversed depth (scene/camera.h): nearer is greater. Where two surfaces tie the one
     // drawn first stays, as LESS kept it.
     depth.depthCompareOp = VK_COMPARE_OP_GREATER;
+    return depth;
+}
 
-    // Full write masks; no-id masks the ID attachment off entirely (its shader writes no ID),
-    // which needs the independentBlend feature.
+// Colour and IDs with full write masks; no-id masks the ID attachment off entirely (its shader
+// writes no ID), which needs the independentBlend feature; X-ray blends its colour over.
+std::array<VkPipelineColorBlendAttachmentState, 2>
+blendAttachments(const ScenePipelineInfo& scene) {
     std::array<VkPipelineColorBlendAttachmentState, 2> blend{};
     for (auto& attachment : blend)
         attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
@@ -146,13 +138,44 @@ vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
         blend[0].dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
         blend[0].alphaBlendOp = VK_BLEND_OP_ADD;
     }
+    return blend;
+}
+
+} // namespace
+
+vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
+                                           const ScenePipelineInfo& scene,
+                                           const std::vector<ShaderStage>& stages,
+                                           const std::string& name) {
+    std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
+    for (const auto& s : stages) {
+        auto info = vk::init<VkPipelineShaderStageCreateInfo>(
+            VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO);
+        info.stage = s.stage;
+        info.module = s.module.get();
+        info.pName = "main";
+        stageInfos.push_back(info);
+    }
+    const VertexInput vertexInput(scene.drawIndexAttribute);
+    auto assembly = vk::init<VkPipelineInputAssemblyStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO);
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    auto viewport = vk::init<VkPipelineViewportStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO);
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    const VkPipelineRasterizationStateCreateInfo raster = rasterState();
+    auto multisample = vk::init<VkPipelineMultisampleStateCreateInfo>(
+        VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO);
+    multisample.rasterizationSamples = scene.samples;
+    const VkPipelineDepthStencilStateCreateInfo depth = depthState(scene.translucent);
+    const std::array<VkPipelineColorBlendAttachmentState, 2> blend = blendAttachments(scene);
     auto colorBlend = vk::init<VkPipelineColorBlendStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO);
     colorBlend.attachmentCount = static_cast<uint32_t>(blend.size());
     colorBlend.pAttachments = blend.data();
-
-    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                   VK_DYNAMIC_STATE_SCISSOR};
+    const std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                         VK_DYNAMIC_STATE_SCISSOR};
     auto dynamic = vk::init<VkPipelineDynamicStateCreateInfo>(
         VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO);
     dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
@@ -163,7 +186,7 @@ vk::Handle<VkPipeline> createScenePipeline(const DiskPipelineCache& cache,
     info.stageCount = static_cast<uint32_t>(stageInfos.size());
     info.pStages = stageInfos.data();
     // A mesh shader makes its own primitives: no vertex input, no input assembly.
-    info.pVertexInputState = scene.mesh ? nullptr : &vertexInput;
+    info.pVertexInputState = scene.mesh ? nullptr : &vertexInput.info;
     info.pInputAssemblyState = scene.mesh ? nullptr : &assembly;
     info.pViewportState = &viewport;
     info.pRasterizationState = &raster;

@@ -116,15 +116,6 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     const scene::PartSet none(scene.uniquePartCount());
     auto selected = newScene ? partSetBuffer(upload, none, "selection") : selected_;
     auto hidden = newScene ? partSetBuffer(upload, none, "hidden parts") : hidden_;
-    // Nothing shown yet: the first frame draws everything in the late pass.
-    auto visible = visible_;
-    if (newScene) {
-        std::vector<uint32_t> zeros(sizeof(gpu::PartSetResult) / 4 + none.words().size(), 0u);
-        visible = std::make_shared<vk::Buffer>(upload.add(
-            zeros, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-            "visible parts for culling"));
-        upload.keep(visible);
-    }
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
     translucentPipeline_ = std::move(translucentPipeline);
@@ -139,7 +130,6 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     draws_ = std::move(draws);
     selected_ = std::move(selected);
     hidden_ = std::move(hidden);
-    visible_ = std::move(visible);
     if (newScene) {
         partCount_ = scene.uniquePartCount();
         hiddenSet_ = none;
@@ -160,16 +150,17 @@ PipelineKey Renderer::keyFor(const scene::Scene& scene, const RenderSettings& se
     PipelineKey wanted = settings.pipeline;
     wanted.clear = clearPathFor(settings.clear, wanted.msaa);
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
-    wanted.taskCulling = settings.culling.mode != CullMode::Off;
-    wanted.runOffsets = settings.culling.mode != CullMode::Off;
+    const CullPlan plan = cullPlan(*wanted.technique, *wanted.mode, settings.culling.mode,
+                                   settings.lod.errorPixels > 0.0f);
+    wanted.taskCulling = plan.taskShader;
+    wanted.runOffsets = plan.clusterRuns;
     wanted.section = settings.section.any();
     const PipelineKey key = wanted.effective(device_.info().geometryShaderPassthrough);
     const Technique& technique = *key.technique;
     if (const std::string why = unavailableReason(technique, device_.info()); !why.empty())
         throw vk::Error(std::string(technique.name) + " is unavailable here: " + why);
-    // The culled lists are drawn in one indirect call each.
-    if (cullPlan(technique, *key.mode, settings.culling.mode).gpuLists &&
-        scene.uniquePartCount() > device_.info().maxDrawIndirectCount)
+    // The GPU's lists are drawn in one indirect call each.
+    if (plan.gpuLists && scene.uniquePartCount() > device_.info().maxDrawIndirectCount)
         throw vk::Error("culling in " + std::string(key.mode->name) + " needs up to " +
                         std::to_string(scene.uniquePartCount()) + " draws in one indirect call, " +
                         device_.info().name + " allows " +
@@ -221,11 +212,6 @@ void Renderer::reloadShaders() {
     idPasses_ = std::move(idPasses);
     composed_.reset(); // their box of the hovered part's tiles is not written yet
     culler_ = std::move(culler);
-    // A still view would go on drawing what the old shaders culled (planFrame): cull anew.
-    if (draws_) {
-        draws_->cull->lastView.reset();
-        draws_->cull->stillCulls = 0;
-    }
 }
 
 void Renderer::setSelection(const scene::PartSet& selected) {
@@ -241,7 +227,6 @@ void Renderer::setSelection(const scene::PartSet& selected) {
 void Renderer::setHidden(const scene::PartSet& hidden) {
     if (!sceneGpu_ || hidden.partCount() != partCount_)
         throw vk::Error("Renderer::setHidden: not a set over the current scene's parts");
-    ++hiddenVersion_;
     ++changes_;
     auto pipeline = pipeline_;
     if (hidden.empty() != hiddenSet_.empty()) {
@@ -300,7 +285,7 @@ bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws
 
 CullPlan Renderer::cullingPlan() const {
     const PipelineKey& key = draws_->key;
-    return cullPlan(*key.technique, *key.mode, settings_.culling.mode);
+    return cullPlan(*key.technique, *key.mode, settings_.culling.mode, draws_->levels);
 }
 
 CullCounts Renderer::cullTotals() const {
@@ -319,13 +304,13 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     for (const std::shared_ptr<const void>& used :
          std::initializer_list<std::shared_ptr<const void>>{
              pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, resolver_,
-             selected_, hidden_, visible_, target, translucentPipeline_})
+             selected_, hidden_, target, translucentPipeline_})
         slot.keep(used);
     slot.scenePass = true;
     composed_.reset(); // the images the composition reads are drawn again
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
-    FrameCulling culling = planFrame(params, targets);
+    FrameCulling culling = planFrame(params);
     const gpu::FrameData frame = frameData(targets, params, culling);
     vkCmdUpdateBuffer(cmd, slot.frameData.handle(), 0, sizeof frame, &frame);
     slot.pickPixel = params.pickPixel;
@@ -353,49 +338,42 @@ void Renderer::recordComposition(FrameSlot& slot, const std::shared_ptr<const Sc
     recordIdPasses(slot.cmd, slot, *target, params);
 }
 
-// Culling, the scene pass (whole, or its two halves around the depth pyramid), and what
-// culling needs of the ID image for the next frame.
+// Culling, and the scene pass, whole or in two halves around the depth pyramid.
 void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
                            FrameCulling& culling) const {
     VkCommandBuffer cmd = slot.cmd;
     const VkDeviceAddress frame = slot.frameData.address();
     const CullPlan& plan = culling.plan;
-    CullBuffers& cull = *draws_->cull;
-    const bool cullOnGpu = plan.gpuLists && !culling.frozen;
+    const CullBuffers& cull = *draws_->cull;
+    const bool listOnGpu = plan.gpuLists && !culling.frozen;
     const bool split = plan.twoPasses && !culling.frozen;
-    const bool mesh = draws_->meshlets != nullptr;
     auto stamp = [&](Stamp s) {
         // Once every earlier command has finished (bottom of the pipe), so neither the
         // animation's dispatch nor the previous frame's tail counts as the frame's work.
         vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, slot.timestamps.get(), s);
     };
     stamp(StampStart);
-    recordCounters(cmd, targets, culling, true);
-    const uint32_t firstPhase = culling.reused   ? gpu::CULL_PHASE_REUSED
-                                : culling.frozen ? gpu::CULL_PHASE_FROZEN
-                                : !plan.on()     ? gpu::CULL_PHASE_NONE
-                                : plan.twoPasses ? gpu::CULL_PHASE_EARLY
-                                                 : gpu::CULL_PHASE_FRUSTUM;
-    // The GPU lists' late phase dispatches by what the early cull left it.
-    const bool skippable = split && plan.gpuLists;
+    recordCounters(cmd, culling, true);
+    const uint32_t firstPhase = culling.frozen ? gpu::CULL_PHASE_FROZEN : plan.firstPhase;
     const CullPasses::CullInputs inputs{frame, draws_->draws.address(), draws_->indirect.address(),
                                         sceneGpu_->clusterBoxesAddress()};
-    if (cullOnGpu) culler_->recordCull(cmd, cull, inputs, firstPhase, mesh, skippable);
+    if (listOnGpu) culler_->recordCull(cmd, cull, inputs, plan, firstPhase);
     stamp(StampEarlyCulled);
     // The compute path clears colour in the pass only under X-ray, which blends over it.
     const bool compute = clearPath_ == ClearPath::Compute;
     const bool clearColor = translucent_ && !translucent_->empty();
     beginPass(cmd, targets, split ? PassPart::First : PassPart::Whole, frame, clearColor);
     drawPhase(cmd, culling, firstPhase);
-    if (culling.frozen && plan.twoPasses)
-        drawPhase(cmd, culling,
-                  culling.reused ? gpu::CULL_PHASE_REUSED_LATE : gpu::CULL_PHASE_FROZEN_LATE);
+    // A frozen frame draws the late list too, in the same pass (push mode has none: its task
+    // shader drew every meshlet with history in the first).
+    if (culling.frozen && plan.twoPasses && plan.gpuLists)
+        drawPhase(cmd, culling, gpu::CULL_PHASE_FROZEN_LATE);
     if (!split) recordTranslucent(cmd);
     vkCmdEndRenderPass(cmd);
     stamp(StampEarlyDrawn);
-    if (split) culler_->recordPyramid(cmd, targets, skippable ? &cull.dispatches : nullptr);
+    if (split) culler_->recordPyramid(cmd, targets);
     stamp(StampPyramid);
-    if (skippable) culler_->recordCull(cmd, cull, inputs, gpu::CULL_PHASE_LATE, mesh, true);
+    if (split && plan.gpuLists) culler_->recordCull(cmd, cull, inputs, plan, gpu::CULL_PHASE_LATE);
     stamp(StampLateCulled);
     if (split) {
         beginPass(cmd, targets, PassPart::Second, frame, clearColor);
@@ -408,12 +386,7 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
                           (clearColor ? gpu::RESOLVE_KEEP_COLOR : 0u) |
                               (draws_->key.technique->isFloor() ? gpu::RESOLVE_NO_IDS : 0u));
     stamp(StampDrawn);
-    recordCounters(cmd, targets, culling, false);
-    // The floors have no ID image to read: they keep a history of their own (cull.comp).
-    if (split && !draws_->key.technique->isFloor())
-        idPasses_->recordVisible(cmd, targets, *visible_, std::max(1u, (partCount_ + 31) / 32));
-    stamp(StampVisibility);
-    cull.culled = cull.culled || plan.on();
+    recordCounters(cmd, culling, false);
 }
 
 } // namespace render

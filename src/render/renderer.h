@@ -182,19 +182,12 @@ class Renderer {
     CullPlan cullingPlan() const;
     // The totals the culling counters are measured against: draws, meshlets, triangles.
     CullCounts cullTotals() const;
-    // Frames that drew the lists of the last culled frame again, in a still view, since the
-    // draw lists were built (FrameCulling::reused).
-    uint64_t reusedFrames() const { return draws_ ? draws_->cull->reusedFrames : 0; }
-    // Whether the last frame recorded was one of them.
-    bool lastFrameReused() const { return draws_ && draws_->cull->lastReused; }
 
   private:
-    // One frame's culling as recorded (frame.cpp's steps read it).
+    // One frame's culling as recorded (frame_steps.cpp's steps read it).
     struct FrameCulling {
         CullPlan plan;
         bool frozen = false;              // drawing the lists of the last culled frame
-        bool reused = false;              // frozen because the view stands still
-        bool viewUnchanged = false;       // FRAME_VIEW_UNCHANGED
         std::vector<uint8_t> objectShown; // push mode: the CPU's frustum test per object
         Issued issued;                    // push mode: the first pass's draws
     };
@@ -210,16 +203,14 @@ class Renderer {
     bool drawsStillRight(const PipelineKey& key, const DrawSettings& draws, bool levels) const;
     gpu::FrameData frameData(const SceneTargets& targets, const FrameParams& params,
                              const FrameCulling& culling) const;
-    FrameCulling planFrame(const FrameParams& params, const SceneTargets& targets) const;
-    // Whether a still view can draw the meshlets of its last culled frame again: there are
-    // none, or they are culled in two passes with room for the bits of what each pass drew.
-    bool reusableMeshlets(const CullPlan& plan) const;
+    // This frame's culling; remembers what freezing needs (the lists culled, push mode's
+    // objects shown).
+    FrameCulling planFrame(const FrameParams& params);
     void beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
                    VkDeviceAddress frame, bool clearColor) const;
     void drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const;
     void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
-    void recordCounters(VkCommandBuffer cmd, const SceneTargets& targets,
-                        const FrameCulling& culling, bool before) const;
+    void recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const;
     void recordTranslucent(VkCommandBuffer cmd) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
@@ -246,16 +237,17 @@ class Renderer {
     std::shared_ptr<const PartVertexBuffers> partVertices_;
     std::shared_ptr<const MeshletBuffers> meshlets_;
     std::shared_ptr<const DrawBuffers> draws_;
-    // The selection and hidden parts as the GPU reads them (bitsets, see scene/part_set.h),
-    // and the parts the last ID image showed (a gpu::PartSetResult, then the bitset), which
-    // occlusion culling draws first.
-    std::shared_ptr<const vk::Buffer> selected_, hidden_, visible_;
+    // The selection and hidden parts as the GPU reads them (bitsets, see scene/part_set.h).
+    std::shared_ptr<const vk::Buffer> selected_, hidden_;
     scene::PartSet hiddenSet_;
     // X-ray's pass: its draws (none: no pass) and its pipeline, made for the drawn key.
     std::shared_ptr<const std::vector<TranslucentDraw>> translucent_;
     std::shared_ptr<const scene::PartSet> translucentSet_; // what translucent_ was made of
     std::shared_ptr<const Pipeline> translucentPipeline_;
-    uint64_t hiddenVersion_ = 0; // counts setHidden() calls: culling asks whether it changed
+    // Freezing culling: the lists the last culled frame wrote (a frozen frame draws them
+    // again once there are some), and the objects push mode's CPU test showed then.
+    std::weak_ptr<const CullBuffers> culledLists_;
+    std::vector<uint8_t> frozenObjects_;
     uint64_t changes_ = 0;
     // What the composed image of `targets` was made from, blink aside, while nothing else
     // wrote to the images it reads: a scene pass, a new selection or new ID passes forget it.

@@ -42,7 +42,7 @@ class SceneGpu {
     const std::vector<scene::Bounds>& partBounds() const { return partBounds_; }
     glm::mat4 worldAt(uint32_t object, float explode, const glm::dvec3& origin) const;
     // The parts' clusters (scene::partClusters): per entry of Scene::parts, and one more, the
-    // first cluster; their boxes on the GPU (gpu::CullBox[], `unused0` the cluster's part in
+    // first cluster; their boxes on the GPU (gpu::CullBox[], `part` the cluster's part in
     // its geometry), by which cull.comp tests the draws of several clusters one by one.
     const std::vector<uint32_t>& clusterStart() const { return clusterStart_; }
     VkDeviceAddress clusterBoxesAddress() const { return clusterBoxes_.address(); }

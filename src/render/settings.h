@@ -55,12 +55,13 @@ struct PipelineKey {
     // Not a choice of the user's: the renderer sets it while any part is hidden, for the
     // variant that discards hidden parts (see gpu::FrameData::hiddenAddress).
     bool hiding = false;
-    // Nor this: set from CullSettings for the mesh techniques, whose culling pipeline has a
-    // task shader that culls meshlets (shaders/scene.task).
+    // Nor this: CullPlan::taskShader, for the mesh techniques with culling on or lists
+    // written by cull.comp, whose pipeline has a task shader that culls meshlets or names
+    // each listed draw (shaders/scene.task).
     bool taskCulling = false;
-    // Nor this: set with culling on, for the techniques that read gl_PrimitiveID in the mdi
-    // modes, whose culled lists are cluster runs: the vertex shader hands on each run's
-    // offset in its draw (IDV_RUN_OFFSET), and culling off keeps the technique's own shaders.
+    // Nor this: CullPlan::clusterRuns, for the techniques that read gl_PrimitiveID, whose
+    // lists with culling on in the mdi modes are cluster runs: the vertex shader hands on each
+    // run's offset in its draw (IDV_RUN_OFFSET); otherwise the technique's own shaders.
     bool runOffsets = false;
     // Nor this: set while a section plane is on (RenderSettings::section), for the variant
     // that cuts fragments away and draws caps (IDV_SECTION; late fragment tests, like hiding).
@@ -108,7 +109,7 @@ struct EdgeSettings {
     glm::vec3 hoverColor = glm::vec3(51, 217, 255) / 255.0f;
     bool operator==(const EdgeSettings&) const = default;
 };
-constexpr Range edgeWidthRange{1, 3}; // gpu::EDGE_WIDTH_MAX
+constexpr Range edgeWidthRange{1, gpu::EDGE_WIDTH_MAX}; // compose.comp's tile margin holds it
 
 // What is left out before the scene pass draws (render/culling.h). Every mode leaves the
 // images exactly as without it; what a technique and per-draw mode get of it is
@@ -126,7 +127,8 @@ struct CullSettings {
 // Levels of detail chosen on the GPU (scene/lod.h builds them when the scene loads): above 0,
 // the draw list holds every level and the cull pass draws each object at its coarsest level
 // whose error, projected at the object, stays under this many pixels. Only where cull.comp
-// makes the lists (culling on, mdi modes); elsewhere, and at 0, full detail.
+// lists the draws (mdi modes, culling on or off: levelsChosenIn); push mode, and 0, draw full
+// detail.
 struct LodSettings {
     float errorPixels = 0.0f;
     bool operator==(const LodSettings&) const = default;

@@ -72,85 +72,73 @@ ScenePass::ScenePass(vk::Device& device, VkSampleCountFlagBits samples) : sample
                 passes_[variant(part, path, clearColor)] = create(device, part, path, clearColor);
 }
 
-vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part, ClearPath path,
-                                           bool clearColor) const {
-    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
-    const bool first = part == PassPart::First, second = part == PassPart::Second;
-    const bool compute = path == ClearPath::Compute;
+namespace {
+
+// What one variant of the scene pass is (ScenePass::create).
+struct PassShape {
+    bool msaa, first, second, compute, clearColor;
+    // On the pass path with MSAA the whole pass and the second half resolve at their end.
+    bool resolves() const { return msaa && !first && !compute; }
+};
+
+// 0 colour, 1 IDs, 2 depth; where the pass resolves, also 3 and 4, the single-sample colour
+// and IDs the multisampled ones resolve into. The compute path clears depth alone (and colour
+// under X-ray): its resolve writes the background (render/resolve.h).
+std::vector<VkAttachmentDescription>
+sceneAttachments(const PassShape& shape, VkSampleCountFlagBits samples, VkFormat depthFormat) {
     // The first half keeps what it drew for the second; the second starts from it.
     const VkImageLayout kept = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     const VkImageLayout sampledDepth = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
     // What the compute resolve reads: every sample with MSAA, else the images it completes.
     const VkImageLayout resolveReads =
-        msaa ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_GENERAL;
+        shape.msaa ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_GENERAL;
     auto colorAttachment = [&](VkFormat format, VkSampleCountFlagBits count, bool cleared) {
         VkAttachmentDescription a{};
         a.format = format;
         a.samples = count;
-        a.loadOp = second    ? VK_ATTACHMENT_LOAD_OP_LOAD
-                   : cleared ? VK_ATTACHMENT_LOAD_OP_CLEAR
-                             : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        a.loadOp = shape.second ? VK_ATTACHMENT_LOAD_OP_LOAD
+                   : cleared    ? VK_ATTACHMENT_LOAD_OP_CLEAR
+                                : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-        a.initialLayout = second ? kept : VK_IMAGE_LAYOUT_UNDEFINED; // started every frame
-        a.finalLayout = first     ? kept
-                        : compute ? resolveReads
-                                  : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        a.initialLayout = shape.second ? kept : VK_IMAGE_LAYOUT_UNDEFINED; // started every frame
+        a.finalLayout = shape.first     ? kept
+                        : shape.compute ? resolveReads
+                                        : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         return a;
     };
-    // 0 colour, 1 IDs, 2 depth; on the pass path with MSAA (but for the first half) also 3 and
-    // 4, the single-sample colour and IDs the multisampled ones resolve into. The compute
-    // path clears depth alone (and colour under X-ray): the resolve writes the background.
     std::vector<VkAttachmentDescription> attachments = {
-        colorAttachment(colorFormat, samples_, !compute || clearColor),
-        colorAttachment(idFormat, samples_, !compute),
-        colorAttachment(depthFormat_, samples_, true)};
-    VkAttachmentDescription& depth = attachments[2];
+        colorAttachment(ScenePass::colorFormat, samples, !shape.compute || shape.clearColor),
+        colorAttachment(ScenePass::idFormat, samples, !shape.compute),
+        colorAttachment(depthFormat, samples, true)};
     // Depth is kept after every part: the pyramid reads it between the halves, the compute
     // resolve after the pass, and the composition at the hovered pixel in every frame until
     // the next scene pass.
-    depth.initialLayout = second ? sampledDepth : VK_IMAGE_LAYOUT_UNDEFINED;
+    VkAttachmentDescription& depth = attachments[2];
+    depth.initialLayout = shape.second ? sampledDepth : VK_IMAGE_LAYOUT_UNDEFINED;
     depth.finalLayout = sampledDepth;
-    const bool resolve = msaa && !first && !compute;
-    std::array<VkAttachmentReference, 2> resolveRefs = {
-        VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
-        VkAttachmentReference{4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
-    if (resolve) {
-        // The multisampled contents are not kept past the resolve, but for the IDs after the
-        // second half of a split pass: culling's visible-part pass reads every sample, so
-        // that a part showing in any sample of a pixel is drawn first in the next frame.
-        for (uint32_t i : {0u, 1u}) {
-            attachments[i].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-            attachments[i].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        }
-        if (second) {
-            attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            attachments[1].finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-        }
-        for (VkFormat format : {colorFormat, idFormat}) {
-            attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT, false));
-            attachments.back().loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // fully overwritten
-            attachments.back().initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-            attachments.back().finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        }
+    if (!shape.resolves()) return attachments;
+    // The multisampled colour and IDs are not kept past the resolve.
+    for (uint32_t i : {0u, 1u}) {
+        attachments[i].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        attachments[i].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
+    for (VkFormat format : {ScenePass::colorFormat, ScenePass::idFormat}) {
+        attachments.push_back(colorAttachment(format, VK_SAMPLE_COUNT_1_BIT, false));
+        attachments.back().loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE; // fully overwritten
+        attachments.back().initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        attachments.back().finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    }
+    return attachments;
+}
 
-    std::array<VkAttachmentReference, 2> colorRefs = {
-        VkAttachmentReference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
-        VkAttachmentReference{1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
-    VkAttachmentReference depthRef{2, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
-    subpass.pColorAttachments = colorRefs.data();
-    subpass.pResolveAttachments = resolve ? resolveRefs.data() : nullptr;
-    subpass.pDepthStencilAttachment = &depthRef;
-
-    // In: the previous frame's pass and its copies out of the colour and ID images must be
-    // done before this frame clears them; the second half waits for the first half's writes
-    // and for the pyramid's reads of depth. Out: the copies wait for the pass's writes; after
-    // the first half, the pyramid reads depth.
+// In: the previous frame's pass and its copies out of the colour and ID images must be done
+// before this frame clears them; the second half waits for the first half's writes and for
+// the pyramid's reads of depth. Out: the copies wait for the pass's writes; after the first
+// half, the pyramid reads depth. The same for every part: compatible render passes have
+// identical dependencies.
+std::array<VkSubpassDependency, 2> sceneDependencies() {
     std::array<VkSubpassDependency, 2> deps{};
     deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
     deps[0].dstSubpass = 0;
@@ -171,9 +159,33 @@ vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part, Cl
         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     deps[1].srcAccessMask =
         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    // The same for every part: compatible render passes have identical dependencies.
     deps[1].dstStageMask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
     deps[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
+    return deps;
+}
+
+} // namespace
+
+vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part, ClearPath path,
+                                           bool clearColor) const {
+    const PassShape shape{samples_ != VK_SAMPLE_COUNT_1_BIT, part == PassPart::First,
+                          part == PassPart::Second, path == ClearPath::Compute, clearColor};
+    const std::vector<VkAttachmentDescription> attachments =
+        sceneAttachments(shape, samples_, depthFormat_);
+    const std::array<VkAttachmentReference, 2> colorRefs = {
+        VkAttachmentReference{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
+        VkAttachmentReference{1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+    const std::array<VkAttachmentReference, 2> resolveRefs = {
+        VkAttachmentReference{3, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL},
+        VkAttachmentReference{4, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+    const VkAttachmentReference depthRef{2, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
+    subpass.pColorAttachments = colorRefs.data();
+    subpass.pResolveAttachments = shape.resolves() ? resolveRefs.data() : nullptr;
+    subpass.pDepthStencilAttachment = &depthRef;
+    const std::array<VkSubpassDependency, 2> deps = sceneDependencies();
 
     auto info = vk::init<VkRenderPassCreateInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO);
     info.attachmentCount = static_cast<uint32_t>(attachments.size());
@@ -184,7 +196,7 @@ vk::Handle<VkRenderPass> ScenePass::create(vk::Device& device, PassPart part, Cl
     info.pDependencies = deps.data();
     const char* names[] = {"scene pass", "scene pass, first half", "scene pass, second half"};
     const std::string clears =
-        compute ? (clearColor ? ", clears depth and colour" : ", clears depth") : "";
+        shape.compute ? (clearColor ? ", clears depth and colour" : ", clears depth") : "";
     return vk::make(device, vkCreateRenderPass, info,
                     std::string(names[size_t(part)]) + " (" + std::to_string(samples_) + "x MSAA" +
                         clears + ")");

@@ -91,10 +91,9 @@ class SceneTargets {
     // (a hover, a blink, a selection) needs no scene pass.
     const vk::Image& shaded() const { return shaded_; }
     const vk::Image& ids() const { return ids_; }
-    // With MSAA, the multisampled IDs and colour: the second half of a split pass keeps the
-    // IDs, and the compute path both, in SHADER_READ_ONLY_OPTIMAL, for culling's visible-part
-    // pass and the compute resolve to read every sample. Where a sample's depth is the clear
-    // value no triangle covered it, and on the compute path its ID and colour are undefined.
+    // With MSAA, the multisampled IDs and colour: the compute path keeps both in
+    // SHADER_READ_ONLY_OPTIMAL for its resolve to read every sample. Where a sample's depth is
+    // the clear value no triangle covered it, and its ID and colour are undefined there.
     const vk::Image& multisampledIds() const { return msIds_; }
     const vk::Image& multisampledColor() const { return msColor_; }
     // Sampled by the depth pyramid between the two halves of the pass (layout

@@ -1,6 +1,6 @@
 // closest_point.h - the point of a triangle nearest a given point, by the triangle's Voronoi
-// regions (its corners, then its edges, then its inside), in float (the tessellation's levels
-// of detail, cad_mesh.cpp) or double (distances between meshes, mesh_inspect.cpp).
+// regions (its corners, then its edges, then its inside), in float (the error of levels of
+// detail, lod_error.cpp) or double (distances between meshes, mesh_inspect.cpp).
 #pragma once
 
 #include <glm/glm.hpp>

@@ -15,6 +15,10 @@
 #include "scene/inspect.h"
 #include "scene/scene.h"
 
+namespace util {
+class JsonWriter;
+}
+
 namespace scene {
 
 enum class CurveKind : uint8_t { Line, Circle, Ellipse, BSpline, Other };
@@ -52,9 +56,12 @@ std::optional<EdgeRef> nearestEdge(const Scene& scene, uint32_t part, const glm:
                                    glm::dvec2 size, glm::dvec2 cursor, double maxPixels);
 
 // {"part":P,"object":O,"edge":E,"curve":"circle","length":L,"radius":R,"diameter":D,
-// "center":[..],"axis":[..],"start":[..],"end":[..],"unit":"mm"} (radius, diameter, centre
-// and axis for circles; "direction" for lines).
+// "center":[..],"axis":[..],"start":[..],"end":[..],"closed":false,"unit":"mm"} (radius,
+// diameter, centre and axis for circles; "direction" for lines).
 std::string edgeReportJson(const EdgeReport& report);
+// The same members, written into the object `json` has open (--edge-info puts the pixel
+// first).
+void edgeReportMembers(util::JsonWriter& json, const EdgeReport& report);
 // "circle Ø 10 mm (r 5 mm), length 31.4159 mm", "line, length 20 mm, direction (1, 0, 0)".
 std::string describeEdge(const EdgeReport& report);
 

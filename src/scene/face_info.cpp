@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "scene/bounds.h"
-#include "util/json_number.h"
+#include "util/json_writer.h"
 
 namespace scene {
 
@@ -64,35 +64,29 @@ std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId) 
     return report;
 }
 
-namespace {
-
-// Every digit: a face kilometres from the origin keeps its millimetres (util/json_number.h).
-std::string vec(glm::dvec3 v) {
-    return util::jsonVector(v);
-}
-
-std::string number(double v) {
-    return util::jsonNumber(v);
-}
-
-} // namespace
-
 std::string faceReportJson(const FaceReport& r) {
     const SurfaceInfo& s = r.surface;
-    std::string json = "{\"part\":" + std::to_string(r.part) +
-                       ",\"object\":" + std::to_string(r.object) +
-                       ",\"face\":" + (r.face ? std::to_string(*r.face) : std::string("null")) +
-                       ",\"surface\":\"" + surfaceName(s.kind) + "\",\"area\":" + number(s.area);
-    if (s.kind == SurfaceKind::Plane)
-        json += ",\"normal\":" + vec(s.normal) + ",\"d\":" + number(s.d);
+    // Every digit: a face kilometres from the origin keeps its millimetres.
+    util::JsonWriter json;
+    json.beginObject()
+        .member("part", r.part)
+        .member("object", r.object)
+        .member("face", r.face)
+        .member("surface", surfaceName(s.kind))
+        .member("area", s.area);
+    if (s.kind == SurfaceKind::Plane) json.member("normal", s.normal).member("d", s.d);
     if (s.kind == SurfaceKind::Cylinder)
-        json += ",\"radius\":" + number(s.radius) + ",\"diameter\":" + number(2.0 * s.radius) +
-                ",\"axis\":{\"origin\":" + vec(s.axisOrigin) +
-                ",\"direction\":" + vec(s.axisDirection) + "}";
+        json.member("radius", s.radius)
+            .member("diameter", 2.0 * s.radius)
+            .beginObject("axis")
+            .member("origin", s.axisOrigin)
+            .member("direction", s.axisDirection)
+            .endObject();
     if (s.kind == SurfaceKind::Sphere)
-        json += ",\"radius\":" + number(s.radius) + ",\"center\":" + vec(s.axisOrigin);
-    return json + ",\"bbox\":{\"min\":" + vec(r.bbox.min) + ",\"max\":" + vec(r.bbox.max) + "}," +
-           unitJsonMember(r.unit) + "}";
+        json.member("radius", s.radius).member("center", s.axisOrigin);
+    json.beginObject("bbox").member("min", r.bbox.min).member("max", r.bbox.max).endObject();
+    unitMember(json, r.unit);
+    return json.endObject().text();
 }
 
 std::string describeSurface(const FaceReport& r) {

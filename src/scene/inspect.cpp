@@ -5,7 +5,7 @@
 #include "scene/bounds.h"
 #include "scene/cad/brep_inspect.h"
 #include "scene/mesh_inspect.h"
-#include "util/json_number.h"
+#include "util/json_writer.h"
 
 namespace scene {
 
@@ -45,43 +45,49 @@ SolidProperties sumProperties(const std::vector<SolidProperties>& each) {
 
 namespace {
 
-std::string number(double v) {
-    return util::jsonNumber(v);
-}
-
-// The members after "object": what a solid and a sum print alike.
-std::string propertiesBody(const SolidProperties& p) {
-    const std::string closed = p.closed ? "true" : "false";
-    return ",\"volume\":" + number(p.volume) + ",\"area\":" + number(p.area) +
-           ",\"center\":" + util::jsonVector(p.center) +
-           ",\"bbox\":{\"min\":" + util::jsonVector(p.bbox.min) +
-           ",\"max\":" + util::jsonVector(p.bbox.max) +
-           ",\"size\":" + util::jsonVector(p.bbox.max - p.bbox.min) + "},\"closed\":" + closed +
-           "," + unitJsonMember(p.unit) + "}";
+// The members after "object", what a solid and a sum print alike; closes the line.
+std::string finishProperties(util::JsonWriter& json, const SolidProperties& p) {
+    json.member("volume", p.volume).member("area", p.area).member("center", p.center);
+    json.beginObject("bbox")
+        .member("min", p.bbox.min)
+        .member("max", p.bbox.max)
+        .member("size", p.bbox.max - p.bbox.min)
+        .endObject();
+    json.member("closed", p.closed);
+    unitMember(json, p.unit);
+    return json.endObject().text();
 }
 
 } // namespace
 
 std::string distanceJson(const DistanceReport& r) {
-    std::string json = "{\"distance\":" + number(r.distance) + ",\"p0\":" + util::jsonVector(r.p0) +
-                       ",\"p1\":" + util::jsonVector(r.p1) + ",\"source\":\"" +
-                       (r.fromBrep ? "brep" : "mesh") + "\"";
+    util::JsonWriter json;
+    json.beginObject()
+        .member("distance", r.distance)
+        .member("p0", r.p0)
+        .member("p1", r.p1)
+        .member("source", r.fromBrep ? "brep" : "mesh");
     auto optional = [&](const char* name, const std::optional<double>& value) {
-        if (value) json += std::string(",\"") + name + "\":" + number(*value);
+        if (value) json.member(name, *value);
     };
     optional("center_distance", r.centreDistance);
     optional("axis_angle", r.axisAngleDegrees);
     optional("axis_distance", r.axisDistance);
     optional("point_to_plane", r.pointToPlane);
-    return json + "," + unitJsonMember(r.unit) + "}";
+    unitMember(json, r.unit);
+    return json.endObject().text();
 }
 
 std::string propertiesJson(const SolidProperties& p) {
-    return "{\"object\":" + std::to_string(p.object) + propertiesBody(p);
+    util::JsonWriter json;
+    json.beginObject().member("object", p.object);
+    return finishProperties(json, p);
 }
 
 std::string totalPropertiesJson(const SolidProperties& sum) {
-    return "{\"object\":\"all\",\"objects\":" + std::to_string(sum.object) + propertiesBody(sum);
+    util::JsonWriter json;
+    json.beginObject().member("object", "all").member("objects", sum.object);
+    return finishProperties(json, sum);
 }
 
 } // namespace scene

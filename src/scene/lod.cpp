@@ -1,22 +1,16 @@
-// lod.cpp - levels of detail by meshoptimizer's simplifier: with seams between the parts, or
-// welded (lod_welded.h), whichever gives the fewer triangles for the error.
+// lod.cpp - candidate levels of detail of meshes by meshoptimizer's simplifier, with seams
+// between the parts or welded (lod_welded.h), for the policy that chooses among them
+// (lod_policy.h); and the scene's levels as a whole (lod.h).
 #include "scene/lod.h"
 
 #include <meshoptimizer.h>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cmath>
 #include <iterator>
-#include <limits>
-#include <span>
 #include <stdexcept>
-#include <thread>
-#include <tuple>
 #include <unordered_map>
 
-#include "scene/lod_choice.h"
+#include "scene/lod_policy.h"
 #include "scene/lod_welded.h"
 
 namespace scene {
@@ -41,20 +35,17 @@ PartLevel simplifyPart(const Scene& scene, const Geometry& g, const Part& part,
     }
     PartLevel out;
     std::vector<uint32_t> reduced(count);
-    float relative = 0.0f;
     // The error bound is left wide open: the level's size sets how far it goes, and the error
-    // it reaches decides where it may be drawn.
+    // it reaches (levelError) decides where it may be drawn.
     const size_t kept = meshopt_simplify(
         reduced.data(), indices.data(), count, &positions[0].x, positions.size(), sizeof(glm::vec3),
-        std::max<size_t>(3, 3 * targetTriangles), 1.0f, meshopt_SimplifyLockBorder, &relative);
+        std::max<size_t>(3, 3 * targetTriangles), 1.0f, meshopt_SimplifyLockBorder, nullptr);
     if (kept == 0 || kept >= count) { // nothing to gain, or the part would vanish
         out.indices.assign(source, source + count);
         return out;
     }
     out.indices.resize(kept);
     for (size_t i = 0; i < kept; ++i) out.indices[i] = globalOf[reduced[i]];
-    out.error =
-        relative * meshopt_simplifyScale(&positions[0].x, positions.size(), sizeof(glm::vec3));
     return out;
 }
 
@@ -82,15 +73,11 @@ std::vector<PartLevel> simplifyWhole(const Scene& scene, const Geometry& g, doub
         }
     }
     std::vector<uint32_t> reduced(indices.size());
-    float relative = 0.0f;
     const size_t target = std::max<size_t>(3, 3 * size_t(double(g.triangleCount) * share + 0.5));
-    // The error bound is left wide open: the level's size sets how far it goes, and the error
-    // it reaches decides where it may be drawn.
+    // The error bound is left wide open, as for a part alone.
     const size_t kept = meshopt_simplify(reduced.data(), indices.data(), indices.size(),
                                          &positions[0].x, positions.size(), sizeof(glm::vec3),
-                                         target, 1.0f, meshopt_SimplifyLockBorder, &relative);
-    const float error =
-        relative * meshopt_simplifyScale(&positions[0].x, positions.size(), sizeof(glm::vec3));
+                                         target, 1.0f, meshopt_SimplifyLockBorder, nullptr);
     std::vector<PartLevel> parts(g.partCount);
     for (size_t t = 0; t < kept; t += 3) {
         const uint32_t p = partOf[reduced[t]];
@@ -98,10 +85,8 @@ std::vector<PartLevel> simplifyWhole(const Scene& scene, const Geometry& g, doub
             throw std::logic_error("levels of detail: a triangle spans two parts");
         for (int k = 0; k < 3; ++k) parts[p].indices.push_back(originOf[reduced[t + k]]);
     }
-    for (PartLevel& part : parts) {
+    for (const PartLevel& part : parts)
         if (part.indices.empty()) return {};
-        part.error = error;
-    }
     return parts;
 }
 
@@ -121,34 +106,29 @@ std::vector<PartLevel> simplifySeamed(const Scene& scene, const Geometry& g, dou
     return parts;
 }
 
-struct Candidate {
-    std::vector<PartLevel> parts;
-    size_t triangles = 0;
-    uint64_t bytes = 0; // as levelStats counts them
-    float error = 0.0f;
-};
-
 // One candidate level: at `share`, with seams between the parts (way 0) or welded (way 1,
-// where the geometry has several parts; else none). Where parts meet, meshoptimizer's error
-// is the surface's, not how far a part's outline went along it: the error covers both.
-// Errors past `limit` need not be measured whole.
-Candidate candidateOf(const Scene& scene, const Geometry& g, double share, int way,
-                      const LodOptions& options, float limit) {
-    Candidate c;
-    c.parts = way == 0 ? simplifySeamed(scene, g, share, options) : simplifyWelded(scene, g, share);
-    if (c.parts.empty()) return c;
-    c.error = partsMoved(scene, g, c.parts, limit);
-    std::vector<bool> used(g.vertexCount, false);
-    size_t vertices = 0;
-    for (PartLevel& part : c.parts) {
-        c.triangles += part.indices.size() / 3;
-        c.error = std::max(c.error, part.error);
-        for (uint32_t v : part.indices)
-            if (!used[v]) used[v] = true, ++vertices;
+// where the geometry has several parts; else none), with just the vertices it uses, in the
+// order it first uses them.
+LevelMesh candidateOf(const Scene& scene, const Geometry& g, double share, int way,
+                      const LodOptions& options, float size) {
+    std::vector<PartLevel> parts =
+        way == 0 ? simplifySeamed(scene, g, share, options) : simplifyWelded(scene, g, share);
+    LevelMesh level;
+    if (parts.empty()) return level;
+    std::vector<uint32_t> remap(g.vertexCount, UINT32_MAX);
+    for (const PartLevel& part : parts) {
+        std::vector<uint32_t>& out = level.parts.emplace_back();
+        out.reserve(part.indices.size());
+        for (uint32_t index : part.indices) {
+            if (remap[index] == UINT32_MAX) {
+                remap[index] = uint32_t(level.vertices.size());
+                level.vertices.push_back(scene.vertices[g.firstVertex + index]);
+            }
+            out.push_back(remap[index]);
+        }
     }
-    c.bytes = geometryBytes(vertices, c.triangles, g.partCount);
-    for (PartLevel& part : c.parts) part.error = c.error;
-    return c;
+    measureCandidate(scene, g, level, size);
+    return level;
 }
 
 // The shares of full detail's triangles candidates aim at: finely spaced near full detail,
@@ -156,124 +136,47 @@ Candidate candidateOf(const Scene& scene, const Geometry& g, double share, int w
 // few pixels from one they may not, then halving.
 constexpr double candidateShares[] = {0.7, 0.5, 0.35, 0.25, 0.12, 0.06, 0.03, 0.015};
 
-// One way's candidates (by falling share) worth weighing: up to the first whose error passes
-// half the geometry's size (it would show only where the geometry spans a pixel or two),
-// each with fewer triangles than every one before it (a part's locked border or seams may
-// hold a share's aim back, and a smaller one may then do better).
-void keepUseful(std::vector<Candidate>& out, std::span<Candidate> way, size_t triangles,
-                float size) {
-    for (Candidate& c : way) {
-        if (c.parts.empty() || c.error > 0.5f * size) break;
-        if (c.triangles >= triangles) continue;
-        triangles = c.triangles;
-        out.push_back(std::move(c));
-    }
-}
-
-// The size errors are weighed against: the diagonal of the geometry's box.
-float sizeOf(const Scene& scene, const Geometry& g) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (uint32_t v = 0; v < g.vertexCount; ++v) {
-        lo = glm::min(lo, scene.vertices[g.firstVertex + v].position);
-        hi = glm::max(hi, scene.vertices[g.firstVertex + v].position);
-    }
-    return g.vertexCount ? glm::length(hi - lo) : 0.0f;
-}
-
-// Appends one level as a geometry of its own, with just the vertices it uses.
-uint32_t addLevel(Scene& scene, uint32_t base, uint32_t level, std::vector<PartLevel>& parts) {
-    const Geometry& g = scene.geometries[base];
-    Geometry out = levelShell(scene, g, level);
-    std::vector<uint32_t> remap(g.vertexCount, UINT32_MAX);
-    for (PartLevel& part : parts) {
-        out.lodError = std::max(out.lodError, part.error);
-        const uint32_t first = out.triangleCount;
-        for (uint32_t index : part.indices) {
-            if (remap[index] == UINT32_MAX) {
-                remap[index] = out.vertexCount++;
-                const Vertex vertex = scene.vertices[g.firstVertex + index];
-                scene.vertices.push_back(vertex);
-            }
-            scene.indices.push_back(remap[index]);
-        }
-        out.triangleCount += uint32_t(part.indices.size() / 3);
-        scene.parts.push_back({first, out.triangleCount - first});
-        part.indices = {};
-    }
-    // A coarser level is never said to be closer than a finer one.
-    const Geometry& finer = g.levels.empty() ? g : scene.geometries[g.levels.back()];
-    out.lodError = std::max(out.lodError, finer.lodError);
-    scene.geometries.push_back(std::move(out));
-    const uint32_t index = uint32_t(scene.geometries.size() - 1);
-    scene.geometries[base].levels.push_back(index);
-    return index;
-}
-
 } // namespace
+
+std::vector<GeometryCandidates> meshCandidates(const Scene& scene, const LodOptions& options,
+                                               const LodProgress& progress) {
+    std::vector<GeometryCandidates> out;
+    for (uint32_t g = 0; g < scene.geometries.size(); ++g)
+        if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty())
+            out.push_back({g, {}});
+    // Every candidate is a task of its own, the largest geometries' first, so that no thread
+    // is left with a large one at the end.
+    constexpr size_t shares = std::size(candidateShares);
+    std::vector<float> sizes(out.size());
+    std::vector<uint32_t> order(out.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+        sizes[i] = geometrySize(scene, scene.geometries[out[i].geometry]);
+        order[i] = uint32_t(i);
+        out[i].chains.assign(2, std::vector<LevelMesh>(shares));
+    }
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return scene.geometries[out[a].geometry].triangleCount >
+               scene.geometries[out[b].geometry].triangleCount;
+    });
+    forEachTask(
+        out.size() * 2 * shares,
+        [&](size_t t) {
+            const size_t i = order[t / (2 * shares)], way = t / shares % 2, share = t % shares;
+            out[i].chains[way][share] =
+                candidateOf(scene, scene.geometries[out[i].geometry], candidateShares[share],
+                            int(way), options, sizes[i]);
+        },
+        progress);
+    return out;
+}
 
 void buildLevels(Scene& scene, const LodOptions& options, const LodProgress& progress) {
     if (options.levels < 1 || options.levels > maxLevels)
         throw std::invalid_argument("levels of detail: 1 to " + std::to_string(maxLevels));
-    std::vector<uint32_t> todo;
-    for (uint32_t g = 0; g < scene.geometries.size(); ++g)
-        if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty()) todo.push_back(g);
-    // Every candidate is a task of its own, the largest geometries' first, so that no
-    // thread is left with a large one at the end. The calling thread works too and reports
-    // between its tasks.
-    constexpr size_t shares = std::size(candidateShares);
-    std::vector<float> sizes(todo.size());
-    std::vector<uint32_t> order(todo.size());
-    for (size_t i = 0; i < todo.size(); ++i) {
-        sizes[i] = sizeOf(scene, scene.geometries[todo[i]]);
-        order[i] = uint32_t(i);
+    if (options.levels > 1) {
+        std::vector<GeometryCandidates> candidates = meshCandidates(scene, options, progress);
+        addChosenLevels(scene, candidates, options);
     }
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return scene.geometries[todo[a]].triangleCount > scene.geometries[todo[b]].triangleCount;
-    });
-    const size_t tasks = options.levels > 1 ? todo.size() * 2 * shares : 0;
-    std::vector<Candidate> candidates(todo.size() * 2 * shares);
-    std::atomic<size_t> next{0}, done{0};
-    auto work = [&](bool report) {
-        for (size_t t; (t = next.fetch_add(1)) < tasks;) {
-            const size_t i = order[t / (2 * shares)], way = t / shares % 2, share = t % shares;
-            candidates[(2 * i + way) * shares + share] =
-                candidateOf(scene, scene.geometries[todo[i]], candidateShares[share], int(way),
-                            options, 0.5f * sizes[i]);
-            const size_t finished = ++done;
-            if (report && progress) progress(double(finished) / double(tasks));
-        }
-    };
-    const unsigned threads =
-        std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(tasks)));
-    std::vector<std::jthread> workers;
-    for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, false);
-    work(true);
-    workers.clear(); // joins
-    // Which candidates become levels weighs every geometry against the others, by the
-    // objects that draw it, for the memory the scene may spend on levels.
-    std::vector<uint32_t> instances(scene.geometries.size(), 0);
-    for (const Object& o : scene.objects) ++instances[o.geometry];
-    std::vector<CandidateSet> sets(todo.size());
-    std::vector<std::vector<Candidate>> useful(todo.size());
-    double bytes = 0.0;
-    for (size_t i = 0; i < todo.size(); ++i) {
-        const Geometry& g = scene.geometries[todo[i]];
-        for (size_t way = 0; way < 2; ++way)
-            keepUseful(useful[i], {candidates.data() + (2 * i + way) * shares, shares},
-                       g.triangleCount, sizes[i]);
-        sets[i].triangles = g.triangleCount;
-        sets[i].size = sizes[i];
-        sets[i].instances = std::max(instances[todo[i]], 1u);
-        for (const Candidate& c : useful[i])
-            sets[i].candidates.push_back({c.triangles, c.bytes, c.error});
-        bytes += double(geometryBytes(g));
-    }
-    const auto chosen =
-        chooseLevels(sets, options.levels - 1, options.keepAtMost, double(options.memory) * bytes);
-    // Appended in geometry order, so the scene does not depend on the threads' timing.
-    for (size_t i = 0; i < todo.size(); ++i)
-        for (size_t l = 0; l < chosen[i].size(); ++l)
-            addLevel(scene, todo[i], uint32_t(l + 1), useful[i][chosen[i][l]].parts);
     if (progress) progress(1.0);
 }
 

@@ -17,7 +17,7 @@
 namespace scene {
 
 // Levels 0 (full detail) to maxLevels - 1.
-constexpr uint32_t maxLevels = 4;
+constexpr uint32_t maxLevels = gpu::LOD_MAX_LEVELS; // CullStats counts each
 
 struct LodOptions {
     uint32_t levels = maxLevels; // including full detail: 1 builds none
@@ -32,12 +32,13 @@ struct LodOptions {
 // Called with the share of geometries done, 0..1, from the calling thread.
 using LodProgress = std::function<void(double fraction)>;
 
-// Adds the levels of every full-detail geometry that has none yet. meshoptimizer's simplifier
+// Adds the levels of every full-detail geometry that has none yet: meshoptimizer's simplifier
 // makes candidates at a falling share of the triangles, with seams between the parts or
-// welded (lod.cpp, lod_welded.h), each with the error it really has, covering how far any
-// part moved; the levels kept are those that would draw the fewest triangles over every
-// distance the geometry may be seen at. Runs on every hardware thread; the result does not
-// depend on their number.
+// welded (lod.cpp, lod_welded.h), and the policy every kind of geometry shares (lod_policy.h)
+// measures their error against full detail and keeps those that would draw the fewest
+// triangles over every distance the geometry may be seen at. Runs on every hardware thread;
+// the result does not depend on their number. (CAD files make their candidates from Open
+// CASCADE instead, scene/cad/cad_levels.h.)
 void buildLevels(Scene& scene, const LodOptions& options = {}, const LodProgress& progress = {});
 
 // What a geometry of this size takes in memory: its vertices, indices and part ranges. The

@@ -49,7 +49,8 @@ struct Geometry {
     std::vector<uint32_t> partMaterials;
     // Levels of detail (scene/lod.h): a full-detail geometry lists its coarser levels, finest
     // first; a level records which it is and its geometric error in model units (the largest
-    // distance its surface may lie from full detail's, as meshoptimizer measures it).
+    // distance between its surface and full detail's, as levelError in scene/lod_error.h
+    // measures it).
     std::vector<uint32_t> levels;
     uint32_t level = 0;
     float lodError = 0.0f;

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shared.h"
+
 namespace scene {
 
 // One plane. It keeps the points where dot(normal, p) <= offset; flip keeps the other side.
@@ -32,7 +34,7 @@ struct SectionPlane {
 
 // Up to three planes. A point is drawn when every plane that is on keeps it: together they
 // can cut a slab, or a corner out of the view.
-constexpr uint32_t maxSectionPlanes = 3;
+constexpr uint32_t maxSectionPlanes = gpu::SECTION_PLANES_MAX; // FrameData's planes
 struct Section {
     std::array<SectionPlane, maxSectionPlanes> planes{};
     bool any() const;

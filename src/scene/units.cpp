@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include "util/json_writer.h"
+
 namespace scene {
 
 LengthUnit gltfUnit() {
@@ -55,8 +57,8 @@ std::string formatPoint(glm::dvec3 p, const LengthUnit& unit) {
     return withUnit(text + ")", unit, "");
 }
 
-std::string unitJsonMember(const LengthUnit& unit) {
-    return "\"unit\":\"" + (unit.symbol.empty() ? std::string("none") : unit.symbol) + "\"";
+void unitMember(util::JsonWriter& json, const LengthUnit& unit) {
+    json.member("unit", unit.symbol.empty() ? std::string("none") : unit.symbol);
 }
 
 } // namespace scene

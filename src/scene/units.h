@@ -7,6 +7,10 @@
 
 #include <glm/glm.hpp>
 
+namespace util {
+class JsonWriter;
+}
+
 namespace scene {
 
 struct LengthUnit {
@@ -34,6 +38,6 @@ std::string formatPoint(glm::dvec3 p, const LengthUnit& unit);
 
 // The JSON member every object holding lengths carries: "unit":"mm", or "unit":"none".
 // Areas in such an object are in the unit squared.
-std::string unitJsonMember(const LengthUnit& unit);
+void unitMember(util::JsonWriter& json, const LengthUnit& unit);
 
 } // namespace scene

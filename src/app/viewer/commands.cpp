@@ -1,16 +1,21 @@
-// commands.cpp - the viewer's command table and what reads it: the key dispatch, the help
-// overlay's lines and Esc's order of cancelling.
+// commands.cpp - the viewer's command table, a function per group of rows, and the one
+// executor: what keys, the panel and the script ask for runs here.
 #include "app/viewer/commands.h"
+
+#include <stdexcept>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include "app/viewer/viewer.h"
+#include "scene/assembly_tree.h"
+#include "scene/standard_view.h"
 
 namespace app {
 namespace {
 
 constexpr int shift = GLFW_MOD_SHIFT, ctrl = GLFW_MOD_CONTROL;
+using Kind = ArgumentKind;
 
 // The number row's key and the keypad's, so both keyboards' habits work.
 std::vector<Chord> digit(int n, int mods = 0) {
@@ -20,222 +25,371 @@ std::vector<Chord> join(std::vector<Chord> a, const std::vector<Chord>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
 }
+// Keys that run a command with no argument, and those that toggle a switch.
+std::vector<KeyBinding> keys(std::vector<Chord> chords) {
+    return {{std::move(chords), std::monostate{}}};
+}
+std::vector<KeyBinding> toggles(std::vector<Chord> chords) {
+    return {{std::move(chords), Switch::Toggle}};
+}
 
-void hide(Viewer& viewer, Input& input) {
+bool on(const Argument& argument) {
+    return std::get<Switch>(argument) == Switch::On;
+}
+template <typename T>
+const T& arg(const Argument& argument) {
+    return std::get<T>(argument);
+}
+
+void hide(Viewer& viewer, Input& input, const Argument&) {
     input.selection().hideSelected();
     viewer.selectionChanged(); // hidden parts are not selected
     viewer.partsChanged();
 }
 
-void isolate(Viewer& viewer, Input& input) {
+void isolate(Viewer& viewer, Input& input, const Argument&) {
     input.selection().isolateSelected();
     viewer.partsChanged();
 }
 
-void showAll(Viewer& viewer, Input& input) {
+void showAll(Viewer& viewer, Input& input, const Argument&) {
     input.selection().showAll();
     viewer.partsChanged();
 }
 
-void cancel(Viewer& viewer, Input& input) {
+bool anySelected(const Viewer&, const Input& input) {
+    return !input.selection().selected().empty();
+}
+
+// A file to open (the panel's open field, a recent file) opens as a dropped one does; none:
+// the desktop's file chooser.
+void open(Viewer& viewer, Input& input, const Argument& argument) {
+    if (const auto* path = std::get_if<std::string>(&argument))
+        input.onDrop(*path);
+    else
+        viewer.chooseFile();
+}
+
+// A script's file is written as it is, without a notice over the view (tests compare what
+// the window shows); F12's goes to the Pictures folder and says where.
+void screenshot(Viewer& viewer, Input&, const Argument& argument) {
+    if (const auto* path = std::get_if<std::string>(&argument))
+        viewer.screenshot(*path);
+    else
+        viewer.screenshotToPictures();
+}
+
+void panel(Viewer& viewer, Input&, const Argument& argument) {
+    viewer.view().panelVisible = on(argument);
+    viewer.say(on(argument) ? "panel: shown" : "panel: hidden");
+}
+
+void escape(Viewer& viewer, Input& input, const Argument&) {
     if (const auto what = cancelOne(viewer, input)) viewer.say("cancel: " + *what);
 }
 
-std::vector<Command> table() {
-    // The views follow the numpad habit Blender made common (1 front, 3 right, 7 top, with
-    // Ctrl the opposite side, 0 isometric) and FreeCAD's own 2 top, 4 back, 5 bottom, 6 left.
+std::vector<CommandDef> windowCommands() {
     return {
-        {"help",
-         {{GLFW_KEY_F1, 0}, {GLFW_KEY_SLASH, shift}},
-         nullptr,
-         "show or hide this list of keys and mouse actions",
-         [](Viewer& v, Input&) { v.toggleHelp(); }},
-        {"cancel",
-         {{GLFW_KEY_ESCAPE, 0}},
-         nullptr,
+        {CommandId::Help, "help", Kind::Switch,
+         "show or hide this list of keys, mouse actions and commands",
+         toggles({{GLFW_KEY_F1, 0}, {GLFW_KEY_SLASH, shift}}),
+         [](Viewer& v, Input&, const Argument& a) {
+             if (on(a) != v.helpOpen()) v.toggleHelp();
+         },
+         [](const Viewer& v, const Input&) { return v.helpOpen(); }},
+        {CommandId::Escape, "escape", Kind::None,
          "cancel: the help, a box drag, measure mode, then the selection and things A and B "
          "(never quits)",
-         cancel},
-        {"quit",
-         {{GLFW_KEY_Q, ctrl}},
-         nullptr,
-         "quit idview (or close the window)",
-         [](Viewer& v, Input&) { v.quit(); }},
-        {"open",
-         {{GLFW_KEY_O, ctrl}},
-         nullptr,
-         "Open...: choose a model file in the desktop's file chooser",
-         [](Viewer& v, Input&) { v.chooseFile(); }},
-        {"type-path",
-         {{GLFW_KEY_L, ctrl}},
-         nullptr,
-         "type a model's path in the panel's open field",
-         [](Viewer& v, Input&) { v.focusOpenField(); }},
-        {"screenshot",
-         {{GLFW_KEY_F12, 0}},
-         nullptr,
-         "save a PNG of the window in the Pictures folder (idview-DATE-TIME.png)",
-         [](Viewer& v, Input&) { v.screenshotToPictures(); }},
-        {"toggle-panel",
-         {{GLFW_KEY_F9, 0}},
-         nullptr,
-         "show or hide the panel",
-         [](Viewer& v, Input&) {
-             v.view().panelVisible = !v.view().panelVisible;
-             v.say(v.view().panelVisible ? "panel: shown" : "panel: hidden");
-         }},
-        {"fit",
-         {{GLFW_KEY_F, 0}},
-         nullptr,
-         "fit the selection, else the shown parts, in view",
-         [](Viewer& v, Input&) { v.fitView(); }},
-        {"reset-view",
-         {{GLFW_KEY_HOME, 0}},
-         nullptr,
-         "back to the model's opening view",
-         [](Viewer& v, Input&) { v.camera().resetView(); }},
-        {"projection",
-         {{GLFW_KEY_O, 0}},
-         nullptr,
-         "switch orthographic / perspective",
-         [](Viewer& v, Input&) { v.setOrtho(!v.settings().camera.ortho); }},
-        {"view-front", digit(1), nullptr, "front view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("front")); }},
-        {"view-back", join(digit(1, ctrl), digit(4)), nullptr, "back view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("back")); }},
-        {"view-right", digit(3), nullptr, "right view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("right")); }},
-        {"view-left", join(digit(3, ctrl), digit(6)), nullptr, "left view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("left")); }},
-        {"view-top", join(digit(7), digit(2)), nullptr, "top view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("top")); }},
-        {"view-bottom", join(digit(7, ctrl), digit(5)), nullptr, "bottom view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("bottom")); }},
-        {"view-isometric", digit(0), nullptr, "isometric view",
-         [](Viewer& v, Input&) { v.turnTo(*scene::findStandardView("isometric")); }},
-        {"hide", {{GLFW_KEY_H, 0}}, nullptr, "hide the selected parts", hide},
-        {"show-all", {{GLFW_KEY_H, shift}}, nullptr, "show every hidden part", showAll},
-        {"isolate", {{GLFW_KEY_I, 0}}, nullptr, "show only the selected parts", isolate},
-        {"undo",
-         {{GLFW_KEY_Z, ctrl}},
-         nullptr,
-         "undo a hide, show or section change",
-         [](Viewer& v, Input&) { v.undo(); }},
-        {"redo",
-         {{GLFW_KEY_Z, ctrl | shift}, {GLFW_KEY_Y, ctrl}},
-         nullptr,
-         "redo what undo took back",
-         [](Viewer& v, Input&) { v.redo(); }},
-        {"xray",
-         {{GLFW_KEY_X, 0}},
-         nullptr,
-         "X-ray: the parts outside the selection translucent, not picked (nothing selected: "
-         "no change)",
-         [](Viewer& v, Input&) { v.setXray(!v.settings().xray); }},
-        {"measure",
-         {{GLFW_KEY_M, 0}},
-         nullptr,
-         "measure mode: clicks place points (distance, angle) instead of selecting",
-         [](Viewer& v, Input&) { v.toggleMeasure(); }},
-        {"edges",
-         {{GLFW_KEY_E, 0}},
-         nullptr,
-         "edges on or off",
-         [](Viewer& v, Input&) { v.settings().render.edges.on = !v.settings().render.edges.on; }},
-        {"vsync",
-         {{GLFW_KEY_V, 0}},
-         nullptr,
-         "vsync on or off (off: frames as fast as they go)",
-         [](Viewer& v, Input&) { v.view().vsync = !v.view().vsync; }},
-        {"reload-shaders",
-         {{GLFW_KEY_R, 0}},
-         nullptr,
-         "reload the shaders from their folder",
-         [](Viewer& v, Input&) { v.reloadShaders(); }},
-        // The mouse: handled by Input::onButton, onCursor and onScroll; listed for the help.
-        {"orbit", {}, "Left drag", "orbit around the target", nullptr},
-        {"pan", {}, "Right or middle drag", "pan", nullptr},
-        {"zoom", {}, "Wheel", "zoom toward the point under the cursor", nullptr},
-        {"select",
+         keys({{GLFW_KEY_ESCAPE, 0}}), escape},
+        {CommandId::Quit, "quit", Kind::None, "quit idview (or close the window)",
+         keys({{GLFW_KEY_Q, ctrl}}), [](Viewer& v, Input&, const Argument&) { v.quit(); }},
+        {CommandId::Open, "open", Kind::OptionalText,
+         "Open...: choose a model file in the desktop's file chooser; with a FILE (the panel's "
+         "open field, a recent file), open that one",
+         keys({{GLFW_KEY_O, ctrl}}), open},
+        {CommandId::TypePath, "type-path", Kind::None,
+         "type a model's path in the panel's open field", keys({{GLFW_KEY_L, ctrl}}),
+         [](Viewer& v, Input&, const Argument&) { v.focusOpenField(); }},
+        {CommandId::Screenshot, "screenshot", Kind::OptionalText,
+         "save a PNG of the window in the Pictures folder (idview-DATE-TIME.png), or as FILE",
+         keys({{GLFW_KEY_F12, 0}}), screenshot},
+        {CommandId::Panel, "panel", Kind::Switch, "show or hide the panel",
+         toggles({{GLFW_KEY_F9, 0}}), panel,
+         [](const Viewer& v, const Input&) { return v.view().panelVisible; }},
+        {CommandId::Vsync, "vsync", Kind::Switch,
+         "vsync on or off (off: frames as fast as they go)", toggles({{GLFW_KEY_V, 0}}),
+         [](Viewer& v, Input&, const Argument& a) { v.view().vsync = on(a); },
+         [](const Viewer& v, const Input&) { return v.view().vsync; }},
+        {CommandId::ReloadShaders, "reload-shaders", Kind::None,
+         "reload the shaders from their folder", keys({{GLFW_KEY_R, 0}}),
+         [](Viewer& v, Input&, const Argument&) { v.reloadShaders(); }},
+        {CommandId::Cancel,
+         "cancel",
+         Kind::None,
+         "stop the model loading, and forget those queued (the panel's Cancel)",
          {},
-         "Left click",
-         "select the part under the cursor (empty space: none)",
-         nullptr},
-        {"select-solid", {}, "Double-click", "select the solid (object) under the cursor", nullptr},
-        {"inspect-b",
+         [](Viewer& v, Input&, const Argument&) { v.cancelLoads(); },
+         nullptr,
+         [](const Viewer& v, const Input&) { return v.loading(); }},
+        {CommandId::ClearRecent,
+         "clear-recent",
+         Kind::None,
+         "empty the list of recent files",
          {},
-         "Ctrl+click",
-         "add a second thing (B) to the clicked one (A): the Inspect panel gives their distance",
-         nullptr},
-        {"box-select",
+         [](Viewer& v, Input&, const Argument&) { v.view().recentFiles.clear(); },
+         nullptr,
+         [](const Viewer& v, const Input&) { return !v.view().recentFiles.empty(); }},
+        {CommandId::Defaults,
+         "defaults",
+         Kind::None,
+         "the settings kept between runs back to the defaults (the panel's Reset to defaults)",
          {},
-         "Shift / Ctrl / Alt + left drag",
-         "box selection: replace / add to / remove from the selection",
-         nullptr},
-        {"drop-file",
-         {},
-         "Drop a file",
-         "open it (.gltf .glb .step .stp .iges .igs .brep)",
-         nullptr},
+         [](Viewer& v, Input&, const Argument&) { v.resetSettings(); }},
     };
 }
 
-const char* keyName(int key) {
-    static const std::pair<int, const char*> names[] = {
-        {GLFW_KEY_ESCAPE, "Esc"}, {GLFW_KEY_HOME, "Home"},   {GLFW_KEY_SLASH, "/"},
-        {GLFW_KEY_TAB, "Tab"},    {GLFW_KEY_SPACE, "Space"}, {GLFW_KEY_ENTER, "Enter"}};
-    for (const auto& [code, name] : names)
-        if (code == key) return name;
-    return nullptr;
+std::vector<KeyBinding> viewKeys() {
+    // The views follow the numpad habit Blender made common (1 front, 3 right, 7 top, with
+    // Ctrl the opposite side, 0 isometric) and FreeCAD's own 2 top, 4 back, 5 bottom, 6 left.
+    auto view = [](const char* name, std::vector<Chord> chords, const char* description) {
+        return KeyBinding{std::move(chords), scene::findStandardView(name), description};
+    };
+    return {view("front", digit(1), "front view"),
+            view("back", join(digit(1, ctrl), digit(4)), "back view"),
+            view("right", digit(3), "right view"),
+            view("left", join(digit(3, ctrl), digit(6)), "left view"),
+            view("top", join(digit(7), digit(2)), "top view"),
+            view("bottom", join(digit(7, ctrl), digit(5)), "bottom view"),
+            view("isometric", digit(0), "isometric view")};
+}
+
+std::vector<CommandDef> cameraCommands() {
+    return {
+        {CommandId::Fit, "fit", Kind::None, "fit the selection, else the shown parts, in view",
+         keys({{GLFW_KEY_F, 0}}), [](Viewer& v, Input&, const Argument&) { v.fitView(); }},
+        {CommandId::ResetView, "reset-view", Kind::None, "back to the model's opening view",
+         keys({{GLFW_KEY_HOME, 0}}),
+         [](Viewer& v, Input&, const Argument&) { v.camera().resetView(); }},
+        {CommandId::Ortho, "ortho", Kind::Switch, "orthographic projection (off: perspective)",
+         toggles({{GLFW_KEY_O, 0}}),
+         [](Viewer& v, Input&, const Argument& a) { v.setOrtho(on(a)); },
+         [](const Viewer& v, const Input&) { return v.settings().camera.ortho; }},
+        {CommandId::View, "view", Kind::View, "a standard view, at the same distance", viewKeys(),
+         [](Viewer& v, Input&, const Argument& a) {
+             v.turnTo(*arg<const scene::StandardView*>(a));
+         }},
+        {CommandId::Explode,
+         "explode",
+         Kind::Explode,
+         "move the parts apart by assembly level, from 0 (at rest) to 1",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().animation.explode = arg<float>(a);
+         }},
+    };
+}
+
+std::vector<CommandDef> partCommands() {
+    return {
+        {CommandId::Hide, "hide", Kind::None, "hide the selected parts", keys({{GLFW_KEY_H, 0}}),
+         hide, nullptr, anySelected},
+        {CommandId::ShowAll, "show-all", Kind::None, "show every hidden part",
+         keys({{GLFW_KEY_H, shift}}), showAll, nullptr,
+         [](const Viewer&, const Input& i) { return !i.selection().hidden().empty(); }},
+        {CommandId::Isolate, "isolate", Kind::None, "show only the selected parts",
+         keys({{GLFW_KEY_I, 0}}), isolate, nullptr, anySelected},
+        {CommandId::Undo, "undo", Kind::None, "undo a hide, show or section change",
+         keys({{GLFW_KEY_Z, ctrl}}), [](Viewer& v, Input&, const Argument&) { v.undo(); }},
+        {CommandId::Redo, "redo", Kind::None, "redo what undo took back",
+         keys({{GLFW_KEY_Z, ctrl | shift}, {GLFW_KEY_Y, ctrl}}),
+         [](Viewer& v, Input&, const Argument&) { v.redo(); }},
+        {CommandId::Xray, "xray", Kind::Switch,
+         "X-ray: the parts outside the selection translucent, not picked (nothing selected: "
+         "no change)",
+         toggles({{GLFW_KEY_X, 0}}), [](Viewer& v, Input&, const Argument& a) { v.setXray(on(a)); },
+         [](const Viewer& v, const Input&) { return v.settings().xray; }},
+        {CommandId::Measure, "measure", Kind::Switch,
+         "measure mode: clicks place points (distance, angle) instead of selecting",
+         toggles({{GLFW_KEY_M, 0}}),
+         [](Viewer& v, Input&, const Argument& a) {
+             if (on(a) != v.measuring()) v.toggleMeasure();
+         },
+         [](const Viewer& v, const Input&) { return v.measuring(); }},
+        {CommandId::Level,
+         "level",
+         Kind::Level,
+         "what a click selects: the face (a part), its solid (object) or the assembly above",
+         {},
+         [](Viewer& v, Input&, const Argument& a) { v.view().selectLevel = arg<uint32_t>(a); }},
+        {CommandId::Object,
+         "object",
+         Kind::Text,
+         "select the parts of the objects of this name",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.selectObjects(arg<std::string>(a), SelectMode::Replace);
+         }},
+        {CommandId::Node,
+         "node",
+         Kind::Node,
+         "a node of the assembly tree, as its row does: select (a click), add (Ctrl+click), "
+         "hide or show (its checkbox)",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             const NodeTarget& node = arg<NodeTarget>(a);
+             if (!v.actOnNode(node))
+                 throw CommandError("no node of the assembly tree has the path '" + node.path +
+                                    "'");
+         }},
+        {CommandId::Section,
+         "section",
+         Kind::Section,
+         "a section plane in the first free slot of the panel's three (a fourth replaces the "
+         "third); off: every plane off",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             scene::Section& section = v.settings().render.section;
+             const auto& plane = arg<std::optional<scene::SectionPlane>>(a);
+             if (!plane)
+                 section = {};
+             else if (!section.add(*plane))
+                 section.planes.back() = *plane;
+         }},
+    };
+}
+
+std::vector<CommandDef> renderCommands() {
+    return {
+        {CommandId::Edges, "edges", Kind::Switch, "edges on or off", toggles({{GLFW_KEY_E, 0}}),
+         [](Viewer& v, Input&, const Argument& a) { v.settings().render.edges.on = on(a); },
+         [](const Viewer& v, const Input&) { return v.settings().render.edges.on; }},
+        {CommandId::Renderer,
+         "renderer",
+         Kind::Technique,
+         "switch the technique that draws (no-id too)",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().render.pipeline.technique = arg<const render::Technique*>(a);
+         }},
+        {CommandId::Mode,
+         "mode",
+         Kind::DrawMode,
+         "switch the per-draw mode",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().render.pipeline.mode = arg<const render::DrawMode*>(a);
+         }},
+        {CommandId::Culling,
+         "culling",
+         Kind::CullMode,
+         "culling off, by the frustum, or occlusion",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().render.culling.mode = arg<render::CullMode>(a);
+         }},
+        {CommandId::Freeze,
+         "freeze",
+         Kind::Switch,
+         "keep drawing what the last culled frame chose while the camera moves",
+         {},
+         [](Viewer& v, Input&, const Argument& a) { v.settings().render.culling.freeze = on(a); },
+         [](const Viewer& v, const Input&) { return v.settings().render.culling.freeze; },
+         [](const Viewer& v, const Input&) {
+             return v.settings().render.culling.mode != render::CullMode::Off;
+         }},
+        {CommandId::Sort,
+         "sort",
+         Kind::Switch,
+         "sort the draw list once, by geometry then material (off: scene order)",
+         {},
+         [](Viewer& v, Input&, const Argument& a) { v.settings().render.draws.sortDraws = on(a); },
+         [](const Viewer& v, const Input&) { return v.settings().render.draws.sortDraws; }},
+        {CommandId::Msaa,
+         "msaa",
+         Kind::Msaa,
+         "samples per pixel",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().render.pipeline.msaa = arg<uint32_t>(a);
+         }},
+        {CommandId::Clear,
+         "clear",
+         Kind::ClearPath,
+         "how frames clear and resolve: the scene pass, a compute pass, or the faster",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().render.clear = arg<render::ClearPath>(a);
+         }},
+        {CommandId::Copies,
+         "copies",
+         Kind::Copies,
+         "model copies",
+         {},
+         [](Viewer& v, Input&, const Argument& a) {
+             v.settings().scene.copies = arg<uint32_t>(a);
+         }},
+    };
+}
+
+std::vector<CommandDef> table() {
+    std::vector<CommandDef> rows;
+    for (auto group : {windowCommands, cameraCommands, partCommands, renderCommands})
+        for (CommandDef& row : group()) rows.push_back(std::move(row));
+    return rows;
 }
 
 } // namespace
 
-const std::vector<Command>& commands() {
-    static const std::vector<Command> rows = table();
+const std::vector<CommandDef>& commands() {
+    static const std::vector<CommandDef> rows = table();
     return rows;
 }
 
-const Command* findCommand(std::string_view name) {
-    for (const Command& command : commands())
-        if (name == command.name) return &command;
+const CommandDef& definition(CommandId id) {
+    for (const CommandDef& row : commands())
+        if (row.id == id) return row;
+    throw std::logic_error("a command without a row in the command table");
+}
+
+const CommandDef* findCommand(std::string_view name) {
+    for (const CommandDef& row : commands())
+        if (name == row.name) return &row;
     return nullptr;
 }
 
-const Command* commandOfKey(int key, int mods) {
+std::optional<Command> commandOfKey(int key, int mods) {
     const Chord pressed{key, mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL | GLFW_MOD_ALT)};
-    for (const Command& command : commands())
-        for (const Chord& chord : command.keys)
-            if (chord == pressed) return &command;
-    return nullptr;
+    for (const CommandDef& row : commands())
+        for (const KeyBinding& binding : row.keys)
+            for (const Chord& chord : binding.chords)
+                if (chord == pressed) return Command{row.id, binding.argument};
+    return std::nullopt;
 }
 
-std::string chordText(const Chord& chord) {
-    if (chord.key == GLFW_KEY_SLASH && chord.mods == GLFW_MOD_SHIFT) return "?";
-    std::string text;
-    if (chord.mods & GLFW_MOD_CONTROL) text += "Ctrl+";
-    if (chord.mods & GLFW_MOD_SHIFT) text += "Shift+";
-    if (chord.mods & GLFW_MOD_ALT) text += "Alt+";
-    const int key = chord.key;
-    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) return text + char('A' + key - GLFW_KEY_A);
-    if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) return text + char('0' + key - GLFW_KEY_0);
-    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9)
-        return text + "Num " + char('0' + key - GLFW_KEY_KP_0);
-    if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F25)
-        return text + "F" + std::to_string(key - GLFW_KEY_F1 + 1);
-    if (const char* name = keyName(key)) return text + name;
-    return text + "key " + std::to_string(key);
+void execute(Command command, Viewer& viewer, Input& input) {
+    const CommandDef& row = definition(command.id);
+    if (auto* s = std::get_if<Switch>(&command.argument); s && *s == Switch::Toggle)
+        *s = row.isOn(viewer, input) ? Switch::Off : Switch::On;
+    viewer.say("command: " + commandWords(command));
+    row.run(viewer, input, command.argument);
 }
 
-std::vector<HelpLine> helpLines() {
-    std::vector<HelpLine> lines;
-    for (const Command& command : commands()) {
-        HelpLine line{command.mouse ? command.mouse : "", command.description};
-        for (const Chord& chord : command.keys)
-            line.keys += (line.keys.empty() ? "" : ", ") + chordText(chord);
-        lines.push_back(std::move(line));
-    }
-    return lines;
+NodeTarget nodeOfRow(const std::vector<scene::TreeRow>& rows, size_t i, NodeAction action) {
+    NodeTarget node{action, rows[i].path, 0};
+    for (size_t j = 0; j < i; ++j) node.occurrence += rows[j].path == rows[i].path;
+    return node;
+}
+
+std::optional<size_t> rowOfNode(const std::vector<scene::TreeRow>& rows, const NodeTarget& node) {
+    uint32_t seen = 0;
+    for (size_t i = 0; i < rows.size(); ++i)
+        if (rows[i].path == node.path && seen++ == node.occurrence) return i;
+    return std::nullopt;
+}
+
+bool enabled(CommandId id, const Viewer& viewer, const Input& input) {
+    const CommandDef& row = definition(id);
+    return !row.enabled || row.enabled(viewer, input);
 }
 
 std::optional<std::string> cancelOne(Viewer& viewer, Input& input) {

@@ -106,31 +106,9 @@ void Viewer::drawPanel() {
     ImGui::Render();
 }
 
+// The panel's buttons and widgets ask for commands as keys and script lines do (commands.h).
 void Viewer::act(const PanelActions& actions) {
-    if (actions.open) input_.onDrop(*actions.open); // opened like a dropped file
-    if (actions.view) turnTo(*actions.view);
-    if (actions.cancelLoad) cancelLoads();
-    if (actions.resetSettings) resetSettings();
-    if (actions.chooseFile) chooseFile();
-    Selection& selection = input_.selection();
-    if (actions.selectObjects) selectObjects(*actions.selectObjects, actions.mode);
-    const uint32_t partCount = scene_.scene().uniquePartCount();
-    if (actions.selectParts) {
-        selection.select(scene::partSetOf(*actions.selectParts, partCount), actions.mode);
-        selectionChanged();
-    }
-    if (actions.hideParts || actions.showParts) {
-        const scene::PartSet before = selection.selected();
-        if (actions.hideParts) selection.hide(scene::partSetOf(*actions.hideParts, partCount));
-        if (actions.showParts) selection.show(scene::partSetOf(*actions.showParts, partCount));
-        if (selection.selected() != before) selectionChanged(); // hidden parts leave it
-        partsChanged();
-    }
-    // The panel's buttons run the rows of the command table their keys run (commands.h).
-    for (const auto& [asked, name] :
-         {std::pair{actions.hide, "hide"}, std::pair{actions.isolate, "isolate"},
-          std::pair{actions.showAll, "show-all"}, std::pair{actions.xray, "xray"}})
-        if (asked) findCommand(name)->run(*this, input_);
+    for (const Command& command : actions.commands) execute(command, *this, input_);
 }
 
 void Viewer::applySettings() {
@@ -361,15 +339,15 @@ PanelInfo Viewer::panelInfo() const {
     info.selectedRow = selectedRow_;
     info.hiddenCount = selection.hidden().size();
     info.xray = settings_.xray;
+    for (size_t id = 0; id < commandCount; ++id)
+        info.enabled[id] = enabled(CommandId(id), *this, input_);
     info.visibleParts = input_.visibleParts();
     info.idPassMs = mean(slots_.idPassMilliseconds(), 30);
     const render::Renderer& renderer = scene_.renderer();
     const render::PipelineKey& key = renderer.settings().pipeline;
     info.cullingApplied =
         render::describeCulling(*key.technique, *key.mode, renderer.settings().culling.mode);
-    info.listsReused = renderer.lastFrameReused();
-    info.lodChosen =
-        render::cullPlan(*key.technique, *key.mode, renderer.settings().culling.mode).gpuLists;
+    info.lodChosen = render::levelsChosenIn(*key.mode);
     info.totals = renderer.cullTotals();
     if (!slots_.cullStats().empty())
         info.drawn = render::countsOf(slots_.cullStats().back(), key.technique->usesMeshShader());

@@ -1,4 +1,4 @@
-// input.cpp - keys, mouse, dropped files, picking and scripted input.
+// input.cpp - keys, mouse, dropped files and picking (scripted input: input_script.cpp).
 #include "app/viewer/input.h"
 
 #include <algorithm>
@@ -19,22 +19,7 @@ namespace {
 // A left click is a press and release this close together; farther is a drag.
 constexpr double clickSlop = 4.0;
 
-// The keys a chord's modifier bits stand for.
-constexpr std::pair<int, int> modifierKeys[] = {{GLFW_MOD_SHIFT, GLFW_KEY_LEFT_SHIFT},
-                                                {GLFW_MOD_CONTROL, GLFW_KEY_LEFT_CONTROL},
-                                                {GLFW_MOD_ALT, GLFW_KEY_LEFT_ALT}};
-
 } // namespace
-
-void Input::chord(int key, int mods) {
-    for (const auto& [bit, modifier] : modifierKeys)
-        if (mods & bit) onKey(modifier, glfwGetKeyScancode(modifier), GLFW_PRESS, mods);
-    const int code = glfwGetKeyScancode(key);
-    onKey(key, code, GLFW_PRESS, mods);
-    onKey(key, code, GLFW_RELEASE, mods);
-    for (const auto& [bit, modifier] : modifierKeys)
-        if (mods & bit) onKey(modifier, glfwGetKeyScancode(modifier), GLFW_RELEASE, 0);
-}
 
 Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
     : viewer_(viewer), window_(window), script_(std::move(script)) {}
@@ -45,7 +30,7 @@ Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
 void Input::onKey(int key, int scancode, int action, int mods) {
     if (action != GLFW_REPEAT) panelKeys_.push({key, scancode, action == GLFW_PRESS, mods});
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
-    if (const Command* command = commandOfKey(key, mods)) command->run(viewer_, *this);
+    if (const auto command = commandOfKey(key, mods)) execute(*command, viewer_, *this);
 }
 
 void Input::feedPanelKeys() {
@@ -258,234 +243,6 @@ void Input::forgetParts(uint32_t partCount) {
     partSetsFrom_ = viewer_.nextFrame(); // earlier frames counted the old scene's parts
     visibleParts_ = 0;
     visibleFrame_ = 0;
-}
-
-void Input::runScript(double seconds) {
-    for (const ScriptCommand& command : script_.due(seconds)) queue(command);
-    scriptNow_ = seconds;
-    while (!steps_.empty() && !resting()) {
-        const Step next = std::move(steps_.front());
-        steps_.pop_front();
-        next.run();
-        ++stepsRun_;
-        if (next.endsFrame) break;
-    }
-}
-
-std::optional<double> Input::wakeIn(double seconds) const {
-    if (resting()) return std::max(*restUntil_ - seconds, 0.0);
-    if (!steps_.empty()) return 0.05;
-    if (auto next = script_.nextTime()) return std::clamp(*next - seconds, 0.01, 1.0);
-    return std::nullopt;
-}
-
-void Input::waitForLoads() {
-    if (viewer_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
-}
-
-void Input::waitForPipelines() {
-    if (viewer_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
-}
-
-void Input::queue(const ScriptCommand& c) {
-    const auto& v = c.values;
-    // Settings change in place, as the panel's widgets change them; the frame applies them.
-    auto settings = [this](auto change) { return [this, change] { change(viewer_.settings()); }; };
-    auto press = [this](int action, int mods = 0) {
-        return [this, action, mods] { onButton(GLFW_MOUSE_BUTTON_LEFT, action, mods); };
-    };
-    switch (c.op) {
-    case ScriptOp::Key:
-        // Pressed and released at once, modifiers held around it: what a quick hand gives a
-        // slow frame. A frame between key presses (V twice must show off).
-        step([this, key = c.key, mods = c.mods] { chord(key, mods); }, true);
-        break;
-    case ScriptOp::Type:
-        step(
-            [this, text = c.text] {
-                for (const char ch : text)
-                    if (static_cast<unsigned char>(ch) < 0x80)
-                        ImGui_ImplGlfw_CharCallback(window_, static_cast<unsigned char>(ch));
-            },
-            true);
-        break;
-    case ScriptOp::Move:
-        step([this, v] { onCursor(v[0], v[1]); }, true);
-        break;
-    case ScriptOp::Click:
-        // Move first and let a frame pass, so the panel knows whether it is under the cursor.
-        // Ctrl is held as a hand holds it: down before the press, up after the release.
-        step([this, v] { onCursor(v[0], v[1]); }, true);
-        step(
-            [this, mods = c.mods, press] {
-                if (mods)
-                    onKey(GLFW_KEY_LEFT_CONTROL, glfwGetKeyScancode(GLFW_KEY_LEFT_CONTROL),
-                          GLFW_PRESS, mods);
-                press(GLFW_PRESS, mods)();
-            },
-            false);
-        step(
-            [this, mods = c.mods, press] {
-                press(GLFW_RELEASE, mods)();
-                if (mods)
-                    onKey(GLFW_KEY_LEFT_CONTROL, glfwGetKeyScancode(GLFW_KEY_LEFT_CONTROL),
-                          GLFW_RELEASE, 0);
-            },
-            true);
-        break;
-    case ScriptOp::DoubleClick: // both clicks in one step: well within doubleClickSeconds
-        step([this, v] { onCursor(v[0], v[1]); }, true);
-        step(
-            [this, press] {
-                for (int i = 0; i < 2; ++i) {
-                    press(GLFW_PRESS)();
-                    press(GLFW_RELEASE)();
-                }
-            },
-            true);
-        break;
-    case ScriptOp::Level:
-        step([this, level = c.text == "face"    ? 0u
-                            : c.text == "solid" ? 1u
-                                                : 2u] { viewer_.view().selectLevel = level; },
-             true);
-        break;
-    case ScriptOp::Drag:
-    case ScriptOp::Box: // the same hand movement, with the modifier held at the press
-        step([this, v] { onCursor(v[0], v[1]); }, true);
-        step(press(GLFW_PRESS, c.op == ScriptOp::Box ? c.mods : 0), true);
-        for (int i = 1; i <= 8; ++i) { // a hand's drag arrives as several moves
-            const double t = i / 8.0;
-            step([this, v, t] { onCursor(v[0] + (v[2] - v[0]) * t, v[1] + (v[3] - v[1]) * t); },
-                 true);
-        }
-        step(press(GLFW_RELEASE), true);
-        break;
-    case ScriptOp::Object:
-        step([this, name = c.text] { viewer_.selectObjects(name, SelectMode::Replace); }, true);
-        break;
-    case ScriptOp::Node:
-        step(
-            [this, c] {
-                const int action = int(c.values[0]); // select, add, hide, show (script.h)
-                const auto what = action >= 2 ? (action == 2 ? Viewer::NodeAction::Hide
-                                                             : Viewer::NodeAction::Show)
-                                              : Viewer::NodeAction::Select;
-                if (!viewer_.actOnNode(c.text, what,
-                                       action == 1 ? SelectMode::Add : SelectMode::Replace))
-                    throw ScriptError(c.where + ": no node of the assembly tree has the path '" +
-                                      c.text + "'");
-            },
-            true);
-        break;
-    case ScriptOp::Scroll:
-        step([this, v] { onScroll(0.0, v[0]); }, false);
-        break;
-    case ScriptOp::Resize:
-        step([this, v] { glfwSetWindowSize(window_, int(v[0]), int(v[1])); }, true);
-        break;
-    case ScriptOp::Renderer: // names were checked when the script was parsed
-        step(settings([t = render::findTechnique(c.text)](Options& s) {
-                 s.render.pipeline.technique = t;
-             }),
-             true);
-        break;
-    case ScriptOp::Mode:
-        step(settings(
-                 [m = render::findDrawMode(c.text)](Options& s) { s.render.pipeline.mode = m; }),
-             true);
-        break;
-    case ScriptOp::Culling:
-        step(settings([m = render::findCullMode(c.text)->mode](Options& s) {
-                 s.render.culling.mode = m;
-             }),
-             true);
-        break;
-    case ScriptOp::Freeze:
-        step(settings([on = c.text == "on"](Options& s) { s.render.culling.freeze = on; }), true);
-        break;
-    case ScriptOp::Sort:
-        step(settings([on = c.text == "on"](Options& s) { s.render.draws.sortDraws = on; }), true);
-        break;
-    case ScriptOp::Defaults:
-        step([this] { viewer_.resetSettings(); }, true);
-        break;
-    case ScriptOp::Section: // checked when the script was parsed
-        step(settings([text = c.text](Options& s) {
-                 scene::Section& section = s.render.section;
-                 if (text == "off") {
-                     section = {};
-                 } else if (const auto plane = scene::parseSectionPlane(text);
-                            !section.add(plane)) {
-                     section.planes.back() = plane;
-                 }
-             }),
-             true);
-        break;
-    case ScriptOp::View: // names were checked when the script was parsed
-        step([this, view = scene::findStandardView(c.text)] { viewer_.turnTo(*view); }, true);
-        break;
-    case ScriptOp::Ortho:
-        step([this, on = c.text == "on"] { viewer_.setOrtho(on); }, true);
-        break;
-    case ScriptOp::Explode: // as the panel's slider sets it
-        step(settings([f = float(v[0])](Options& s) { s.animation.explode = f; }), true);
-        break;
-    case ScriptOp::Xray:
-        step([this, on = c.text == "on"] { viewer_.setXray(on); }, true);
-        break;
-    case ScriptOp::Copies:
-        step(settings([n = uint32_t(v[0])](Options& s) { s.scene.copies = n; }), true);
-        break;
-    case ScriptOp::Msaa:
-        step(settings([n = uint32_t(v[0])](Options& s) { s.render.pipeline.msaa = n; }), true);
-        break;
-    case ScriptOp::Clear: // checked when the script was parsed
-        step(settings([p = *render::findClearPath(c.text)](Options& s) { s.render.clear = p; }),
-             true);
-        break;
-    case ScriptOp::Screenshot:
-        step([this, path = c.text] { viewer_.screenshot(path); }, true);
-        break;
-    case ScriptOp::Drop:
-        step([this, path = c.text] { onDrop(path); }, true);
-        break;
-    case ScriptOp::Loaded:
-        step([this] { waitForLoads(); }, true);
-        break;
-    case ScriptOp::Cancel:
-        step([this] { viewer_.cancelLoads(); }, true);
-        break;
-    case ScriptOp::ClearRecent: // as the panel's entry does
-        step([this] { viewer_.view().recentFiles.clear(); }, true);
-        break;
-    case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
-        for (int i = 0; i < int(v[0]); ++i) step([] {}, true);
-        break;
-    case ScriptOp::Redraw: // with what follows at the same time, in the same frame
-        step([this] { viewer_.redraw(); }, false);
-        break;
-    case ScriptOp::Blink:
-        step(
-            [this, weight = c.text] {
-                viewer_.holdBlink(weight == "clock" ? std::nullopt
-                                                    : std::optional(weight == "strong"));
-            },
-            true);
-        break;
-    case ScriptOp::Rest: // the steps after it wait, and the loop with them
-        step([this, s = v[0]] { restUntil_ = scriptNow_ + s; }, false);
-        break;
-    case ScriptOp::Pipeline:
-        if (c.text == "ready")
-            step([this] { waitForPipelines(); }, true);
-        else
-            step([this, hold = c.text == "hold"] { viewer_.holdPipelineBuilds(hold); }, true);
-        break;
-    case ScriptOp::Quit:
-        step([this] { viewer_.quit(); }, true);
-        break;
-    }
 }
 
 } // namespace app

@@ -42,7 +42,7 @@ class Input {
     void fail(std::exception_ptr error); // a handler threw inside a GLFW callback
     static constexpr double doubleClickSeconds = 0.4;
 
-    // Between frames: plays the script commands due at `seconds`, a frame's worth of steps.
+    // Between frames: plays the script lines due at `seconds`, a frame's worth of steps.
     void runScript(double seconds);
     // How long an idle (minimised) window may sleep before the script needs it; nullopt: until
     // an event comes.
@@ -108,13 +108,15 @@ class Input {
         SelectMode mode;
         uint64_t since; // the first frame that asks for it
     };
-    // A script command as steps: a click is a move, then the press and release a frame later,
+    // A script line as steps: a click is a move, then the press and release a frame later,
     // as a hand would do it.
     struct Step {
         std::function<void()> run;
         bool endsFrame; // the next step waits for a frame
     };
-    void queue(const ScriptCommand& command);
+    void queue(const ScriptLine& line);
+    void queuePointer(const ScriptLine& line); // move, click, dblclick, drag, box, scroll
+    void queueWait(const ScriptLine& line);    // loaded, frames, redraw, blink, rest, pipeline
     void chord(int key, int mods); // a script's key: modifiers down, the key, modifiers up
     void step(std::function<void()> run, bool endsFrame) {
         steps_.push_back({std::move(run), endsFrame});

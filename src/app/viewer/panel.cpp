@@ -13,7 +13,9 @@
 
 #include <imgui.h>
 
+#include "app/viewer/commands.h"
 #include "app/viewer/inspect_panel.h"
+#include "app/viewer/panel_commands.h"
 #include "app/viewer/panel_layout.h"
 #include "app/viewer/panel_rendering.h"
 #include "app/viewer/panel_section.h"
@@ -50,8 +52,8 @@ void timing(const PanelInfo& info) {
                           "compute passes over the ID image after the scene pass");
     ImGui::TextWrapped("cull, pyramid [ms] %.3f, %.3f", info.cullMs, info.pyramidMs);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("time of the cull passes (and the visible-part pass culling reads) "
-                          "and of the depth pyramid; included in Render");
+        ImGui::SetTooltip("time of the cull passes and of the depth pyramid; included in "
+                          "Render");
     ImGui::TextWrapped("CPU record [ms]  %.3f", info.cpuRecordMs);
     if (!info.gpuHistory.empty())
         ImGui::PlotLines("##gpu", info.gpuHistory.data(), int(info.gpuHistory.size()), 0,
@@ -60,7 +62,7 @@ void timing(const PanelInfo& info) {
 
 // The recent files' list: a file no longer there is greyed out (it may come back: a
 // network drive, a USB stick), and the last entry empties the list.
-void recentFiles(ViewSettings& view, PanelActions& actions) {
+void recentFiles(const ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
     ImGui::BeginDisabled(view.recentFiles.empty());
     if (ImGui::BeginCombo("##recent", nullptr, ImGuiComboFlags_NoPreview)) {
         for (const std::string& path : view.recentFiles) {
@@ -69,10 +71,13 @@ void recentFiles(ViewSettings& view, PanelActions& actions) {
             if (ImGui::Selectable(path.c_str(), false,
                                   there ? ImGuiSelectableFlags_None
                                         : ImGuiSelectableFlags_Disabled))
-                actions.open = path;
+                actions.ask({CommandId::Open, path});
         }
         ImGui::Separator();
-        if (ImGui::Selectable("clear list")) view.recentFiles.clear();
+        if (ImGui::Selectable("clear list", false,
+                              info.can(CommandId::ClearRecent) ? ImGuiSelectableFlags_None
+                                                               : ImGuiSelectableFlags_Disabled))
+            actions.ask({CommandId::ClearRecent});
         ImGui::EndCombo();
     }
     ImGui::EndDisabled();
@@ -83,7 +88,7 @@ void recentFiles(ViewSettings& view, PanelActions& actions) {
 
 // The model path field, the width of the panel so its hint shows whole, with the recent
 // files beside it. Clicking it, or Ctrl+O, selects what it holds: typing replaces it.
-void openField(ViewSettings& view, PanelActions& actions) {
+void openField(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
     const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
     const char* chooseLabel = "Open...";
     const float chooseWidth =
@@ -97,24 +102,23 @@ void openField(ViewSettings& view, PanelActions& actions) {
                                  ImGuiInputTextFlags_EnterReturnsTrue |
                                      ImGuiInputTextFlags_AutoSelectAll) &&
         view.openPath[0])
-        actions.open = std::string(view.openPath.data());
+        actions.ask({CommandId::Open, std::string(view.openPath.data())});
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("type or paste a model's path, Enter opens it; or drop the file on "
                           "the window");
     ImGui::SameLine(0.0f, spacing);
-    if (ImGui::Button(chooseLabel)) actions.chooseFile = true;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("choose a model file (Ctrl+O)");
+    if (ImGui::Button(chooseLabel)) actions.ask({CommandId::Open});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", withKeys("choose a model file", CommandId::Open).c_str());
     ImGui::SameLine(0.0f, spacing);
-    recentFiles(view, actions);
+    recentFiles(view, info, actions);
 }
 
 // What a newcomer reaches for first, always in view: edges, projection, vsync, the views.
-void viewRow(Options& settings, ViewSettings& view, PanelActions& actions) {
-    ImGui::Checkbox("edges (E)", &settings.render.edges.on);
-    sameLineIfFits(checkboxWidth("ortho (O)"));
-    ImGui::Checkbox("ortho (O)", &settings.camera.ortho);
-    sameLineIfFits(checkboxWidth("vsync (V)"));
-    ImGui::Checkbox("vsync (V)", &view.vsync);
+void viewRow(const Options& settings, const ViewSettings& view, PanelActions& actions) {
+    switchCheckbox("edges", CommandId::Edges, settings.render.edges.on, actions);
+    switchCheckbox("ortho", CommandId::Ortho, settings.camera.ortho, actions, true);
+    switchCheckbox("vsync", CommandId::Vsync, view.vsync, actions, true);
     // The standard views, as their keys turn to them (1, 3, 7, Ctrl, 0), wrapped to the
     // panel's width.
     const ImGuiStyle& style = ImGui::GetStyle();
@@ -124,7 +128,7 @@ void viewRow(Options& settings, ViewSettings& view, PanelActions& actions) {
             ImGui::SameLine();
             if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
         }
-        if (ImGui::SmallButton(standard.name)) actions.view = &standard;
+        if (ImGui::SmallButton(standard.name)) actions.ask({CommandId::View, &standard});
     }
 }
 
@@ -165,7 +169,7 @@ void status(const PanelInfo& info, PanelActions& actions) {
         const double shown = loading->stage.empty() ? t - std::floor(t) : loading->fraction;
         ImGui::ProgressBar(float(shown), ImVec2(-1, 0), label);
         // CAD loads stop at their next face or progress step; glTF loads run to their end.
-        if (ImGui::Button("Cancel")) actions.cancelLoad = true;
+        if (ImGui::Button("Cancel")) actions.ask({CommandId::Cancel});
     }
 }
 
@@ -193,7 +197,8 @@ bool beginPanel(ViewSettings& view) {
                                         ImVec2(widest, display.y));
     ImGui::SetNextWindowBgAlpha(0.85f);
     // No move and no collapse: it stays docked, and F9 hides it.
-    const bool open = ImGui::Begin("idview (F9 hides)", nullptr,
+    const std::string title = "idview (" + keysOf(CommandId::Panel) + " hides)";
+    const bool open = ImGui::Begin(title.c_str(), nullptr,
                                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                                        ImGuiWindowFlags_NoSavedSettings);
     // A drag of its edge changed the size in Begin: that is the width from now on.
@@ -217,7 +222,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     layout.mark("status");
     status(info, actions);
     layout.mark("open");
-    openField(view, actions);
+    openField(view, info, actions);
     layout.mark("source");
     source(info);
     layout.mark("view");
@@ -244,7 +249,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     layout.mark("Rendering");
     if (ImGui::CollapsingHeader("Rendering")) rendering(settings, info, actions);
     layout.mark("Scene");
-    if (ImGui::CollapsingHeader("Scene")) sceneSection(settings.scene, info);
+    if (ImGui::CollapsingHeader("Scene")) sceneSection(settings.scene, info, actions);
     layout.mark("Section");
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane,
@@ -253,7 +258,8 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     if (ImGui::CollapsingHeader("Timing")) timing(info);
     layout.mark("Controls");
     if (ImGui::CollapsingHeader("Controls")) // the help overlay lists the command table
-        ImGui::TextWrapped("F1 or ? lists every key and mouse action.");
+        ImGui::TextWrapped("%s lists every key, mouse action and command.",
+                           keysOf(CommandId::Help).c_str());
     layout.mark("Which technique?");
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     layout.finish(info.events);

@@ -4,14 +4,17 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include "app/cli.h"
+#include "app/viewer/command.h"
 #include "app/viewer/events.h"
 #include "app/viewer/panel_layout.h"
 #include "app/viewer/selection.h"
@@ -62,19 +65,11 @@ struct ViewSettings {
 // window.
 inline constexpr float minPanelWidth = 320.0f, maxPanelShare = 0.6f;
 
-// What the user asked of the parts through the panel, for the viewer to carry out.
+// What the user asked for through the panel's buttons and widgets: the commands a key or a
+// script line would give (commands.h), for the viewer to run once the panel is drawn.
 struct PanelActions {
-    std::optional<std::string> selectObjects;              // the objects of this name
-    std::optional<scene::PartRanges> selectParts;          // a tree node's parts (a row click)
-    SelectMode mode = SelectMode::Replace;                 // Ctrl+click adds
-    std::optional<scene::PartRanges> hideParts, showParts; // a tree row's checkbox
-    const scene::StandardView* view = nullptr;             // a standard view's button
-    bool hide = false, isolate = false, showAll = false;
-    bool xray = false;               // the X-ray checkbox was clicked
-    std::optional<std::string> open; // a model path entered in the panel, opened as a drop
-    bool cancelLoad = false;         // stop the model loading (and those queued behind it)
-    bool resetSettings = false;      // the kept settings back to the defaults
-    bool chooseFile = false;         // Open...: the desktop's file chooser
+    std::vector<Command> commands;
+    void ask(Command command) { commands.push_back(std::move(command)); }
 };
 
 // A part under the cursor or selected, as the pick reported it.
@@ -127,7 +122,9 @@ struct PanelInfo {
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
     uint32_t selectedCount = 0, hiddenCount = 0;
-    bool xray = false;                             // Options::xray
+    bool xray = false;                 // Options::xray
+    std::bitset<commandCount> enabled; // by CommandId: what can do anything now (commands.h)
+    bool can(CommandId id) const { return enabled[size_t(id)]; }
     const scene::PartSet* selectedParts = nullptr; // the tree highlights rows all selected
     // The deepest tree row whose parts are exactly the selection (scene::rowOfParts).
     std::optional<size_t> selectedRow;
@@ -139,7 +136,6 @@ struct PanelInfo {
     // Culling: what the technique and mode get of the mode chosen, what the newest completed
     // frame drew of the totals, and the GPU time of the cull passes and the depth pyramid.
     std::string cullingApplied;
-    bool listsReused = false; // a still view: the last culled frame's lists drawn again
     render::CullCounts drawn, totals;
     double cullMs = 0.0, pyramidMs = 0.0;
     // Levels of detail: whether the technique, mode and culling chosen have the cull pass

@@ -3,12 +3,14 @@
 #include "app/viewer/panel_rendering.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <type_traits>
 
 #include <imgui.h>
 
+#include "app/viewer/panel_commands.h"
 #include "app/viewer/panel_widgets.h"
 #include "render/culling.h"
 #include "render/technique.h"
@@ -16,6 +18,14 @@
 
 namespace app {
 namespace {
+
+// A linear colour as the panel shows it: sRGB-encoded, as the swapchain shows the picture.
+ImVec4 displayed(glm::vec3 linear) {
+    auto encode = [](float c) {
+        return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    };
+    return {encode(linear.r), encode(linear.g), encode(linear.b), 1.0f};
+}
 
 std::string bytes(uint64_t value) {
     char text[32];
@@ -98,28 +108,22 @@ std::string counted(uint64_t drawn, uint64_t total) {
 
 // The culling mode, freezing its lists, what this technique and mode get of it, and what the
 // newest frame drew.
-void culling(render::CullSettings& c, const PanelInfo& info) {
+void culling(const render::CullSettings& c, const PanelInfo& info, PanelActions& actions) {
     if (ImGui::BeginCombo(fitLabel("culling").c_str(), render::cullModeName(c.mode))) {
         for (const render::CullModeEntry& entry : render::cullModes()) {
-            if (ImGui::Selectable(entry.name, entry.mode == c.mode)) c.mode = entry.mode;
+            if (ImGui::Selectable(entry.name, entry.mode == c.mode) && entry.mode != c.mode)
+                actions.ask({CommandId::Culling, entry.mode});
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.description);
         }
         ImGui::EndCombo();
     }
-    ImGui::BeginDisabled(c.mode == render::CullMode::Off);
-    ImGui::Checkbox("freeze culling", &c.freeze);
+    ImGui::BeginDisabled(!info.can(CommandId::Freeze));
+    switchCheckbox("freeze culling", CommandId::Freeze, c.freeze, actions);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("keep drawing what the last culled frame chose while the camera "
                           "moves: fly around to see what was left out");
     textDisabledWrapped(info.cullingApplied.c_str());
-    if (info.listsReused) {
-        textDisabledWrapped("still view: the last culled frame's lists drawn again");
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("the view has not changed since two frames were culled: what "
-                              "they drew is drawn again without culling, so the cull and "
-                              "pyramid times fall to nothing until the camera moves");
-    }
     ImGui::TextWrapped("draws drawn    %s", counted(info.drawn.draws, info.totals.draws).c_str());
     if (info.totals.meshlets)
         ImGui::TextWrapped("meshlets       %s",
@@ -130,14 +134,15 @@ void culling(render::CullSettings& c, const PanelInfo& info) {
 
 // How frames start and resolve (render/settings.h ClearPath): auto shows the path it chose
 // and, on hover, the empty-frame times it chose by.
-void clearPathCombo(render::ClearPath& clear, const PanelInfo& info) {
+void clearPathCombo(render::ClearPath clear, const PanelInfo& info, PanelActions& actions) {
     std::string current = render::clearPathName(clear);
     if (clear == render::ClearPath::Auto)
         current += std::string(" (") + render::clearPathName(info.clearPath) + ")";
     if (ImGui::BeginCombo(fitLabel("clear").c_str(), current.c_str())) {
         for (render::ClearPath p :
              {render::ClearPath::Auto, render::ClearPath::Pass, render::ClearPath::Compute})
-            if (ImGui::Selectable(render::clearPathName(p), p == clear)) clear = p;
+            if (ImGui::Selectable(render::clearPathName(p), p == clear) && p != clear)
+                actions.ask({CommandId::Clear, p});
         ImGui::EndCombo();
     }
     if (!ImGui::IsItemHovered()) return;
@@ -172,33 +177,33 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", !usable && settings.scene.lodLevels < 2
                                     ? "build levels of detail first (LOD levels built)"
-                                : !usable ? "levels are chosen by the cull pass: culling "
-                                            "frustum or occlusion in an mdi mode"
+                                : !usable ? "levels are chosen by the cull pass, which "
+                                            "lists the draws in the mdi modes: push mode "
+                                            "draws full detail"
                                           : "each object drawn at its coarsest level whose "
                                             "error stays under this many pixels; 0: full "
                                             "detail");
     ImGui::Checkbox("tint by level", &settings.render.shading.tintLevels);
-    // The colours of shading.glsl's levelTint, as displayed.
-    static const ImVec4 tints[] = {{0.87f, 0.87f, 0.87f, 1},
-                                   {0.35f, 0.76f, 0.98f, 1},
-                                   {0.98f, 0.88f, 0.35f, 1},
-                                   {0.95f, 0.48f, 0.58f, 1}};
     if (settings.render.lod.errorPixels <= 0.0f || !usable) return;
     for (uint32_t l = 0; l < info.drawn.levelTriangles.size(); ++l) {
-        ImGui::TextColored(tints[l], "level %u", l);
+        ImGui::TextColored(displayed(gpu::LEVEL_TINTS[l]), "level %u", l);
         ImGui::SameLine();
         ImGui::TextWrapped("%llu triangles",
                            static_cast<unsigned long long>(info.drawn.levelTriangles[l]));
     }
 }
 
-} // namespace
-
-void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) {
-    render::RenderSettings& s = settings.render;
+// What draws: the renderer, its mode and the settings it reads, and how frames are sampled,
+// cleared and resolved. The renderer, mode, MSAA and clear path are commands (a script line
+// asks for them too); the rest the panel edits in place.
+void pipeline(render::RenderSettings& s, const PanelInfo& info, PanelActions& actions) {
     render::PipelineKey& key = s.pipeline;
-    techniqueCombo(key.technique, info);
-    registryCombo("per-draw mode", key.mode, render::drawModes());
+    const render::Technique* technique = key.technique;
+    techniqueCombo(technique, info);
+    if (technique != key.technique) actions.ask({CommandId::Renderer, technique});
+    const render::DrawMode* mode = key.mode;
+    registryCombo("per-draw mode", mode, render::drawModes());
+    if (mode != key.mode) actions.ask({CommandId::Mode, mode});
     if (key.technique->readsSearchBatch())
         sliderOnRelease("search batch", key.searchBatch, render::searchBatchRange);
     if (key.technique->narySearch) narySearch(key.nsearch);
@@ -206,7 +211,7 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     ImGui::SliderFloat(fitLabel("part weight").c_str(), &s.shading.partWeight, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("colorize draws", &s.shading.colorizeDraws);
     ImGui::Checkbox("ignore materials", &s.shading.ignoreMaterials);
-    ImGui::Checkbox("sort draws once", &s.draws.sortDraws);
+    switchCheckbox("sort draws once", CommandId::Sort, s.draws.sortDraws, actions);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("sort the draw list by geometry, then material, when it is built "
                           "(--no-sort-draws: scene order)");
@@ -216,13 +221,16 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
         for (uint32_t n = 1; n <= 8; n *= 2) {
             if (!(info.sampleCounts & n)) continue; // only what the device renders
             std::snprintf(label, sizeof label, "%ux", n);
-            if (ImGui::Selectable(label, n == key.msaa)) key.msaa = n;
+            if (ImGui::Selectable(label, n == key.msaa) && n != key.msaa)
+                actions.ask({CommandId::Msaa, n});
         }
         ImGui::EndCombo();
     }
-    clearPathCombo(s.clear, info);
-    // Edge settings stay in place, greyed while edges are off: E moves nothing below.
-    render::EdgeSettings& edges = s.edges;
+    clearPathCombo(s.clear, info, actions);
+}
+
+// Edge settings stay in place, greyed while edges are off: E moves nothing below.
+void edgeSettings(render::EdgeSettings& edges) {
     ImGui::BeginDisabled(!edges.on);
     const render::Range widths = render::edgeWidthRange;
     ImGui::SliderScalar(fitLabel("edge width").c_str(), ImGuiDataType_U32, &edges.width,
@@ -233,12 +241,21 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     sameLineIfFits(checkboxWidth("hovered"));
     ImGui::ColorEdit3("hovered", &edges.hoverColor.x, ImGuiColorEditFlags_NoInputs);
     ImGui::EndDisabled();
-    culling(s.culling, info);
+}
+
+} // namespace
+
+void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) {
+    pipeline(settings.render, info, actions);
+    edgeSettings(settings.render.edges);
+    culling(settings.render.culling, info, actions);
     levelsOfDetail(settings, info);
     // The exploded view, by assembly level (scene/explode.h); --animate's loop, for the
     // benchmark, has no place here.
-    ImGui::SliderFloat(fitLabel("explode").c_str(), &settings.animation.explode, 0.0f, 1.0f, "%.2f",
+    float explode = settings.animation.explode;
+    ImGui::SliderFloat(fitLabel("explode").c_str(), &explode, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
+    if (explode != settings.animation.explode) actions.ask({CommandId::Explode, explode});
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("move the parts apart, assembly level by level: sub-assemblies from "
                           "their assembly's centre, their parts within them (--explode F)");
@@ -248,17 +265,18 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
                        last.pipelineCached ? "cached" : "built",
                        last.drawsKept ? ", draws kept" : "");
     ImGui::TextWrapped("pipelines cached %zu (R clears)", info.cachedPipelines);
-    actions.resetSettings = ImGui::Button("Reset to defaults");
+    commandButton("Reset to defaults", CommandId::Defaults, info, actions);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the settings kept between runs (renderer, mode, MSAA, edges, "
                           "culling, levels of detail, projection) back to the defaults");
 }
 
-void sceneSection(SceneSettings& s, const PanelInfo& info) {
+void sceneSection(SceneSettings& s, const PanelInfo& info, PanelActions& actions) {
     int copies = int(s.copies);
     if (ImGui::InputInt(fitLabel("model copies").c_str(), &copies, 1, 4,
-                        ImGuiInputTextFlags_EnterReturnsTrue))
-        s.copies = uint32_t(std::clamp(copies, 1, 256));
+                        ImGuiInputTextFlags_EnterReturnsTrue) &&
+        uint32_t(std::clamp(copies, 1, 256)) != s.copies)
+        actions.ask({CommandId::Copies, uint32_t(std::clamp(copies, 1, 256))});
     ImGui::TextUnformatted("copies along");
     for (uint32_t bit = 0; bit < 3; ++bit) {
         bool on = s.copyAxes & (1u << bit);

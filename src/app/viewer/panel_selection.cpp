@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/panel_commands.h"
 #include "app/viewer/panel_widgets.h"
 
 namespace app {
@@ -84,7 +85,7 @@ void detailsBox(const char* id, PanelLayout& layout, auto&& draw) {
 
 } // namespace
 
-void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
+void selectionSection(const ViewSettings& view, const PanelInfo& info, PanelActions& actions,
                       PanelLayout& layout) {
     if (info.hiddenCount)
         ImGui::TextWrapped("visible parts %u, hidden %u", info.visibleParts, info.hiddenCount);
@@ -94,7 +95,8 @@ void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& a
     const char* levels[] = {"face", "solid", "assembly"};
     for (uint32_t level = 0; level < 3; ++level) {
         sameLineIfFits(checkboxWidth(levels[level]));
-        if (ImGui::RadioButton(levels[level], view.selectLevel == level)) view.selectLevel = level;
+        if (ImGui::RadioButton(levels[level], view.selectLevel == level))
+            actions.ask({CommandId::Level, level});
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("face: the part (a CAD face); solid: its object; assembly: the "
@@ -104,20 +106,10 @@ void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& a
     layout.mark("hovered part");
     detailsBox("##hovered", layout, [&] { partLine("hovered", info.hovered); });
     layout.mark("hide buttons");
-    auto buttonWidth = [](const char* label) {
-        return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
-    };
-    ImGui::BeginDisabled(info.selectedCount == 0);
-    actions.hide = ImGui::Button("hide (H)");
-    sameLineIfFits(buttonWidth("isolate (I)"));
-    actions.isolate = ImGui::Button("isolate (I)");
-    ImGui::EndDisabled();
-    sameLineIfFits(buttonWidth("show all (shift+H)"));
-    ImGui::BeginDisabled(info.hiddenCount == 0);
-    actions.showAll = ImGui::Button("show all (shift+H)");
-    ImGui::EndDisabled();
-    bool xray = info.xray; // the command row changes it (and says so), as X does
-    actions.xray = ImGui::Checkbox("X-ray (X)", &xray);
+    commandButton("hide", CommandId::Hide, info, actions);
+    commandButton("isolate", CommandId::Isolate, info, actions, true);
+    commandButton("show all", CommandId::ShowAll, info, actions, true);
+    switchCheckbox("X-ray", CommandId::Xray, info.xray, actions);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the parts outside the selection drawn translucent: not in the ID "
                           "image, not picked, not hiding the selection, so selected parts "

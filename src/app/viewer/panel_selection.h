@@ -7,7 +7,7 @@
 
 namespace app {
 
-void selectionSection(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
+void selectionSection(const ViewSettings& view, const PanelInfo& info, PanelActions& actions,
                       PanelLayout& layout);
 
 } // namespace app

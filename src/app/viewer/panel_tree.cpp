@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "app/viewer/commands.h"
 #include "app/viewer/panel_widgets.h"
 
 namespace app {
@@ -54,6 +55,47 @@ Shown shownOf(const scene::PartRanges& parts, const scene::PartSet& hidden) {
     return anyHidden ? (anyShown ? Shown::Some : Shown::None) : Shown::All;
 }
 
+// One row: its arrow (a branch, not the root, while not filtering), its checkbox and its
+// name. Checked: every part under the node shows; a click hides them all, or shows them all
+// when some are hidden. Highlighted: every part under it is selected (a row click, a solid, a
+// box); a long name is cut to the row, whole in the tooltip with its path.
+void treeRow(ViewSettings& view, const PanelInfo& info, uint32_t i, bool filtering,
+             PanelActions& actions) {
+    const std::vector<scene::TreeRow>& rows = *info.tree;
+    const scene::TreeRow& row = rows[i];
+    ImGui::PushID(int(i));
+    const float indent = float(row.depth) * 12.0f;
+    if (indent > 0.0f) ImGui::Indent(indent); // 0 would mean ImGui's default width
+    const bool branch = row.end > i + 1;
+    if (branch && i > 0 && !filtering) {
+        if (ImGui::ArrowButton("##open", view.treeOpen[i] ? ImGuiDir_Down : ImGuiDir_Right))
+            view.treeOpen[i] = !view.treeOpen[i];
+    } else {
+        ImGui::Dummy(ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
+    }
+    ImGui::SameLine();
+    const Shown state = shownOf(row.parts, *info.hidden);
+    bool visible = state == Shown::All;
+    if (state == Shown::Some) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 0.5f);
+    if (ImGui::Checkbox("##visible", &visible))
+        actions.ask(
+            {CommandId::Node,
+             nodeOfRow(rows, i, state == Shown::All ? NodeAction::Hide : NodeAction::Show)});
+    if (state == Shown::Some) ImGui::PopStyleVar();
+    ImGui::SameLine();
+    const bool selected = info.selectedParts && allIn(row.parts, *info.selectedParts);
+    const std::string& label = row.label.empty() ? row.name : row.label;
+    const std::string shown = elided(label, ImGui::GetContentRegionAvail().x);
+    if (ImGui::Selectable((shown + "###row").c_str(), selected))
+        actions.ask(
+            {CommandId::Node,
+             nodeOfRow(rows, i, ImGui::GetIO().KeyCtrl ? NodeAction::Add : NodeAction::Select)});
+    if (ImGui::IsItemHovered() && (!row.path.empty() || shown != label))
+        ImGui::SetTooltip("%s", row.path.empty() ? label.c_str() : row.path.c_str());
+    if (indent > 0.0f) ImGui::Unindent(indent);
+    ImGui::PopID();
+}
+
 } // namespace
 
 void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
@@ -92,43 +134,8 @@ void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actio
     ImGuiListClipper clipper;
     clipper.Begin(int(shown.size()));
     while (clipper.Step())
-        for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line) {
-            const uint32_t i = shown[size_t(line)];
-            const scene::TreeRow& row = rows[i];
-            ImGui::PushID(int(i));
-            const float indent = float(row.depth) * 12.0f;
-            if (indent > 0.0f) ImGui::Indent(indent); // 0 would mean ImGui's default width
-            const bool branch = row.end > i + 1;
-            if (branch && i > 0 && !filtering) {
-                if (ImGui::ArrowButton("##open", view.treeOpen[i] ? ImGuiDir_Down : ImGuiDir_Right))
-                    view.treeOpen[i] = !view.treeOpen[i];
-            } else {
-                ImGui::Dummy(ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
-            }
-            ImGui::SameLine();
-            // Checked: every part under the node shows; a click hides them all, or shows them
-            // all when some are hidden.
-            const Shown state = shownOf(row.parts, *info.hidden);
-            bool visible = state == Shown::All;
-            if (state == Shown::Some) ImGui::PushStyleVar(ImGuiStyleVar_Alpha, 0.5f);
-            if (ImGui::Checkbox("##visible", &visible))
-                (state == Shown::All ? actions.hideParts : actions.showParts) = row.parts;
-            if (state == Shown::Some) ImGui::PopStyleVar();
-            ImGui::SameLine();
-            // Highlighted: every part under the row is selected (a row click, a solid, a box).
-            const bool selected = info.selectedParts && allIn(row.parts, *info.selectedParts);
-            // A long name is cut to the row, whole in the tooltip with its path.
-            const std::string& label = row.label.empty() ? row.name : row.label;
-            const std::string shown = elided(label, ImGui::GetContentRegionAvail().x);
-            if (ImGui::Selectable((shown + "###row").c_str(), selected)) {
-                actions.selectParts = row.parts;
-                actions.mode = ImGui::GetIO().KeyCtrl ? SelectMode::Add : SelectMode::Replace;
-            }
-            if (ImGui::IsItemHovered() && (!row.path.empty() || shown != label))
-                ImGui::SetTooltip("%s", row.path.empty() ? label.c_str() : row.path.c_str());
-            if (indent > 0.0f) ImGui::Unindent(indent);
-            ImGui::PopID();
-        }
+        for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line)
+            treeRow(view, info, shown[size_t(line)], filtering, actions);
     layout.checkChild();
     ImGui::EndChild();
 }

@@ -8,6 +8,7 @@
 
 #include "app/headless.h" // cameraFrame, exitCode, savePipelineCache
 #include "app/saved_settings.h"
+#include "app/viewer/commands.h"
 #include "app/viewer/kept_view.h"
 #include "scene/bounds.h"
 #include "scene/part_data.h"
@@ -252,20 +253,22 @@ scene::PartSet Viewer::partsAround(uint32_t part, uint32_t level) const {
     return scene::partSetOf(scene::partsAround(scene, part, level), scene.uniquePartCount());
 }
 
-bool Viewer::actOnNode(const std::string& path, NodeAction action, SelectMode mode) {
-    for (const scene::TreeRow& row : tree_) {
-        if (row.path != path) continue;
-        const scene::PartSet parts = scene::partSetOf(row.parts, scene_.scene().uniquePartCount());
-        Selection& selection = input_.selection();
-        const scene::PartSet before = selection.selected();
-        if (action == NodeAction::Select) selection.select(parts, mode);
-        if (action == NodeAction::Hide) selection.hide(parts);
-        if (action == NodeAction::Show) selection.show(parts);
-        if (action == NodeAction::Select || selection.selected() != before) selectionChanged();
-        if (action != NodeAction::Select) partsChanged();
-        return true;
-    }
-    return false;
+bool Viewer::actOnNode(const NodeTarget& node) {
+    const auto row = rowOfNode(tree_, node);
+    if (!row) return false;
+    const scene::PartSet parts =
+        scene::partSetOf(tree_[*row].parts, scene_.scene().uniquePartCount());
+    Selection& selection = input_.selection();
+    const scene::PartSet before = selection.selected();
+    const bool select = node.action == NodeAction::Select || node.action == NodeAction::Add;
+    if (select)
+        selection.select(parts,
+                         node.action == NodeAction::Add ? SelectMode::Add : SelectMode::Replace);
+    if (node.action == NodeAction::Hide) selection.hide(parts);
+    if (node.action == NodeAction::Show) selection.show(parts);
+    if (select || selection.selected() != before) selectionChanged();
+    if (!select) partsChanged();
+    return true;
 }
 
 void Viewer::run() {
@@ -336,7 +339,7 @@ void Viewer::rest() {
 
 int runViewer(const Options& options) {
     // A bad script fails before any window opens.
-    ScriptPlayer script(options.script.empty() ? std::vector<ScriptCommand>{}
+    ScriptPlayer script(options.script.empty() ? std::vector<ScriptLine>{}
                                                : loadScript(options.script));
     Window window(options.width, options.height, options.windowPos);
     vk::Instance instance({options.validation, window.vulkanExtensions(), options.syncValidation});

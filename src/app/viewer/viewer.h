@@ -50,7 +50,9 @@ class Viewer {
 
     // What input acts on.
     Options& settings() { return settings_; } // applied at the start of the next frame
+    const Options& settings() const { return settings_; }
     ViewSettings& view() { return view_; }
+    const ViewSettings& view() const { return view_; }
     OrbitCamera& camera() { return camera_; }
     float aspect() const;
     uint64_t nextFrame() const { return frameNumber_; }
@@ -66,11 +68,11 @@ class Viewer {
     // F: frames the selected parts when there are some, else those not hidden, else the
     // whole scene, in the area beside the panel.
     void fitView();
-    // 1, 3, 7, 0 (and a script's `view`): a standard view, at the same distance. O (and a
-    // script's `ortho`): the projection, a setting (Options::camera) the panel edits too.
+    // The view command (1, 3, 7, 0): a standard view, at the same distance. The ortho command
+    // (O): the projection, a setting (Options::camera).
     void turnTo(const scene::StandardView& view);
     void setOrtho(bool ortho);
-    // X (the panel's checkbox, the script's `xray`): X-ray on or off (Options::xray).
+    // The xray command (X): X-ray on or off (Options::xray).
     void setXray(bool on);
     void screenshot(const std::string& path) { screenshotPath_ = path; }
     // The next frame draws everything anew, as after a change: the scene pass, the whole
@@ -83,11 +85,9 @@ class Viewer {
     void partsChanged() const;     // hidden parts changed: tells the event lines
     // The parts of every object named `name` join the selection as `mode` says.
     void selectObjects(const std::string& name, SelectMode mode);
-    // The tree node at `path` (names below the root joined by '/'; "" is the root): its parts
-    // selected as `mode` says, hidden or shown, as the panel's tree row would. False when no
-    // node has that path.
-    enum class NodeAction { Select, Hide, Show };
-    bool actOnNode(const std::string& path, NodeAction action, SelectMode mode);
+    // The tree node `node` names: its parts selected (or added), hidden or shown, as the
+    // panel's tree row does. False when no node has that path.
+    bool actOnNode(const NodeTarget& node);
     // The parts a click at `level` selects around `part` (scene::partsAround).
     scene::PartSet partsAround(uint32_t part, uint32_t level) const;
     // What a click on `part` that selects `parts` (or the edge `edge`) compares in the Inspect
@@ -133,7 +133,7 @@ class Viewer {
     // frame.cpp: the steps of one frame.
     void drawFrame(const FrameWants& wants);
     void drawPanel();
-    void act(const PanelActions& actions);
+    void act(const PanelActions& actions); // the commands the panel asked for
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);

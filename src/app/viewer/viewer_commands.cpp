@@ -17,9 +17,7 @@ void Viewer::toggleHelp() {
         events_.say("help: closed");
         return;
     }
-    size_t bindings = 0;
-    for (const Command& command : commands()) bindings += command.mouse ? 1 : command.keys.size();
-    events_.say("help: " + std::to_string(bindings) + " bindings");
+    events_.say("help: " + std::to_string(bindingCount()) + " bindings");
 }
 
 void Viewer::undo() {

@@ -23,9 +23,10 @@
 namespace scene {
 
 // Bumped whenever the entry layout or what the loader puts in a scene changes.
-// 5: the B-rep kept (brep_shapes.h); 4: placements in double; 3: IGES gaps sewn, edge points
-// shared.
-constexpr uint32_t kCadCacheVersion = 5;
+// 6: levels of detail chosen by the policy meshes share (lod_policy.h), among tessellations at
+// more deflections; 5: the B-rep kept (brep_shapes.h); 4: placements in double; 3: IGES gaps
+// sewn, edge points shared.
+constexpr uint32_t kCadCacheVersion = 6;
 
 struct CadCacheKey {
     std::string path; // absolute, symbolic links resolved

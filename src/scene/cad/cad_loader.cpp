@@ -1,44 +1,35 @@
 // cad_loader.cpp - loadCad: the file read down to its leaf instances (cad_read.h); every
 // distinct shape sewn where the format needs it, tessellated once (in parallel) and turned
-// into a geometry with one part per triangulated face.
+// into a geometry with one part per triangulated face (cad_build.h), and levels of detail
+// (cad_levels.h).
 #include "scene/cad/cad_loader.h"
 
 #include "scene/cad/brep_occt.h"
+#include "scene/cad/cad_build.h"
 #include "scene/cad/cad_check.h"
-
+#include "scene/cad/cad_levels.h"
 #include "scene/cad/cad_mesh.h"
 #include "scene/cad/cad_read.h"
 #include "scene/cad/cad_reader_losses.h"
 #include "scene/cad/cad_sew.h"
-#include "scene/cad/cad_surface.h"
 #include "scene/cad/fault_guard.h"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
-#include <limits>
-#include <map>
 #include <mutex>
 #include <new>
-#include <optional>
+#include <set>
 
-#include <BRepBndLib.hxx>
-#include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
-#include <Quantity_ColorRGBA.hxx>
 #include <Standard_Failure.hxx>
-#include <TopExp.hxx>
-#include <TopTools_IndexedMapOfShape.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <TopoDS_Face.hxx>
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/lsan_interface.h>
@@ -90,28 +81,6 @@ void checkFile(const std::string& path) {
     if (size > kMaxFileBytes) throw Bad("file too large (" + std::to_string(size) + " bytes)");
 }
 
-// Double, as Open CASCADE keeps it: a part placed kilometres away keeps its millimetres.
-glm::dmat4 toMatrix(const gp_Trsf& t) {
-    glm::dmat4 m(1.0);
-    for (int row = 1; row <= 3; ++row)
-        for (int col = 1; col <= 4; ++col) m[col - 1][row - 1] = t.Value(row, col);
-    return m;
-}
-
-uint32_t packed(const Rgba& c) {
-    auto byte = [](double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
-    // Colours as stored (XCAF keeps them linear); 8 bits each is plenty to tell them apart.
-    const Quantity_Color& rgb = c.GetRGB();
-    return byte(rgb.Red()) << 24 | byte(rgb.Green()) << 16 | byte(rgb.Blue()) << 8 |
-           byte(c.Alpha());
-}
-
-std::string hex(const Rgba& color) {
-    char text[16];
-    std::snprintf(text, sizeof text, "#%08x", packed(color));
-    return text;
-}
-
 // Open CASCADE crashes on some damaged files (7.6's IGES reader on a B-spline surface whose
 // parameter lines are blank dereferences a null array): such a crash on this thread is
 // refused in words that name the stage. Faults on the mesher's worker threads are not caught.
@@ -122,131 +91,82 @@ void guarded(const char* stage, Body&& body) {
                   "): the file is damaged or holds something its reader does not handle");
 }
 
-// The shapes the scene's geometries were tessellated from, for exact inspection
-// (brep_shapes.h); their triangulations are dropped, the scene has its own copy.
-template <typename Distinct>
-std::shared_ptr<const BrepShapes> keptShapes(const std::vector<Distinct>& distinct,
-                                             size_t geometries) {
-    auto impl = std::make_unique<BrepShapes::Impl>();
-    impl->geometries.resize(geometries);
-    for (const Distinct& d : distinct) {
-        if (d.geometry < 0) continue;
-        BRepTools::Clean(d.shape);
-        auto& kept = impl->geometries[size_t(d.geometry)];
-        kept.shape = d.shape;
-        for (int f = 1; f <= d.faces.Extent(); ++f) kept.faces.push_back(TopoDS::Face(d.faces(f)));
-    }
-    return std::make_shared<const BrepShapes>(std::move(impl));
-}
-
-CadLoadResult load(const std::string& path, const CadOptions& options, const CadProgress& progress,
-                   uint32_t levels, const std::atomic<bool>* cancel) {
+// The file's format, once the settings and the file itself are fit to load.
+Format checkedFormat(const std::string& path, const CadOptions& options, uint32_t levels) {
     const Format format = formatOf(path);
     if (format == Format::None) throw Bad("not a STEP, IGES or BREP file name");
     if (!(options.deflection >= 0.0) || !std::isfinite(options.deflection))
         throw Bad("the linear deflection must be a finite number of at least 0");
     if (!(options.angularDeflection > 0.0) || !std::isfinite(options.angularDeflection))
         throw Bad("the angular deflection must be a positive number of radians");
+    if (levels > maxLevels)
+        throw Bad("levels of detail: 1 to " + std::to_string(maxLevels) + ", not " +
+                  std::to_string(levels));
     checkFile(path);
-    quietOcct();
-    const std::string stem = fs::path(path).stem().string();
-    CadLoadResult result;
+    return format;
+}
 
-    auto start = Clock::now();
+// What reading the file gives.
+struct Read {
     std::vector<Leaf> leaves;
     ReaderLosses losses;
-    double sewTolerance = 0.0;
+    double sewTolerance = 0.0; // IGES: its faces are sewn within it
+};
+
+Read readLeaves(const std::string& path, Format format, const std::string& stem,
+                const CadProgress& progress, const std::atomic<bool>* cancel) {
+    Read read;
     {
         const CoutCapture quiet;
         guarded("reading the file", [&] {
-            leaves = format == Format::Brep
-                         ? readBrep(path, stem, progress, cancel)
-                         : readXde(path, format, progress, losses, sewTolerance, cancel);
+            read.leaves = format == Format::Brep ? readBrep(path, stem, progress, cancel)
+                                                 : readXde(path, format, progress, read.losses,
+                                                           read.sewTolerance, cancel);
         });
     }
-    leaves = splitSolids(std::move(leaves), stem);
-    result.readMs = msSince(start);
-    if (leaves.empty()) throw Bad("the file holds no shapes");
+    read.leaves = splitSolids(std::move(read.leaves), stem);
+    if (read.leaves.empty()) throw Bad("the file holds no shapes");
+    return read;
+}
 
-    // Distinct shapes (same TShape, same orientation), each with its faces and bounds.
-    struct Distinct {
-        TopoDS_Shape shape;
-        std::string name;
-        TopTools_IndexedMapOfShape faces;
-        std::vector<std::optional<Rgba>> faceColor; // by face index - 1: its own colour
-        Bnd_Box box;
-        int64_t geometry = -1;
-    };
-    std::vector<Distinct> distinct;
-    std::map<std::pair<const void*, int>, size_t> distinctOf;
-    std::vector<size_t> leafDistinct(leaves.size());
-    uint32_t faceless = 0;
-    Bnd_Box world;
-    for (size_t i = 0; i < leaves.size(); ++i) {
-        const Leaf& leaf = leaves[i];
-        const auto key = std::make_pair(static_cast<const void*>(leaf.shape.TShape().get()),
-                                        int(leaf.shape.Orientation()));
-        auto [it, added] = distinctOf.try_emplace(key, distinct.size());
-        if (added) {
-            Distinct& d = distinct.emplace_back();
-            d.shape = leaf.shape;
-            d.name = leaf.product;
-            TopExp::MapShapes(d.shape, TopAbs_FACE, d.faces);
-            if (d.faces.Extent() > 0) BRepBndLib::Add(d.shape, d.box, false);
-            // Coloured sub-shapes name their faces by TShape: their locations are the
-            // product's, which the leaf's shape no longer carries.
-            d.faceColor.resize(size_t(d.faces.Extent()));
-            std::map<const void*, int> faceIndex;
-            for (int f = d.faces.Extent(); f >= 1; --f) // the first of equal TShapes wins
-                faceIndex[d.faces(f).TShape().get()] = f;
-            for (const auto& [sub, color] : leaf.subColors) {
-                TopTools_IndexedMapOfShape subFaces;
-                TopExp::MapShapes(sub, TopAbs_FACE, subFaces);
-                for (int f = 1; f <= subFaces.Extent(); ++f) {
-                    const auto found = faceIndex.find(subFaces(f).TShape().get());
-                    // A face's own label wins over a solid's or shell's that holds it.
-                    if (found != faceIndex.end() &&
-                        (!d.faceColor[size_t(found->second - 1)] || sub.ShapeType() == TopAbs_FACE))
-                        d.faceColor[size_t(found->second - 1)] = color;
-                }
-            }
-        }
-        leafDistinct[i] = it->second;
-        const Distinct& d = distinct[it->second];
-        if (d.faces.Extent() == 0) {
-            ++faceless;
-            continue;
-        }
-        if (!d.box.IsVoid()) world.Add(d.box.Transformed(leaf.world));
-    }
-    if (faceless == leaves.size()) throw Bad("the file holds no shapes with faces");
-    if (faceless)
-        result.warnings.push_back(std::to_string(faceless) +
-                                  " shapes without faces (wires or points) skipped");
-
-    // Tessellation: every distinct shape once, all in one call so that faces mesh in parallel.
+// kRelativeDeflection of the diagonal of the placed shapes' box.
+double automaticDeflection(const Bnd_Box& world) {
     const double diagonal =
         world.IsVoid() || world.IsOpen() ? 0.0 : std::sqrt(world.SquareExtent());
-    const double automatic =
-        std::isfinite(diagonal) && diagonal > 0.0 ? diagonal * kRelativeDeflection : 0.01;
-    const double deflection = options.deflection == 0.0 ? automatic : options.deflection;
-    result.deflection = deflection;
-    start = Clock::now();
-    // Colours were matched above by the faces as read; sewing keeps their order. A gap the
-    // file's resolution leaves open but narrower than the deflection is below what the
-    // tessellation draws (its triangles stray that far from the surface anyway), yet each side
-    // would be sampled on its own and the background would show through: such gaps are sewn
-    // too, never wider than the automatic deflection, so that a coarse --deflection cannot
-    // join edges that are apart in the model. STEP and BREP files state their faces' shared
-    // edges; only IGES files (sewTolerance set) are sewn.
+    return std::isfinite(diagonal) && diagonal > 0.0 ? diagonal * kRelativeDeflection : 0.01;
+}
+
+// Refuses a tessellation that passed the budget, in words: what the whole would have come
+// to, at the rate of the faces counted so far.
+[[noreturn]] void refuseOverBudget(const std::vector<Distinct>& shapes, const MeshBudget& budget,
+                                   double deflection) {
+    uint64_t faces = 0;
+    for (const Distinct& d : shapes) faces += uint64_t(d.faces.Extent());
+    const double meshed = std::max(1.0, double(budget.facesMeshed.load()));
+    const double estimate = double(budget.triangles) * std::max(1.0, double(faces) / meshed);
+    throw Bad(triangleLimitReason(uint64_t(estimate), budget.maxTriangles, deflection));
+}
+
+// Every distinct shape sewn where the format needs it, then tessellated once, all in one call
+// so that faces mesh in parallel. Returns the faces not meshed (edges off their surface).
+std::set<const void*> tessellate(std::vector<Distinct>& shapes, const Read& read, double deflection,
+                                 double automatic, const CadOptions& options,
+                                 const CadProgress& progress, const std::atomic<bool>* cancel) {
+    // Colours were matched by the faces as read; sewing keeps their order. A gap the file's
+    // resolution leaves open but narrower than the deflection is below what the tessellation
+    // draws (its triangles stray that far from the surface anyway), yet each side would be
+    // sampled on its own and the background would show through: such gaps are sewn too, never
+    // wider than the automatic deflection, so that a coarse --deflection cannot join edges that
+    // are apart in the model. STEP and BREP files state their faces' shared edges; only IGES
+    // files (sewTolerance set) are sewn.
     const double gapTolerance = std::min(deflection, automatic);
     guarded("sewing the faces", [&] {
-        for (Distinct& d : distinct) sewFaces(d.shape, d.faces, sewTolerance, gapTolerance);
+        for (Distinct& d : shapes) sewFaces(d.shape, d.faces, read.sewTolerance, gapTolerance);
     });
     TopoDS_Compound all;
     BRep_Builder builder;
     builder.MakeCompound(all);
-    for (const Distinct& d : distinct)
+    for (const Distinct& d : shapes)
         if (d.faces.Extent() > 0) builder.Add(all, d.shape);
     IMeshTools_Parameters parameters;
     parameters.Deflection = deflection;
@@ -264,88 +184,34 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
                     }));
     });
     if (cancel && *cancel) throw Bad("cancelled");
-    if (budget.over) {
-        // What the whole would have come to, at the rate of the faces counted so far.
-        uint64_t faces = 0;
-        for (const Distinct& d : distinct) faces += uint64_t(d.faces.Extent());
-        const double meshed = std::max(1.0, double(budget.facesMeshed.load()));
-        const double estimate = double(budget.triangles) * std::max(1.0, double(faces) / meshed);
-        throw Bad(triangleLimitReason(uint64_t(estimate), options.maxTriangles, deflection));
-    }
-    result.tessellationMs = msSince(start);
+    if (budget.over) refuseOverBudget(shapes, budget, deflection);
+    return std::move(budget.skipped);
+}
 
-    Scene& scene = result.scene;
-    // A material per distinct colour, for objects and for faces with colours of their own.
-    std::map<uint32_t, uint32_t> materialOf;
-    const uint32_t grey = addMaterial(scene, "default", Material{}.color);
-    auto materialFor = [&](const Rgba& color) {
-        auto [it, added] = materialOf.try_emplace(packed(color), 0);
-        if (added) {
-            const Quantity_Color& rgb = color.GetRGB();
-            // XCAF holds linear RGB, as the renderer's material colours are.
-            it->second = addMaterial(
-                scene, "colour " + hex(color),
-                glm::vec4(float(rgb.Red()), float(rgb.Green()), float(rgb.Blue()), color.Alpha()));
-        }
-        return it->second;
-    };
-    uint32_t unnamedShapes = 0, emptyShapes = 0;
-    for (size_t di = 0; di < distinct.size(); ++di) {
-        Distinct& d = distinct[di];
-        if (progress) progress("building", double(di) / double(distinct.size()));
-        if (cancel && *cancel) throw Bad("cancelled");
-        if (d.faces.Extent() == 0) continue;
-        Geometry& g = scene.geometries.emplace_back();
-        g.name = d.name.empty() ? stem + " shape " + std::to_string(++unnamedShapes) : d.name;
-        g.firstVertex = uint32_t(scene.vertices.size());
-        g.firstIndex = uint32_t(scene.indices.size());
-        g.firstPart = uint32_t(scene.parts.size());
-        SharedPoints shared;
-        for (Standard_Integer f = 1; f <= d.faces.Extent(); ++f) {
-            ++result.faces;
-            if (appendFace(scene, TopoDS::Face(d.faces(f)), g.firstVertex, &shared)) {
-                Geometry& built = scene.geometries.back();
-                built.partFaces.push_back(uint32_t(f - 1));
-                built.partSurfaces.push_back(surfaceOf(TopoDS::Face(d.faces(f))));
-                const auto& own = d.faceColor[size_t(f - 1)];
-                built.partMaterials.push_back(own ? materialFor(*own) : gpu::OBJECT_MATERIAL);
-            } else {
-                ++result.facesFailed;
-            }
-            if (scene.vertices.size() > std::numeric_limits<uint32_t>::max() / 2 ||
-                scene.indices.size() > std::numeric_limits<uint32_t>::max() / 2)
-                throw Bad("the tessellation is too large (try a larger --deflection)");
-        }
-        Geometry& built = scene.geometries.back();
-        if (std::all_of(built.partMaterials.begin(), built.partMaterials.end(),
-                        [](uint32_t m) { return m == gpu::OBJECT_MATERIAL; }))
-            built.partMaterials.clear(); // every face takes its object's colour
-        built.vertexCount = uint32_t(scene.vertices.size()) - built.firstVertex;
-        built.partCount = uint32_t(scene.parts.size()) - built.firstPart;
-        if (built.partCount == 0) {
-            ++emptyShapes;
-            scene.geometries.pop_back();
-            continue;
-        }
-        d.geometry = int64_t(scene.geometries.size() - 1);
-    }
-    if (levels > 1) {
-        start = Clock::now();
-        std::vector<CadShapeFaces> shapes;
-        for (const Distinct& d : distinct)
-            if (d.geometry >= 0) shapes.push_back({&d.faces, uint32_t(d.geometry)});
-        addCadLevels(scene, all, shapes, deflection, options.angularDeflection, levels,
-                     LodOptions{}, budget.skipped, [&](double fraction) {
-                         if (cancel && *cancel) throw Bad("cancelled");
-                         if (progress) progress("levels of detail", fraction);
-                     });
-        result.levelsMs = msSince(start);
-    }
+// Levels of detail: the shapes tessellated again (cad_levels.h), chosen among by the policy
+// every kind of geometry shares (scene/lod_policy.h).
+void addLevels(Scene& scene, const BrepShapes::Impl& kept, const std::set<const void*>& skipped,
+               double deflection, const CadOptions& options, uint32_t levels,
+               const CadProgress& progress, const std::atomic<bool>* cancel) {
+    std::vector<GeometryCandidates> candidates =
+        cadCandidates(scene, kept.geometries, deflection, options.angularDeflection, skipped,
+                      [&](double fraction) {
+                          if (cancel && *cancel) throw Bad("cancelled");
+                          if (progress) progress("levels of detail", fraction);
+                      });
+    addChosenLevels(scene, candidates, LodOptions{.levels = levels});
+}
+
+void addWarnings(CadLoadResult& result, uint32_t faceless, const ReaderLosses& losses,
+                 Format format, size_t skipped, uint32_t emptyShapes) {
+    if (faceless)
+        result.warnings.push_back(std::to_string(faceless) +
+                                  " shapes without faces (wires or points) skipped");
     if (const auto dropped =
             lossWarning(losses, result.faces, format == Format::Step ? "STEP" : "IGES"))
         result.warnings.push_back(*dropped);
-    if (!budget.skipped.empty())
-        result.warnings.push_back(std::to_string(budget.skipped.size()) +
+    if (skipped)
+        result.warnings.push_back(std::to_string(skipped) +
                                   " faces have edges that run off their surface (a damaged "
                                   "file) and are not meshed");
     if (result.facesFailed)
@@ -355,21 +221,46 @@ CadLoadResult load(const std::string& path, const CadOptions& options, const Cad
     if (emptyShapes)
         result.warnings.push_back(std::to_string(emptyShapes) +
                                   " shapes had no face that triangulated and are left out");
+}
 
-    // Objects, one per leaf instance: the instance's colour, else the product's.
-    uint32_t unnamed = 0;
-    for (size_t i = 0; i < leaves.size(); ++i) {
-        const Leaf& leaf = leaves[i];
-        const Distinct& d = distinct[leafDistinct[i]];
-        if (d.geometry < 0) continue;
-        const uint32_t material = leaf.color ? materialFor(*leaf.color) : grey;
-        const std::string name =
-            leaf.name.empty() ? stem + " solid " + std::to_string(++unnamed) : leaf.name;
-        addObject(scene, uint32_t(d.geometry), material, toMatrix(leaf.world), name,
-                  joinPath(leaf.group, name));
+// The stages in order: read, distinct shapes, sew and tessellate, build the geometries and
+// objects, levels of detail, the shapes kept, warnings, and a last check.
+CadLoadResult load(const std::string& path, const CadOptions& options, const CadProgress& progress,
+                   uint32_t levels, const std::atomic<bool>* cancel) {
+    const Format format = checkedFormat(path, options, levels);
+    quietOcct();
+    const std::string stem = fs::path(path).stem().string();
+    CadLoadResult result;
+    auto start = Clock::now();
+    const Read read = readLeaves(path, format, stem, progress, cancel);
+    result.readMs = msSince(start);
+    DistinctShapes shapes = distinctShapes(read.leaves);
+    if (shapes.faceless == read.leaves.size()) throw Bad("the file holds no shapes with faces");
+
+    const double automatic = automaticDeflection(shapes.world);
+    result.deflection = options.deflection == 0.0 ? automatic : options.deflection;
+    start = Clock::now();
+    const std::set<const void*> skipped =
+        tessellate(shapes.shapes, read, result.deflection, automatic, options, progress, cancel);
+    result.tessellationMs = msSince(start);
+
+    Scene& scene = result.scene;
+    Materials materials(scene);
+    const BuiltGeometries built =
+        buildGeometries(scene, shapes.shapes, stem, materials, progress, cancel);
+    result.faces = built.faces;
+    result.facesFailed = built.facesFailed;
+    // Objects before levels: the levels chosen weigh the objects that draw each geometry.
+    addObjects(scene, read.leaves, shapes, materials, stem);
+    std::unique_ptr<BrepShapes::Impl> kept = keptShapes(shapes.shapes, scene.geometries.size());
+    if (levels > 1) {
+        start = Clock::now();
+        addLevels(scene, *kept, skipped, result.deflection, options, levels, progress, cancel);
+        result.levelsMs = msSince(start);
     }
-    if (scene.objects.empty()) throw Bad("no face of the model could be triangulated");
-    scene.brep = keptShapes(distinct, scene.geometries.size());
+    kept->geometries.resize(scene.geometries.size()); // levels have no shape
+    scene.brep = std::make_shared<const BrepShapes>(std::move(kept));
+    addWarnings(result, shapes.faceless, read.losses, format, skipped.size(), built.emptyShapes);
     try {
         validate(scene);
     } catch (const std::invalid_argument& e) {

@@ -90,10 +90,11 @@ bool isCadPath(const std::string& path);
 LengthUnit cadUnit(const std::string& path);
 
 // Loads the whole model. The result passes scene::validate(). Throws ModelError with one
-// line "<path>: <reason>"; never returns a half-built scene. With `levels` above 1, each shape
-// also gets up to levels - 1 levels of detail (scene/lod.h): its faces tessellated again at 4,
-// 16 and 64 times the deflection, which is each level's error; progress then reports a
-// "levels of detail" stage.
+// line "<path>: <reason>"; never returns a half-built scene. With `levels` above 1 (up to
+// maxLevels, scene/lod.h), each shape also gets up to levels - 1 levels of detail: its faces
+// tessellated again at coarser deflections (cad_levels.h), chosen among as every kind of
+// geometry's candidates are (scene/lod_policy.h); progress then reports a "levels of detail"
+// stage.
 // While `cancel` is set the load stops at the next face or progress step, throwing ModelError
 // "<path>: cancelled". A tessellation that passes options.maxTriangles stops between faces
 // and throws ModelError "<path>: <triangleLimitReason>".

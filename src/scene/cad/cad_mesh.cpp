@@ -1,12 +1,7 @@
-// cad_mesh.cpp - Open CASCADE triangulations into scene geometry, at full detail and coarser.
+// cad_mesh.cpp - Open CASCADE triangulations into scene geometry, and tessellations counted.
 #include "scene/cad/cad_mesh.h"
 
-#include "scene/closest_point.h"
-
 #include <algorithm>
-#include <cmath>
-#include <limits>
-#include <numbers>
 #include <set>
 
 #include <BRepMesh_Context.hxx>
@@ -111,77 +106,6 @@ class CountingFactory : public IMeshTools_MeshAlgoFactory {
     MeshBudget& budget_;
 };
 
-// How far full detail's vertices (which lie on the surface) are from `level`'s triangles of
-// the same face, the largest over the faces: the mesher bounds its deflection only where it
-// samples, and coarse levels of unsewn faces (IGES) stray further. Faces too large to compare
-// every vertex with every triangle compare every n-th vertex.
-float measuredDistance(const Scene& scene, const Geometry& full, const Geometry& level) {
-    constexpr uint64_t budget = uint64_t(1) << 22; // distance tests per face
-    float worst = 0.0f;
-    for (uint32_t p = 0; p < full.partCount; ++p) {
-        const Part& fp = scene.parts[full.firstPart + p];
-        const Part& lp = scene.parts[level.firstPart + p];
-        const uint64_t tests = 3ull * fp.triangleCount * lp.triangleCount;
-        const uint32_t stride = uint32_t(std::max<uint64_t>(1, tests / budget));
-        for (uint32_t i = 3 * fp.firstTriangle; i < 3 * (fp.firstTriangle + fp.triangleCount);
-             i += stride) {
-            const glm::vec3 v =
-                scene.vertices[full.firstVertex + scene.indices[full.firstIndex + i]].position;
-            float nearest = INFINITY;
-            for (uint32_t t = lp.firstTriangle; t < lp.firstTriangle + lp.triangleCount; ++t) {
-                const uint32_t* c = &scene.indices[level.firstIndex + 3 * t];
-                const glm::vec3 q =
-                    closestOnTriangle(v, scene.vertices[level.firstVertex + c[0]].position,
-                                      scene.vertices[level.firstVertex + c[1]].position,
-                                      scene.vertices[level.firstVertex + c[2]].position);
-                nearest = std::min(nearest, glm::length(v - q));
-            }
-            worst = std::max(worst, nearest);
-        }
-    }
-    return worst;
-}
-
-// Builds `shape`'s faces at the current triangulation as the level after `finer`'s; false
-// (and the scene as it was) when a face has no triangles, the level saves too little or the
-// levels would take too much memory.
-bool addLevel(Scene& scene, const CadShapeFaces& shape, uint32_t finer, uint32_t level, float error,
-              float fullDeflection, const LodOptions& lod) {
-    const size_t vertices = scene.vertices.size(), indices = scene.indices.size(),
-                 parts = scene.parts.size();
-    Geometry next = levelShell(scene, scene.geometries[shape.geometry], level);
-    next.lodError = error;
-    scene.geometries.push_back(std::move(next));
-    bool whole = true;
-    SharedPoints shared;
-    for (uint32_t face : scene.geometries[shape.geometry].partFaces)
-        if (!(whole = appendFace(scene, TopoDS::Face((*shape.faces)(int(face) + 1)),
-                                 uint32_t(vertices), &shared)))
-            break;
-    Geometry& built = scene.geometries.back();
-    built.vertexCount = uint32_t(scene.vertices.size() - vertices);
-    const double before = scene.geometries[finer].triangleCount;
-    uint64_t levelBytes = geometryBytes(built);
-    for (uint32_t l : scene.geometries[shape.geometry].levels)
-        levelBytes += geometryBytes(scene.geometries[l]);
-    if (!whole || double(built.triangleCount) > double(lod.keepAtMost) * before ||
-        double(levelBytes) >
-            double(lod.memory) * double(geometryBytes(scene.geometries[shape.geometry]))) {
-        scene.geometries.pop_back();
-        scene.vertices.resize(vertices);
-        scene.indices.resize(indices);
-        scene.parts.resize(parts);
-        return false;
-    }
-    // The error: what the mesher was asked for, or what it measurably missed by, with full
-    // detail's own deflection on top (its vertices lie on the surface, its triangles not).
-    const Geometry& fullDetail = scene.geometries[shape.geometry];
-    built.lodError = std::max(error, measuredDistance(scene, fullDetail, built) + fullDeflection);
-    built.lodError = std::max(built.lodError, scene.geometries[finer].lodError);
-    scene.geometries[shape.geometry].levels.push_back(uint32_t(scene.geometries.size() - 1));
-    return true;
-}
-
 } // namespace
 
 void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& parameters,
@@ -212,36 +136,6 @@ void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& paramet
     mesher.SetShape(shape);
     mesher.ChangeParameters() = parameters;
     mesher.Perform(context, range);
-}
-
-void addCadLevels(Scene& scene, const TopoDS_Shape& all, const std::vector<CadShapeFaces>& shapes,
-                  double deflection, double angularDeflection, uint32_t levels,
-                  const LodOptions& lod, const std::set<const void*>& skipped,
-                  const std::function<void(double)>& progress) {
-    for (uint32_t level = 1; level < levels; ++level) {
-        if (progress) progress(double(level - 1) / double(levels - 1));
-        const double scale = std::pow(4.0, double(level));
-        IMeshTools_Parameters parameters;
-        parameters.Deflection = deflection * scale;
-        parameters.Angle =
-            std::min(angularDeflection * std::pow(2.0, double(level)), std::numbers::pi / 2);
-        parameters.Relative = false;
-        parameters.InParallel = true;
-        BRepTools::Clean(all); // so that the mesher starts over instead of keeping finer ones
-        MeshBudget unlimited;
-        unlimited.maxTriangles = std::numeric_limits<uint64_t>::max();
-        unlimited.skipped = skipped;
-        meshCounted(all, parameters, unlimited, {});
-        for (const CadShapeFaces& shape : shapes) {
-            const Geometry& full = scene.geometries[shape.geometry];
-            // Only shapes that have every level so far go on.
-            if (full.levels.size() != level - 1) continue;
-            const uint32_t finer = level == 1 ? shape.geometry : full.levels.back();
-            addLevel(scene, shape, finer, level, float(parameters.Deflection), float(deflection),
-                     lod);
-        }
-    }
-    if (progress) progress(1.0);
 }
 
 } // namespace scene

@@ -22,7 +22,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "scene/cad/brep_occt.h"
-#include "util/json_number.h"
+#include "util/json_writer.h"
 
 namespace scene {
 
@@ -220,20 +220,27 @@ std::optional<EdgeRef> nearestEdge(const Scene& scene, uint32_t part, const glm:
     return best;
 }
 
-std::string edgeReportJson(const EdgeReport& r) {
-    using util::jsonNumber, util::jsonVector;
-    std::string json = "{\"part\":" + std::to_string(r.ref.part) +
-                       ",\"object\":" + std::to_string(r.object) +
-                       ",\"edge\":" + std::to_string(r.ref.edge) + ",\"curve\":\"" +
-                       curveName(r.kind) + "\",\"length\":" + jsonNumber(r.length);
+void edgeReportMembers(util::JsonWriter& json, const EdgeReport& r) {
+    json.member("part", r.ref.part)
+        .member("object", r.object)
+        .member("edge", r.ref.edge)
+        .member("curve", curveName(r.kind))
+        .member("length", r.length);
     if (r.kind == CurveKind::Circle)
-        json += ",\"radius\":" + jsonNumber(r.radius) +
-                ",\"diameter\":" + jsonNumber(2.0 * r.radius) +
-                ",\"center\":" + jsonVector(r.center) + ",\"axis\":" + jsonVector(r.axis);
-    if (r.kind == CurveKind::Line) json += ",\"direction\":" + jsonVector(r.direction);
-    json += ",\"start\":" + jsonVector(r.start) + ",\"end\":" + jsonVector(r.end) +
-            ",\"closed\":" + (r.closed ? "true" : "false");
-    return json + "," + unitJsonMember(r.unit) + "}";
+        json.member("radius", r.radius)
+            .member("diameter", 2.0 * r.radius)
+            .member("center", r.center)
+            .member("axis", r.axis);
+    if (r.kind == CurveKind::Line) json.member("direction", r.direction);
+    json.member("start", r.start).member("end", r.end).member("closed", r.closed);
+    unitMember(json, r.unit);
+}
+
+std::string edgeReportJson(const EdgeReport& r) {
+    util::JsonWriter json;
+    json.beginObject();
+    edgeReportMembers(json, r);
+    return json.endObject().text();
 }
 
 std::string describeEdge(const EdgeReport& r) {

@@ -1,0 +1,172 @@
+#!/usr/bin/python3
+"""bench_tables.py - every table of docs/benchmarks.md, printed from the run folder under
+docs/benchmarks/ that the table cites, so that the page repeats the runs and nothing else.
+
+    scripts/bench_tables.py print KIND FOLDER [KEY=VALUE...]
+        one table (KINDS below), with the line that names its files and their commands
+    scripts/bench_tables.py --check [PAGE]    (default docs/benchmarks.md)
+        every generated block of the page (<!-- generated: bench_tables.py ... -->) is what
+        this script prints for its arguments, and every run a block reads is one that
+        scripts/h100-runs.sh makes (under the same name); exit 1 otherwise
+    scripts/bench_tables.py --write [PAGE] [--from FOLDER]
+        prints the blocks into the page again; with --from, every block whose files are all
+        in FOLDER (a folder of docs/benchmarks/, as h100-runs.sh writes one) cites FOLDER
+        from then on, its old folder's layout and commit arguments dropped
+    scripts/bench_tables.py status [PAGE]
+        per block: its folder, commit, and whether each file's command (as its JSON records
+        it) is the one h100-runs.sh runs today; those that are not are made by older commands
+
+A block's arguments: KIND FOLDER [commit=HASH] [KEY=VALUE...]. The commit is the build the
+folder's runs were made with (the JSON does not record it; h100-runs.sh writes it into the
+folder's runs*.txt, read where no commit= is given).
+"""
+import glob
+import os
+import sys
+
+import bench_kinds
+import bench_runs as runs
+import doc_blocks
+
+SCRIPT = "bench_tables.py"
+PAGE = os.path.join(runs.ROOT, "docs", "benchmarks.md")
+# Arguments that describe an old folder's layout or build: dropped when a block moves to a
+# folder h100-runs.sh wrote.
+LAYOUT = ("commit", "dir", "prefix")
+
+
+def split(args):
+    kind, folder = args[0], args[1]
+    params = dict(a.split("=", 1) for a in args[2:])
+    return kind, folder, params
+
+
+def commit_of(folder, params):
+    if "commit" in params:
+        return params["commit"]
+    for log in sorted(glob.glob(os.path.join(runs.BENCH, folder, "runs*.txt"))):
+        with open(log) as f:
+            for line in f:
+                if line.startswith("commit: "):
+                    return line.split()[1]
+    return "not recorded"
+
+
+def source(args, used):
+    """The paragraph under a table: its folder, build, files and their commands."""
+    kind, folder, params = split(args)
+    where = f"[`{folder}/`](benchmarks/{folder}/) (commit {commit_of(folder, params)})"
+    printed = f"printed by `scripts/bench_tables.py {' '.join(args)}`"
+    cited = [(f"{stem}.json", runs.command(runs.flags_of(runs.load(folder, stem), extra)))
+             for stem, extra in used]
+    if len(cited) == 1:
+        name, line = cited[0]
+        return f"Source: {where}, `{name}`: `{line}`; {printed}.\n"
+    text = f"Source: {where}; {printed}, from:\n\n"
+    return text + "".join(f"- `{name}`: `{line}`\n" for name, line in cited)
+
+
+def render(args):
+    kind, folder, params = split(args)
+    if kind not in bench_kinds.KINDS:
+        sys.exit(f"unknown table kind '{kind}' (kinds: {', '.join(bench_kinds.KINDS)})")
+    files, table = bench_kinds.KINDS[kind]
+    used = files(params)
+    loaded = {stem: runs.load(folder, stem) for stem, _ in used}
+    return doc_blocks.wrap(table(loaded, params) + "\n" + source(args, used))
+
+
+def stems(args):
+    """The runs a block reads, without reading them."""
+    kind, folder, params = split(args)
+    return [stem for stem, _ in bench_kinds.KINDS[kind][0](params)]
+
+
+def check_runs(page):
+    """Every run a block would read from a folder h100-runs.sh wrote (its layout arguments
+    dropped) is one h100-runs.sh makes, and h100-runs.sh names no --benchmark-out of its own
+    (it writes NAME.json). Blocks of experiments (kinds h100-runs.sh cannot run) are left
+    out."""
+    made = runs.script_runs()
+    bad = 0
+    for name, (_, flags) in made.items():
+        if "--benchmark-out" in flags:
+            print(f"h100-runs.sh: {name} names its own --benchmark-out")
+            bad += 1
+    with open(page) as f:
+        lines = f.read().split("\n")
+    for block in doc_blocks.blocks(lines, SCRIPT, page):
+        kind, folder, params = split(block.args)
+        if kind in bench_kinds.EXPERIMENTS:
+            continue
+        kept = {k: v for k, v in params.items() if k not in LAYOUT}
+        for stem, _ in bench_kinds.KINDS[kind][0](kept):
+            if stem not in made:
+                print(f"{page}:{block.first}: h100-runs.sh makes no run '{stem}'")
+                bad += 1
+    return bad
+
+
+def status(page):
+    made = runs.script_runs()
+    with open(page) as f:
+        lines = f.read().split("\n")
+    for block in doc_blocks.blocks(lines, SCRIPT, page):
+        kind, folder, params = split(block.args)
+        print(f"{kind} {folder} (commit {commit_of(folder, params)}), line {block.first}:")
+        files = bench_kinds.KINDS[kind][0]
+        # The same run under the name h100-runs.sh gives it (an old folder's layout dropped).
+        kept = {k: v for k, v in params.items() if k not in LAYOUT}
+        for (stem, extra), (name, _) in zip(files(params), files(kept)):
+            have = runs.flags_of(runs.load(folder, stem), extra)
+            if name not in made:
+                print(f"  {stem}: no run of h100-runs.sh")
+            elif made[name][1] == have:
+                print(f"  {stem}: h100-runs.sh part {made[name][0]}, the same command")
+            else:
+                print(f"  {stem}: h100-runs.sh part {made[name][0]} runs another command:"
+                      f"\n    had:  {runs.command(have)}\n    runs: {runs.command(made[name][1])}")
+
+
+def retarget_to(folder):
+    """A block's arguments moved to `folder` where it holds every run the block reads (None
+    where not), saying which moved and which stay."""
+    def retarget(args):
+        kind, old, params = split(args)
+        kept = [f"{k}={v}" for k, v in params.items() if k not in LAYOUT]
+        moved = [kind, folder] + kept
+        missing = [s for s in stems(moved) if not os.path.exists(runs.path_of(folder, s))]
+        if missing:
+            print(f"{kind} stays at {old}: {folder} has no {', '.join(missing)}")
+            return None
+        print(f"{kind}: {old} -> {folder}")
+        return moved
+    return retarget
+
+
+def main(argv):
+    if len(argv) >= 3 and argv[0] == "print":
+        sys.stdout.write(render(argv[1:]))
+        return 0
+    if argv and argv[0] == "status":
+        status(argv[1] if len(argv) > 1 else PAGE)
+        return 0
+    if argv and argv[0] in ("--check", "--write"):
+        rest = argv[1:]
+        folder = None
+        if "--from" in rest:
+            i = rest.index("--from")
+            folder = rest[i + 1].rstrip("/")
+            rest = rest[:i] + rest[i + 2:]
+        page = rest[0] if rest else PAGE
+        retarget = retarget_to(folder) if folder else None
+        differ = doc_blocks.refresh(page, SCRIPT, render, argv[0] == "--write", retarget)
+        bad = check_runs(page) if argv[0] == "--check" else 0
+        if argv[0] == "--check" and differ:
+            print(f"{differ} table(s) differ: scripts/bench_tables.py --write {page}")
+        return 1 if (differ or bad) and argv[0] == "--check" else 0
+    sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,154 @@
+// cli_flags_scene.cpp - the flags of what is loaded (model, built-in scene, parts, copies,
+// levels of detail built), of CAD tessellation, and of the view and its animation.
+#include "app/cli_flags.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "app/cli_flag_tables.h"
+#include "app/scene_source.h"
+#include "scene/camera_path.h"
+#include "scene/copies.h"
+#include "scene/lod.h"
+
+namespace app::flag_tables {
+
+std::vector<Flag> sceneFlags(const Options& d) {
+    return {
+        {"--model", "FILE",
+         "open a glTF model (.gltf, .glb) or a CAD file (.step, .stp, .iges, .igs, .brep; "
+         "one part per B-rep face); default: assets/default.glb",
+         [](Options& o, auto& v) { o.scene.model = v; }},
+        {"--scene", "SPEC",
+         "built-in scene instead of a model: assembly, tiles (the test layout) or "
+         "procedural[:preset=small|car-like][,seed=N]",
+         [](Options& o, auto& v) {
+             try {
+                 parseSceneSpec(v);
+             } catch (const std::invalid_argument& e) {
+                 throw UsageError(std::string("--scene: ") + e.what());
+             }
+             o.scene.builtin = v;
+         }},
+        {"--parts", "MODE",
+         "glTF parts (CAD files: always one per face): primitives (one part per primitive) or "
+         "components (one per connected "
+         "component, recovers CAD faces merged by an exporter)" +
+             byDefault(scene::partModeName(d.scene.parts)),
+         [](Options& o, auto& v) {
+             try {
+                 o.scene.parts = scene::parsePartMode(v);
+             } catch (const std::invalid_argument&) {
+                 throw UsageError("--parts expects primitives or components, not '" + v + "'");
+             }
+         }},
+        {"--copies", "N", "replicate the model N times on a grid" + byDefault(d.scene.copies),
+         [](Options& o, auto& v) { o.scene.copies = parseCount("--copies", v, 1, 1000000); }},
+        {"--copy-axes", "AXES",
+         "axes the copies' grid spans: any of x, y, z, e.g. x, xz or xyz" +
+             byDefault(scene::copyAxesName(d.scene.copyAxes)),
+         [](Options& o, auto& v) {
+             try {
+                 o.scene.copyAxes = scene::parseCopyAxes(v);
+             } catch (const std::invalid_argument& e) {
+                 throw UsageError(std::string("--copy-axes: ") + e.what());
+             }
+         }},
+        {"--lod-levels", "N",
+         "levels of detail to build when the scene loads, full detail included, 1 (none) "
+         "to " +
+             std::to_string(scene::maxLevels) + byDefault(d.scene.lodLevels),
+         [](Options& o, auto& v) {
+             o.scene.lodLevels = parseCount("--lod-levels", v, 1, scene::maxLevels);
+         }},
+        {"--lod-level", "N",
+         "draw every object at level of detail N (0 is full detail; an object with fewer "
+         "levels takes its coarsest); needs --lod-levels above N" +
+             byDefault(d.scene.lodLevel),
+         [](Options& o, auto& v) {
+             o.scene.lodLevel = parseCount("--lod-level", v, 0, scene::maxLevels - 1);
+         }},
+    };
+}
+
+std::vector<Flag> cadFlags(const Options& d) {
+    return {
+        {"--deflection", "X",
+         "CAD files: linear tessellation deflection in model units; 0 picks " +
+             percent(scene::kRelativeDeflection) + " of the model's bounding box diagonal" +
+             byDefault(d.scene.cad.deflection),
+         [](Options& o, auto& v) {
+             o.scene.cad.deflection = parseNumber("--deflection", v, 1e9f, "a length");
+         }},
+        {"--angular-deflection", "RAD",
+         "CAD files: angular tessellation deflection in radians, above 0 up to 3.14" +
+             byDefault(d.scene.cad.angularDeflection),
+         [](Options& o, auto& v) {
+             const float radians = parseNumber("--angular-deflection", v, 3.14f, "radians");
+             if (radians <= 0.0f)
+                 throw UsageError("--angular-deflection expects radians above 0, not '" + v + "'");
+             o.scene.cad.angularDeflection = radians;
+         }},
+        {"--max-triangles", "N",
+         "CAD files: stop a tessellation as soon as its faces pass N triangles (full detail, "
+         "each distinct shape once) and exit 1 naming a --deflection that fits" +
+             byDefault(d.scene.cad.maxTriangles),
+         [](Options& o, auto& v) {
+             o.scene.cad.maxTriangles =
+                 parseCount("--max-triangles", v, 1, std::numeric_limits<uint32_t>::max());
+         }},
+        {"--progress", nullptr,
+         "CAD files: print the load's progress on stderr even when it is no terminal (a "
+         "pipe, a log), from the start; at a terminal it shows once a load has taken a "
+         "second",
+         [](Options& o, auto&) { o.scene.progress = true; }},
+    };
+}
+
+std::vector<Flag> viewFlags(const Options& d) {
+    return {
+        {"--view", "NAME",
+         "open on a standard view of the fitted scene, as FreeCAD shows them (front looks "
+         "along +Y of a Z-up model): " +
+             scene::standardViewNames(),
+         [](Options& o, auto& v) {
+             o.camera.standard = scene::findStandardView(v);
+             if (!o.camera.standard)
+                 throw UsageError("--view expects " + scene::standardViewNames() + ", not '" + v +
+                                  "'");
+         }},
+        {"--ortho", nullptr,
+         "orthographic projection, as tall as the perspective view at the target (the "
+         "viewer's O switches)",
+         [](Options& o, auto&) { o.camera.ortho = true; }},
+        headless({"--camera-path", "PATH",
+                  "headless and --benchmark: move the camera every frame, orbit (around the scene "
+                  "at the fitted distance) or dolly (from the fitted view into the middle of the "
+                  "assembly and back), over --frames frames; the images hold the last",
+                  [](Options& o, auto& v) {
+                      const auto path = scene::findCameraPath(v);
+                      if (!path)
+                          throw UsageError("--camera-path expects " + scene::cameraPathNames() +
+                                           ", not '" + v + "'");
+                      o.cameraPath = *path;
+                  }}),
+        {"--explode", "F",
+         "the exploded view at F, 0 (at rest) to 1: sub-assemblies move apart from their "
+         "assembly's centre, and their parts apart within them, level by level (the viewer's "
+         "explode slider)" +
+             byDefault(d.animation.explode),
+         [](Options& o, auto& v) { o.animation.explode = parseFraction("--explode", v); }},
+        {"--animate", nullptr,
+         "exploded-view animation, for benchmarks: the exploded view goes from 0 to 1 and "
+         "back every 4 s, the objects' matrices written on the GPU each frame; headless "
+         "at --time, else at frame / 60 s",
+         [](Options& o, auto&) { o.animation.animate = true; }},
+        headless({"--time", "SECONDS",
+                  "with --animate: the moment of the loop to render (default: frame / 60)",
+                  [](Options& o, auto& v) {
+                      o.animation.time = parseNumber("--time", v, 1e6f, "seconds");
+                  }}),
+    };
+}
+
+} // namespace app::flag_tables
