@@ -321,6 +321,7 @@ if [[ -f $motor && -f $terrain ]]; then
         "$idview" --stats --no-cache --progress --max-triangles 1000 --model "$terrain" \
             >/dev/null 2>"$work/uncancelled.err" &
         local uncancelled=$!
+        : >"$work/uncancelled.started"
         until grep -q "^idview: $terrain: cancelled$" "$work/refuse.err" || [[ -e $work/refuse.done ]]; do
             sleep 0.1
         done
@@ -348,8 +349,9 @@ if [[ -f $motor && -f $terrain ]]; then
     fi
     meshed=$(sed -n "s|^idview: loading $terrain: tessellating \([0-9]*\)%$|\1|p" \
         "$work/uncancelled.err" 2>/dev/null | tail -1)
-    if [[ -s $work/uncancelled.err ]] && ((${meshed:-0} < 50)) &&
-        ! grep -q "^idview: error: " "$work/uncancelled.err"; then
+    # (It may not have printed a line yet: then it had meshed nothing.)
+    if [[ -e $work/uncancelled.started ]] && ((${meshed:-0} < 50)) &&
+        ! grep -q "^idview: error: " "$work/uncancelled.err" 2>/dev/null; then
         echo "ok   cancelled inside the face: the same load beside it had meshed ${meshed:-0} % (session $took s)"
     else
         fail "Cancel waited for $terrain's face: the load beside it had meshed ${meshed:-?} %: $(tail -2 "$work/uncancelled.err" 2>/dev/null)"
