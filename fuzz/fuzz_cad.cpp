@@ -5,17 +5,15 @@
 // while the sanitizers watch every byte idview touches.
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <unistd.h>
 
 #include "scene/cad/cad_loader.h"
+#include "util/deadline.h"
 
 namespace {
 
@@ -33,32 +31,10 @@ const char* extensionOf(const uint8_t* data, size_t size) {
     return ".iges";
 }
 
-// Sets the load's cancel flag after a few seconds, as the viewer's Cancel button would: a
-// load that takes longer is stopped, not reported as a hang (the readers' own parsing does
-// not look at the flag; libFuzzer's -timeout catches what never stops).
-class Watchdog {
-  public:
-    explicit Watchdog(std::atomic<bool>& cancel)
-        : thread_([this, &cancel] {
-              std::unique_lock lock(mutex_);
-              if (!done_.wait_for(lock, std::chrono::seconds(5), [this] { return finished_; }))
-                  cancel = true;
-          }) {}
-    ~Watchdog() {
-        {
-            std::lock_guard lock(mutex_);
-            finished_ = true;
-        }
-        done_.notify_one();
-        thread_.join();
-    }
-
-  private:
-    std::mutex mutex_;
-    std::condition_variable done_;
-    bool finished_ = false;
-    std::thread thread_;
-};
+// The load's cancel flag is set after a few seconds (util::Deadline), as the viewer's Cancel
+// button would: a load that takes longer is stopped, not reported as a hang (the readers' own
+// parsing does not look at the flag; libFuzzer's -timeout catches what never stops).
+constexpr std::chrono::seconds kCancelAfter{5};
 
 } // namespace
 
@@ -74,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     options.maxTriangles = 200'000; // a bound on each input's time, as --max-triangles is
     std::atomic<bool> cancel{false};
     try {
-        const Watchdog watchdog(cancel);
+        const util::Deadline watchdog(kCancelAfter, [&cancel] { cancel = true; });
         scene::CadLoadResult result = scene::loadCad(path, options, {}, 1, &cancel);
         scene::validate(result.scene);
     } catch (const scene::ModelError& e) {

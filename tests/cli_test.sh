@@ -284,7 +284,28 @@ if [[ -f $motor && -f $bearing ]]; then
             echo "FAIL $name: exit $rc, output:"; echo "$out" | head -5; failures=$((failures + 1))
         fi
     done
+    # Progress lines: into a pipe (or a file) only with --progress, then every stage of the
+    # load from its start. That no line comes without it however long the load takes, on a
+    # clock the test moves: tests/test_progress_lines.cpp.
+    load=("$idview" --headless --no-cache --frames 1 --size 64x48 --model "$motor")
+    out=$("${load[@]}" 2>&1 >/dev/null)
+    if [[ $? -eq 0 && $out != *"idview: loading "* ]]; then
+        echo "ok   no-progress-into-a-pipe"
+    else
+        echo "FAIL no-progress-into-a-pipe:"; echo "$out" | head -5; failures=$((failures + 1))
+    fi
+    "${load[@]}" --progress >/dev/null 2>"$work/progress.err"
+    stages=$(sed -n "s|^idview: loading $motor: \([a-z ]*\) [0-9]*%$|\1|p" "$work/progress.err" |
+        uniq | paste -sd, -)
+    if [[ $stages == reading,tessellating,building && $(grep -c "^idview: loading $motor: building" \
+        "$work/progress.err") -gt 1 ]]; then
+        echo "ok   progress-with-flag: $stages"
+    else
+        echo "FAIL progress-with-flag: stages '$stages'"; head -5 "$work/progress.err"
+        failures=$((failures + 1))
+    fi
 fi
+expect progress-in-help 0 '--progress +CAD files: print the load' -- "$idview" --help
 
 echo "cli_test: $failures failed"
 exit $((failures > 0))

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "app/image_io.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/technique.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
@@ -29,6 +31,8 @@
 namespace {
 
 constexpr uint32_t W = 160, H = 100;
+using testing_support::idDifference;
+using testing_support::sameIds;
 
 // Two placements of one triangle whose bounds are easy to write down.
 scene::Scene twoTriangles() {
@@ -248,12 +252,6 @@ Fixture& fixture() {
     return f;
 }
 
-size_t countDifferences(const std::vector<uint32_t>& a, const std::vector<uint32_t>& b) {
-    size_t n = 0;
-    for (size_t i = 0; i < a.size(); ++i) n += a[i] != b[i];
-    return n;
-}
-
 struct Combination {
     const render::Technique* technique;
     const render::DrawMode* mode;
@@ -286,13 +284,9 @@ TEST_P(GpuAnimation, MatchesCpuExplodedSceneBitForBitAndPicksWhatItShows) {
 
     ASSERT_EQ(gpu.ids.size(), size_t(W) * H);
     ASSERT_EQ(cpu.ids.size(), gpu.ids.size());
-    const size_t differing = countDifferences(gpu.ids, cpu.ids);
-    size_t first = 0;
-    while (differing && gpu.ids[first] == cpu.ids[first]) ++first;
-    EXPECT_EQ(differing, 0u) << "first at pixel " << first % W << "," << first / W << ": "
-                             << gpu.ids[first] << " instead of " << cpu.ids[first];
+    EXPECT_TRUE(sameIds(gpu.ids, cpu.ids, W));
     // The motion is real: a good share of the image changed against the scene at rest.
-    EXPECT_GT(countDifferences(gpu.ids, rest.ids), gpu.ids.size() / 20);
+    EXPECT_GT(idDifference(gpu.ids, rest.ids, W).pixels, gpu.ids.size() / 20);
 
     ASSERT_EQ(gpu.picks.size(), animated.picks.size());
     size_t onParts = 0;
@@ -333,7 +327,77 @@ TEST(GpuAnimationLoop, AnimateAtTimeFollowsTheLoop) {
         renderOptions(technique, render::defaultDrawMode()),
         scene::explodedScene(f.loaded.scene, scene::explodeLoop(1.3f)), f.camera);
     EXPECT_EQ(gpu.validationMessages, 0u);
-    EXPECT_EQ(countDifferences(gpu.ids, cpu.ids), 0u);
+    EXPECT_TRUE(sameIds(gpu.ids, cpu.ids, W));
+}
+
+// Pixels inside parts of `ids` (the 3x3 pixels around show one part), a spread of about 24
+// of them: a headless pick takes a frame each.
+std::vector<app::Options::Pixel> pixelsInsideParts(const std::vector<uint32_t>& ids) {
+    auto idAt = [&](uint32_t x, uint32_t y) { return ids[size_t(y) * W + x]; };
+    std::vector<app::Options::Pixel> pixels;
+    for (uint32_t y = 2; y + 2 < H; y += 3)
+        for (uint32_t x = 2; x + 2 < W; x += 3) {
+            bool inside = idAt(x, y) != gpu::BACKGROUND_ID;
+            for (uint32_t dy = 0; dy < 3; ++dy)
+                for (uint32_t dx = 0; dx < 3; ++dx)
+                    inside = inside && idAt(x + dx - 1, y + dy - 1) == idAt(x, y);
+            if (inside) pixels.push_back({x, y});
+        }
+    const size_t every = std::max<size_t>(1, pixels.size() / 24);
+    for (size_t i = 0; i * every < pixels.size(); ++i) pixels[i] = pixels[i * every];
+    pixels.resize((pixels.size() + every - 1) / every);
+    return pixels;
+}
+
+// Each pick of `picked` names the part the CPU's ray cast of `exploded` meets at its pixel.
+void expectPicksMeetTheRayCast(const app::HeadlessResult& picked, const scene::Scene& exploded,
+                               const scene::Camera& camera) {
+    const scene::RayCaster caster(exploded);
+    const glm::dmat4 viewProj = camera.viewProjection(double(W) / double(H));
+    for (const auto& pick : picked.picks) {
+        const auto hit = caster.cast(
+            scene::pixelRay(viewProj, glm::vec2(float(W), float(H)), glm::vec2(pick.pixel) + 0.5f));
+        ASSERT_TRUE(hit.has_value()) << pick.pixel.x << "," << pick.pixel.y;
+        EXPECT_EQ(pick.part.value_or(gpu::BACKGROUND_ID), hit->uniquePartId)
+            << "pick at " << pick.pixel.x << "," << pick.pixel.y;
+    }
+}
+
+// What the CPU answers headless at explode 0.7 sees the parts where they are drawn: the face
+// report of `part`, under pixel `at`, boxes the point the measurement from `at` to `other`
+// gives there, and the box of the part at rest does not (it moved).
+void expectFaceInfoWhereThePartIsDrawn(app::Options::Pixel at, app::Options::Pixel other,
+                                       uint32_t part, const scene::Scene& rest,
+                                       const scene::Scene& exploded) {
+    const std::string measure = std::to_string(at.x) + "," + std::to_string(at.y) + "," +
+                                std::to_string(other.x) + "," + std::to_string(other.y);
+    app::Options inspect = app::parseArgs(
+        {"--headless", "--size", std::to_string(W) + "x" + std::to_string(H), "--scene",
+         "procedural:preset=small,seed=1", "--explode", "0.7", "--frames", "1", "--measure",
+         measure, "--face-info", std::to_string(at.x) + "," + std::to_string(at.y)});
+    testing::internal::CaptureStdout();
+    const int code = app::runHeadless(inspect);
+    const std::string lines = testing::internal::GetCapturedStdout();
+    ASSERT_EQ(code, 0);
+    auto numbers = [&](const std::string& key) { // the three numbers after `key`
+        glm::dvec3 v(0.0);
+        const size_t found = lines.find(key);
+        EXPECT_NE(found, std::string::npos) << key << " in " << lines;
+        if (found != std::string::npos)
+            std::sscanf(lines.c_str() + found + key.size(), "%lf,%lf,%lf", &v.x, &v.y, &v.z);
+        return v;
+    };
+    const glm::dvec3 point = numbers("\"p0\":["), lo = numbers("\"min\":["),
+                     hi = numbers("\"max\":[");
+    const double slack = 1e-4 * exploded.bounds().radius();
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(point, lo - slack)) &&
+                glm::all(glm::lessThanEqual(point, hi + slack)))
+        << lines;
+    const auto restFace = scene::faceReport(rest, part);
+    ASSERT_TRUE(restFace.has_value());
+    EXPECT_FALSE(glm::all(glm::greaterThanEqual(point, restFace->bbox.min - slack)) &&
+                 glm::all(glm::lessThanEqual(point, restFace->bbox.max + slack)))
+        << "the part did not move";
 }
 
 // `idview --headless --explode F` end to end: its ID image is the exploded scene's drawn at
@@ -359,74 +423,21 @@ TEST(GpuExplode, HeadlessFlagDrawsAndPicksTheExplodedScene) {
     const app::HeadlessResult cpu = app::renderHeadless(still, exploded, camera);
     EXPECT_EQ(cpu.validationMessages, 0u);
     ASSERT_EQ(flagIds.size(), cpu.ids.size());
-    EXPECT_EQ(countDifferences(flagIds, cpu.ids), 0u);
+    EXPECT_TRUE(sameIds(flagIds, cpu.ids, W));
     const app::HeadlessResult rest = app::renderHeadless(still, f.loaded.scene, camera);
-    EXPECT_GT(countDifferences(cpu.ids, rest.ids), cpu.ids.size() / 20) << "nothing moved";
+    EXPECT_GT(idDifference(cpu.ids, rest.ids, W).pixels, cpu.ids.size() / 20) << "nothing moved";
 
-    // Picks inside parts (the 3x3 pixels around show one part), against the ray cast.
     app::Options picking = still;
     picking.animation.explode = explode;
-    auto idAt = [&](uint32_t x, uint32_t y) { return cpu.ids[size_t(y) * W + x]; };
-    for (uint32_t y = 2; y + 2 < H; y += 3)
-        for (uint32_t x = 2; x + 2 < W; x += 3) {
-            bool inside = idAt(x, y) != gpu::BACKGROUND_ID;
-            for (uint32_t dy = 0; dy < 3; ++dy)
-                for (uint32_t dx = 0; dx < 3; ++dx)
-                    inside = inside && idAt(x + dx - 1, y + dy - 1) == idAt(x, y);
-            if (inside) picking.picks.push_back({x, y});
-        }
-    // A frame per pick: a spread of 24 of them is enough.
-    const size_t every = std::max<size_t>(1, picking.picks.size() / 24);
-    for (size_t i = 0; i * every < picking.picks.size(); ++i)
-        picking.picks[i] = picking.picks[i * every];
-    picking.picks.resize((picking.picks.size() + every - 1) / every);
+    picking.picks = pixelsInsideParts(cpu.ids);
     ASSERT_GT(picking.picks.size(), 10u);
     const app::HeadlessResult picked = app::renderHeadless(picking, f.loaded.scene, camera);
     EXPECT_EQ(picked.validationMessages, 0u);
-    const scene::RayCaster caster(exploded);
-    const glm::dmat4 viewProj = camera.viewProjection(double(W) / double(H));
     ASSERT_EQ(picked.picks.size(), picking.picks.size());
-    for (const auto& pick : picked.picks) {
-        const auto hit = caster.cast(
-            scene::pixelRay(viewProj, glm::vec2(float(W), float(H)), glm::vec2(pick.pixel) + 0.5f));
-        ASSERT_TRUE(hit.has_value()) << pick.pixel.x << "," << pick.pixel.y;
-        EXPECT_EQ(pick.part.value_or(gpu::BACKGROUND_ID), hit->uniquePartId)
-            << "pick at " << pick.pixel.x << "," << pick.pixel.y;
-    }
-
-    // What the CPU answers headless sees the parts where they are drawn: the face report of
-    // the part under a pixel boxes the point the measurement's depth gives there (a box of
-    // the part at rest would not: it moved).
-    const auto at = picking.picks.front(), other = picking.picks.back();
-    const std::string measure = std::to_string(at.x) + "," + std::to_string(at.y) + "," +
-                                std::to_string(other.x) + "," + std::to_string(other.y);
-    app::Options inspect = app::parseArgs(
-        {"--headless", "--size", std::to_string(W) + "x" + std::to_string(H), "--scene",
-         "procedural:preset=small,seed=1", "--explode", "0.7", "--frames", "1", "--measure",
-         measure, "--face-info", std::to_string(at.x) + "," + std::to_string(at.y)});
-    testing::internal::CaptureStdout();
-    const int code = app::runHeadless(inspect);
-    const std::string lines = testing::internal::GetCapturedStdout();
-    ASSERT_EQ(code, 0);
-    auto numbers = [&](const std::string& key) { // the three numbers after `key`
-        glm::dvec3 v(0.0);
-        const size_t found = lines.find(key);
-        EXPECT_NE(found, std::string::npos) << key << " in " << lines;
-        if (found != std::string::npos)
-            std::sscanf(lines.c_str() + found + key.size(), "%lf,%lf,%lf", &v.x, &v.y, &v.z);
-        return v;
-    };
-    const glm::dvec3 point = numbers("\"p0\":["), lo = numbers("\"min\":["),
-                     hi = numbers("\"max\":[");
-    const double slack = 1e-4 * exploded.bounds().radius();
-    EXPECT_TRUE(glm::all(glm::greaterThanEqual(point, lo - slack)) &&
-                glm::all(glm::lessThanEqual(point, hi + slack)))
-        << lines;
-    const auto restFace = scene::faceReport(f.loaded.scene, *picked.picks.front().part);
-    ASSERT_TRUE(restFace.has_value());
-    EXPECT_FALSE(glm::all(glm::greaterThanEqual(point, restFace->bbox.min - slack)) &&
-                 glm::all(glm::lessThanEqual(point, restFace->bbox.max + slack)))
-        << "the part did not move";
+    expectPicksMeetTheRayCast(picked, exploded, camera);
+    ASSERT_TRUE(picked.picks.front().part.has_value());
+    expectFaceInfoWhereThePartIsDrawn(picking.picks.front(), picking.picks.back(),
+                                      *picked.picks.front().part, f.loaded.scene, exploded);
 }
 
 // One renderer, frames in flight: exploded, then back to explode 0, which must restore the

@@ -17,6 +17,7 @@
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/camera_path.h"
@@ -29,6 +30,9 @@ namespace {
 constexpr uint32_t W = 96, H = 64;
 constexpr uint32_t NONE = gpu::BACKGROUND_ID;
 using render::ClearPath;
+using testing_support::colourDifference;
+using testing_support::sameColours;
+using testing_support::sameIds;
 // Each test renders every case on both paths, the pass path first.
 constexpr std::array<ClearPath, 2> kPaths = {ClearPath::Pass, ClearPath::Compute};
 // The background colour (render::backgroundColor) as the UNORM colour image holds it.
@@ -80,23 +84,6 @@ std::vector<app::HeadlessResult::Images> framesOf(const app::HeadlessResult& r) 
     return {{r.ids, r.color}};
 }
 
-// The largest difference of any channel, alpha included.
-int colourDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
-    if (a.size() != b.size()) return 256;
-    int most = 0;
-    for (size_t i = 0; i < a.size(); ++i) most = std::max(most, std::abs(int(a[i]) - int(b[i])));
-    return most;
-}
-
-std::string firstIdDifference(const std::vector<uint32_t>& a, const std::vector<uint32_t>& b) {
-    if (a.size() != b.size()) return "sizes differ";
-    for (size_t i = 0; i < a.size(); ++i)
-        if (a[i] != b[i])
-            return "first at pixel " + std::to_string(i % W) + "," + std::to_string(i / W) + ": " +
-                   std::to_string(a[i]) + " instead of " + std::to_string(b[i]);
-    return "";
-}
-
 // The compute path's frames against the pass path's: the same IDs byte for byte (where the
 // technique writes IDs: `ids`) and colour within 1 per channel. Returns the largest colour
 // difference seen.
@@ -107,13 +94,12 @@ int expectSameImages(const app::HeadlessResult& pass, const app::HeadlessResult&
     int most = 0;
     for (size_t f = 0; f < std::min(passFrames.size(), computeFrames.size()); ++f) {
         if (ids) {
-            EXPECT_TRUE(computeFrames[f].ids == passFrames[f].ids)
-                << name << ", frame " << f << ": "
-                << firstIdDifference(computeFrames[f].ids, passFrames[f].ids);
+            EXPECT_TRUE(sameIds(computeFrames[f].ids, passFrames[f].ids, W))
+                << name << ", frame " << f;
         }
-        const int difference = colourDifference(computeFrames[f].color, passFrames[f].color);
-        EXPECT_LE(difference, 1) << name << ", frame " << f;
-        most = std::max(most, difference);
+        const auto colour = colourDifference(computeFrames[f].color, passFrames[f].color, W, 1);
+        EXPECT_TRUE(colour.same()) << name << ", frame " << f << ": " << colour.message;
+        most = std::max(most, colour.sizesDiffer ? 256 : colour.largest);
     }
     return most;
 }
@@ -185,12 +171,12 @@ TEST_P(EveryTechnique, BothPathsDrawTheSameImagesAndEachAgreesWithItself) {
                               ptrdiff_t(frames[f].ids.size()))
                         << name << ", frame " << f << ": a floor's ID image is all background";
                 } else {
-                    EXPECT_TRUE(frames[f].ids == reference[f].ids)
-                        << name << ", frame " << f << ": "
-                        << firstIdDifference(frames[f].ids, reference[f].ids);
-                    EXPECT_TRUE(frames[f].ids == off[f].ids) << name << ", frame " << f;
+                    EXPECT_TRUE(sameIds(frames[f].ids, reference[f].ids, W))
+                        << name << ", frame " << f;
+                    EXPECT_TRUE(sameIds(frames[f].ids, off[f].ids, W)) << name << ", frame " << f;
                 }
-                EXPECT_TRUE(frames[f].color == off[f].color) << name << ", frame " << f;
+                EXPECT_TRUE(sameColours(frames[f].color, off[f].color, W))
+                    << name << ", frame " << f;
             }
         }
     }
@@ -265,7 +251,8 @@ TEST(ClearPaths, LevelsSectionsHiddenPartsAndEdgesDrawTheSameImages) {
             EXPECT_GT(coarser, 0u) << name << ": no coarser level drawn";
         }
     }
-    EXPECT_FALSE(results[0].back().ids == results[0].front().ids) << "the plane cut nothing";
+    EXPECT_FALSE(sameIds(results[0].back().ids, results[0].front().ids, W))
+        << "the plane cut nothing";
     reportColourDifference("levels, section, hidden, edges", most);
 }
 

@@ -10,6 +10,7 @@
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/blink.h"
 #include "scene/camera.h"
 #include "test_support.h"
@@ -18,6 +19,8 @@ namespace {
 
 constexpr uint32_t W = 200, H = 130;
 constexpr uint32_t NONE = gpu::BACKGROUND_ID;
+using testing_support::sameColours;
+using testing_support::sameIds;
 
 struct Shot {
     std::vector<uint8_t> color;
@@ -34,6 +37,135 @@ bool composedTiles(const app::Offscreen& rig) {
            tiles->count.x * tiles->count.y < all.x * all.y;
 }
 
+// One renderer drawing frames of one scene as a viewer at rest does, each a scene pass or a
+// composition alone, read back and waited for.
+struct Drawing {
+    Drawing(vk::Instance& instance, const app::Options& o, const scene::Scene& scene,
+            const scene::Camera& camera, bool edges)
+        : rig(instance, o), readback(rig.device, rig.extent),
+          params(app::cameraFrame(camera, rig.extent)) {
+        render::RenderSettings settings = o.render;
+        settings.edges.on = edges;
+        rig.renderer.setScene(scene, settings);
+    }
+
+    Shot draw(bool scenePass) {
+        render::FrameSlot& slot = rig.slots.begin(frame++);
+        params.hoveredTiles = rig.slots.latestHoveredTiles();
+        if (scenePass)
+            rig.renderer.record(slot, rig.targets, params);
+        else
+            rig.renderer.recordComposition(slot, rig.targets, params);
+        readback.record(slot.cmd, *rig.targets);
+        rig.slots.submit(slot);
+        rig.slots.finish();
+        Shot shot{readback.colorBytes(), readback.idValues(), std::nullopt, std::nullopt};
+        if (scenePass) shot.pick = rig.slots.latestPick();
+        shot.hover = rig.slots.latestHover();
+        return shot;
+    }
+
+    app::Offscreen rig;
+    const app::Readback readback;
+    render::FrameParams params;
+    uint64_t frame = 0;
+};
+
+// Two pixels inside two different parts of `ids`, each with the pixels around it of the same
+// part, so that edges and outlines leave some of the part to blink.
+std::vector<glm::uvec2> pixelsInsideTwoParts(const std::vector<uint32_t>& ids) {
+    auto inside = [&](uint32_t x, uint32_t y) {
+        const uint32_t id = ids[y * W + x];
+        for (uint32_t v = y - 3; v <= y + 3; ++v)
+            for (uint32_t u = x - 3; u <= x + 3; ++u)
+                if (ids[v * W + u] != id) return false;
+        return id != NONE;
+    };
+    std::vector<glm::uvec2> onParts;
+    for (uint32_t y = H / 4; y < H - 3 && onParts.size() < 2; y += 2)
+        for (uint32_t x = W / 4; x < W - 3 && onParts.size() < 2; x += 2)
+            if (inside(x, y) &&
+                (onParts.empty() || ids[onParts[0].y * W + onParts[0].x] != ids[y * W + x]))
+                onParts.push_back({x, y});
+    return onParts;
+}
+
+// What the steps of one run share: the first scene pass, the two parts and the pixels on
+// them, then the pictures the steps compare.
+struct Pictures {
+    Shot first;
+    std::vector<glm::uvec2> onParts;
+    uint32_t partA = NONE, partB = NONE;
+    Shot composed; // B hovered at the weak blink, A selected, composed alone
+    Shot stepped;  // the blink's next (strong) step over the tiles
+};
+
+// A scene pass hovering A, strong blink, nothing selected; then, composed alone: B hovered,
+// the weak blink, A selected. The same state through a scene pass draws the same picture,
+// byte for byte, and finds the same part and depth under the hovered pixel.
+void composeAloneAsAScenePass(Drawing& d, const scene::Scene& scene, Pictures& run) {
+    d.params.pickPixel = run.onParts[0];
+    d.params.time = 0.0f;
+    const Shot hoveredA = d.draw(true);
+    ASSERT_TRUE(hoveredA.pick && hoveredA.hover);
+    EXPECT_EQ(hoveredA.pick->part, run.partA);
+    EXPECT_EQ(hoveredA.hover->part, run.partA); // the ID image agrees with the atomicMin pick
+    EXPECT_NEAR(hoveredA.hover->depth, hoveredA.pick->depth, 1e-5);
+    EXPECT_FALSE(sameColours(hoveredA.color, run.first.color, W)) << "the hovered part shows";
+
+    scene::PartSet selected(scene.uniquePartCount());
+    selected.insert(run.partA);
+    d.rig.renderer.setSelection(selected);
+    d.params.pickPixel = run.onParts[1];
+    d.params.time = float(0.75 / render::blinkHz); // the weak half of a period
+    run.composed = d.draw(false);
+    const Shot& composed = run.composed;
+    ASSERT_TRUE(composed.hover);
+    EXPECT_EQ(composed.hover->part, run.partB);
+    EXPECT_EQ(composed.hover->frame, d.frame - 1);
+    EXPECT_TRUE(sameIds(composed.ids, hoveredA.ids, W))
+        << "a composition leaves the IDs as they are";
+    EXPECT_FALSE(sameColours(composed.color, hoveredA.color, W));
+
+    const Shot drawn = d.draw(true);
+    EXPECT_TRUE(sameIds(drawn.ids, composed.ids, W));
+    EXPECT_TRUE(sameColours(drawn.color, composed.color, W))
+        << "composed alone differs from a scene pass";
+    ASSERT_TRUE(drawn.pick && drawn.hover);
+    EXPECT_EQ(drawn.pick->part, run.partB);
+    EXPECT_EQ(drawn.hover->part, run.partB);
+    EXPECT_EQ(drawn.hover->depth, composed.hover->depth);
+}
+
+// The next step of the blink, nothing else changed: only the hovered part's tiles are
+// composed again, and the picture is the one a scene pass draws; after that scene pass
+// (composed whole) the steps are over the tiles again, and a new selection is composed whole.
+void stepTheBlinkOverTheTiles(Drawing& d, const scene::Scene& scene, Pictures& run) {
+    d.params.time = float(1.0 / render::blinkHz); // the strong half of the next period
+    run.stepped = d.draw(false);
+    const Shot& stepped = run.stepped;
+    EXPECT_TRUE(composedTiles(d.rig));
+    EXPECT_FALSE(sameColours(stepped.color, run.composed.color, W)) << "the blink stepped";
+    ASSERT_TRUE(stepped.hover);
+    EXPECT_EQ(stepped.hover->part, run.partB);
+    EXPECT_EQ(stepped.hover->frame, d.frame - 1) << "the hovered pixel is read in every step";
+    const Shot steppedDrawn = d.draw(true);
+    EXPECT_FALSE(d.rig.renderer.lastComposedTiles());
+    EXPECT_TRUE(sameColours(steppedDrawn.color, stepped.color, W))
+        << "the hovered part's tiles alone differ from a scene pass";
+    d.params.time = float(1.75 / render::blinkHz);
+    const Shot weakAgain = d.draw(false);
+    EXPECT_TRUE(composedTiles(d.rig));
+    EXPECT_TRUE(sameColours(weakAgain.color, run.composed.color, W));
+    d.params.time = float(2.0 / render::blinkHz);
+    const Shot strongAgain = d.draw(false);
+    EXPECT_TRUE(composedTiles(d.rig));
+    EXPECT_TRUE(sameColours(strongAgain.color, stepped.color, W));
+    d.rig.renderer.setSelection(scene::PartSet(scene.uniquePartCount()));
+    d.draw(false);
+    EXPECT_FALSE(d.rig.renderer.lastComposedTiles());
+}
+
 class Composition : public ::testing::TestWithParam<std::tuple<uint32_t, bool>> {};
 
 TEST_P(Composition, AloneDrawsWhatAScenePassWithTheSameStateDraws) {
@@ -48,114 +180,22 @@ TEST_P(Composition, AloneDrawsWhatAScenePassWithTheSameStateDraws) {
     o.render.pipeline.msaa = msaa;
     vk::Instance instance({true, {}, false});
     {
-        app::Offscreen rig(instance, o);
-        render::RenderSettings settings = o.render;
-        settings.edges.on = edges;
-        rig.renderer.setScene(scene, settings);
-        const app::Readback readback(rig.device, rig.extent);
-        uint64_t frame = 0;
-        render::FrameParams params = app::cameraFrame(camera, rig.extent);
-        auto draw = [&](bool scenePass) {
-            render::FrameSlot& slot = rig.slots.begin(frame++);
-            params.hoveredTiles = rig.slots.latestHoveredTiles();
-            if (scenePass)
-                rig.renderer.record(slot, rig.targets, params);
-            else
-                rig.renderer.recordComposition(slot, rig.targets, params);
-            readback.record(slot.cmd, *rig.targets);
-            rig.slots.submit(slot);
-            rig.slots.finish();
-            Shot shot{readback.colorBytes(), readback.idValues(), std::nullopt, std::nullopt};
-            if (scenePass) shot.pick = rig.slots.latestPick();
-            shot.hover = rig.slots.latestHover();
-            return shot;
-        };
-        // Two pixels inside two different parts, found in the first scene pass's IDs: with
-        // the pixels around them of the same part, so that edges and outlines leave some of
-        // the part to blink.
-        const Shot first = draw(true);
-        auto inside = [&](uint32_t x, uint32_t y) {
-            const uint32_t id = first.ids[y * W + x];
-            for (uint32_t v = y - 3; v <= y + 3; ++v)
-                for (uint32_t u = x - 3; u <= x + 3; ++u)
-                    if (first.ids[v * W + u] != id) return false;
-            return id != NONE;
-        };
-        std::vector<glm::uvec2> onParts;
-        for (uint32_t y = H / 4; y < H - 3 && onParts.size() < 2; y += 2)
-            for (uint32_t x = W / 4; x < W - 3 && onParts.size() < 2; x += 2)
-                if (inside(x, y) &&
-                    (onParts.empty() ||
-                     first.ids[onParts[0].y * W + onParts[0].x] != first.ids[y * W + x]))
-                    onParts.push_back({x, y});
-        ASSERT_EQ(onParts.size(), 2u);
-        const uint32_t partA = first.ids[onParts[0].y * W + onParts[0].x];
-        const uint32_t partB = first.ids[onParts[1].y * W + onParts[1].x];
-
-        // A scene pass hovering A, strong blink, nothing selected; then, composed alone: B
-        // hovered, the weak blink, A selected.
-        params.pickPixel = onParts[0];
-        params.time = 0.0f;
-        const Shot hoveredA = draw(true);
-        ASSERT_TRUE(hoveredA.pick && hoveredA.hover);
-        EXPECT_EQ(hoveredA.pick->part, partA);
-        EXPECT_EQ(hoveredA.hover->part, partA); // the ID image agrees with the atomicMin pick
-        EXPECT_NEAR(hoveredA.hover->depth, hoveredA.pick->depth, 1e-5);
-        EXPECT_NE(hoveredA.color, first.color) << "the hovered part shows";
-
-        scene::PartSet selected(scene.uniquePartCount());
-        selected.insert(partA);
-        rig.renderer.setSelection(selected);
-        params.pickPixel = onParts[1];
-        params.time = float(0.75 / render::blinkHz); // the weak half of a period
-        const Shot composed = draw(false);
-        ASSERT_TRUE(composed.hover);
-        EXPECT_EQ(composed.hover->part, partB);
-        EXPECT_EQ(composed.hover->frame, frame - 1);
-        EXPECT_EQ(composed.ids, hoveredA.ids) << "a composition leaves the IDs as they are";
-        EXPECT_NE(composed.color, hoveredA.color);
-
-        // The same state through a scene pass: the same picture, byte for byte, and the
-        // same part and depth under the hovered pixel.
-        const Shot drawn = draw(true);
-        EXPECT_EQ(drawn.ids, composed.ids);
-        EXPECT_TRUE(drawn.color == composed.color) << "composed alone differs from a scene pass";
-        ASSERT_TRUE(drawn.pick && drawn.hover);
-        EXPECT_EQ(drawn.pick->part, partB);
-        EXPECT_EQ(drawn.hover->part, partB);
-        EXPECT_EQ(drawn.hover->depth, composed.hover->depth);
-
-        // The next step of the blink, nothing else changed: only the hovered part's tiles
-        // are composed again, and the picture is the one a scene pass draws.
-        params.time = float(1.0 / render::blinkHz); // the strong half of the next period
-        const Shot stepped = draw(false);
-        EXPECT_TRUE(composedTiles(rig));
-        EXPECT_NE(stepped.color, composed.color) << "the blink stepped";
-        ASSERT_TRUE(stepped.hover);
-        EXPECT_EQ(stepped.hover->part, partB);
-        EXPECT_EQ(stepped.hover->frame, frame - 1) << "the hovered pixel is read in every step";
-        const Shot steppedDrawn = draw(true);
-        EXPECT_FALSE(rig.renderer.lastComposedTiles());
-        EXPECT_TRUE(steppedDrawn.color == stepped.color)
-            << "the hovered part's tiles alone differ from a scene pass";
-        // The scene pass composed its images whole; the steps after it are over the tiles.
-        params.time = float(1.75 / render::blinkHz);
-        const Shot weakAgain = draw(false);
-        EXPECT_TRUE(composedTiles(rig));
-        EXPECT_TRUE(weakAgain.color == composed.color);
-        params.time = float(2.0 / render::blinkHz);
-        const Shot strongAgain = draw(false);
-        EXPECT_TRUE(composedTiles(rig));
-        EXPECT_TRUE(strongAgain.color == stepped.color);
-        // A new selection is composed whole.
-        rig.renderer.setSelection(scene::PartSet(scene.uniquePartCount()));
-        draw(false);
-        EXPECT_FALSE(rig.renderer.lastComposedTiles());
+        Drawing d(instance, o, scene, camera, edges);
+        Pictures run;
+        run.first = d.draw(true);
+        run.onParts = pixelsInsideTwoParts(run.first.ids);
+        ASSERT_EQ(run.onParts.size(), 2u);
+        run.partA = run.first.ids[run.onParts[0].y * W + run.onParts[0].x];
+        run.partB = run.first.ids[run.onParts[1].y * W + run.onParts[1].x];
+        composeAloneAsAScenePass(d, scene, run);
+        if (HasFatalFailure()) return;
+        stepTheBlinkOverTheTiles(d, scene, run);
+        if (HasFatalFailure()) return;
 
         // Over background the composition hovers nothing.
-        params.pickPixel = glm::uvec2(0, 0);
-        ASSERT_EQ(first.ids[0], NONE);
-        const Shot background = draw(false);
+        d.params.pickPixel = glm::uvec2(0, 0);
+        ASSERT_EQ(run.first.ids[0], NONE);
+        const Shot background = d.draw(false);
         ASSERT_TRUE(background.hover);
         EXPECT_FALSE(background.hover->part.has_value());
     }

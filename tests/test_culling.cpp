@@ -11,6 +11,7 @@
 
 #include "app/headless.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "shader_copy.h"
@@ -61,19 +62,6 @@ const char* pipelinesName(Pipelines p) {
 void PrintTo(const PathCase& c, std::ostream* os) {
     *os << c.scene << " msaa " << c.msaa << " " << pipelinesName(c.pipelines)
         << (c.still ? " still" : "") << (c.ortho ? " ortho" : "") << (c.section ? " section" : "");
-}
-
-// Where two images first differ, for the failure message.
-template <typename T>
-std::string firstDifference(const std::vector<T>& a, const std::vector<T>& b, uint32_t channels) {
-    if (a.size() != b.size()) return "sizes differ";
-    for (size_t i = 0; i < a.size(); ++i)
-        if (a[i] != b[i]) {
-            const size_t pixel = i / channels;
-            return "first at pixel " + std::to_string(pixel % W) + "," + std::to_string(pixel / W) +
-                   ": " + std::to_string(a[i]) + " instead of " + std::to_string(b[i]);
-        }
-    return "";
 }
 
 class CullingExact : public ::testing::TestWithParam<PathCase> {};
@@ -151,12 +139,10 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
         ASSERT_EQ(r.frames.size(), kFrames) << name;
         ASSERT_EQ(ref.frames.size(), kFrames) << name;
         for (uint32_t f = 0; f < kFrames; ++f) {
-            EXPECT_TRUE(r.frames[f].ids == ref.frames[f].ids)
-                << name << ", frame " << f << ": ID image "
-                << firstDifference(r.frames[f].ids, ref.frames[f].ids, 1);
-            EXPECT_TRUE(r.frames[f].color == ref.frames[f].color)
-                << name << ", frame " << f << ": colour image "
-                << firstDifference(r.frames[f].color, ref.frames[f].color, 4);
+            EXPECT_TRUE(testing_support::sameIds(r.frames[f].ids, ref.frames[f].ids, W))
+                << name << ", frame " << f;
+            EXPECT_TRUE(testing_support::sameColours(r.frames[f].color, ref.frames[f].color, W))
+                << name << ", frame " << f;
         }
         // The path goes inside the assembly, so every culling mode leaves something out
         // (where there is more than the one object the CAD file is, or smaller draws, or

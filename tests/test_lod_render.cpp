@@ -13,6 +13,7 @@
 
 #include "app/headless.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/lod.h"
@@ -21,6 +22,8 @@
 namespace {
 
 constexpr uint32_t NONE = gpu::BACKGROUND_ID;
+using testing_support::sameColours;
+using testing_support::sameIds;
 // An IGES file from Debian's occt-misc: one object of 213 faces, with Open CASCADE's levels.
 const char* const kCadBearing = "/usr/share/opencascade/data/iges/bearing.iges";
 
@@ -74,9 +77,9 @@ TEST(LodRender, ErrorZeroDrawsTheImagesOfNoLevels) {
     for (size_t c = 0; c < configs.size(); ++c) {
         ASSERT_EQ(after[c].frames.size(), frames) << nameOf(configs[c]);
         for (uint32_t f = 0; f < frames; ++f) {
-            EXPECT_TRUE(after[c].frames[f].ids == before[c].frames[f].ids)
+            EXPECT_TRUE(sameIds(after[c].frames[f].ids, before[c].frames[f].ids, W))
                 << nameOf(configs[c]) << ", frame " << f;
-            EXPECT_TRUE(after[c].frames[f].color == before[c].frames[f].color)
+            EXPECT_TRUE(sameColours(after[c].frames[f].color, before[c].frames[f].color, W))
                 << nameOf(configs[c]) << ", frame " << f;
         }
     }
@@ -120,9 +123,10 @@ TEST(LodRender, CullingDrawsTheImagesOfCullingOffWithLevelsChosen) {
         const std::string name = nameOf(configs[c]);
         ASSERT_EQ(results[c].frames.size(), frames) << name;
         for (uint32_t f = 0; f < frames; ++f) {
-            EXPECT_TRUE(results[c].frames[f].ids == results[reference].frames[f].ids)
+            EXPECT_TRUE(sameIds(results[c].frames[f].ids, results[reference].frames[f].ids, W))
                 << name << ", frame " << f;
-            EXPECT_TRUE(results[c].frames[f].color == results[reference].frames[f].color)
+            EXPECT_TRUE(
+                sameColours(results[c].frames[f].color, results[reference].frames[f].color, W))
                 << name << ", frame " << f;
         }
         const bool mesh = configs[c].pipeline.technique->usesMeshShader();
@@ -165,8 +169,8 @@ TEST(LodRender, AHugeErrorDrawsTheCoarsestLevel) {
     EXPECT_EQ(engine.front().validationMessages, 0u);
     for (size_t c = 0; c < configs.size(); ++c) {
         const std::string name = nameOf(configs[c]);
-        EXPECT_TRUE(gpu[c].ids == engine[c].ids) << name;
-        EXPECT_TRUE(gpu[c].color == engine[c].color) << name;
+        EXPECT_TRUE(sameIds(gpu[c].ids, engine[c].ids, W)) << name;
+        EXPECT_TRUE(sameColours(gpu[c].color, engine[c].color, W)) << name;
         ASSERT_FALSE(gpu[c].cullStats.empty()) << name;
         const render::CullCounts counts = render::countsOf(
             gpu[c].cullStats.back(), configs[c].pipeline.technique->usesMeshShader());
@@ -323,9 +327,9 @@ TEST(LodRender, ChangingTheErrorInAStillViewChoosesAgain) {
         const app::HeadlessResult& before = switched[2 * i];
         const app::HeadlessResult& after = switched[2 * i + 1];
         const std::string name = nameOf(fresh[i]);
-        EXPECT_TRUE(after.ids == alone.front().ids) << name;
-        EXPECT_TRUE(after.color == alone.front().color) << name;
-        EXPECT_FALSE(after.ids == before.ids) << name;
+        EXPECT_TRUE(sameIds(after.ids, alone.front().ids, W)) << name;
+        EXPECT_TRUE(sameColours(after.color, alone.front().color, W)) << name;
+        EXPECT_FALSE(sameIds(after.ids, before.ids, W)) << name;
     }
 }
 

@@ -13,6 +13,7 @@
 
 #include "app/headless.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "shared_vertex_gltf.h"
@@ -116,15 +117,7 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
     app::Options o = renderOptions(*c.technique, *c.mode);
     app::HeadlessResult r = app::renderHeadless(o, ref.loaded.scene, ref.camera);
     EXPECT_EQ(r.validationMessages, 0u);
-    ASSERT_EQ(r.ids.size(), ref.image.ids.size());
-    size_t differing = 0, firstDifference = r.ids.size();
-    for (size_t i = 0; i < r.ids.size(); ++i)
-        if (r.ids[i] != ref.image.ids[i]) {
-            if (differing++ == 0) firstDifference = i;
-        }
-    EXPECT_EQ(differing, 0u) << "first at pixel " << firstDifference % o.width << ","
-                             << firstDifference / o.width << ": " << r.ids[firstDifference]
-                             << " instead of " << ref.image.ids[firstDifference];
+    EXPECT_TRUE(testing_support::sameIds(r.ids, ref.image.ids, o.width));
     EXPECT_EQ(r.stats.draws,
               expectedDraws(*c.technique, ref.loaded.scene, o.render.pipeline.searchBatch));
 }
@@ -157,10 +150,11 @@ TEST(Levels, AForcedLevelIsWhatIsDrawn) {
     ASSERT_GE(levels.size(), 3u);
     EXPECT_EQ(coarse.image.stats.triangles, levels[2].drawnTriangles);
     EXPECT_LT(coarse.image.stats.triangles, full.image.stats.triangles * 2 / 3);
-    size_t differing = 0;
+    const size_t differing =
+        testing_support::idDifference(coarse.image.ids, full.image.ids, referenceOptions().width)
+            .pixels;
     std::map<uint32_t, size_t> fullPixels, coarsePixels;
     for (size_t i = 0; i < full.image.ids.size(); ++i) {
-        differing += full.image.ids[i] != coarse.image.ids[i];
         ++fullPixels[full.image.ids[i]];
         ++coarsePixels[coarse.image.ids[i]];
     }

@@ -9,6 +9,7 @@
 
 #include "app/headless.h"
 #include "app/scene_source.h"
+#include "image_compare.h"
 #include "render/technique.h"
 #include "render/xray.h"
 #include "test_support.h"
@@ -23,15 +24,9 @@ std::string nameOf(const render::RenderSettings& s) {
            std::to_string(s.pipeline.msaa);
 }
 
-TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
-    app::SceneSettings source;
-    source.builtin = "procedural:preset=small,seed=1";
-    const app::LoadedScene loaded = app::loadScene(source);
-    const scene::Scene& scene = loaded.scene;
-    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H), {});
-    // Every part-ID technique in push mode (whose culling is the CPU's), the default one in
-    // every mode (the GPU's lists) and at 4x MSAA: hiding is each one's own, X-ray's pass is
-    // one for all.
+// Every part-ID technique in push mode (whose culling is the CPU's), the default one in every
+// mode (the GPU's lists) and at 4x MSAA: hiding is each one's own, X-ray's pass is one for all.
+std::vector<render::RenderSettings> xrayConfigs() {
     std::vector<render::RenderSettings> configs;
     for (const render::Technique* t : render::partIdTechniques())
         configs.push_back(testing_support::settingsFor(*t, render::defaultDrawMode()));
@@ -40,6 +35,98 @@ TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
             configs.push_back(testing_support::settingsFor(render::defaultTechnique(), m));
     configs.push_back(configs.front());
     configs.back().pipeline.msaa = 4;
+    return configs;
+}
+
+// Up to three pixels where a part outside `selected` covers (in `plain`) a selected part that
+// X-ray shows (in `xrayed`): a pick there must go through the translucent part.
+std::vector<app::Options::Pixel> pixelsThroughOthers(const std::vector<uint32_t>& plain,
+                                                     const std::vector<uint32_t>& xrayed,
+                                                     const scene::PartSet& selected) {
+    std::vector<app::Options::Pixel> through;
+    for (uint32_t y = 0; y < H && through.size() < 3; y += 3)
+        for (uint32_t x = 0; x < W && through.size() < 3; x += 5) {
+            const size_t i = size_t(y) * W + x;
+            if (plain[i] != NONE && !selected.contains(plain[i]) && selected.contains(xrayed[i]))
+                through.push_back({x, y});
+        }
+    return through;
+}
+
+// X-ray's ID image `r` holds nothing but the selection `own`, exactly where isolating it
+// (`iso`) shows it; the rest shows: where isolating leaves background and the parts outside
+// the selection lie (in `plain`), X-ray's picture has their colour; where none lies, the
+// background's.
+void expectSelectionAloneAndTheRestTranslucent(const app::HeadlessResult& r,
+                                               const app::HeadlessResult& iso,
+                                               const app::HeadlessResult& plain,
+                                               const scene::PartSet& own, const std::string& name) {
+    EXPECT_TRUE(testing_support::sameIds(r.ids, iso.ids, W)) << name;
+    size_t shown = 0, others = 0;
+    for (uint32_t id : r.ids) {
+        shown += own.contains(id);
+        others += id != NONE && !own.contains(id);
+    }
+    EXPECT_GT(shown, 100u) << name;
+    EXPECT_EQ(others, 0u) << name;
+    size_t behindOthers = 0, tinted = 0, strays = 0;
+    for (size_t i = 0; i < r.ids.size(); ++i) {
+        if (r.ids[i] != NONE) continue;
+        const bool differs =
+            !std::equal(r.color.begin() + 4 * long(i), r.color.begin() + 4 * long(i) + 3,
+                        iso.color.begin() + 4 * long(i));
+        if (plain.ids[i] != NONE) {
+            ++behindOthers;
+            tinted += differs;
+        } else {
+            strays += differs;
+        }
+    }
+    EXPECT_GT(behindOthers, 100u) << name;
+    // The plain image is push mode's at 1x: other paths and MSAA's edges differ a little.
+    EXPECT_GT(tinted, behindOthers * 4 / 5) << name;
+    EXPECT_LT(strays, r.ids.size() / 100) << name;
+}
+
+// Picks go through the translucent parts to the selected part behind (at 1x, the one the ID
+// image shows there).
+void expectPicksReachTheSelection(const app::HeadlessResult& r, size_t picks,
+                                  const scene::PartSet& own, uint32_t msaa,
+                                  const std::string& name) {
+    ASSERT_EQ(r.picks.size(), picks) << name;
+    for (const render::PickReading& pick : r.picks) {
+        ASSERT_TRUE(pick.part.has_value()) << name;
+        EXPECT_TRUE(own.contains(*pick.part)) << name;
+        if (msaa == 1) {
+            EXPECT_EQ(*pick.part, r.ids[size_t(pick.pixel.y) * W + pick.pixel.x]) << name;
+        }
+    }
+}
+
+// A click's selection (--select) at `at` under X-ray: the part `plain` shows there, drawn as
+// isolating it draws it.
+void expectAClickSelectsAsIsolated(const scene::Scene& scene, const scene::Camera& camera,
+                                   const app::HeadlessResult& plain, app::Options::Pixel at) {
+    app::Options click = testing_support::headlessOptions(W, H);
+    click.selects = {at};
+    click.xray = true;
+    const app::HeadlessResult one = app::renderHeadless(click, scene, camera);
+    ASSERT_TRUE(one.selected.has_value());
+    EXPECT_EQ(*one.selected, plain.ids[size_t(at.y) * W + at.x]);
+    app::Options alone = testing_support::headlessOptions(W, H);
+    alone.isolate = {*one.selected};
+    EXPECT_TRUE(
+        testing_support::sameIds(one.ids, app::renderHeadless(alone, scene, camera).ids, W));
+    EXPECT_GT(std::count(one.ids.begin(), one.ids.end(), *one.selected), 0);
+}
+
+TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
+    app::SceneSettings source;
+    source.builtin = "procedural:preset=small,seed=1";
+    const app::LoadedScene loaded = app::loadScene(source);
+    const scene::Scene& scene = loaded.scene;
+    const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H), {});
+    const std::vector<render::RenderSettings> configs = xrayConfigs();
 
     // The parts seen in the middle of the view become the selection, under X-ray.
     app::Options xray = testing_support::headlessOptions(W, H);
@@ -47,20 +134,12 @@ TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
     xray.xray = true;
     const app::HeadlessResult plain =
         app::renderHeadless(testing_support::headlessOptions(W, H), scene, camera);
-    // A pixel where a part outside the selection covered a selected part: the pick there
-    // must go through the translucent part. Found on the image X-ray draws without picks.
+    // The pixels to pick through, found on the image X-ray draws without picks.
     const auto first = app::renderHeadlessSequence(xray, scene, camera, {configs.front()});
     ASSERT_TRUE(first.front().rectParts.has_value());
     const scene::PartSet selected = *first.front().rectParts;
     ASSERT_GE(selected.size(), 3u);
-    std::vector<app::Options::Pixel> through;
-    for (uint32_t y = 0; y < H && through.size() < 3; y += 3)
-        for (uint32_t x = 0; x < W && through.size() < 3; x += 5) {
-            const size_t i = size_t(y) * W + x;
-            if (plain.ids[i] != NONE && !selected.contains(plain.ids[i]) &&
-                selected.contains(first.front().ids[i]))
-                through.push_back({x, y});
-        }
+    const auto through = pixelsThroughOthers(plain.ids, first.front().ids, selected);
     ASSERT_FALSE(through.empty()) << "no selected part lies behind another in this view";
     xray.picks = through;
     const auto xrayed = app::renderHeadlessSequence(xray, scene, camera, configs);
@@ -85,55 +164,12 @@ TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
             EXPECT_EQ(alone.validationMessages, 0u);
         }
         const app::HeadlessResult& iso = own == selected ? isolated[c] : alone;
-        // Nothing but the selection, exactly where isolating it shows it.
-        EXPECT_EQ(r.ids, iso.ids) << name;
-        size_t shown = 0, others = 0;
-        for (uint32_t id : r.ids) {
-            shown += own.contains(id);
-            others += id != NONE && !own.contains(id);
-        }
-        EXPECT_GT(shown, 100u) << name;
-        EXPECT_EQ(others, 0u) << name;
-        // The rest shows: where isolating leaves background and the parts outside the
-        // selection lie, X-ray's picture has their colour; where none lies, the background.
-        size_t behindOthers = 0, tinted = 0, strays = 0;
-        for (size_t i = 0; i < r.ids.size(); ++i) {
-            if (r.ids[i] != NONE) continue;
-            const bool differs =
-                !std::equal(r.color.begin() + 4 * long(i), r.color.begin() + 4 * long(i) + 3,
-                            iso.color.begin() + 4 * long(i));
-            if (plain.ids[i] != NONE) {
-                ++behindOthers;
-                tinted += differs;
-            } else {
-                strays += differs;
-            }
-        }
-        EXPECT_GT(behindOthers, 100u) << name;
-        // The plain image is push mode's at 1x: other paths and MSAA's edges differ a little.
-        EXPECT_GT(tinted, behindOthers * 4 / 5) << name;
-        EXPECT_LT(strays, r.ids.size() / 100) << name;
-        // Picks go through the translucent parts to the selected part behind.
-        ASSERT_EQ(r.picks.size(), through.size()) << name;
-        for (const render::PickReading& pick : r.picks) {
-            ASSERT_TRUE(pick.part.has_value()) << name;
-            EXPECT_TRUE(own.contains(*pick.part)) << name;
-            if (configs[c].pipeline.msaa == 1) {
-                EXPECT_EQ(*pick.part, r.ids[size_t(pick.pixel.y) * W + pick.pixel.x]) << name;
-            }
-        }
+        expectSelectionAloneAndTheRestTranslucent(r, iso, plain, own, name);
+        expectPicksReachTheSelection(r, through.size(), own, configs[c].pipeline.msaa, name);
+        if (HasFatalFailure()) return;
     }
-    // A click's selection (--select): the one part, as isolating it draws it.
-    app::Options click = testing_support::headlessOptions(W, H);
-    click.selects = {through.front()};
-    click.xray = true;
-    const app::HeadlessResult one = app::renderHeadless(click, scene, camera);
-    ASSERT_TRUE(one.selected.has_value());
-    EXPECT_EQ(*one.selected, plain.ids[size_t(through.front().y) * W + through.front().x]);
-    app::Options alone = testing_support::headlessOptions(W, H);
-    alone.isolate = {*one.selected};
-    EXPECT_EQ(one.ids, app::renderHeadless(alone, scene, camera).ids);
-    EXPECT_GT(std::count(one.ids.begin(), one.ids.end(), *one.selected), 0);
+    expectAClickSelectsAsIsolated(scene, camera, plain, through.front());
+    if (HasFatalFailure()) return;
     // The plain view shows other parts where X-ray shows the selection's.
     size_t covered = 0;
     for (size_t i = 0; i < plain.ids.size(); ++i)

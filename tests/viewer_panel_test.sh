@@ -32,19 +32,28 @@ row() {
         awk -v n="$3" '{ y = $NF; $NF = ""; sub(/ $/, ""); if ($0 == n) print y }'
 }
 
-# Where the headers lie with the sections closed, and with Section open.
+# Where the headers lie with the sections closed, and with Section open. Each session first
+# waits for the pipelines of its first frames: the panel shows a line while one is built,
+# which moves the rows below it.
 t=1
 {
     at frames 3
-    echo "2 click 100 SECTION"
-    t=2.1
+    at pipeline ready
+    at frames 3
+    at click 100 SECTION
     at frames 5
     at quit
 } >"$work/learn.txt"
 # The first run finds Section's header; the second clicks it.
-{ echo "1 frames 3"; echo "1.1 quit"; } >"$work/probe.txt"
+t=1
+{
+    at frames 3
+    at pipeline ready
+    at frames 3
+    at quit
+} >"$work/probe.txt"
 tall probe
-section=$(row "$work/probe.out" 1 Section)
+section=$(row "$work/probe.out" -1 Section)
 [[ -n $section ]] || fail "no Section row in: $(grep -m1 'panel: rows' "$work/probe.out")"
 sed "s/SECTION/$((section + 8))/" -i "$work/learn.txt"
 tall learn
@@ -54,12 +63,16 @@ timing=$(row "$work/learn.out" -1 Timing)
 
 # The row under the pointer: Section open, the pointer on Timing's header; a section plane's
 # rows come above it, then the measure section (M) comes and goes at the top.
+# Frames between the click and the move: on a slow machine the move would otherwise come
+# before the click has reached the panel.
 t=1
 {
     at frames 3
-    echo "2 click 100 $((section + 8))"
-    echo "2.5 move 100 $((timing + 8))"
-    t=2.6
+    at pipeline ready
+    at frames 3
+    at click 100 $((section + 8))
+    at frames 5
+    at move 100 $((timing + 8))
     at frames 5
     at section y,0
     at frames 8
@@ -88,8 +101,10 @@ grep -q '^idview: measure: on' "$work/anchor.out" || fail "M did not reach the v
 t=1
 {
     at frames 3
+    at pipeline ready
+    at frames 3
     for header in "Which technique?" Controls Timing Section Scene Rendering; do
-        y=$(row "$work/probe.out" 1 "$header")
+        y=$(row "$work/probe.out" -1 "$header")
         [[ -n $y ]] && at click 100 $((y + 8))
         at frames 2
     done
@@ -125,7 +140,7 @@ narrow=$(grep '^idview: panel: width 320,' <<<"$reports" | tail -1)
 [[ $narrow == "idview: panel: width 320, clipped: none" ]] && echo "ok   nothing clipped at 320 px" ||
     fail "at 320 px: ${narrow:-no report} (all: $reports)"
 opened=$(row "$work/clip.out" -1 Controls)
-[[ -n $opened && $opened -gt $(row "$work/probe.out" 1 Controls) ]] ||
+[[ -n $opened && $opened -gt $(row "$work/probe.out" -1 Controls) ]] ||
     fail "the sections did not open (Controls at ${opened:-?})"
 
 # The selected face: its name in the assembly, its surface and its area with the unit.

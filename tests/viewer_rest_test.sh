@@ -76,7 +76,9 @@ grep -c '^idview: rest: ' "$out" | xargs echo "     rest lines:"
 
 # Pictures: each step of the blink (held by the script) drawn anew from the scene pass on
 # (`redraw` and the screenshot at the same time, so in the same frame), and composed over
-# the hovered part's tiles with the panel kept, after the other step was drawn.
+# the hovered part's tiles with the panel kept, after the other step was drawn. A rest after
+# each screenshot puts a rest line after it however slow the frames are (commands 0.1 s
+# apart leave no time to sleep on a slow machine).
 t=0.5
 {
     at frames 3
@@ -86,16 +88,20 @@ t=0.5
     at frames 3
     echo "$t redraw"
     at screenshot "$work/strong-drawn.png"
+    at rest 0.3
     at frames 3
     at blink weak
     at frames 3
     at screenshot "$work/weak-kept.png"
+    at rest 0.3
     echo "$t redraw"
     at screenshot "$work/weak-drawn.png"
+    at rest 0.3
     at frames 3
     at blink strong
     at frames 3
     at screenshot "$work/strong-kept.png"
+    at rest 0.3
     at quit
 } >"$work/blink.txt"
 session blink

@@ -97,6 +97,11 @@ std::vector<Flag> cadFlags(const Options& d) {
              o.scene.cad.maxTriangles =
                  parseCount("--max-triangles", v, 1, std::numeric_limits<uint32_t>::max());
          }},
+        {"--progress", nullptr,
+         "CAD files: print the load's progress on stderr even when it is no terminal (a "
+         "pipe, a log), from the start; at a terminal it shows once a load has taken a "
+         "second",
+         [](Options& o, auto&) { o.scene.progress = true; }},
     };
 }
 

@@ -2,16 +2,14 @@
 // and --tree JSON are in scene_report.cpp).
 #include "app/scene_source.h"
 
-#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <unistd.h>
 
+#include "app/progress_lines.h"
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
@@ -83,29 +81,6 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
                                  "this machine has " + std::to_string(ram >> 30) + " GiB");
 }
 
-// CAD loads report on stderr once they have taken a second: "idview: loading FILE:
-// tessellating 40%", one line per stage and tenth at most. Only a person at a terminal reads
-// progress; a script or a log capturing stderr gets its errors alone, however long the load.
-scene::CadProgress stderrProgress(const std::string& source) {
-    if (!isatty(STDERR_FILENO)) return [](const char*, double) {};
-    struct State {
-        std::mutex mutex;
-        std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-        std::string stage;
-        int tenth = -1;
-    };
-    auto state = std::make_shared<State>();
-    return [state, source](const char* stage, double fraction) {
-        const std::lock_guard lock(state->mutex);
-        if (std::chrono::steady_clock::now() - state->start < std::chrono::seconds(1)) return;
-        const int tenth = std::clamp(int(fraction * 10.0), 0, 10);
-        if (state->stage == stage && tenth <= state->tenth) return;
-        state->stage = stage;
-        state->tenth = tenth;
-        std::fprintf(stderr, "idview: loading %s: %s %d%%\n", source.c_str(), stage, tenth * 10);
-    };
-}
-
 LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
                       const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
@@ -114,9 +89,9 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
     if (!settings.model.empty() || settings.builtin.empty()) {
         loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
         if (scene::isCadPath(loaded.source)) {
-            const scene::CadProgress onStderr = stderrProgress(loaded.source);
+            const scene::CadProgress onStderr = stderrProgress(loaded.source, settings.progress);
             const scene::CadProgress report = [&](const char* stage, double fraction) {
-                onStderr(stage, fraction);
+                if (onStderr) onStderr(stage, fraction);
                 if (progress) progress->set(stage, fraction);
             };
             scene::CadLoadResult result =
