@@ -51,14 +51,14 @@ void sceneMembers(util::JsonWriter& json, const LoadedScene& loaded, uint32_t se
         .member("unique_triangles", s.indices.size() / 3)
         .member("vertices", s.vertices.size())
         .member("load_ms", ms(loaded.loadMs))
-        .member("read_ms", ms(loaded.readMs))
-        .member("tessellation_ms", ms(loaded.tessellationMs))
-        .member("faces_failed", loaded.facesFailed);
+        .member("read_ms", ms(loaded.cadLoad.readMs))
+        .member("tessellation_ms", ms(loaded.cadLoad.tessellationMs))
+        .member("faces_failed", loaded.cadLoad.facesFailed);
     scene::unitMember(json, s.unit);
-    json.member("deflection", util::Significant{loaded.deflection, 6})
-        .member("cache", loaded.cache)
-        .member("cache_note", loaded.cacheNote)
-        .member("cache_ms", ms(loaded.cacheMs))
+    json.member("deflection", util::Significant{loaded.cadLoad.deflection, 6})
+        .member("cache", loaded.cadLoad.cache)
+        .member("cache_note", loaded.cadLoad.cacheNote)
+        .member("cache_ms", ms(loaded.cadLoad.cacheMs))
         .member("search_batch", searchBatch)
         .member("triangle_part_id_bytes", bytes.trianglePartIds)
         .member("part_triangle_count_bytes", bytes.partTriangleCounts)
