@@ -84,11 +84,9 @@ void drawMembers(util::JsonWriter& json, const scene::Scene& s,
         .member("pipelines", r.pipelines)
         .member("id_buffer_bytes", r.idBufferBytes)
         .member("per_draw_bytes", r.perDrawBytes)
-        .member("indirect_bytes", r.indirectBytes)
-        .member("geometry_bytes", r.geometryBytes)
-        .member("added_vertices", r.addedVertices)
-        .member("added_vertex_bytes", r.addedVertexBytes)
-        .member("meshlets", r.meshlets);
+        .member("indirect_bytes", r.indirectBytes);
+    derivedGeometryMembers(json, r);
+    json.member("meshlets", r.meshlets);
 }
 
 } // namespace
@@ -120,6 +118,12 @@ void levelStatsArray(util::JsonWriter& json, const std::vector<scene::LevelStats
             .endObject();
     }
     json.endArray();
+}
+
+void derivedGeometryMembers(util::JsonWriter& json, const render::RenderStats& stats) {
+    json.member("geometry_bytes", stats.geometryBytes)
+        .member("added_vertices", stats.addedVertices)
+        .member("added_vertex_bytes", stats.addedVertexBytes);
 }
 
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,

@@ -20,6 +20,9 @@
 namespace util {
 class JsonWriter;
 }
+namespace render {
+struct RenderStats;
+}
 
 namespace app {
 
@@ -109,6 +112,9 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
 // benchmark: [{"level","geometries","unique_triangles","vertices","bytes","triangles",
 // "max_error"},...].
 void levelStatsArray(util::JsonWriter& json, const std::vector<scene::LevelStats>& levels);
+// The derived geometry a configuration draws instead of the scene's indices, as the members
+// --stats and the benchmark share: "geometry_bytes", "added_vertices", "added_vertex_bytes".
+void derivedGeometryMembers(util::JsonWriter& json, const render::RenderStats& stats);
 
 // --tree: the scene's assembly tree (scene/assembly_tree.h) as nested
 // {"name","children":[...]}, each leaf {"name","object","parts":[first unique part, count]};
