@@ -212,7 +212,7 @@ TEST_F(CadCache, NoCacheNeitherReadsNorWrites) {
     settings.model = kMotor.string();
     settings.cadCache = false;
     const app::LoadedScene off = app::loadScene(settings);
-    EXPECT_EQ(off.cache, "off");
+    EXPECT_EQ(off.cadLoad.cache, "off");
     EXPECT_TRUE(entries().empty());
     // An entry that says something else: the cache serves it, --no-cache does not read it.
     const auto key = cadCacheKey(kMotor.string(), {}, 1);
@@ -229,7 +229,7 @@ TEST_F(CadCache, NoCacheNeitherReadsNorWrites) {
     EXPECT_EQ(entries().size(), 1u);
     settings.cadCache = true;
     const app::LoadedScene on = app::loadScene(settings);
-    EXPECT_EQ(on.cache, "hit");
+    EXPECT_EQ(on.cadLoad.cache, "hit");
     EXPECT_EQ(on.scene.objects[0].name, "planted");
 }
 

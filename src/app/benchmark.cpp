@@ -152,13 +152,7 @@ void addTimes(BenchmarkRow& row, const TimedFrames& timed, bool mesh, bool path)
 
 // What the configuration holds on the GPU, and how the switch to it went.
 void addRendererStats(BenchmarkRow& row, const render::Renderer& renderer) {
-    const render::RenderStats& stats = renderer.stats();
-    row.draws = stats.draws;
-    row.triangles = stats.triangles;
-    row.idBytes = stats.idBufferBytes;
-    row.geometryBytes = stats.geometryBytes;
-    row.addedVertices = stats.addedVertices;
-    row.addedVertexBytes = stats.addedVertexBytes;
+    row.stats = renderer.stats();
     row.meshlets = renderer.cullTotals().meshlets;
     row.switchMs = renderer.lastSwitch().ms;
     row.pipelineCached = renderer.lastSwitch().pipelineCached;
@@ -242,7 +236,7 @@ void timeRows(RowTimer& timer, const scene::Scene& scene,
                      i + 1, list.size(), row.renderer.c_str(), row.mode.c_str(),
                      row.culling.c_str(), double(row.lodError), row.gpuMsMedian, row.cullMsMedian,
                      row.pyramidMsMedian, row.idPassMsMedian, row.cpuMsMedian, row.drawsDrawn,
-                     row.draws);
+                     row.stats.draws);
     }
 }
 
@@ -259,8 +253,8 @@ void timeFixedCost(RowTimer& timer, const scene::Scene& scene,
     std::fprintf(stderr,
                  "benchmark: fixed cost (%s + %s, culling off, nothing drawn): GPU %.3f ms, "
                  "%zu draws, %llu triangles; clear path %s\n",
-                 empty.renderer.c_str(), empty.mode.c_str(), empty.gpuMsMedian, empty.draws,
-                 static_cast<unsigned long long>(empty.triangles), report.clearPath.c_str());
+                 empty.renderer.c_str(), empty.mode.c_str(), empty.gpuMsMedian, empty.stats.draws,
+                 static_cast<unsigned long long>(empty.stats.triangles), report.clearPath.c_str());
 }
 
 } // namespace

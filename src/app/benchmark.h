@@ -12,6 +12,7 @@
 #include "app/cli.h"
 #include "app/scene_source.h"
 #include "render/clear_choice.h"
+#include "render/draw_list.h"
 
 namespace app {
 
@@ -32,13 +33,12 @@ struct BenchmarkRow {
     double cpuMsMedian = 0;          // recording and submitting one frame
     double cpuRecordMsMedian = 0;    // recording its commands alone (Renderer::record)
     double idPassMsMedian = 0;       // the passes over the ID image after it (--edges), GPU
-    size_t draws = 0;
-    uint64_t triangles = 0;
-    uint64_t idBytes = 0; // the technique's ID data
-    // Derived geometry drawn instead of the scene's indices (vertex-*, mesh-*): its bytes,
-    // and the vertices vertex-* duplicated and the meshlets mesh-* draws.
-    uint64_t geometryBytes = 0, addedVertices = 0, addedVertexBytes = 0, meshlets = 0;
-    std::string floor; // the floor row of this row's kind (render::floorOf)
+    // What the configuration holds on the GPU (Renderer::stats): draws, triangles, the
+    // technique's ID data, and the derived geometry drawn instead of the scene's indices
+    // (vertex-*, mesh-*) with the vertices vertex-* duplicated.
+    render::RenderStats stats;
+    uint64_t meshlets = 0; // the meshlets mesh-* draws (Renderer::cullTotals)
+    std::string floor;     // the floor row of this row's kind (render::floorOf)
     // gpuMsMedian / the floor's gpuMsMedian in the same mode and culling mode
     double ratioToFloor = 0;
     // gpuMsMedian - BenchmarkReport::fixedCost's: what drawing this row costs beyond a frame

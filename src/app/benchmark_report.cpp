@@ -49,19 +49,16 @@ void rowMembers(util::JsonWriter& json, const BenchmarkRow& row) {
         .member("pyramid_ms_median", ms(row.pyramidMsMedian))
         .member("early_draw_ms_median", ms(row.earlyMsMedian))
         .member("late_draw_ms_median", ms(row.lateMsMedian))
-        .member("draws", row.draws)
+        .member("draws", row.stats.draws)
         .member("draws_drawn", count(row.drawsDrawn))
-        .member("triangles", row.triangles)
+        .member("triangles", row.stats.triangles)
         .member("triangles_drawn", count(row.trianglesDrawn))
         .member("meshlets_drawn", count(row.meshletsDrawn))
         .beginArray("triangles_drawn_by_level");
     for (double triangles : row.levelTrianglesDrawn) json.value(count(triangles));
-    json.endArray()
-        .member("id_bytes", row.idBytes)
-        .member("geometry_bytes", row.geometryBytes)
-        .member("added_vertices", row.addedVertices)
-        .member("added_vertex_bytes", row.addedVertexBytes)
-        .member("meshlets", row.meshlets)
+    json.endArray().member("id_bytes", row.stats.idBufferBytes);
+    derivedGeometryMembers(json, row.stats);
+    json.member("meshlets", row.meshlets)
         .member("floor", row.floor)
         .member("ratio_to_floor", util::Fixed{row.ratioToFloor, 3})
         .member("id_image_hash", hex(row.idImageHash))
@@ -170,15 +167,15 @@ std::string benchmarkCsv(const BenchmarkReport& r) {
     // The fixed cost first: the row whose visible is 0.
     auto write = [&](const BenchmarkRow& row, float visible) {
         out << row.renderer << ',' << row.mode << ',' << fixed(row.gpuMsMedian, 4) << ','
-            << fixed(row.gpuMsP90, 4) << ',' << fixed(row.cpuMsMedian, 4) << ',' << row.draws << ','
-            << row.triangles << ',' << row.idBytes << ',' << row.geometryBytes << ','
-            << row.addedVertices << ',' << row.meshlets << ',' << row.floor << ','
-            << fixed(row.ratioToFloor, 3) << ',' << hex(row.idImageHash) << ','
-            << hex(row.colorImageHash) << ',' << row.culling << ',' << fixed(row.drawsDrawn, 1)
-            << ',' << fixed(row.meshletsDrawn, 1) << ',' << fixed(row.trianglesDrawn, 1) << ','
-            << fixed(row.cullMsMedian, 4) << ',' << fixed(row.pyramidMsMedian, 4) << ','
-            << fixed(row.aboveFixedMs, 4) << ',' << row.clearPath << ',' << fixed(visible, 3)
-            << '\n';
+            << fixed(row.gpuMsP90, 4) << ',' << fixed(row.cpuMsMedian, 4) << ',' << row.stats.draws
+            << ',' << row.stats.triangles << ',' << row.stats.idBufferBytes << ','
+            << row.stats.geometryBytes << ',' << row.stats.addedVertices << ',' << row.meshlets
+            << ',' << row.floor << ',' << fixed(row.ratioToFloor, 3) << ',' << hex(row.idImageHash)
+            << ',' << hex(row.colorImageHash) << ',' << row.culling << ','
+            << fixed(row.drawsDrawn, 1) << ',' << fixed(row.meshletsDrawn, 1) << ','
+            << fixed(row.trianglesDrawn, 1) << ',' << fixed(row.cullMsMedian, 4) << ','
+            << fixed(row.pyramidMsMedian, 4) << ',' << fixed(row.aboveFixedMs, 4) << ','
+            << row.clearPath << ',' << fixed(visible, 3) << '\n';
     };
     write(r.fixedCost, 0.0f);
     for (const BenchmarkRow& row : r.rows) write(row, r.settings.draws.visible);
@@ -200,11 +197,12 @@ std::string benchmarkTable(const BenchmarkReport& r) {
     out << line;
     auto percentOf = [](double part, double total) { return total > 0 ? 100 * part / total : 0.0; };
     auto write = [&](const BenchmarkRow& row, const char* renderer, const std::string& floor) {
-        std::snprintf(
-            line, sizeof line, format, renderer, row.mode.c_str(), row.culling.c_str(),
-            row.gpuMsMedian, row.gpuMsP90, row.aboveFixedMs, row.cpuMsMedian,
-            row.cullMsMedian + row.pyramidMsMedian, percentOf(row.drawsDrawn, double(row.draws)),
-            percentOf(row.trianglesDrawn, double(row.triangles)), row.ratioToFloor, floor.c_str());
+        std::snprintf(line, sizeof line, format, renderer, row.mode.c_str(), row.culling.c_str(),
+                      row.gpuMsMedian, row.gpuMsP90, row.aboveFixedMs, row.cpuMsMedian,
+                      row.cullMsMedian + row.pyramidMsMedian,
+                      percentOf(row.drawsDrawn, double(row.stats.draws)),
+                      percentOf(row.trianglesDrawn, double(row.stats.triangles)), row.ratioToFloor,
+                      floor.c_str());
         out << line;
     };
     // The fixed cost first, named for what it is; the technique that drew nothing in the

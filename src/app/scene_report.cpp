@@ -51,14 +51,14 @@ void sceneMembers(util::JsonWriter& json, const LoadedScene& loaded, uint32_t se
         .member("unique_triangles", s.indices.size() / 3)
         .member("vertices", s.vertices.size())
         .member("load_ms", ms(loaded.loadMs))
-        .member("read_ms", ms(loaded.readMs))
-        .member("tessellation_ms", ms(loaded.tessellationMs))
-        .member("faces_failed", loaded.facesFailed);
+        .member("read_ms", ms(loaded.cadLoad.readMs))
+        .member("tessellation_ms", ms(loaded.cadLoad.tessellationMs))
+        .member("faces_failed", loaded.cadLoad.facesFailed);
     scene::unitMember(json, s.unit);
-    json.member("deflection", util::Significant{loaded.deflection, 6})
-        .member("cache", loaded.cache)
-        .member("cache_note", loaded.cacheNote)
-        .member("cache_ms", ms(loaded.cacheMs))
+    json.member("deflection", util::Significant{loaded.cadLoad.deflection, 6})
+        .member("cache", loaded.cadLoad.cache)
+        .member("cache_note", loaded.cadLoad.cacheNote)
+        .member("cache_ms", ms(loaded.cadLoad.cacheMs))
         .member("search_batch", searchBatch)
         .member("triangle_part_id_bytes", bytes.trianglePartIds)
         .member("part_triangle_count_bytes", bytes.partTriangleCounts)
@@ -84,11 +84,9 @@ void drawMembers(util::JsonWriter& json, const scene::Scene& s,
         .member("pipelines", r.pipelines)
         .member("id_buffer_bytes", r.idBufferBytes)
         .member("per_draw_bytes", r.perDrawBytes)
-        .member("indirect_bytes", r.indirectBytes)
-        .member("geometry_bytes", r.geometryBytes)
-        .member("added_vertices", r.addedVertices)
-        .member("added_vertex_bytes", r.addedVertexBytes)
-        .member("meshlets", r.meshlets);
+        .member("indirect_bytes", r.indirectBytes);
+    derivedGeometryMembers(json, r);
+    json.member("meshlets", r.meshlets);
 }
 
 } // namespace
@@ -120,6 +118,12 @@ void levelStatsArray(util::JsonWriter& json, const std::vector<scene::LevelStats
             .endObject();
     }
     json.endArray();
+}
+
+void derivedGeometryMembers(util::JsonWriter& json, const render::RenderStats& stats) {
+    json.member("geometry_bytes", stats.geometryBytes)
+        .member("added_vertices", stats.addedVertices)
+        .member("added_vertex_bytes", stats.addedVertexBytes);
 }
 
 std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& settings,

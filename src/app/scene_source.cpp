@@ -99,20 +99,15 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
                                                          settings.lodLevels, cancel)
                                   : scene::loadCad(loaded.source, settings.cad, report,
                                                    settings.lodLevels, cancel);
+            loaded.cad = true;
+            loaded.cadLoad = result; // the figures; the scene and warnings move below
+            if (!settings.cadCache) loaded.cadLoad.cacheNote = "--no-cache";
+            loaded.lodMs = result.levelsMs;
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
             if (settings.parts != scene::PartMode::Primitives)
                 loaded.warnings.insert(loaded.warnings.begin(),
                                        "--parts is ignored for CAD files: a part is a B-rep face");
-            loaded.cad = true;
-            loaded.readMs = result.readMs;
-            loaded.tessellationMs = result.tessellationMs;
-            loaded.deflection = result.deflection;
-            loaded.facesFailed = result.facesFailed;
-            loaded.lodMs = result.levelsMs;
-            loaded.cache = result.cache;
-            loaded.cacheNote = settings.cadCache ? result.cacheNote : "--no-cache";
-            loaded.cacheMs = result.cacheMs;
             loaded.scene.unit = scene::cadUnit(loaded.source);
         } else {
             scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});

@@ -12,12 +12,16 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "scene/cad/cad_loader.h"
 #include "scene/camera.h"
 #include "scene/lod.h"
 #include "scene/scene.h"
 
 namespace util {
 class JsonWriter;
+}
+namespace render {
+struct RenderStats;
 }
 
 namespace app {
@@ -37,15 +41,10 @@ struct LoadedScene {
     std::string source;     // file path or scene spec, for messages and stats
     double loadMs = 0.0;    // loading or generating, copies and levels of detail included
     double lodMs = 0.0;     // building the levels of detail
-    // CAD files (STEP, IGES, BREP): what the load took and did; zeros for other sources.
+    // CAD files (STEP, IGES, BREP): what the load took and did, the cache's note "--no-cache"
+    // where it was not asked; zeros (and cache "off") for other sources.
     bool cad = false;
-    double readMs = 0.0;         // the reader, before tessellation
-    double tessellationMs = 0.0; // sewing (IGES) and BRepMesh over the distinct shapes
-    double deflection = 0.0;     // the linear deflection used, in model units
-    uint32_t facesFailed = 0;    // faces left out for want of triangles
-    std::string cache = "off";   // the tessellation cache: "hit", "miss" or "off"
-    std::string cacheNote;       // why a miss or "off" ("no entry", "checksum mismatch", ...)
-    double cacheMs = 0.0;        // reading the entry (hit) or writing it (miss)
+    scene::CadLoadFigures cadLoad;
     std::vector<std::string> warnings;
     bool tilesLayout = false; // the test layout at its own camera
 };
@@ -113,6 +112,9 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
 // benchmark: [{"level","geometries","unique_triangles","vertices","bytes","triangles",
 // "max_error"},...].
 void levelStatsArray(util::JsonWriter& json, const std::vector<scene::LevelStats>& levels);
+// The derived geometry a configuration draws instead of the scene's indices, as the members
+// --stats and the benchmark share: "geometry_bytes", "added_vertices", "added_vertex_bytes".
+void derivedGeometryMembers(util::JsonWriter& json, const render::RenderStats& stats);
 
 // --tree: the scene's assembly tree (scene/assembly_tree.h) as nested
 // {"name","children":[...]}, each leaf {"name","object","parts":[first unique part, count]};

@@ -43,24 +43,16 @@ void IdPasses::createCompose(const vk::ShaderCompiler& compiler, const DiskPipel
 void IdPasses::compose(VkCommandBuffer cmd, const SceneTargets& targets, gpu::ComposePush push,
                        const std::optional<HoveredTiles>& tiles) const {
     const ComputePipeline& pass = compose_[targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT];
-    const std::array<VkDescriptorImageInfo, 4> images = {
-        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL},
-        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.color().view(), VK_IMAGE_LAYOUT_GENERAL},
-        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.shaded().view(), VK_IMAGE_LAYOUT_GENERAL},
-        VkDescriptorImageInfo{depthSampler_.get(), targets.depth().view(),
-                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}};
-    std::array<VkWriteDescriptorSet, 4> writes{};
-    for (uint32_t i = 0; i < writes.size(); ++i) {
-        writes[i] = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-        writes[i].dstBinding = i;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType =
-            i == 3 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[i].pImageInfo = &images[i];
-    }
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
-    device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0,
-                                static_cast<uint32_t>(writes.size()), writes.data());
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    bindWithImages(
+        device_, cmd, pass,
+        {{0, storage, {VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL}},
+         {1, storage, {VK_NULL_HANDLE, targets.color().view(), VK_IMAGE_LAYOUT_GENERAL}},
+         {2, storage, {VK_NULL_HANDLE, targets.shaded().view(), VK_IMAGE_LAYOUT_GENERAL}},
+         {3,
+          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+          {depthSampler_.get(), targets.depth().view(),
+           VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}}});
     push.step = tiles ? gpu::COMPOSE_TILES : gpu::COMPOSE_WHOLE;
     push.tileOrigin = tiles ? tiles->first : glm::uvec2(0);
     vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
@@ -71,20 +63,11 @@ void IdPasses::compose(VkCommandBuffer cmd, const SceneTargets& targets, gpu::Co
 
 void IdPasses::bindImages(VkCommandBuffer cmd, const SceneTargets& targets,
                           const ComputePipeline& pass) const {
-    std::array<VkDescriptorImageInfo, 2> images = {
-        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL},
-        VkDescriptorImageInfo{VK_NULL_HANDLE, targets.color().view(), VK_IMAGE_LAYOUT_GENERAL}};
-    std::array<VkWriteDescriptorSet, 2> writes{};
-    for (uint32_t i = 0; i < writes.size(); ++i) {
-        writes[i] = vk::init<VkWriteDescriptorSet>(VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET);
-        writes[i].dstBinding = i;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[i].pImageInfo = &images[i];
-    }
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.get());
-    device_.pushDescriptorSet()(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout.get(), 0,
-                                static_cast<uint32_t>(writes.size()), writes.data());
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    bindWithImages(
+        device_, cmd, pass,
+        {{0, storage, {VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL}},
+         {1, storage, {VK_NULL_HANDLE, targets.color().view(), VK_IMAGE_LAYOUT_GENERAL}}});
 }
 
 // To GENERAL: after the pass's writes and its transition to the final layout (which the

@@ -40,13 +40,14 @@ JsonWriter& JsonWriter::raw(std::string_view token) {
     return *this;
 }
 
-void JsonWriter::beginContainer(Open kind) {
+JsonWriter& JsonWriter::beginContainer(Open kind) {
     beforeValue(kind == Open::Object ? "an object" : "an array");
     text_ += kind == Open::Object ? '{' : '[';
     open_.push_back({kind});
+    return *this;
 }
 
-void JsonWriter::endContainer(Open kind) {
+JsonWriter& JsonWriter::endContainer(Open kind) {
     const char* name = kind == Open::Object ? "object" : "array";
     if (open_.empty() || open_.back().kind != kind)
         misuse(std::string("an end of an ") + name + " that is not open");
@@ -56,25 +57,6 @@ void JsonWriter::endContainer(Open kind) {
     pendingSpace_.clear();
     text_ += kind == Open::Object ? '}' : ']';
     if (open_.empty()) done_ = true;
-}
-
-JsonWriter& JsonWriter::beginObject() {
-    beginContainer(Open::Object);
-    return *this;
-}
-
-JsonWriter& JsonWriter::endObject() {
-    endContainer(Open::Object);
-    return *this;
-}
-
-JsonWriter& JsonWriter::beginArray() {
-    beginContainer(Open::Array);
-    return *this;
-}
-
-JsonWriter& JsonWriter::endArray() {
-    endContainer(Open::Array);
     return *this;
 }
 

@@ -33,10 +33,10 @@ struct Significant {
 
 class JsonWriter {
   public:
-    JsonWriter& beginObject();
-    JsonWriter& endObject();
-    JsonWriter& beginArray();
-    JsonWriter& endArray();
+    JsonWriter& beginObject() { return beginContainer(Open::Object); }
+    JsonWriter& endObject() { return endContainer(Open::Object); }
+    JsonWriter& beginArray() { return beginContainer(Open::Array); }
+    JsonWriter& endArray() { return endContainer(Open::Array); }
     // The same, as the value of member `name`.
     JsonWriter& beginObject(std::string_view name) { return key(name).beginObject(); }
     JsonWriter& beginArray(std::string_view name) { return key(name).beginArray(); }
@@ -100,8 +100,8 @@ class JsonWriter {
     // Before a value: the comma, the pending line break, and the checks that a value may
     // stand here.
     void beforeValue(const char* what);
-    void beginContainer(Open kind);
-    void endContainer(Open kind);
+    JsonWriter& beginContainer(Open kind);
+    JsonWriter& endContainer(Open kind);
     JsonWriter& raw(std::string_view token);
     void writeString(std::string_view text);
 

@@ -147,46 +147,24 @@ Device::Device(const Instance& instance, const DeviceInfo& info,
     queue.queueCount = 1;
     queue.pQueuePriorities = &priority;
 
-    // gl_DrawID: the mdi modes of mesh-*, and culled lists of cluster runs.
-    auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-    f11.shaderDrawParameters = VK_TRUE;
-    auto f12 = vk::init<VkPhysicalDeviceVulkan12Features>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
-    f12.pNext = &f11;
-    f12.bufferDeviceAddress = VK_TRUE;
-    f12.shaderBufferInt64Atomics = VK_TRUE;
-    f12.drawIndirectCount = VK_TRUE; // culled draw lists (render/culling.h)
-    auto features =
-        vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-    features.pNext = &f12;
-    features.features.shaderInt64 = VK_TRUE;
-    features.features.shaderFloat64 = VK_TRUE;
-    features.features.geometryShader = VK_TRUE;
-    features.features.multiDrawIndirect = VK_TRUE;
-    features.features.drawIndirectFirstInstance = VK_TRUE;
-    features.features.fragmentStoresAndAtomics = VK_TRUE;
-    features.features.independentBlend = VK_TRUE;
-
+    // What missingRequirements checked, then what the device offers beyond it.
+    FeatureChain features(info.meshShader);
     std::vector<const char*> extensions = extraExtensions;
-    extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+    requireAll(features, extensions);
     if (info.geometryShaderPassthrough)
         extensions.push_back(VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
     if (info.pipelineCreationFeedback)
         extensions.push_back(VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
     // Mesh shaders, and task shaders for culling their meshlets (shaders/scene.task).
-    auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
-        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);
-    mesh.meshShader = VK_TRUE;
-    mesh.taskShader = VK_TRUE;
     if (info.meshShader) {
+        features.mesh.meshShader = VK_TRUE;
+        features.mesh.taskShader = VK_TRUE;
         extensions.push_back(VK_EXT_MESH_SHADER_EXTENSION_NAME);
-        f11.pNext = &mesh;
     }
     auto create = vk::init<VkDeviceCreateInfo>(VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO);
     create.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     create.ppEnabledExtensionNames = extensions.data();
-    create.pNext = &features;
+    create.pNext = &features.core;
     create.queueCreateInfoCount = 1;
     create.pQueueCreateInfos = &queue;
     faultPoint("vkCreateDevice");

@@ -9,20 +9,47 @@
 
 namespace vk {
 
-bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
-    const auto extensions = enumerate<VkExtensionProperties>(
-        "vkEnumerateDeviceExtensionProperties", [&](uint32_t* n, VkExtensionProperties* v) {
-            return vkEnumerateDeviceExtensionProperties(device, nullptr, n, v);
-        });
-    return std::any_of(extensions.begin(), extensions.end(),
-                       [&](const auto& e) { return std::string(e.extensionName) == name; });
-}
+namespace {
 
-DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
-    DeviceInfo info;
-    info.index = index;
-    info.handle = device;
+// A requirement as a refusal names it, its flag in DeviceInfo, and where a device offers it:
+// a feature of the chain, or, without one, the extension of that name.
+struct Requirement {
+    const char* name;
+    bool DeviceInfo::*flag;
+    VkBool32* (*feature)(FeatureChain&);
+};
 
+// Every requirement but the API version and the queue, in the order a refusal lists them:
+// what queryDevice reads, missingRequirements checks and requireAll enables.
+const Requirement requirements[] = {
+    {"bufferDeviceAddress", &DeviceInfo::bufferDeviceAddress,
+     [](FeatureChain& c) { return &c.v12.bufferDeviceAddress; }},
+    {"shaderInt64", &DeviceInfo::shaderInt64,
+     [](FeatureChain& c) { return &c.core.features.shaderInt64; }},
+    {"shaderFloat64", &DeviceInfo::shaderFloat64,
+     [](FeatureChain& c) { return &c.core.features.shaderFloat64; }},
+    {"shaderBufferInt64Atomics", &DeviceInfo::shaderBufferInt64Atomics,
+     [](FeatureChain& c) { return &c.v12.shaderBufferInt64Atomics; }},
+    {"geometryShader", &DeviceInfo::geometryShader,
+     [](FeatureChain& c) { return &c.core.features.geometryShader; }},
+    {"multiDrawIndirect", &DeviceInfo::multiDrawIndirect,
+     [](FeatureChain& c) { return &c.core.features.multiDrawIndirect; }},
+    {"drawIndirectFirstInstance", &DeviceInfo::drawIndirectFirstInstance,
+     [](FeatureChain& c) { return &c.core.features.drawIndirectFirstInstance; }},
+    {"fragmentStoresAndAtomics", &DeviceInfo::fragmentStoresAndAtomics,
+     [](FeatureChain& c) { return &c.core.features.fragmentStoresAndAtomics; }},
+    {"independentBlend", &DeviceInfo::independentBlend,
+     [](FeatureChain& c) { return &c.core.features.independentBlend; }},
+    {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, &DeviceInfo::pushDescriptor, nullptr},
+    {"drawIndirectCount", &DeviceInfo::drawIndirectCount,
+     [](FeatureChain& c) { return &c.v12.drawIndirectCount; }},
+    {"shaderDrawParameters", &DeviceInfo::shaderDrawParameters,
+     [](FeatureChain& c) { return &c.v11.shaderDrawParameters; }},
+};
+
+// Name, type, versions and limits, the driver's name (Vulkan 1.2), and the optional
+// extensions.
+void readProperties(VkPhysicalDevice device, DeviceInfo& info) {
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(device, &props);
     info.name = props.deviceName;
@@ -32,15 +59,7 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
     info.vendorId = props.vendorID;
     info.timestampPeriodNs = props.limits.timestampPeriod;
     info.maxDrawIndirectCount = props.limits.maxDrawIndirectCount;
-
-    info.pushDescriptor = hasDeviceExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
-    info.geometryShaderPassthrough =
-        hasDeviceExtension(device, VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
-    info.pipelineCreationFeedback =
-        hasDeviceExtension(device, VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
-
-    const bool vulkan12 = props.apiVersion >= VK_API_VERSION_1_2;
-    if (vulkan12) {
+    if (props.apiVersion >= VK_API_VERSION_1_2) {
         auto driver = vk::init<VkPhysicalDeviceDriverProperties>(
             VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES);
         auto props2 =
@@ -49,70 +68,88 @@ DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
         vkGetPhysicalDeviceProperties2(device, &props2);
         info.driverName = driver.driverName;
         info.driverInfo = driver.driverInfo;
-
-        auto f11 = vk::init<VkPhysicalDeviceVulkan11Features>(
-            VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES);
-        auto f12 = vk::init<VkPhysicalDeviceVulkan12Features>(
-            VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES);
-        f12.pNext = &f11;
-        auto f2 = vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-        f2.pNext = &f12;
-        vkGetPhysicalDeviceFeatures2(device, &f2);
-        info.bufferDeviceAddress = f12.bufferDeviceAddress;
-        info.shaderBufferInt64Atomics = f12.shaderBufferInt64Atomics;
-        info.drawIndirectCount = f12.drawIndirectCount;
-        info.shaderDrawParameters = f11.shaderDrawParameters;
-
-        if (hasDeviceExtension(device, VK_EXT_MESH_SHADER_EXTENSION_NAME)) {
-            auto mesh = vk::init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
-                VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT);
-            auto meshFeatures =
-                vk::init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2);
-            meshFeatures.pNext = &mesh;
-            vkGetPhysicalDeviceFeatures2(device, &meshFeatures);
-            // Culling their meshlets needs task shaders.
-            info.meshShader = mesh.meshShader && mesh.taskShader;
-        }
     }
-    VkPhysicalDeviceFeatures features;
-    vkGetPhysicalDeviceFeatures(device, &features);
-    info.shaderInt64 = features.shaderInt64;
-    info.shaderFloat64 = features.shaderFloat64;
-    info.geometryShader = features.geometryShader;
-    info.multiDrawIndirect = features.multiDrawIndirect;
-    info.drawIndirectFirstInstance = features.drawIndirectFirstInstance;
-    info.fragmentStoresAndAtomics = features.fragmentStoresAndAtomics;
-    info.independentBlend = features.independentBlend;
+    info.geometryShaderPassthrough =
+        hasDeviceExtension(device, VK_NV_GEOMETRY_SHADER_PASSTHROUGH_EXTENSION_NAME);
+    info.pipelineCreationFeedback =
+        hasDeviceExtension(device, VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
+}
 
+// The requirements, and mesh shaders. Before Vulkan 1.2 only the core features are read
+// (the device is refused for its version anyway), the rest left off.
+void readFeatures(VkPhysicalDevice device, DeviceInfo& info) {
+    const bool vulkan12 = info.apiVersion >= VK_API_VERSION_1_2;
+    FeatureChain chain(vulkan12 && hasDeviceExtension(device, VK_EXT_MESH_SHADER_EXTENSION_NAME));
+    if (vulkan12)
+        vkGetPhysicalDeviceFeatures2(device, &chain.core);
+    else
+        vkGetPhysicalDeviceFeatures(device, &chain.core.features);
+    for (const Requirement& r : requirements)
+        info.*r.flag =
+            r.feature ? *r.feature(chain) != VK_FALSE : hasDeviceExtension(device, r.name);
+    // Culling their meshlets needs task shaders.
+    info.meshShader = chain.mesh.meshShader && chain.mesh.taskShader;
+}
+
+// A queue family with graphics and timestamps, UINT32_MAX if none has both.
+uint32_t graphicsQueueFamily(VkPhysicalDevice device) {
     uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
     std::vector<VkQueueFamilyProperties> families(count);
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
-    for (uint32_t i = 0; i < count; ++i) {
-        if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) &&
-            families[i].timestampValidBits > 0) {
-            info.graphicsQueueFamily = i;
-            break;
-        }
-    }
+    for (uint32_t i = 0; i < count; ++i)
+        if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && families[i].timestampValidBits > 0)
+            return i;
+    return UINT32_MAX;
+}
+
+} // namespace
+
+bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
+    const auto extensions = enumerate<VkExtensionProperties>(
+        "vkEnumerateDeviceExtensionProperties", [&](uint32_t* n, VkExtensionProperties* v) {
+            return vkEnumerateDeviceExtensionProperties(device, nullptr, n, v);
+        });
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const auto& e) { return std::string(e.extensionName) == name; });
+}
+
+FeatureChain::FeatureChain(bool withMesh)
+    : core(init<VkPhysicalDeviceFeatures2>(VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2)),
+      v12(init<VkPhysicalDeviceVulkan12Features>(
+          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES)),
+      v11(init<VkPhysicalDeviceVulkan11Features>(
+          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES)),
+      mesh(init<VkPhysicalDeviceMeshShaderFeaturesEXT>(
+          VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT)) {
+    core.pNext = &v12;
+    v12.pNext = &v11;
+    if (withMesh) v11.pNext = &mesh;
+}
+
+void requireAll(FeatureChain& chain, std::vector<const char*>& extensions) {
+    for (const Requirement& r : requirements)
+        if (r.feature)
+            *r.feature(chain) = VK_TRUE;
+        else
+            extensions.push_back(r.name);
+}
+
+DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index) {
+    DeviceInfo info;
+    info.index = index;
+    info.handle = device;
+    readProperties(device, info);
+    readFeatures(device, info);
+    info.graphicsQueueFamily = graphicsQueueFamily(device);
     return info;
 }
 
 std::vector<std::string> missingRequirements(const DeviceInfo& info) {
     std::vector<std::string> missing;
     if (info.apiVersion < VK_API_VERSION_1_2) missing.push_back("Vulkan 1.2");
-    if (!info.bufferDeviceAddress) missing.push_back("bufferDeviceAddress");
-    if (!info.shaderInt64) missing.push_back("shaderInt64");
-    if (!info.shaderFloat64) missing.push_back("shaderFloat64");
-    if (!info.shaderBufferInt64Atomics) missing.push_back("shaderBufferInt64Atomics");
-    if (!info.geometryShader) missing.push_back("geometryShader");
-    if (!info.multiDrawIndirect) missing.push_back("multiDrawIndirect");
-    if (!info.drawIndirectFirstInstance) missing.push_back("drawIndirectFirstInstance");
-    if (!info.fragmentStoresAndAtomics) missing.push_back("fragmentStoresAndAtomics");
-    if (!info.independentBlend) missing.push_back("independentBlend");
-    if (!info.pushDescriptor) missing.push_back("VK_KHR_push_descriptor");
-    if (!info.drawIndirectCount) missing.push_back("drawIndirectCount");
-    if (!info.shaderDrawParameters) missing.push_back("shaderDrawParameters");
+    for (const Requirement& r : requirements)
+        if (!(info.*r.flag)) missing.push_back(r.name);
     if (info.graphicsQueueFamily == UINT32_MAX)
         missing.push_back("a graphics queue with timestamps");
     return missing;

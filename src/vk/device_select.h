@@ -50,6 +50,24 @@ struct DeviceInfo {
 
 bool hasDeviceExtension(VkPhysicalDevice device, const char* name);
 
+// The feature structs idview reads from a device and enables on it, chained as Vulkan takes
+// them: core, then Vulkan 1.2's, 1.1's and, where the device has them, mesh shaders'. Not
+// copyable: each points at the next.
+struct FeatureChain {
+    VkPhysicalDeviceFeatures2 core;
+    VkPhysicalDeviceVulkan12Features v12;
+    VkPhysicalDeviceVulkan11Features v11;
+    VkPhysicalDeviceMeshShaderFeaturesEXT mesh;
+
+    explicit FeatureChain(bool withMesh);
+    FeatureChain(const FeatureChain&) = delete;
+    FeatureChain& operator=(const FeatureChain&) = delete;
+};
+
+// For vkCreateDevice: every required feature (those missingRequirements names) set in
+// `chain`, every required extension added to `extensions`.
+void requireAll(FeatureChain& chain, std::vector<const char*>& extensions);
+
 // Reads everything above from the driver.
 DeviceInfo queryDevice(VkPhysicalDevice device, uint32_t index);
 

@@ -24,25 +24,26 @@ struct InputSpec {
     ScriptOp op;
     size_t numbers;    // numeric arguments
     const char* usage; // for the error message
+    bool points;       // the numbers are points in the window (never negative)
 };
 
 const InputSpec inputSpecs[] = {
-    {"key", ScriptOp::Key, 0, "key NAME"},
-    {"type", ScriptOp::Type, 0, "type TEXT"},
-    {"move", ScriptOp::Move, 2, "move X Y"},
-    {"click", ScriptOp::Click, 2, "click X Y [ctrl]"},
-    {"dblclick", ScriptOp::DoubleClick, 2, "dblclick X Y"},
-    {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1"},
-    {"box", ScriptOp::Box, 4, "box X0 Y0 X1 Y1 [add|remove]"},
-    {"scroll", ScriptOp::Scroll, 1, "scroll DY"},
-    {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT"},
-    {"drop", ScriptOp::Drop, 0, "drop FILE"},
-    {"loaded", ScriptOp::Loaded, 0, "loaded"},
-    {"frames", ScriptOp::Frames, 1, "frames N"},
-    {"redraw", ScriptOp::Redraw, 0, "redraw"},
-    {"blink", ScriptOp::Blink, 0, "blink strong|weak|clock"},
-    {"rest", ScriptOp::Rest, 1, "rest SECONDS"},
-    {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready"},
+    {"key", ScriptOp::Key, 0, "key NAME", false},
+    {"type", ScriptOp::Type, 0, "type TEXT", false},
+    {"move", ScriptOp::Move, 2, "move X Y", true},
+    {"click", ScriptOp::Click, 2, "click X Y [ctrl]", true},
+    {"dblclick", ScriptOp::DoubleClick, 2, "dblclick X Y", true},
+    {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1", true},
+    {"box", ScriptOp::Box, 4, "box X0 Y0 X1 Y1 [add|remove]", true},
+    {"scroll", ScriptOp::Scroll, 1, "scroll DY", false},
+    {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT", false},
+    {"drop", ScriptOp::Drop, 0, "drop FILE", false},
+    {"loaded", ScriptOp::Loaded, 0, "loaded", false},
+    {"frames", ScriptOp::Frames, 1, "frames N", false},
+    {"redraw", ScriptOp::Redraw, 0, "redraw", false},
+    {"blink", ScriptOp::Blink, 0, "blink strong|weak|clock", false},
+    {"rest", ScriptOp::Rest, 1, "rest SECONDS", false},
+    {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready", false},
 };
 
 [[noreturn]] void fail(const std::string& message) {
@@ -100,6 +101,9 @@ void readInputWords(const InputSpec& spec, const std::vector<std::string>& args,
 // What each line's words may be.
 void checkInput(const InputSpec& spec, ScriptLine& line) {
     const auto& v = line.values;
+    if (spec.points)
+        for (size_t i = 0; i < spec.numbers; ++i)
+            if (v[i] < 0.0) fail("window coordinates cannot be negative");
     switch (spec.op) {
     case ScriptOp::Key:
         if (auto chord = scriptKeyChord(line.text))
@@ -107,14 +111,6 @@ void checkInput(const InputSpec& spec, ScriptLine& line) {
         else
             fail("unknown key '" + line.text +
                  "' (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB, HOME, /; shift+, ctrl+, alt+)");
-        break;
-    case ScriptOp::Move:
-    case ScriptOp::Click:
-    case ScriptOp::DoubleClick:
-    case ScriptOp::Drag:
-    case ScriptOp::Box:
-        for (size_t i = 0; i < spec.numbers; ++i)
-            if (v[i] < 0.0) fail("window coordinates cannot be negative");
         break;
     case ScriptOp::Resize:
         if (!whole(v[0], 1.0, 16384.0) || !whole(v[1], 1.0, 16384.0))

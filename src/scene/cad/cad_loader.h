@@ -48,13 +48,12 @@ struct CadOptions {
 // The automatic linear deflection, as a fraction of the bounding box diagonal.
 constexpr double kRelativeDeflection = 0.001;
 
-struct CadLoadResult {
-    Scene scene;
-    std::vector<std::string> warnings;
+// What a CAD load took and did, beside the scene it built.
+struct CadLoadFigures {
     double readMs = 0.0;         // parsing the file and building the shapes
     double tessellationMs = 0.0; // sewing (IGES) and BRepMesh_IncrementalMesh, every distinct shape
     double levelsMs = 0.0;       // the coarser tessellations of the levels of detail
-    double deflection = 0.0;     // the linear deflection used
+    double deflection = 0.0;     // the linear deflection used, in model units
     uint32_t faces = 0;          // faces over all distinct shapes
     uint32_t facesFailed = 0;    // of those, the ones without triangles (left out)
     // The tessellation cache (scene/cad/cad_cache.h): "off" (not asked, or no folder), "hit" or
@@ -63,6 +62,11 @@ struct CadLoadResult {
     std::string cache = "off";
     std::string cacheNote;
     double cacheMs = 0.0;
+};
+
+struct CadLoadResult : CadLoadFigures {
+    Scene scene;
+    std::vector<std::string> warnings;
 };
 
 // How far a load is: `stage` is "reading", "translating" (the file's entities into shapes),
