@@ -305,7 +305,7 @@ if [[ -f $motor && -f $bearing ]]; then
         failures=$((failures + 1))
     fi
 fi
-expect progress-in-help 0 '--progress +CAD files: print the load' -- "$idview" --help
+expect progress-in-help 0 '--progress +print progress on stderr' -- "$idview" --help
 
 echo "cli_test: $failures failed"
 exit $((failures > 0))

@@ -66,31 +66,30 @@ void PrintTo(const PathCase& c, std::ostream* os) {
 
 class CullingExact : public ::testing::TestWithParam<PathCase> {};
 
-TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame) {
-    const PathCase& c = GetParam();
-    app::SceneSettings source;
-    if (std::string(c.scene) == "cad") {
-        if (!std::filesystem::exists(kCadBearing))
-            GTEST_SKIP() << kCadBearing << " missing (package occt-misc)";
-        source.model = kCadBearing;
-    }
-    const app::LoadedScene loaded = app::loadScene(source);
-    scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
-    if (c.ortho) {
-        camera = app::initialCamera(loaded, float(W) / float(H), {nullptr, true});
-        camera.eye = camera.target + (camera.eye - camera.target) / 3.0;
-        scene::fitPlanes(camera, loaded.scene.bounds());
-    }
+// The case's camera: the opening view, or for ortho a third of its distance away.
+scene::Camera pathCamera(const PathCase& c, const app::LoadedScene& loaded) {
+    if (!c.ortho) return app::initialCamera(loaded, float(W) / float(H));
+    scene::Camera camera = app::initialCamera(loaded, float(W) / float(H), {nullptr, true});
+    camera.eye = camera.target + (camera.eye - camera.target) / 3.0;
+    scene::fitPlanes(camera, loaded.scene.bounds());
+    return camera;
+}
 
-    // Per technique the reference without culling, then every mode with each culling mode.
+// What a case renders: per technique the reference without culling, then every mode with
+// each culling mode the case tests (referenceOf: config -> its technique's reference).
+struct PathConfigs {
     std::vector<render::RenderSettings> configs;
-    std::map<size_t, size_t> referenceOf; // config -> its technique's reference config
+    std::map<size_t, size_t> referenceOf;
+};
+
+PathConfigs pathConfigs(const PathCase& c, const scene::Camera& camera) {
+    PathConfigs p;
     for (const render::Technique& t : render::techniques()) {
         if (c.pipelines != Pipelines::All && t.usesMeshShader() != (c.pipelines == Pipelines::Mesh))
             continue;
-        const size_t reference = configs.size();
-        configs.push_back(testing_support::settingsFor(t, render::defaultDrawMode()));
-        configs.back().culling.mode = render::CullMode::Off;
+        const size_t reference = p.configs.size();
+        p.configs.push_back(testing_support::settingsFor(t, render::defaultDrawMode()));
+        p.configs.back().culling.mode = render::CullMode::Off;
         for (const render::DrawMode& m : render::drawModes())
             for (render::CullMode mode : {render::CullMode::Frustum, render::CullMode::Occlusion}) {
                 if (mode == render::CullMode::Frustum && !c.frustum()) continue;
@@ -99,9 +98,9 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
                 // the case tests.
                 const render::CullPlan plan = render::cullPlan(t, m, mode);
                 if (mode == render::CullMode::Occlusion && !plan.twoPasses && c.frustum()) continue;
-                referenceOf[configs.size()] = reference;
-                configs.push_back(testing_support::settingsFor(t, m));
-                configs.back().culling.mode = mode;
+                p.referenceOf[p.configs.size()] = reference;
+                p.configs.push_back(testing_support::settingsFor(t, m));
+                p.configs.back().culling.mode = mode;
             }
     }
     scene::Section section;
@@ -111,73 +110,90 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
         const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
         section.planes[0] = scene::axisPlane(axis, camera.target[axis], look[axis] > 0.0f);
     }
-    for (render::RenderSettings& s : configs) {
+    for (render::RenderSettings& s : p.configs) {
         s.pipeline.msaa = c.msaa;
         s.section = section;
     }
     // The section case also draws the first reference uncut: the plane must cut something.
     if (c.section) {
-        configs.push_back(configs.front());
-        configs.back().section = {};
+        p.configs.push_back(p.configs.front());
+        p.configs.back().section = {};
     }
+    return p;
+}
+
+// A culled configuration drew its reference's images on every frame, and never more
+// triangles than there are; along a path it left something out (where there is more than
+// the one object the CAD file is, or smaller draws, or meshlets).
+void expectCulledAsReference(const PathCase& c, const app::LoadedScene& loaded,
+                             const render::RenderSettings& s, const app::HeadlessResult& r,
+                             const app::HeadlessResult& ref) {
+    const std::string name = std::string(s.pipeline.technique->name) + " + " +
+                             s.pipeline.mode->name + ", culling " +
+                             render::cullModeName(s.culling.mode);
+    ASSERT_EQ(r.frames.size(), kFrames) << name;
+    ASSERT_EQ(ref.frames.size(), kFrames) << name;
+    for (uint32_t f = 0; f < kFrames; ++f) {
+        EXPECT_TRUE(testing_support::sameIds(r.frames[f].ids, ref.frames[f].ids, W))
+            << name << ", frame " << f;
+        EXPECT_TRUE(testing_support::sameColours(r.frames[f].color, ref.frames[f].color, W))
+            << name << ", frame " << f;
+    }
+    uint64_t drawn = 0, total = 0;
+    ASSERT_EQ(r.cullStats.size(), kFrames) << name;
+    for (const gpu::CullStats& stats : r.cullStats) {
+        const render::CullCounts counts =
+            render::countsOf(stats, s.pipeline.technique->usesMeshShader());
+        EXPECT_LE(counts.triangles, r.cullTotals.triangles) << name;
+        drawn += counts.triangles;
+        total += r.cullTotals.triangles;
+    }
+    // Where a draw is the one object of the CAD file (push mode culls whole objects, search
+    // batches span the ring), only meshlets and single parts can be left out.
+    const render::Technique& t = *s.pipeline.technique;
+    const bool partsCulled = s.pipeline.mode->indirect && t.split == render::DrawSplit::PerPart;
+    if (!c.still && (loaded.scene.objects.size() > 1 || partsCulled || t.usesMeshShader())) {
+        EXPECT_LT(drawn, total) << name << ": culling left nothing out along the path";
+    }
+}
+
+// Without culling every frame draws everything.
+void expectEverythingDrawn(const render::RenderSettings& s, const app::HeadlessResult& r) {
+    const bool mesh = s.pipeline.technique->usesMeshShader();
+    for (const gpu::CullStats& stats : r.cullStats) {
+        const render::CullCounts counts = render::countsOf(stats, mesh);
+        EXPECT_EQ(counts.draws, r.cullTotals.draws);
+        EXPECT_EQ(counts.triangles, r.cullTotals.triangles);
+        EXPECT_EQ(counts.meshlets, r.cullTotals.meshlets);
+    }
+}
+
+TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame) {
+    const PathCase& c = GetParam();
+    app::SceneSettings source;
+    if (std::string(c.scene) == "cad") {
+        if (!std::filesystem::exists(kCadBearing))
+            GTEST_SKIP() << kCadBearing << " missing (package occt-misc)";
+        source.model = kCadBearing;
+    }
+    const app::LoadedScene loaded = app::loadScene(source);
+    const scene::Camera camera = pathCamera(c, loaded);
+    const PathConfigs p = pathConfigs(c, camera);
     app::Options o = testing_support::headlessOptions(W, H, kFrames);
     o.cameraPath = c.still   ? scene::CameraPath::None
                    : c.ortho ? scene::CameraPath::Orbit
                              : scene::CameraPath::Dolly;
     o.keepEveryFrame = true;
-    const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, configs);
-    ASSERT_EQ(results.size(), configs.size());
+    const auto results = app::renderHeadlessSequence(o, loaded.scene, camera, p.configs);
+    ASSERT_EQ(results.size(), p.configs.size());
     EXPECT_EQ(results.front().validationMessages, 0u);
-
-    for (const auto& [culled, reference] : referenceOf) {
-        const render::RenderSettings& s = configs[culled];
-        const std::string name = std::string(s.pipeline.technique->name) + " + " +
-                                 s.pipeline.mode->name + ", culling " +
-                                 render::cullModeName(s.culling.mode);
-        const app::HeadlessResult& r = results[culled];
-        const app::HeadlessResult& ref = results[reference];
-        ASSERT_EQ(r.frames.size(), kFrames) << name;
-        ASSERT_EQ(ref.frames.size(), kFrames) << name;
-        for (uint32_t f = 0; f < kFrames; ++f) {
-            EXPECT_TRUE(testing_support::sameIds(r.frames[f].ids, ref.frames[f].ids, W))
-                << name << ", frame " << f;
-            EXPECT_TRUE(testing_support::sameColours(r.frames[f].color, ref.frames[f].color, W))
-                << name << ", frame " << f;
-        }
-        // The path goes inside the assembly, so every culling mode leaves something out
-        // (where there is more than the one object the CAD file is, or smaller draws, or
-        // meshlets), and never more than there is.
-        uint64_t drawn = 0, total = 0;
-        ASSERT_EQ(r.cullStats.size(), kFrames) << name;
-        for (const gpu::CullStats& stats : r.cullStats) {
-            const render::CullCounts counts =
-                render::countsOf(stats, s.pipeline.technique->usesMeshShader());
-            EXPECT_LE(counts.triangles, r.cullTotals.triangles) << name;
-            drawn += counts.triangles;
-            total += r.cullTotals.triangles;
-        }
-        // Where a draw is the one object of the CAD file (push mode culls whole objects,
-        // search batches span the ring), only meshlets and single parts can be left out.
-        const render::Technique& t = *s.pipeline.technique;
-        const bool partsCulled = s.pipeline.mode->indirect && t.split == render::DrawSplit::PerPart;
-        if (!c.still && (loaded.scene.objects.size() > 1 || partsCulled || t.usesMeshShader())) {
-            EXPECT_LT(drawn, total) << name << ": culling left nothing out along the path";
-        }
-    }
+    for (const auto& [culled, reference] : p.referenceOf)
+        expectCulledAsReference(c, loaded, p.configs[culled], results[culled], results[reference]);
     if (c.section) {
         EXPECT_NE(results.back().frames.back().ids, results.front().frames.back().ids);
     }
-    // Without culling every frame draws everything.
-    for (size_t i = 0; i < configs.size(); ++i) {
-        if (referenceOf.count(i)) continue;
-        const bool mesh = configs[i].pipeline.technique->usesMeshShader();
-        for (const gpu::CullStats& stats : results[i].cullStats) {
-            const render::CullCounts counts = render::countsOf(stats, mesh);
-            EXPECT_EQ(counts.draws, results[i].cullTotals.draws);
-            EXPECT_EQ(counts.triangles, results[i].cullTotals.triangles);
-            EXPECT_EQ(counts.meshlets, results[i].cullTotals.meshlets);
-        }
-    }
+    for (size_t i = 0; i < p.configs.size(); ++i)
+        if (!p.referenceOf.count(i)) expectEverythingDrawn(p.configs[i], results[i]);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -8,9 +8,12 @@
 #include <map>
 #include <tuple>
 
+#include <unistd.h>
+
 #include "app/frame_loop.h"
 #include "app/headless.h"
 #include "app/offscreen.h"
+#include "app/progress_lines.h"
 #include "app/scene_source.h"
 #include "scene/camera_path.h"
 #include "vk/check.h"
@@ -221,6 +224,8 @@ BenchmarkReport reportHeader(const Options& options, const LoadedScene& loaded) 
 void timeRows(RowTimer& timer, const scene::Scene& scene,
               const std::vector<render::RenderSettings>& list, BenchmarkReport& report) {
     std::map<std::tuple<std::string, std::string, render::CullMode, float>, double> floorMs;
+    // A line per row as it is timed: progress, so at a terminal or with --progress only.
+    const bool progress = progressLinesWanted(timer.options.scene.progress, STDERR_FILENO);
     for (size_t i = 0; i < list.size(); ++i) {
         BenchmarkRow row = timer.time(scene, list[i], i == 0);
         if (i == 0) report.hiddenParts = timer.rig.renderer.hidden().size();
@@ -229,6 +234,7 @@ void timeRows(RowTimer& timer, const scene::Scene& scene,
         const double floor = floorMs[floorKey];
         row.ratioToFloor = floor > 0 ? row.gpuMsMedian / floor : 0.0;
         report.rows.push_back(row);
+        if (!progress) continue;
         std::fprintf(stderr,
                      "benchmark: [%zu/%zu] %s + %s, culling %s, LOD error %g: GPU %.3f ms "
                      "(cull %.3f, pyramid %.3f; + %.3f ID passes), CPU %.3f ms, %.0f of "

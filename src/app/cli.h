@@ -30,8 +30,8 @@ struct SceneSettings {
     scene::CadOptions cad;                               // STEP, IGES, BREP: the tessellation
     // STEP, IGES, BREP: read and write the tessellation cache (scene/cad/cad_cache.h).
     bool cadCache = true;
-    // --progress: a CAD load's progress lines on stderr even where it is no terminal
-    // (app/progress_lines.h).
+    // --progress: progress lines on stderr even where it is no terminal: a CAD load's
+    // (app/progress_lines.h), and the benchmark's line per row, which reads it from here.
     bool progress = false;
     uint32_t copies = 1;
     uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans

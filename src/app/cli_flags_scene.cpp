@@ -98,9 +98,9 @@ std::vector<Flag> cadFlags(const Options& d) {
                  parseCount("--max-triangles", v, 1, std::numeric_limits<uint32_t>::max());
          }},
         {"--progress", nullptr,
-         "CAD files: print the load's progress on stderr even when it is no terminal (a "
-         "pipe, a log), from the start; at a terminal it shows once a load has taken a "
-         "second",
+         "print progress on stderr even when it is no terminal (a pipe, a log): a CAD "
+         "load's, from the start (at a terminal once it has taken a second), and the "
+         "benchmark's line per row",
          [](Options& o, auto&) { o.scene.progress = true; }},
     };
 }
