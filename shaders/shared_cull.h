@@ -31,35 +31,23 @@
 // frame's early depth, so behind its final depth, which this frame draws again; drawn late,
 // it writes no sample and ties none, so no order can change.
 //
-// Phase (CullPush::phase,  | cull.comp steps, runs           | cull.comp steps, draws   | task
-// shader draws DrawPush::cullPhase)     |                                 | |
-// -------------------------+---------------------------------+--------------------------+-------------------
-// NONE     culling off     | -                               | levels, decide, compact  | every
-// meshlet FRUSTUM  the one pass    | levels, decide, clusters,       | levels, decide, compact  |
-// meshlets in view;
-//                          |   runs count, runs compact      |                          |   they
-//                          become history
-// EARLY    occlusion, 1st  | levels, decide, clusters,       | levels, decide, compact  | meshlets
-// with history
-//          half            |   runs count, runs compact      |                          |   that
-//          are in view
-// (then the depth pyramid is built from the early half's depth)
-// LATE     occlusion, 2nd  | decide, clusters, runs count,   | decide, meshlets, count, | mdi: the
-// meshlets the
-//          half            |   runs compact                  |   compact                | meshlets
-//          step chose;
-//                          |                                 |                          | push:
-//                          those in view, |                                 | |   not hidden by the
-//                          |                                 |                          | pyramid,
-//                          without |                                 |                          |
-//                          history (history)
-// FROZEN, FROZEN_LATE      | none: "freeze culling" draws the two lists of the last       |
-// meshlets with history
-//                          | culled frame again                                           |
-//                          (FROZEN_LATE: of | |   draws not in both)
-//
-// The levels step runs where FrameData::lodErrorPixels is above 0 (a list holding every level
-// of every object, mdi modes); elsewhere the list holds one level of each object.
+// The phases (CullPush::phase, DrawPush::cullPhase), the steps cull.comp runs in each, for
+// lists of runs and of whole draws, and what the task shader draws in each:
+// clang-format off
+// phase        when                    runs            draws        task shader draws
+// NONE         culling off             -               [L] D P      every meshlet
+// FRUSTUM      frustum culling         [L] D C RN RP   [L] D P      meshlets in view (history)
+// EARLY        occlusion, first half   [L] D C RN RP   [L] D P      meshlets with history, in view
+//   then the depth pyramid of the first half's depth
+// LATE         occlusion, second half  D C RN RP       D M N P      mdi: those M chose; push: in
+//                                                                   view, not behind the pyramid,
+//                                                                   without history (history)
+// FROZEN       freeze culling          nothing: the two lists of    meshlets with history
+// FROZEN_LATE                          the last culled frame again  the same, of draws not early
+// Steps: L levels (where FrameData::lodErrorPixels is above 0: a list holding every level of
+// every object, mdi modes), D decide, C clusters, M meshlets, N count, P compact, RN runs
+// count, RP runs compact (each described below); (history): what passed becomes the history.
+// clang-format on
 IDV_CONST CULL_PHASE_NONE = 0;
 IDV_CONST CULL_PHASE_FRUSTUM = 1;
 IDV_CONST CULL_PHASE_EARLY = 2;
