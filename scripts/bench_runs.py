@@ -173,3 +173,25 @@ def script_runs(path=H100_RUNS):
             sys.exit(f"h100-runs.sh: two runs named {m.group(2)}")
         runs[m.group(2)] = (int(m.group(1)), parse(m.group(3)))
     return runs
+
+
+# --- What every kind of table writes alike (bench_kinds*.py) ---------------------------------
+
+MDI = "mdi-baseinstance"
+
+
+def f3(x):
+    return f"{x:.3f}"
+
+
+def span(values, fmt):
+    """'lo-hi' of the values as formatted, or the one value where they print alike."""
+    lo, hi = fmt(min(values)), fmt(max(values))
+    return lo if lo == hi else f"{lo}-{hi}"
+
+
+def triangles(n):
+    """A triangle count as the tables write it: M from a million up, else k."""
+    if n >= 1e6:
+        return f"{n / 1e6:.2f} M"
+    return "0" if n == 0 else f"{n / 1e3:.0f} k"

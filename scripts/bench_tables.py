@@ -18,7 +18,9 @@ docs/benchmarks/ that the table cites, so that the page repeats the runs and not
 
 A block's arguments: KIND FOLDER [commit=HASH] [KEY=VALUE...]. The commit is the build the
 folder's runs were made with (the JSON does not record it; h100-runs.sh writes it into the
-folder's runs*.txt, read where no commit= is given).
+folder's runs*.txt, read where no commit= is given). A comparison of two builds (the kinds in
+bench_kinds.COMPARISONS) names the earlier build's folder too (before=FOLDER); --from leaves
+it where it is, as it compares those two builds and no others.
 """
 import glob
 import os
@@ -52,13 +54,27 @@ def commit_of(folder, params):
     return "not recorded"
 
 
+def entries(args, params=None):
+    """The runs a block reads, as (folder, stem, extra flags): a kind's files are in the
+    block's folder unless they name another (a comparison's earlier build)."""
+    kind, folder, own = split(args)
+    found = bench_kinds.KINDS[kind][0](own if params is None else params)
+    return [(entry[2] if len(entry) > 2 else folder, entry[0], entry[1]) for entry in found]
+
+
 def source(args, used):
-    """The paragraph under a table: its folder, build, files and their commands."""
+    """The paragraph under a table: its folders, builds, files and their commands."""
     kind, folder, params = split(args)
-    where = f"[`{folder}/`](benchmarks/{folder}/) (commit {commit_of(folder, params)})"
+    folders = []
+    for where, _, _ in used:
+        if where not in folders:
+            folders.append(where)
+    where = " and ".join(
+        f"[`{f}/`](benchmarks/{f}/) (commit {commit_of(f, params if f == folder else {})})"
+        for f in folders)
     printed = f"printed by `scripts/bench_tables.py {' '.join(args)}`"
-    cited = [(f"{stem}.json", runs.command(runs.flags_of(runs.load(folder, stem), extra)))
-             for stem, extra in used]
+    cited = [(f"{f + '/' if len(folders) > 1 else ''}{stem}.json",
+              runs.command(runs.flags_of(runs.load(f, stem), extra))) for f, stem, extra in used]
     if len(cited) == 1:
         name, line = cited[0]
         return f"Source: {where}, `{name}`: `{line}`; {printed}.\n"
@@ -70,16 +86,12 @@ def render(args):
     kind, folder, params = split(args)
     if kind not in bench_kinds.KINDS:
         sys.exit(f"unknown table kind '{kind}' (kinds: {', '.join(bench_kinds.KINDS)})")
-    files, table = bench_kinds.KINDS[kind]
-    used = files(params)
-    loaded = {stem: runs.load(folder, stem) for stem, _ in used}
-    return doc_blocks.wrap(table(loaded, params) + "\n" + source(args, used))
-
-
-def stems(args):
-    """The runs a block reads, without reading them."""
-    kind, folder, params = split(args)
-    return [stem for stem, _ in bench_kinds.KINDS[kind][0](params)]
+    used = entries(args)
+    # By stem; a run of another folder (a comparison's earlier build) as FOLDER/STEM.
+    loaded = {(stem if f == folder else f"{f}/{stem}"): runs.load(f, stem)
+              for f, stem, _ in used}
+    return doc_blocks.wrap(bench_kinds.KINDS[kind][1](loaded, params) + "\n" +
+                           source(args, used))
 
 
 def check_runs(page):
@@ -100,7 +112,7 @@ def check_runs(page):
         if kind in bench_kinds.EXPERIMENTS:
             continue
         kept = {k: v for k, v in params.items() if k not in LAYOUT}
-        for stem, _ in bench_kinds.KINDS[kind][0](kept):
+        for _, stem, _ in entries(block.args, kept):
             if stem not in made:
                 print(f"{page}:{block.first}: h100-runs.sh makes no run '{stem}'")
                 bad += 1
@@ -114,11 +126,12 @@ def status(page):
     for block in doc_blocks.blocks(lines, SCRIPT, page):
         kind, folder, params = split(block.args)
         print(f"{kind} {folder} (commit {commit_of(folder, params)}), line {block.first}:")
-        files = bench_kinds.KINDS[kind][0]
         # The same run under the name h100-runs.sh gives it (an old folder's layout dropped).
         kept = {k: v for k, v in params.items() if k not in LAYOUT}
-        for (stem, extra), (name, _) in zip(files(params), files(kept)):
-            have = runs.flags_of(runs.load(folder, stem), extra)
+        for (where, stem, extra), (_, name, _) in zip(entries(block.args),
+                                                      entries(block.args, kept)):
+            have = runs.flags_of(runs.load(where, stem), extra)
+            stem = stem if where == folder else f"{where}/{stem}"
             if name not in made:
                 print(f"  {stem}: no run of h100-runs.sh")
             elif made[name][1] == have:
@@ -133,9 +146,12 @@ def retarget_to(folder):
     where not), saying which moved and which stay."""
     def retarget(args):
         kind, old, params = split(args)
+        if kind in bench_kinds.COMPARISONS:
+            print(f"{kind} stays at {old}: it compares two named builds")
+            return None
         kept = [f"{k}={v}" for k, v in params.items() if k not in LAYOUT]
         moved = [kind, folder] + kept
-        missing = [s for s in stems(moved) if not os.path.exists(runs.path_of(folder, s))]
+        missing = [s for f, s, _ in entries(moved) if not os.path.exists(runs.path_of(f, s))]
         if missing:
             print(f"{kind} stays at {old}: {folder} has no {', '.join(missing)}")
             return None

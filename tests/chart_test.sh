@@ -5,7 +5,8 @@
 # scripts/path_chart.py on a committed camera-path run, scripts/lod_chart.py on the
 # levels-of-detail runs, and scripts/fixed_cost_chart.py on the clear paths' runs, likewise.
 # Then the generated parts of the docs: docs/benchmarks.md's tables are what
-# scripts/bench_tables.py prints from the runs they cite, and the counts of tests in
+# scripts/bench_tables.py prints from the runs they cite (the culling rework's table checked
+# against the JSON too), and the counts of tests in
 # docs/testing.md and docs/reliability.md what scripts/test_counts.py finds in BUILD.
 set -uo pipefail
 root=$1
@@ -149,6 +150,56 @@ sed '0,/^| empty frame (`--visible 0`) | [0-9.]*/s//| empty frame (`--visible 0`
 cmp -s "$root/docs/benchmarks.md" "$work/changed.md" && fail "the page has no empty frame row to change"
 out=$(/usr/bin/python3 "$root/scripts/bench_tables.py" --check "$work/changed.md" 2>&1)
 [[ $? -ne 0 && $out == *"9.999"* ]] || fail "a changed table passed: $out"
+# The culling rework's before-and-after table at the still view: every row's times, their
+# ratio to culling off and now over before, and the triangles, from the two builds' JSON.
+/usr/bin/python3 - "$root/docs/benchmarks.md" "$root/docs/benchmarks" <<'PY' || fail "the rework table does not match the JSON"
+import json, re, sys
+page, bench = sys.argv[1], sys.argv[2]
+text = open(page).read()
+marker = ("<!-- generated: bench_tables.py rework h100-2026-11-27-still "
+          "before=h100-2026-11-27-before runs=techniques-1x,techniques-4x -->")
+if marker not in text:
+    sys.exit("no rework block at the still view")
+block = text.split(marker, 1)[1].split("<!-- end generated -->", 1)[0]
+runs = {(b, m): json.load(open(f"{bench}/h100-2026-11-27-{b}/techniques-{m}x.json"))
+        for b in ("before", "still") for m in (1, 4)}
+def find(run, name, mode, cull):
+    hits = [r for r in run["results"] if r["renderer"] == name and r["mode"] == mode
+            and r["culling"] == cull and r["lod_error"] == 0]
+    return hits[0] if len(hits) == 1 else None
+def tris(n):
+    return f"{n / 1e6:.2f} M" if n >= 1e6 else f"{n / 1e3:.0f} k"
+seen = 0
+for line in block.splitlines():
+    m = re.match(r"^\| `([a-z-]+)` \| ([a-z-]+), occlusion \| (.*) \|$", line)
+    if not m:
+        continue
+    name, mode, cells = m.group(1), m.group(2), m.group(3).split(" | ")
+    for k, msaa in enumerate((1, 4)):
+        want = []
+        for b in ("before", "still"):
+            r, off = find(runs[(b, msaa)], name, mode, "occlusion"), \
+                find(runs[(b, msaa)], name, mode, "off")
+            want.append((r["gpu_ms_median"], r["gpu_ms_median"] / off["gpu_ms_median"],
+                         r["triangles_drawn"]))
+        got = cells[4 * k:4 * k + 4]
+        exp = [f"{want[0][0]:.3f} ({want[0][1]:.3f})", f"{want[1][0]:.3f} ({want[1][1]:.3f})",
+               f"**{want[1][0] / want[0][0]:.3f}**", f"{tris(want[0][2])} / {tris(want[1][2])}"]
+        if got != exp:
+            sys.exit(f"{name} {mode} {msaa}x: {got} != {exp}")
+    seen += 1
+if seen != 14:
+    sys.exit(f"{seen} rows, not 7 renderers in 2 modes")
+PY
+# --write --from moves a table to the new folder, but a comparison stays with the two builds
+# it compares.
+cp "$root/docs/benchmarks.md" "$work/moved.md"
+/usr/bin/python3 "$root/scripts/bench_tables.py" --write "$work/moved.md" \
+    --from h100-2026-11-27-culling >"$work/moved.txt" 2>&1 || fail "--from: $(cat "$work/moved.txt")"
+grep -q '^<!-- generated: bench_tables.py techniques h100-2026-11-27-culling msaa=1 -->$' \
+    "$work/moved.md" || fail "--from did not move the techniques table"
+grep -q '^<!-- generated: bench_tables.py rework h100-2026-11-27-still before=h100-2026-11-27-before runs=techniques-1x,techniques-4x -->$' \
+    "$work/moved.md" || fail "--from moved the before-and-after table"
 # The counts of tests in docs/testing.md and docs/reliability.md are the build's.
 /usr/bin/python3 "$root/scripts/test_counts.py" --check "$build" >"$work/counts.txt" 2>&1 ||
     fail "test counts: $(cat "$work/counts.txt")"
