@@ -9,7 +9,7 @@
 #include "scene/cad/cad_worker.h"
 #include "util/worker_pool.h"
 
-int main(int argc, char** argv) {
+int main(int argc, char**) {
     struct stat socket;
     if (argc > 1 || fstat(util::kWorkerFd, &socket) != 0 || !S_ISSOCK(socket.st_mode)) {
         std::fprintf(stderr,

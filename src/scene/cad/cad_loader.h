@@ -98,9 +98,12 @@ struct CadLoadResult : CadLoadFigures {
     std::vector<std::string> warnings;
 };
 
-// How far a load is: `stage` is "reading", "translating" (the file's entities into shapes),
-// "tessellating", "building" (the scene) or "levels of detail", `fraction` 0..1 within it. Calls
-// may come from Open CASCADE's worker threads, one at a time.
+// How far a load is: `stage` and `fraction` 0..1 within it. A file read whole goes through
+// "reading", "translating" (the file's entities into shapes), "tessellating", "building" (the
+// scene) and "levels of detail"; a split STEP file through "reading" (its text lexed and
+// split), "reading the assembly structure", "loading solids" (the pieces read, translated and
+// meshed by the workers: the share of them done) and "building". Calls may come from Open
+// CASCADE's worker threads, one at a time.
 using CadProgress = std::function<void(const char* stage, double fraction)>;
 
 // While one lives, LeakSanitizer does not track this thread's new allocations (in ASan

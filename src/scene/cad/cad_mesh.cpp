@@ -5,6 +5,7 @@
 #include <set>
 
 #include <BRepMesh_Context.hxx>
+#include <BRepMesh_DelabellaMeshAlgoFactory.hxx>
 #include <BRepMesh_FaceDiscret.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepMesh_MeshAlgoFactory.hxx>
@@ -72,11 +73,13 @@ uint64_t trianglesOf(const TopoDS_Face& face) {
 }
 
 // Open CASCADE's own meshing of a face, then its triangles counted; skipped once the budget
-// is spent. Faces are meshed on the mesher's threads, so the budget is atomic.
+// is spent. Faces are meshed on the mesher's threads, so the budget is atomic. Where the first
+// algorithm leaves the face without triangles, the fallback (when there is one) tries again.
 class CountingAlgo : public IMeshTools_MeshAlgo {
   public:
-    CountingAlgo(const Handle(IMeshTools_MeshAlgo) & inner, MeshBudget& budget)
-        : inner_(inner), budget_(budget) {}
+    CountingAlgo(const Handle(IMeshTools_MeshAlgo) & inner,
+                 const Handle(IMeshTools_MeshAlgo) & fallback, MeshBudget& budget)
+        : inner_(inner), fallback_(fallback), budget_(budget) {}
     void Perform(const IMeshData::IFaceHandle& face, const IMeshTools_Parameters& parameters,
                  const Message_ProgressRange& range) override {
         if (budget_.stop() || inner_.IsNull() ||
@@ -86,6 +89,8 @@ class CountingAlgo : public IMeshTools_MeshAlgo {
         // began, and this one replaces it.
         const uint64_t before = trianglesOf(face->GetFace());
         inner_->Perform(face, parameters, range);
+        if (!fallback_.IsNull() && trianglesOf(face->GetFace()) == 0 && !budget_.stop())
+            fallback_->Perform(face, parameters, range);
         const uint64_t after = trianglesOf(face->GetFace());
         const uint64_t total = budget_.triangles.fetch_add(after - before) + (after - before);
         if (total > budget_.maxTriangles) budget_.over = true;
@@ -93,20 +98,30 @@ class CountingAlgo : public IMeshTools_MeshAlgo {
     }
 
   private:
-    Handle(IMeshTools_MeshAlgo) inner_;
+    Handle(IMeshTools_MeshAlgo) inner_, fallback_;
     MeshBudget& budget_;
 };
 
+// Open CASCADE's default algorithms (Watson's incremental Delaunay), but for planar faces its
+// Delabella one: a sweep in O(n log n) where Watson's grows much faster with a face's points.
+// A KiCad board's outline, a plane with hundreds of holes, took 10.5 s and 530 MB on one
+// thread, Delabella 1.4 s and 140 MB, for the same 98,580 triangles (they are the triangles of
+// the same boundary points, which both keep). A face Delabella leaves empty is meshed again
+// the default way.
 class CountingFactory : public IMeshTools_MeshAlgoFactory {
   public:
     explicit CountingFactory(MeshBudget& budget) : budget_(budget) {}
     Handle(IMeshTools_MeshAlgo) GetAlgo(const GeomAbs_SurfaceType type,
                                         const IMeshTools_Parameters& parameters) const override {
-        return new CountingAlgo(inner_->GetAlgo(type, parameters), budget_);
+        if (type == GeomAbs_Plane)
+            return new CountingAlgo(planes_->GetAlgo(type, parameters),
+                                    default_->GetAlgo(type, parameters), budget_);
+        return new CountingAlgo(default_->GetAlgo(type, parameters), nullptr, budget_);
     }
 
   private:
-    Handle(IMeshTools_MeshAlgoFactory) inner_ = new BRepMesh_MeshAlgoFactory;
+    Handle(IMeshTools_MeshAlgoFactory) default_ = new BRepMesh_MeshAlgoFactory;
+    Handle(IMeshTools_MeshAlgoFactory) planes_ = new BRepMesh_DelabellaMeshAlgoFactory;
     MeshBudget& budget_;
 };
 
