@@ -368,11 +368,18 @@ void writeStep(const Document& output, const std::string& path) {
     if (!writer.Transfer(output.doc, STEPControl_AsIs, nullptr, translating->Start()))
         throw Refusal(path + ": Open CASCADE could not translate the copies to STEP");
     progress::show("writing " + fs::path(path).filename().string());
-    if (writer.Write(path.c_str()) != IFSelect_RetDone) {
-        std::error_code ec;
-        fs::remove(path, ec);
+    // A write that fails or throws half-way leaves no half of a file behind.
+    struct Partial {
+        const std::string& path;
+        bool done = false;
+        ~Partial() {
+            std::error_code ec;
+            if (!done) fs::remove(path, ec);
+        }
+    } partial{path};
+    if (writer.Write(path.c_str()) != IFSelect_RetDone)
         throw Refusal(path + ": cannot write the file");
-    }
+    partial.done = true;
 }
 
 void run(const Options& o) {
