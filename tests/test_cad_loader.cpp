@@ -20,6 +20,7 @@
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
+#include "cad_test_parts.h"
 #include "rig_step.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/gltf/gltf_loader.h"
@@ -33,18 +34,8 @@ using scene::ModelError;
 
 const fs::path kData = "/usr/share/opencascade/data";
 
-// This process's scratch folder, removed when the tests end.
 fs::path tempDir() {
-    struct Folder {
-        fs::path path = fs::temp_directory_path() / ("idview_cad_" + std::to_string(::getpid()));
-        ~Folder() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    };
-    static const Folder folder;
-    fs::create_directories(folder.path);
-    return folder.path;
+    return cadtest::scratchFolder("cad");
 }
 
 // What OCCT itself says a file holds: leaf objects and faces, each located instance counted.

@@ -10,11 +10,12 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <unistd.h>
+#include <sys/wait.h>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "cad_test_parts.h"
 #include "rig_step.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copy_grid.h"
@@ -25,19 +26,8 @@ namespace fs = std::filesystem;
 
 const fs::path kSteps = "/usr/share/opencascade/data/step";
 
-// This process's scratch folder, removed when the tests end.
 fs::path scratch() {
-    struct Folder {
-        fs::path path =
-            fs::temp_directory_path() / ("idview_step_copies_" + std::to_string(::getpid()));
-        ~Folder() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    };
-    static const Folder folder;
-    fs::create_directories(folder.path);
-    return folder.path;
+    return cadtest::scratchFolder("step_copies");
 }
 
 std::string readText(const fs::path& path) {
