@@ -1,5 +1,6 @@
-// rig_step.h - a small STEP assembly written with Open CASCADE for the CAD tests: instances
-// of one product, names, instance, product and face colours, and a turned sub-assembly.
+// rig_step.h - STEP files the CAD tests write with Open CASCADE: an XDE document to fill and
+// write, and the rig (instances of one product, names, instance, product and face colours, a
+// turned sub-assembly).
 #pragma once
 
 #include <cmath>
@@ -26,17 +27,48 @@
 
 namespace cadtest {
 
+// An XDE document to fill through `shapes` and `colors` and write as STEP with names and
+// colours; closed when it goes.
+class StepDocument {
+  public:
+    StepDocument() {
+        std::optional<scene::OcctLeaksIgnored> ignored(std::in_place); // the application's setup
+        app_ = XCAFApp_Application::GetApplication();
+        ignored.reset();
+        app_->NewDocument("MDTV-XCAF", doc_);
+        shapes = XCAFDoc_DocumentTool::ShapeTool(doc_->Main());
+        colors = XCAFDoc_DocumentTool::ColorTool(doc_->Main());
+    }
+    ~StepDocument() { app_->Close(doc_); }
+    StepDocument(const StepDocument&) = delete;
+    StepDocument& operator=(const StepDocument&) = delete;
+
+    void write(const std::filesystem::path& path) {
+        // The STEP writer's setup and its default axis directions are never freed by OCCT.
+        std::optional<scene::OcctLeaksIgnored> ignored(std::in_place);
+        STEPCAFControl_Writer writer;
+        writer.SetColorMode(true);
+        writer.SetNameMode(true);
+        EXPECT_TRUE(writer.Transfer(doc_, STEPControl_AsIs));
+        ignored.reset();
+        EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone) << path;
+    }
+
+    Handle(XCAFDoc_ShapeTool) shapes;
+    Handle(XCAFDoc_ColorTool) colors;
+
+  private:
+    Handle(XCAFApp_Application) app_;
+    Handle(TDocStd_Document) doc_;
+};
+
 // Writes `path` as STEP: one box placed twice ("left box" red, "right box" blue), a cylinder
 // ("pin", product colour green, its second face yellow of its own) and a sub-assembly holding
 // the box once more, all under the assembly "rig".
 inline void writeRigStep(const std::filesystem::path& path) {
-    std::optional<scene::OcctLeaksIgnored> ignored(std::in_place);
-    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
-    ignored.reset();
-    Handle(TDocStd_Document) doc;
-    app->NewDocument("MDTV-XCAF", doc);
-    Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-    Handle(XCAFDoc_ColorTool) colors = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+    StepDocument document;
+    const Handle(XCAFDoc_ShapeTool)& shapes = document.shapes;
+    const Handle(XCAFDoc_ColorTool)& colors = document.colors;
 
     const TDF_Label rig = shapes->NewShape();
     TDataStd_Name::Set(rig, "rig");
@@ -76,15 +108,7 @@ inline void writeRigStep(const std::filesystem::path& path) {
     colors->SetColor(right, Quantity_Color(0.0, 0.0, 1.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
     shapes->UpdateAssemblies();
 
-    // The STEP writer's setup and its default axis directions are never freed by OCCT.
-    ignored.emplace();
-    STEPCAFControl_Writer writer;
-    writer.SetColorMode(true);
-    writer.SetNameMode(true);
-    EXPECT_TRUE(writer.Transfer(doc, STEPControl_AsIs));
-    ignored.reset();
-    EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone);
-    app->Close(doc);
+    document.write(path);
 }
 
 } // namespace cadtest
