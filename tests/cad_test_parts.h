@@ -1,6 +1,6 @@
 // cad_test_parts.h - what the CAD tests share: a box with a through hole built with Open
-// CASCADE and written as a BREP file (loaded then as a user's file would be), and
-// XDG_CACHE_HOME pointed at a private folder for the life of a test.
+// CASCADE and written as a BREP file (loaded then as a user's file would be),
+// XDG_CACHE_HOME pointed at a private folder for the life of a test, and scratch folders.
 #pragma once
 
 #include <cstdlib>
@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -34,6 +35,24 @@ inline std::filesystem::path writeBoxWithHole(const std::string& name, double dx
         ("idview_" + name + "_" + std::to_string(::getpid()) + ".brep");
     if (!BRepTools::Write(cut.Shape(), path.c_str())) return {};
     return path;
+}
+
+// This process's scratch folder for `name` (idview_NAME_PID in the temporary folder), made on
+// first use and removed with everything in it when the process ends.
+inline std::filesystem::path scratchFolder(const std::string& name) {
+    struct Made {
+        std::vector<std::filesystem::path> folders;
+        ~Made() {
+            std::error_code ignored;
+            for (const std::filesystem::path& folder : folders)
+                std::filesystem::remove_all(folder, ignored);
+        }
+    };
+    static Made made;
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                         ("idview_" + name + "_" + std::to_string(::getpid()));
+    if (std::filesystem::create_directories(folder)) made.folders.push_back(folder);
+    return folder;
 }
 
 // XDG_CACHE_HOME is `folder` while this lives; its old value (or none) afterwards.

@@ -13,24 +13,15 @@
 
 #include <gtest/gtest.h>
 
-#include <BRepPrimAPI_MakeBox.hxx>
-#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IGESControl_Reader.hxx>
-#include <Quantity_Color.hxx>
-#include <STEPCAFControl_Writer.hxx>
 #include <STEPControl_Reader.hxx>
-#include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_ColorTool.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
-#include <gp_Ax1.hxx>
 
+#include "cad_test_parts.h"
+#include "rig_step.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/gltf/gltf_writer.h"
@@ -43,18 +34,8 @@ using scene::ModelError;
 
 const fs::path kData = "/usr/share/opencascade/data";
 
-// This process's scratch folder, removed when the tests end.
 fs::path tempDir() {
-    struct Folder {
-        fs::path path = fs::temp_directory_path() / ("idview_cad_" + std::to_string(::getpid()));
-        ~Folder() {
-            std::error_code ignored;
-            fs::remove_all(path, ignored);
-        }
-    };
-    static const Folder folder;
-    fs::create_directories(folder.path);
-    return folder.path;
+    return cadtest::scratchFolder("cad");
 }
 
 // What OCCT itself says a file holds: leaf objects and faces, each located instance counted.
@@ -202,66 +183,9 @@ TEST(CadLoader, ReportsProgressByStage) {
 
 // ---- an assembly written here -----------------------------------------------------------
 
-// Writes rig.step: one box placed twice ("left box" red, "right box" blue), a cylinder
-// ("pin", product colour green, its second face yellow of its own) and a sub-assembly holding
-// the box once more, all under the assembly "rig".
 fs::path writeRig() {
-    std::optional<scene::OcctLeaksIgnored> ignored(std::in_place);
-    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
-    ignored.reset();
-    Handle(TDocStd_Document) doc;
-    app->NewDocument("MDTV-XCAF", doc);
-    Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-    Handle(XCAFDoc_ColorTool) colors = XCAFDoc_DocumentTool::ColorTool(doc->Main());
-
-    const TDF_Label rig = shapes->NewShape();
-    TDataStd_Name::Set(rig, "rig");
-    const TDF_Label box = shapes->AddShape(BRepPrimAPI_MakeBox(10.0, 20.0, 30.0).Shape(), false);
-    TDataStd_Name::Set(box, "box");
-    const TopoDS_Shape cylinderShape = BRepPrimAPI_MakeCylinder(5.0, 15.0).Shape();
-    const TDF_Label cylinder = shapes->AddShape(cylinderShape, false);
-    TDataStd_Name::Set(cylinder, "cylinder");
-    colors->SetColor(cylinder, Quantity_Color(0.0, 1.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
-    TopTools_IndexedMapOfShape cylinderFaces;
-    TopExp::MapShapes(cylinderShape, TopAbs_FACE, cylinderFaces);
-    const TDF_Label ownFace = shapes->AddSubShape(cylinder, cylinderFaces(2));
-    colors->SetColor(ownFace, Quantity_Color(1.0, 1.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
-
-    auto place = [&](const TDF_Label& shape, gp_Vec offset, const char* name) {
-        gp_Trsf move;
-        move.SetTranslation(offset);
-        const TDF_Label component = shapes->AddComponent(rig, shape, TopLoc_Location(move));
-        TDataStd_Name::Set(component, name);
-        return component;
-    };
-    const TDF_Label left = place(box, gp_Vec(100.0, 0.0, 0.0), "left box");
-    const TDF_Label right = place(box, gp_Vec(0.0, 200.0, 0.0), "right box");
-    place(cylinder, gp_Vec(0.0, 0.0, 50.0), "pin");
-    // A sub-assembly, turned a quarter about z and raised, holding the box moved along x:
-    // the box lands at turn(5, 0, 0) + (0, 0, 100) = (0, 5, 100).
-    const TDF_Label arm = shapes->NewShape();
-    TDataStd_Name::Set(arm, "arm");
-    gp_Trsf along;
-    along.SetTranslation(gp_Vec(5.0, 0.0, 0.0));
-    TDataStd_Name::Set(shapes->AddComponent(arm, box, TopLoc_Location(along)), "arm box");
-    gp_Trsf turn;
-    turn.SetRotation(gp_Ax1(gp_Pnt(), gp_Dir(0.0, 0.0, 1.0)), M_PI / 2.0);
-    turn.SetTranslationPart(gp_Vec(0.0, 0.0, 100.0));
-    TDataStd_Name::Set(shapes->AddComponent(rig, arm, TopLoc_Location(turn)), "raised arm");
-    colors->SetColor(left, Quantity_Color(1.0, 0.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
-    colors->SetColor(right, Quantity_Color(0.0, 0.0, 1.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
-    shapes->UpdateAssemblies();
-
     const fs::path path = tempDir() / "rig.step";
-    // The STEP writer's setup and its default axis directions are never freed by OCCT.
-    ignored.emplace();
-    STEPCAFControl_Writer writer;
-    writer.SetColorMode(true);
-    writer.SetNameMode(true);
-    EXPECT_TRUE(writer.Transfer(doc, STEPControl_AsIs));
-    ignored.reset();
-    EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone);
-    app->Close(doc);
+    cadtest::writeRigStep(path);
     return path;
 }
 

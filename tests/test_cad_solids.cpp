@@ -3,7 +3,6 @@
 // a BREP written here with a repeated solid and a face of no solid, and a STEP product whose
 // shape is a compound with a solid coloured of its own; and partsAround on such a scene.
 #include <filesystem>
-#include <optional>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -14,19 +13,14 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <Quantity_Color.hxx>
-#include <STEPCAFControl_Writer.hxx>
 #include <TDataStd_Name.hxx>
-#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
-#include <XCAFApp_Application.hxx>
-#include <XCAFDoc_ColorTool.hxx>
-#include <XCAFDoc_DocumentTool.hxx>
-#include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Pln.hxx>
 
+#include "rig_step.h"
 #include "scene/assembly_tree.h"
 #include "scene/cad/cad_loader.h"
 
@@ -118,32 +112,19 @@ TEST(CadSolids, RepeatedSolidsShareAGeometryAndFreeFacesAreOneObject) {
 
 // A STEP product whose shape is one compound of two boxes, the second red of its own.
 TEST(CadSolids, ASolidsColourStaysWithItsFaces) {
-    std::optional<scene::OcctLeaksIgnored> ignored(std::in_place);
-    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
-    ignored.reset();
-    Handle(TDocStd_Document) doc;
-    app->NewDocument("MDTV-XCAF", doc);
-    Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-    Handle(XCAFDoc_ColorTool) colors = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+    cadtest::StepDocument document;
     TopoDS_Compound pair;
     BRep_Builder builder;
     builder.MakeCompound(pair);
     builder.Add(pair, BRepPrimAPI_MakeBox(1.0, 1.0, 1.0).Shape());
     const TopoDS_Shape red = BRepPrimAPI_MakeBox(gp_Pnt(5.0, 0.0, 0.0), 2.0, 2.0, 2.0).Shape();
     builder.Add(pair, red);
-    const TDF_Label product = shapes->AddShape(pair, false);
+    const TDF_Label product = document.shapes->AddShape(pair, false);
     TDataStd_Name::Set(product, "pair");
-    colors->SetColor(shapes->AddSubShape(product, red),
-                     Quantity_Color(1.0, 0.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
+    document.colors->SetColor(document.shapes->AddSubShape(product, red),
+                              Quantity_Color(1.0, 0.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
     const fs::path path = scratch("pair.step");
-    ignored.emplace(); // the STEP writer's setup is never freed by OCCT
-    STEPCAFControl_Writer writer;
-    writer.SetColorMode(true);
-    writer.SetNameMode(true);
-    EXPECT_TRUE(writer.Transfer(doc, STEPControl_AsIs));
-    ignored.reset();
-    EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone);
-    app->Close(doc);
+    document.write(path);
 
     const scene::Scene s = scene::loadCad(path.string()).scene;
     ASSERT_EQ(s.objects.size(), 2u);
