@@ -188,7 +188,13 @@ class SplitLoad {
             lose(uint32_t(piece), frame.bytes);
             return;
         }
-        const PieceAnswer answer = decodePieceAnswer(frame.bytes);
+        PieceAnswer answer;
+        try {
+            answer = decodePieceAnswer(frame.bytes);
+        } catch (const std::runtime_error& e) {
+            lose(uint32_t(piece), std::string("its answer was damaged (") + e.what() + ")");
+            return;
+        }
         stages_.largestPieceMs = std::max(stages_.largestPieceMs, msSince(sentAt_[worker]));
         addFigures(stages_, answer.figures);
         triangles_ += countTriangles(answer);
@@ -345,9 +351,11 @@ unsigned workerCount(const CadOptions& options) {
                                : std::max(1u, std::thread::hardware_concurrency());
 }
 
-CadLoadResult loadWithWorkers(const std::string& path, const CadOptions& options,
-                              const CadProgress& progress, uint32_t levels,
-                              const std::atomic<bool>* cancel, const CadPartialSink& partial) {
+namespace {
+
+CadLoadResult loadSplitOrWhole(const std::string& path, const CadOptions& options,
+                               const CadProgress& progress, uint32_t levels,
+                               const std::atomic<bool>* cancel, const CadPartialSink& partial) {
     const auto start = Clock::now();
     const Format format = checkedFormat(path, options, levels);
     CadStageFigures stages;
@@ -388,6 +396,22 @@ CadLoadResult loadWithWorkers(const std::string& path, const CadOptions& options
     stages.firstSolidMs = msSince(start);
     result.stages = stages;
     return result;
+}
+
+} // namespace
+
+CadLoadResult loadWithWorkers(const std::string& path, const CadOptions& options,
+                              const CadProgress& progress, uint32_t levels,
+                              const std::atomic<bool>* cancel, const CadPartialSink& partial) {
+    try {
+        return loadSplitOrWhole(path, options, progress, levels, cancel, partial);
+    } catch (const ModelError&) {
+        throw;
+    } catch (const Bad&) {
+        throw;
+    } catch (const std::runtime_error& e) { // a worker that cannot start, a damaged answer
+        throw Bad(e.what());
+    }
 }
 
 } // namespace scene::cad

@@ -2,6 +2,9 @@
 // (cad_worker.h); pieces are cad_piece.cpp's.
 #include "scene/cad/cad_worker.h"
 
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <new>
 
@@ -95,6 +98,16 @@ CadProgress progressTo(int fd) {
     };
 }
 
+// Fault injection for the tests of what a worker's end costs: IDVIEW_TEST_WORKER_SIGNAL=P:S
+// makes the worker that is handed piece P raise signal S (9 as a kill from outside would,
+// 11 as a crash inside Open CASCADE would) before it reads it.
+void injectedFault(uint32_t piece) {
+    const char* asked = std::getenv("IDVIEW_TEST_WORKER_SIGNAL");
+    unsigned p = 0;
+    int signal = 0;
+    if (asked && std::sscanf(asked, "%u:%d", &p, &signal) == 2 && p == piece) std::raise(signal);
+}
+
 // One job: its answer, or its failure in words.
 void runJob(int fd, const util::Frame& frame) {
     try {
@@ -102,9 +115,12 @@ void runJob(int fd, const util::Frame& frame) {
         case JobKind::Skeleton:
             answer(fd, AnswerKind::Skeleton, encode(readSkeleton(decodeSkeletonJob(frame.bytes))));
             return;
-        case JobKind::Piece:
-            answer(fd, AnswerKind::Piece, encode(readPiece(decodePieceJob(frame.bytes))));
+        case JobKind::Piece: {
+            const PieceJob job = decodePieceJob(frame.bytes);
+            injectedFault(job.piece);
+            answer(fd, AnswerKind::Piece, encode(readPiece(job)));
             return;
+        }
         case JobKind::WholeFile:
             answer(fd, AnswerKind::WholeFile,
                    encode(readWholeFile(decodeWholeFileJob(frame.bytes), progressTo(fd))));
