@@ -18,6 +18,7 @@
 // Plain C++, no Open CASCADE: the text is only lexed and copied.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -42,11 +43,14 @@ struct RepLayout {
 
 // One geometry representation and what the loader needs of it.
 struct Piece {
-    uint64_t rep = 0;       // the representation's entity number (#rep)
-    uint64_t dummySet = 0;  // the skeleton's GEOMETRIC_SET that stands for its solid items
-    uint64_t bytes = 0;     // the size of the piece's text, to schedule the largest first
+    uint64_t rep = 0;      // the representation's entity number (#rep)
+    uint64_t dummySet = 0; // the skeleton's GEOMETRIC_SET that stands for its solid items
+    uint64_t bytes = 0;    // the size of the piece's text, to schedule the largest first
     RepLayout layout;
-    bool hasBox = false;    // false: no vertex, the two points are both at the origin
+    bool hasBox = false; // false: no vertex, the two points are both at the origin
+    // The box's corners, the dummy set's two points, in the file's numbers (the
+    // representation's own units; Open CASCADE converts them when it reads the skeleton).
+    std::array<double, 3> boxMin{}, boxMax{};
 };
 
 // Why a file cannot be split (then it is read whole, as before): a syntax the lexer does not
@@ -70,16 +74,19 @@ class StepSplit {
     // The pieces in the order of their representations in the file.
     const std::vector<Piece>& pieces() const;
     // A complete STEP file (the original header, a DATA section, ENDSEC, END-ISO-10303-21).
+    // Both throw std::logic_error where notSplit() is set.
     std::string skeleton() const;
     // A complete STEP file holding piece `index` (see the top of this file). Made on demand, so
-    // that no more than the pieces in flight are held as text at once.
+    // that no more than the pieces in flight are held as text at once. Calls from several
+    // threads are safe (they share one set of visit marks, taken in turn).
     std::string pieceText(size_t index) const;
 
     // What the lexer saw, for --stats: entities, bytes, and milliseconds spent.
     uint64_t entities() const;
     uint64_t bytes() const;
-    double lexMs() const;   // indexing the entities and their references
-    double splitMs() const; // working out the skeleton and the pieces
+    uint64_t indexBytes() const; // what the index and the plan hold in memory
+    double lexMs() const;        // indexing the entities and their references
+    double splitMs() const;      // working out the skeleton and the pieces
 
   private:
     struct Impl;
