@@ -55,6 +55,12 @@ class Lexer {
   private:
     [[noreturn]] void refuse(const std::string& reason) const { throw Refused{reason}; }
     std::string where(const char* p) const { return "at byte " + std::to_string(p - base_); }
+    // Up to 20 bytes from `p`, on one line.
+    std::string sample(const char* p) const {
+        const char* stop = p;
+        while (stop < end_ && stop - p < 20 && uint8_t(*stop) >= ' ') ++stop;
+        return std::string(p, stop);
+    }
     std::string inRecord() const {
         return current_ ? " (record #" + std::to_string(current_) + ")" : " (in the header)";
     }
@@ -185,8 +191,7 @@ const char* Lexer::records(const char* p) {
         const char* after = nullptr;
         if (section(p, "ENDSEC", after)) return after;
         if (p == end_) refuse("the DATA section does not end (no ENDSEC;)");
-        refuse("unexpected text in the DATA section " + where(p) + ": '" +
-               std::string(p, std::min<size_t>(20, size_t(end_ - p))) + "'");
+        refuse("unexpected text in the DATA section " + where(p) + ": '" + sample(p) + "'");
     }
 }
 
