@@ -230,6 +230,24 @@ TEST(StepSplit, LaysOutBoxesAndCutsAHandmadeFile) {
     EXPECT_FALSE(holds(other, "MECHANICAL_DESIGN"));
 }
 
+// A style for one instance (Open CASCADE's instance colours) on the whole of a shape stays in
+// the skeleton, moved onto the set that stands for the shape, and out of the piece.
+TEST(StepSplit, KeepsAnInstanceStyleInTheSkeletonOnItsSet) {
+    const TempFile file("instance.step",
+                        stepFile(handmade() +
+                                 "#121 = OVER_RIDING_STYLED_ITEM('o',(#122),#101,#70);\n"
+                                 "#122 = PRESENTATION_STYLE_BY_CONTEXT((#72),#8);\n"));
+    const StepSplit split(file.path());
+    ASSERT_FALSE(split.notSplit()) << split.notSplit()->reason;
+    const std::string skeleton = split.skeleton();
+    EXPECT_TRUE(holds(skeleton, "#121=STYLED_ITEM('o',(#122),#550);"));
+    EXPECT_TRUE(holds(skeleton, "#122 = PRESENTATION_STYLE_BY_CONTEXT"));
+    for (size_t k = 0; k < split.pieces().size(); ++k) {
+        EXPECT_FALSE(holds(split.pieceText(k), "#121 =")) << k;
+        EXPECT_FALSE(holds(split.pieceText(k), "#122 =")) << k;
+    }
+}
+
 TEST(StepSplit, LeavesWholeWhatTheSkeletonCouldNotStandFor) {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"#110 = SHAPE_REPRESENTATION('',(#20),#9);\n",
@@ -242,9 +260,14 @@ TEST(StepSplit, LeavesWholeWhatTheSkeletonCouldNotStandFor) {
         {"#116 = SHAPE_REPRESENTATION('',(#117),#9);\n#117 = CURVE_USE('',#503);\n",
          "#116 (SHAPE_REPRESENTATION) uses the geometry of a solid"},
         {"#118 = MANIFOLD_SOLID_BREP('',#21);\n", "#118 (MANIFOLD_SOLID_BREP) is in no repr"},
-        {"#119 = OVER_RIDING_STYLED_ITEM('',(#120),#500,#70);\n"
-         "#120 = PRESENTATION_STYLE_BY_CONTEXT((#72),#100);\n",
+        {"#119 = STYLED_ITEM('',(#120),#500);\n#120 = SOME_STYLE(#100);\n",
          "the piece of #10 (ADVANCED_BREP_SHAPE_REPRESENTATION) would hold #101"},
+        {"#121 = OVER_RIDING_STYLED_ITEM('',(#122),#500,#70);\n"
+         "#122 = PRESENTATION_STYLE_BY_CONTEXT((#72),#8);\n",
+         "styles that depend on the assembly context (#121 (OVER_RIDING_STYLED_ITEM) on #500 "
+         "(ADVANCED_FACE), a part of its representation's shape)"},
+        {"#123 = STYLED_ITEM('',(#122),#20);\n#122 = PRESENTATION_STYLE_BY_CONTEXT((#72),#8);\n",
+         "on #20 (MANIFOLD_SOLID_BREP), a part of its representation's shape"},
     };
     for (const auto& [extra, reason] : cases) {
         const TempFile file("refused.step", stepFile(handmade() + extra));

@@ -144,8 +144,28 @@ void expectSamePlacement(const gp_Trsf& a, const gp_Trsf& b, const std::string& 
             EXPECT_NEAR(a.Value(row, column), b.Value(row, column), 1e-9) << name;
 }
 
-// The whole file, its skeleton and every piece read by Open CASCADE agree (see the top).
-// Returns the pieces, for the caller's own checks.
+// Each piece read alone: one free shape, laid out as its RepLayout says.
+std::vector<std::optional<Leaf>> readPieces(const StepSplit& split) {
+    std::vector<std::optional<Leaf>> leaves(split.pieces().size());
+    for (size_t k = 0; k < leaves.size(); ++k) {
+        const Piece& piece = split.pieces()[k];
+        const std::string text = split.pieceText(k);
+        EXPECT_EQ(text.size(), piece.bytes);
+        const std::vector<Leaf> read = readText("piece.step", text);
+        EXPECT_EQ(read.size(), 1u) << "piece " << k << ": one free shape";
+        if (read.size() != 1) continue;
+        EXPECT_EQ(objectFaces(read[0]), piece.layout.objectFaces) << "piece " << k;
+        TopTools_IndexedMapOfShape solids;
+        TopExp::MapShapes(read[0].shape, TopAbs_SOLID, solids);
+        EXPECT_EQ(uint32_t(solids.Extent()), piece.layout.solids) << "piece " << k;
+        leaves[k] = read[0];
+    }
+    return leaves;
+}
+
+// The whole file, its skeleton and every piece read by Open CASCADE agree (see the top). A
+// leaf's colours split: the piece's face colours, else the skeleton's (its instance's), else
+// the piece's (its product's), as the loader will take them. Returns the pieces.
 std::vector<Piece> expectSplitAsOpenCascadeReads(const std::string& path, double mmPerUnit) {
     const StepSplit split(path);
     EXPECT_FALSE(split.notSplit()) << split.notSplit()->reason;
@@ -153,8 +173,9 @@ std::vector<Piece> expectSplitAsOpenCascadeReads(const std::string& path, double
     const std::vector<Piece>& pieces = split.pieces();
     const std::vector<Leaf> whole = readLeaves(path);
     const std::vector<Leaf> skeleton = readText("skeleton.step", split.skeleton());
+    const std::vector<std::optional<Leaf>> pieceLeaves = readPieces(split);
     EXPECT_EQ(skeleton.size(), whole.size());
-    std::vector<std::optional<size_t>> wholeLeafOf(pieces.size());
+    std::vector<bool> used(pieces.size(), false);
     for (size_t i = 0; i < std::min(whole.size(), skeleton.size()); ++i) {
         EXPECT_EQ(skeleton[i].group, whole[i].group);
         EXPECT_EQ(skeleton[i].name, whole[i].name);
@@ -162,27 +183,17 @@ std::vector<Piece> expectSplitAsOpenCascadeReads(const std::string& path, double
         expectSamePlacement(skeleton[i].world, whole[i].world, whole[i].name);
         const size_t k = pieceOf(skeleton[i], pieces, mmPerUnit);
         if (k == pieces.size()) continue;
-        wholeLeafOf[k] = i;
+        used[k] = true;
         EXPECT_EQ(objectFaces(whole[i]), pieces[k].layout.objectFaces) << whole[i].name;
         const auto [lo, hi] = boxOf(verticesOf(whole[i].shape));
         const auto [pieceLo, pieceHi] = cornersOf(pieces[k], mmPerUnit);
         EXPECT_TRUE(pieces[k].hasBox && near(lo, pieceLo) && near(hi, pieceHi)) << whole[i].name;
+        if (!pieceLeaves[k]) continue;
+        Leaf coloured = *pieceLeaves[k];
+        if (skeleton[i].color) coloured.color = skeleton[i].color;
+        EXPECT_EQ(faceColours(coloured), faceColours(whole[i])) << whole[i].name;
     }
-    for (size_t k = 0; k < pieces.size(); ++k) {
-        const std::string text = split.pieceText(k);
-        EXPECT_EQ(text.size(), pieces[k].bytes);
-        const std::vector<Leaf> piece = readText("piece.step", text);
-        EXPECT_EQ(piece.size(), 1u) << "piece " << k << ": one free shape";
-        if (piece.size() != 1) continue;
-        EXPECT_EQ(objectFaces(piece[0]), pieces[k].layout.objectFaces) << "piece " << k;
-        TopTools_IndexedMapOfShape solids;
-        TopExp::MapShapes(piece[0].shape, TopAbs_SOLID, solids);
-        EXPECT_EQ(uint32_t(solids.Extent()), pieces[k].layout.solids) << "piece " << k;
-        EXPECT_TRUE(wholeLeafOf[k]) << "piece " << k << " stands for no leaf";
-        if (wholeLeafOf[k]) {
-            EXPECT_EQ(faceColours(piece[0]), faceColours(whole[*wholeLeafOf[k]])) << k;
-        }
-    }
+    for (size_t k = 0; k < pieces.size(); ++k) EXPECT_TRUE(used[k]) << "piece " << k << " unused";
     return pieces;
 }
 
@@ -232,8 +243,8 @@ void place(const Handle(XCAFDoc_ShapeTool) & shapes, const TDF_Label& assembly,
     TDataStd_Name::Set(shapes->AddComponent(assembly, product, TopLoc_Location(where)), name);
 }
 
-// rig: a block placed twice (a face of it blue), the sub-assembly arm (a green pin turned a
-// quarter, a pair of boxes, one red), and a box beside a face of no solid.
+// rig: a block placed twice (a face of it blue, one instance yellow), the sub-assembly arm (a green
+// pin turned a quarter, a pair of boxes, one red), and a box beside a face of no solid.
 void buildRig(const Handle(TDocStd_Document) & doc) {
     const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
     const Handle(XCAFDoc_ColorTool) colours = XCAFDoc_DocumentTool::ColorTool(doc->Main());
@@ -266,7 +277,9 @@ void buildRig(const Handle(TDocStd_Document) & doc) {
     const TDF_Label rig = shapes->NewShape();
     TDataStd_Name::Set(rig, "rig");
     place(shapes, rig, blockLabel, moved(0.0, 0.0, 0.0), "left block");
-    place(shapes, rig, blockLabel, moved(50.0, 0.0, 0.0), "right block");
+    const TDF_Label right = shapes->AddComponent(rig, blockLabel, TopLoc_Location(moved(50, 0, 0)));
+    TDataStd_Name::Set(right, "right block");
+    colours->SetColor(right, Quantity_Color(1.0, 1.0, 0.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf);
     place(shapes, rig, arm, moved(0.0, 40.0, 0.0, 0.3), "arm");
     place(shapes, rig, sheetLabel, moved(-20.0, 0.0, 0.0), "sheet");
     shapes->UpdateAssemblies();
@@ -299,6 +312,8 @@ TEST(StepSplitOcct, SplitsAnAssemblyWrittenByOpenCascadeAsItReadsIt) {
     const std::optional<std::string> text = util::readWholeFile(path);
     ASSERT_TRUE(text);
     EXPECT_NE(text->find("SI_UNIT($,.METRE.)"), std::string::npos) << "not written in metres";
+    EXPECT_NE(text->find("PRESENTATION_STYLE_BY_CONTEXT"), std::string::npos)
+        << "no instance style";
     ASSERT_EQ(readLeaves(path).size(), 5u); // two blocks, the arm's pin and pair, the sheet
     const std::vector<Piece> pieces = expectSplitAsOpenCascadeReads(path, 1000.0);
     std::vector<std::vector<uint32_t>> layouts;

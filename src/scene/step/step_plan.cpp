@@ -47,7 +47,7 @@ class Planner {
     }
     // Records the drop pass judges; the others are judged by their marks.
     bool candidate(uint32_t r) const {
-        return !p_.marked(r, kInGeometry | kStyledOnGeometry | kGeometryRep);
+        return !p_.marked(r, kInGeometry | kStyledOnGeometry | kGeometryRep | kInstanceStyle);
     }
 
     void findGeometryReps();
@@ -55,6 +55,7 @@ class Planner {
     void checkSolidUsers();
     void markGeometry();
     void findStyledItems();
+    bool instanceStyle(uint32_t styled, const Parameter& styles, uint32_t item);
     void dropFrom(uint32_t root);
     void decide(uint32_t record);
     void decidePresentation(uint32_t record);
@@ -150,11 +151,31 @@ void Planner::findStyledItems() {
         if (flags(r) & kContextStyled)
             refuse("styles that depend on the assembly context (" + x_.describe(r) + " on " +
                    x_.describe(item) + ")");
+        if (instanceStyle(r, parameters[1], item)) continue;
         mark(r, kStyledOnGeometry);
         mark(item, kStyledTarget);
         p_.styledByTarget.emplace_back(item, r);
     }
     std::sort(p_.styledByTarget.begin(), p_.styledByTarget.end());
+}
+
+// A style by context on the whole of a representation's shape can stand on its set in the
+// skeleton; on a part of it (a face, one solid of several) the skeleton could not.
+bool Planner::instanceStyle(uint32_t styled, const Parameter& styles, uint32_t item) {
+    const auto refs = x_.refsOf(styled);
+    bool byContext = false;
+    for (uint32_t i = 0; i < styles.refCount; ++i) {
+        const uint32_t style = refs[styles.firstRef + i];
+        byContext = byContext || (style != kNoRecord && (flags(style) & kStyleByContext));
+    }
+    if (!byContext) return false;
+    const auto rep = p_.repOfSolid.find(item);
+    if (rep == p_.repOfSolid.end() || p_.reps[rep->second].solidItems.size() != 1)
+        refuse("styles that depend on the assembly context (" + x_.describe(styled) + " on " +
+               x_.describe(item) + ", a part of its representation's shape)");
+    mark(styled, kInstanceStyle);
+    p_.repOfInstanceStyle.emplace(styled, rep->second);
+    return true;
 }
 
 // Depth first from `root` through candidates, each judged once all it references is.

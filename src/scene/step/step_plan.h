@@ -24,8 +24,11 @@ enum Mark : uint16_t {
     kDropped = 1u << 5,          // left out of the skeleton: it uses geometry
     kReferenced = 1u << 6,       // some record references it (else it is a root)
     kFiltered = 1u << 7,         // a presentation representation that loses items
-    kDecided = 1u << 8,          // the drop pass has been here (also: entered, see step_plan.cpp)
-    kEntered = 1u << 9,
+    kEntered = 1u << 8,          // the drop pass has been here
+    // A styled item on a representation's one solid whose style holds for one instance
+    // (Open CASCADE writes an instance's colour so): it stays in the skeleton, on the
+    // representation's set, where the reader gives the colour to that instance again.
+    kInstanceStyle = 1u << 9,
 };
 
 struct GeometryRep {
@@ -41,6 +44,7 @@ struct Plan {
     std::vector<GeometryRep> reps;                             // in file order
     std::unordered_map<uint32_t, uint32_t> repOfSolid;         // solid item -> index in reps
     std::vector<std::pair<uint32_t, uint32_t>> styledByTarget; // (item, styled item), sorted
+    std::unordered_map<uint32_t, uint32_t> repOfInstanceStyle; // kInstanceStyle -> rep
     // The items a filtered presentation representation keeps.
     std::unordered_map<uint32_t, std::vector<uint32_t>> keptItems;
 

@@ -9,7 +9,10 @@
 //   of the box of its vertices, in the representation's own units). Read by Open CASCADE like
 //   any STEP file, it gives the very assembly tree, placements and names the whole file would,
 //   in a fraction of the time, and each leaf's shape is the set of one representation, which
-//   names the piece that holds its geometry.
+//   names the piece that holds its geometry. A style that holds for one instance (Open
+//   CASCADE writes an instance's colour as a style by context on the solid) is moved from the
+//   solid onto the set, so that the reader gives it to that instance again; the pieces carry
+//   the products' and the faces' colours.
 // - one piece per geometry representation: the representation with everything it references
 //   (its solids, their faces down to the points, its units), the styled items on those and a
 //   presentation representation listing them, and a product of its own that uses the

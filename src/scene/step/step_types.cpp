@@ -37,6 +37,7 @@ uint32_t roleFlags(std::string_view name) {
     if (name == "CONTEXT_DEPENDENT_OVER_RIDING_STYLED_ITEM") return kContextStyled;
     if (name == "PRESENTATION_LAYER_ASSIGNMENT") return kLayer;
     if (name == "MAPPED_ITEM") return kMappedItem;
+    if (name == "PRESENTATION_STYLE_BY_CONTEXT") return kStyleByContext;
     if (!endsWith(name, "REPRESENTATION")) return 0;
     if (endsWith(name, "_REPRESENTATION") && name != "DEFINITIONAL_REPRESENTATION")
         return kRepresentation | kGeometryRepType;

@@ -27,6 +27,7 @@ enum TypeFlag : uint32_t {
     kContextStyled = 1u << 12,  // CONTEXT_DEPENDENT_OVER_RIDING_STYLED_ITEM
     kLayer = 1u << 13,          // PRESENTATION_LAYER_ASSIGNMENT
     kMappedItem = 1u << 14,
+    kStyleByContext = 1u << 15, // PRESENTATION_STYLE_BY_CONTEXT: a style for one instance
 };
 constexpr uint32_t kSolidLike = kSolid | kSurfaceModel;
 

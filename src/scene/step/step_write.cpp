@@ -57,6 +57,15 @@ std::string representation(const StepIndex& index, uint32_t record, const std::s
            ");\n";
 }
 
+// "#id=STYLED_ITEM(name,(styles),#set);": an instance's style moved from the solid to the
+// set that stands for it (an OVER_RIDING_STYLED_ITEM loses the style it overrode, which is
+// in the piece).
+std::string instanceStyle(const StepIndex& index, uint32_t record, uint64_t set) {
+    const std::vector<Parameter> parameters = parametersOf(index, record);
+    return entityName(index.idOf(record)) + "=STYLED_ITEM(" + std::string(parameters[0].text) +
+           "," + std::string(parameters[1].text) + "," + entityName(set) + ");\n";
+}
+
 std::string point(uint64_t id, const std::array<std::string_view, 3>& coordinates, bool any) {
     std::string text = entityName(id) + "=CARTESIAN_POINT('',(";
     for (size_t axis = 0; axis < 3; ++axis)
@@ -86,6 +95,8 @@ std::string skeletonText(const StepIndex& index, const Plan& plan,
                 index, r, others + (others.empty() ? "" : ",") + entityName(dummySetId(index, k)));
         } else if (plan.marked(r, kFiltered)) {
             text += representation(index, r, refList(index, plan.keptItems.at(r)));
+        } else if (plan.marked(r, kInstanceStyle)) {
+            text += instanceStyle(index, r, dummySetId(index, plan.repOfInstanceStyle.at(r)));
         } else {
             text.append(index.textOf(r)).push_back('\n');
         }
