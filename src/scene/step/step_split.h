@@ -35,7 +35,10 @@ namespace scene::step {
 // solids, or a solid beside faces of no solid, plus one object for the faces of no solid; else
 // one object with every face. Face counts are of distinct face entities, in the order Open
 // CASCADE's TopExp::MapShapes visits them (items in order, shells in order, faces in order, a
-// face met again not counted twice).
+// face met again not counted twice). The counts are of the text's face entities: where Open
+// CASCADE's reader splits a face as it fixes the shape (ShapeFix's FixSplitFaceMode, on by
+// default), its shape has more faces than counted here (KiCad's SSO-4 model: 96 face
+// entities, 104 faces read), so a loader takes them as a forecast, not as a promise.
 struct RepLayout {
     std::vector<uint32_t> objectFaces; // per object, its faces
     bool split = false;                // one object per solid (named "solid N"), ...
