@@ -44,7 +44,8 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
                   object.name,
                   object.path,
                   std::nullopt};
-    if (ref->localPart < geometry.partFaces.size()) info.face = geometry.partFaces[ref->localPart];
+    if (ref->localPart < geometry.partFaces.size() && geometry.partFaces[ref->localPart] != kNoFace)
+        info.face = geometry.partFaces[ref->localPart];
     return info;
 }
 
@@ -119,7 +120,7 @@ void validate(const Scene& scene) {
         uint32_t expected = 0;
         for (uint32_t p = 0; p < g.partCount; ++p) {
             const Part& part = scene.parts[g.firstPart + p];
-            if (part.firstTriangle != expected || part.triangleCount == 0)
+            if (part.firstTriangle != expected)
                 fail(name + " part " + std::to_string(p) + " does not follow the previous one");
             expected += part.triangleCount;
         }

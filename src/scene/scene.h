@@ -28,6 +28,9 @@ struct Part {
     uint32_t triangleCount = 0;
 };
 
+// Geometry::partFaces of a part whose face the file lists but its reader did not give.
+constexpr uint32_t kNoFace = 0xFFFFFFFFu;
+
 // Vertices and triangles in the scene's shared arrays, drawable as one draw call.
 struct Geometry {
     std::string name;
@@ -38,7 +41,7 @@ struct Geometry {
     uint32_t firstPart = 0; // into Scene::parts
     uint32_t partCount = 0;
     // CAD files: each part's B-rep face, numbered as TopExp::MapShapes orders the shape's
-    // faces (a face that did not triangulate has no part, so the numbers may skip). Empty for
+    // faces, or kNoFace for a face the file lists that Open CASCADE did not give. Empty for
     // other sources, whose parts are no faces.
     std::vector<uint32_t> partFaces;
     // CAD files: each part's face as the B-rep knows it (surface type, exact area, plane,
