@@ -48,15 +48,12 @@ using scene::step::StepSplit;
 
 const fs::path kStepData = "/usr/share/opencascade/data/step";
 
-std::vector<Leaf> readLeaves(const std::string& path) {
+// The leaves Open CASCADE's XDE reader gives of a file, or of STEP text in memory.
+std::vector<Leaf> readLeaves(const std::string& path, const std::string* text = nullptr) {
     scene::ReaderLosses losses;
     double sewTolerance = 0.0;
-    return scene::cad::readXde(path, scene::cad::Format::Step, {}, losses, sewTolerance, nullptr);
-}
-
-std::vector<Leaf> readText(const std::string& name, const std::string& text) {
-    const steptest::TempFile file(name, text);
-    return readLeaves(file.path());
+    return scene::cad::readXde({path, text}, scene::cad::Format::Step, {}, losses, sewTolerance,
+                               nullptr);
 }
 
 bool near(double a, double b) {
@@ -151,7 +148,7 @@ std::vector<std::optional<Leaf>> readPieces(const StepSplit& split) {
         const Piece& piece = split.pieces()[k];
         const std::string text = split.pieceText(k);
         EXPECT_EQ(text.size(), piece.bytes);
-        const std::vector<Leaf> read = readText("piece.step", text);
+        const std::vector<Leaf> read = readLeaves("piece.step", &text);
         EXPECT_EQ(read.size(), 1u) << "piece " << k << ": one free shape";
         if (read.size() != 1) continue;
         EXPECT_EQ(objectFaces(read[0]), piece.layout.objectFaces) << "piece " << k;
@@ -172,7 +169,8 @@ std::vector<Piece> expectSplitAsOpenCascadeReads(const std::string& path, double
     if (split.notSplit()) return {};
     const std::vector<Piece>& pieces = split.pieces();
     const std::vector<Leaf> whole = readLeaves(path);
-    const std::vector<Leaf> skeleton = readText("skeleton.step", split.skeleton());
+    const std::string skeletonText = split.skeleton();
+    const std::vector<Leaf> skeleton = readLeaves("skeleton.step", &skeletonText);
     const std::vector<std::optional<Leaf>> pieceLeaves = readPieces(split);
     EXPECT_EQ(skeleton.size(), whole.size());
     std::vector<bool> used(pieces.size(), false);
