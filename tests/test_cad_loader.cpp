@@ -200,7 +200,8 @@ TEST(CadLoader, WrittenAssemblyKeepsInstancesNamesColoursAndPlacements) {
     std::set<std::string> stages;
     const CadLoadResult r =
         scene::loadCad(path.string(), {}, [&](const char* stage, double) { stages.insert(stage); });
-    // A split file's stages (cad_loader.h).
+    // The stages of a STEP file the splitter cuts (scene/step/step_split.h): its skeleton,
+    // then its pieces, meshed as they are read.
     EXPECT_EQ(stages, (std::set<std::string>{"reading", "reading the assembly structure",
                                              "loading solids", "building"}));
     const scene::Scene& s = r.scene;
