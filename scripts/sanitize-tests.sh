@@ -22,7 +22,7 @@ san=$root/tests/sanitizers
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
         -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
 # Only what runs below: the culling label's binary is left out (see tests/CMakeLists.txt).
-cmake --build "$build" -j"$(nproc)" --target idview idview_unit_tests idview_viewer_unit_tests \
+cmake --build "$build" -j"$(nproc)" --target idview idview-load-worker idview_unit_tests idview_viewer_unit_tests \
     idview_vulkan_tests
 
 # Keeps lavapipe and the validation layer mapped until the exit-time leak check (see

@@ -241,6 +241,62 @@ void writeBytes(const fs::path& file, const std::string& bytes) {
     std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 }
 
+// The entry's head: magic (8), version (4), key length (8) and key, payload length (8),
+// payload checksum (8); then the payload, then the shapes' bytes.
+uint64_t keySizeOf(const std::string& entry) {
+    uint64_t size = 0;
+    std::memcpy(&size, entry.data() + 12, 8);
+    return size;
+}
+size_t payloadAt(const std::string& entry) {
+    return 36 + keySizeOf(entry);
+}
+uint64_t payloadSizeOf(const std::string& entry) {
+    uint64_t size = 0;
+    std::memcpy(&size, entry.data() + 20 + keySizeOf(entry), 8);
+    return size;
+}
+
+// A hit reads no shape: each is read back from the entry when a query first asks for it, and
+// so is every shape of a load once its entry is written (the bytes it held go).
+TEST_F(CadCache, ShapesAreReadFromTheEntryWhenAsked) {
+    const CadLoadResult first = loadCadCached(kMotor.string(), {});
+    ASSERT_EQ(first.cache, "miss");
+    for (const CadLoadResult* r : {&first}) {
+        EXPECT_EQ(r->scene.brep->decodedCount(), 0u);
+        for (uint32_t g = 0; g < r->scene.geometries.size(); ++g)
+            EXPECT_TRUE(r->scene.brep->stored(g).bytes.empty()) << "geometry " << g;
+    }
+    const CadLoadResult hit = loadCadCached(kMotor.string(), {});
+    ASSERT_EQ(hit.cache, "hit");
+    EXPECT_EQ(hit.scene.brep->decodedCount(), 0u);
+    ASSERT_TRUE(partFace(hit.scene, 5));
+    EXPECT_EQ(hit.scene.brep->decodedCount(), 1u);
+    expectBrepFacesMatchParts(hit.scene);
+    EXPECT_EQ(hit.scene.brep->decodedCount(), hit.scene.geometries.size());
+}
+
+// A shape's bytes damaged in the entry: the scene still opens from it (the shapes are checked
+// when read), and asking for that shape is refused in words, never a wrong face.
+TEST_F(CadCache, ADamagedShapeIsRefusedWhenAsked) {
+    loadCadCached(kMotor.string(), {});
+    ASSERT_EQ(entries().size(), 1u);
+    const fs::path entry = entries()[0];
+    std::string bytes = readBytes(entry);
+    bytes[bytes.size() - 20] ^= 0x20; // inside the last geometry's shape
+    writeBytes(entry, bytes);
+    const CadLoadResult hit = loadCadCached(kMotor.string(), {});
+    ASSERT_EQ(hit.cache, "hit");
+    const uint32_t last = uint32_t(hit.scene.geometries.size() - 1);
+    EXPECT_NO_THROW(hit.scene.brep->shape(0));
+    try {
+        hit.scene.brep->shape(last);
+        ADD_FAILURE() << "a damaged shape was decoded";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "the tessellation cache's entry changed under the scene");
+    }
+}
+
 TEST_F(CadCache, DamagedEntriesAreMissesAndWrittenAnew) {
     const CadLoadResult original = loadCadCached(kMotor.string(), {});
     ASSERT_EQ(entries().size(), 1u);
@@ -259,7 +315,7 @@ TEST_F(CadCache, DamagedEntriesAreMissesAndWrittenAnew) {
          "damaged"},
         {"a payload byte flipped",
          [](std::string b) {
-             b[b.size() - 1000] ^= 0x10; // inside the payload, before the checksum
+             b[payloadAt(b) + 10] ^= 0x10; // inside the scene's arrays
              return b;
          },
          "checksum mismatch"},
@@ -297,21 +353,18 @@ TEST_F(CadCache, DamageBehindAGoodChecksumNeverGivesABrokenScene) {
     const std::string good = readBytes(entry);
     const auto key = cadCacheKey(kMotor.string(), {}, 1);
     ASSERT_TRUE(key);
-    // magic (8), version (4), key length (8) and key, payload length (8) and payload, checksum.
-    uint64_t keySize = 0, payloadSize = 0;
-    std::memcpy(&keySize, good.data() + 12, 8);
-    std::memcpy(&payloadSize, good.data() + 20 + keySize, 8);
-    const size_t payloadAt = 28 + keySize;
-    ASSERT_EQ(payloadAt + payloadSize + 8, good.size());
+    const size_t at0 = payloadAt(good);
+    const uint64_t payloadSize = payloadSizeOf(good);
+    ASSERT_LT(at0 + payloadSize, good.size()); // the shapes' bytes follow
     std::mt19937 random(7);
     size_t refused = 0;
     for (int trial = 0; trial < 300; ++trial) {
         std::string bad = good;
         // The first bytes hold the counts and sizes that steer the decoding.
-        const size_t at = payloadAt + (trial < 150 ? random() % 64 : random() % payloadSize);
+        const size_t at = at0 + (trial < 150 ? random() % 64 : random() % payloadSize);
         bad[at] = static_cast<char>(random());
-        const uint64_t checksum = util::hash64(bad.data() + payloadAt, payloadSize);
-        std::memcpy(bad.data() + payloadAt + payloadSize, &checksum, 8);
+        const uint64_t checksum = util::hash64(bad.data() + at0, payloadSize);
+        std::memcpy(bad.data() + at0 - 8, &checksum, 8);
         writeBytes(entry, bad);
         std::string why;
         if (const auto r = readCadCache(entry, *key, why))

@@ -199,7 +199,7 @@ TEST(EdgeInfo, AnOcctFilesEdgesAreOpenCascadesOwn) {
     int circles = 0, checked = 0;
     for (uint32_t part = 0; part < s.uniquePartCount(); ++part) {
         const uint32_t object = s.locate(part)->object;
-        const TopoDS_Shape& shape = s.brep->impl().geometries[s.objects[object].geometry].shape;
+        const TopoDS_Shape& shape = s.brep->shape(s.objects[object].geometry).shape;
         TopTools_IndexedMapOfShape edges;
         TopExp::MapShapes(shape, TopAbs_EDGE, edges);
         const TopLoc_Location where = placement(glm::dmat4(s.objects[object].world));

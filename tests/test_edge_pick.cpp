@@ -76,7 +76,7 @@ TEST(EdgeInfoPick, NamesTheEdgeNearestTheRayCastsHit) {
     ASSERT_EQ(r.edgeInfoEdges.size(), o.edgeInfos.size());
 
     const scene::RayCaster caster(s);
-    const TopoDS_Shape& shape = s.brep->impl().geometries[s.objects[0].geometry].shape;
+    const TopoDS_Shape& shape = s.brep->shape(s.objects[0].geometry).shape;
     TopTools_IndexedMapOfShape edges;
     TopExp::MapShapes(shape, TopAbs_EDGE, edges);
     const TopLoc_Location where = scene::placement(glm::dmat4(s.objects[0].world));

@@ -123,7 +123,7 @@ Plates find(const Scene& s) {
     // The circles at z = 10, by their radius, numbered as inspect.h's EdgeRef numbers edges.
     const Object& holed = s.objects[f.holed];
     TopTools_IndexedMapOfShape edges;
-    TopExp::MapShapes(s.brep->impl().geometries[holed.geometry].shape, TopAbs_EDGE, edges);
+    TopExp::MapShapes(s.brep->shape(holed.geometry).shape, TopAbs_EDGE, edges);
     for (int e = 1; e <= edges.Extent(); ++e) {
         const BRepAdaptor_Curve curve(TopoDS::Edge(edges(e)));
         if (curve.GetType() != GeomAbs_Circle ||

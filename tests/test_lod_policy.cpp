@@ -130,7 +130,7 @@ TEST(LodPolicy, CadLevelsAreTheChoiceAmongItsTessellations) {
         const CadLoadResult built = loadCad(path.string(), {}, {}, maxLevels);
         ASSERT_TRUE(bare.scene.brep);
         // No face of these files is left unmeshed, so the loader skipped none.
-        const auto candidates = cadCandidates(bare.scene, bare.scene.brep->impl().geometries,
+        const auto candidates = cadCandidates(bare.scene, decodedShapes(*bare.scene.brep),
                                               bare.deflection, CadOptions{}.angularDeflection, {});
         expectTheChoice(bare.scene, built.scene, candidates, name);
     }
@@ -149,7 +149,7 @@ TEST(LodPolicy, ACadGeometryAndTheSameAsAMeshGetTheSameLevels) {
     CadLoadResult loaded = loadCad(path.string(), {}, {}, 1);
     Scene& s = loaded.scene;
     const std::vector<GeometryCandidates> candidates = cadCandidates(
-        s, s.brep->impl().geometries, loaded.deflection, CadOptions{}.angularDeflection, {});
+        s, decodedShapes(*s.brep), loaded.deflection, CadOptions{}.angularDeflection, {});
     // The CAD geometry of the most triangles, and a copy of it as a mesh would come: no
     // faces, no surfaces, no shape; its own object.
     uint32_t cad = 0;

@@ -97,6 +97,19 @@ std::vector<Flag> cadFlags(const Options& d) {
              o.scene.cad.maxTriangles =
                  parseCount("--max-triangles", v, 1, std::numeric_limits<uint32_t>::max());
          }},
+        {"--load-workers", "N",
+         "CAD files: worker processes that read, translate and mesh a file's pieces in "
+         "parallel (STEP files are split into them; others are read whole by one); 0 is one "
+         "per core" +
+             byDefault(d.scene.cad.workers),
+         [](Options& o, auto& v) {
+             o.scene.cad.workers = parseCount("--load-workers", v, 0, 256);
+         }},
+        {"--healing", "on|off",
+         "CAD files: Open CASCADE's shape healing after a STEP file's translation; off skips "
+         "it, most of the translation's time, and leaves the file's own flaws as they are" +
+             onOff(d.scene.cad.healing),
+         [](Options& o, auto& v) { o.scene.cad.healing = parseOnOff("--healing", v); }},
         {"--progress", nullptr,
          "print progress on stderr even when it is no terminal (a pipe, a log): a CAD "
          "load's, from the start (at a terminal once it has taken a second), and the "

@@ -1,13 +1,16 @@
 // scene_report.cpp - the JSON of --stats and --tree (scene_source.h), and the levels of
 // detail's array the benchmark's file shares with --stats.
+#include <algorithm>
 #include <filesystem>
 
 #include "app/scene_source.h"
+
 #include "render/draw_list.h"
 #include "scene/assembly_tree.h"
 #include "scene/lod.h"
 #include "scene/part_data.h"
 #include "util/json_writer.h"
+#include "util/memory.h"
 
 namespace app {
 
@@ -68,6 +71,49 @@ void sceneMembers(util::JsonWriter& json, const LoadedScene& loaded, uint32_t se
         .member("lod_level", loaded.settings.lodLevel)
         .key("lod_levels");
     levelStatsArray(json, scene::levelStats(s));
+}
+
+// Mebibytes, for the memory figures.
+uint64_t mib(uint64_t bytes) {
+    return util::mebibytes(bytes);
+}
+
+// A CAD load's stages (scene::CadStageFigures): where its time and memory went.
+void loadMembers(util::JsonWriter& json, const scene::CadLoadFigures& f) {
+    const scene::CadStageFigures& s = f.stages;
+    json.beginObject("load")
+        .member("split", s.split)
+        .member("not_split", s.notSplit)
+        .member("workers", s.workers)
+        .member("pieces", s.pieces)
+        .member("pieces_lost", s.piecesLost)
+        .member("worker_restarts", s.workerRestarts)
+        .member("lex_ms", ms(s.lexMs))
+        .member("split_ms", ms(s.splitMs))
+        .member("skeleton_ms", ms(s.skeletonMs))
+        .member("first_solid_ms", ms(s.firstSolidMs))
+        .member("pieces_ms", ms(s.piecesMs))
+        .member("largest_piece_ms", ms(s.largestPieceMs))
+        .member("parse_ms", ms(s.parseMs))
+        .member("transfer_ms", ms(s.transferMs))
+        .member("healing_ms", ms(s.healingMs))
+        .member("mesh_ms", ms(s.meshMs))
+        .member("build_ms", ms(s.buildMs))
+        .member("levels_ms", ms(s.levelsMs))
+        .member("encode_ms", ms(s.encodeMs))
+        .member("assembly_ms", ms(s.assemblyMs))
+        .member("cache_ms", ms(f.cacheMs));
+    const uint64_t tree =
+        std::max({s.peakLexBytes, s.peakSkeletonBytes, s.peakPiecesBytes, s.peakAssemblyBytes});
+    json.beginObject("peak_mib")
+        .member("lex", mib(s.peakLexBytes))
+        .member("skeleton", mib(s.peakSkeletonBytes))
+        .member("pieces", mib(s.peakPiecesBytes))
+        .member("assembly", mib(s.peakAssemblyBytes))
+        .member("worker", mib(s.peakWorkerBytes))
+        .member("process_tree", mib(tree))
+        .endObject()
+        .endObject();
 }
 
 // What the chosen renderer and mode would draw and upload, derived geometry included.
@@ -134,6 +180,12 @@ std::string statsJson(const LoadedScene& loaded, const render::RenderSettings& s
     sceneMembers(json, loaded, settings.pipeline.searchBatch);
     drawMembers(json, loaded.scene, settings);
     json.array("warnings", loaded.warnings);
+    if (loaded.cad)
+        loadMembers(json, loaded.cadLoad);
+    else
+        json.key("load").null();
+    // This process's own peak so far (the workers' are in "load").
+    json.member("peak_mib", mib(util::peakResidentBytes()));
     if (first)
         json.member("first_frame_ms", ms(first->ms)).member("pipeline_cache", first->pipelineCache);
     else

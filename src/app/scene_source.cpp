@@ -82,7 +82,7 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
 }
 
 LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
-                      const std::atomic<bool>* cancel) {
+                      const std::atomic<bool>* cancel, const scene::CadPartialSink& partial) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
     loaded.settings = settings;
@@ -96,9 +96,9 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
             };
             scene::CadLoadResult result =
                 settings.cadCache ? scene::loadCadCached(loaded.source, settings.cad, report,
-                                                         settings.lodLevels, cancel)
+                                                         settings.lodLevels, cancel, partial)
                                   : scene::loadCad(loaded.source, settings.cad, report,
-                                                   settings.lodLevels, cancel);
+                                                   settings.lodLevels, cancel, partial);
             loaded.cad = true;
             loaded.cadLoad = result; // the figures; the scene and warnings move below
             if (!settings.cadCache) loaded.cadLoad.cacheNote = "--no-cache";

@@ -78,8 +78,10 @@ class LoadProgress {
 
 // A CAD load stops while `cancel` is set (the viewer's Cancel), with ModelError "<file>:
 // cancelled".
+// `partial` sees a big CAD file's solids as they come (scene::CadPartial), on the loading thread.
 LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress = nullptr,
-                      const std::atomic<bool>* cancel = nullptr);
+                      const std::atomic<bool>* cancel = nullptr,
+                      const scene::CadPartialSink& partial = {});
 
 // Throws std::runtime_error, one line, when `copies` of `scene` would not fit in this
 // machine's memory (checked before any allocation).

@@ -44,7 +44,8 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
                   object.name,
                   object.path,
                   std::nullopt};
-    if (ref->localPart < geometry.partFaces.size()) info.face = geometry.partFaces[ref->localPart];
+    if (ref->localPart < geometry.partFaces.size() && geometry.partFaces[ref->localPart] != kNoFace)
+        info.face = geometry.partFaces[ref->localPart];
     return info;
 }
 

@@ -33,6 +33,9 @@ struct Part {
     bool empty() const { return triangleCount == 0; }
 };
 
+// Geometry::partFaces of a part whose face the file lists but its reader did not give.
+constexpr uint32_t kNoFace = 0xFFFFFFFFu;
+
 // Vertices and triangles in the scene's shared arrays, drawable as one draw call. A geometry
 // has at least one part; all of them may be empty, and then it has no triangles and no
 // vertices (an object whose solid is not meshed yet points to one) and draws nothing.
@@ -45,8 +48,8 @@ struct Geometry {
     uint32_t firstPart = 0; // into Scene::parts
     uint32_t partCount = 0;
     // CAD files: each part's B-rep face, numbered as TopExp::MapShapes orders the shape's
-    // faces (where a face has no part, the numbers skip). Empty for other sources, whose
-    // parts are no faces.
+    // faces, or kNoFace for a face the file lists that Open CASCADE did not give. Empty for
+    // other sources, whose parts are no faces.
     std::vector<uint32_t> partFaces;
     // CAD files: each part's face as the B-rep knows it (surface type, exact area, plane,
     // axis, radius), in the order of partFaces; empty for other sources.

@@ -31,8 +31,7 @@ std::optional<std::string> readWholeFile(const fs::path& file) {
     return bytes;
 }
 
-std::string writeFileAtomically(const fs::path& file,
-                                std::initializer_list<std::string_view> parts) {
+std::string writeFileAtomically(const fs::path& file, const std::vector<std::string_view>& parts) {
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
     if (ec) return file.parent_path().string() + ": " + ec.message();

@@ -5,10 +5,10 @@
 #pragma once
 
 #include <filesystem>
-#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace util {
 
@@ -21,6 +21,6 @@ std::optional<std::string> readWholeFile(const std::filesystem::path& file);
 
 // Writes `parts` one after the other as `file`, creating its folder; returns "" or why not.
 std::string writeFileAtomically(const std::filesystem::path& file,
-                                std::initializer_list<std::string_view> parts);
+                                const std::vector<std::string_view>& parts);
 
 } // namespace util

@@ -44,7 +44,7 @@ std::optional<Located> locate(const Scene& scene, const Thing& thing) {
         const Object& object = scene.objects[ref->object];
         if (!scene.brep->has(object.geometry)) return std::nullopt;
         TopTools_IndexedMapOfShape edges;
-        TopExp::MapShapes(scene.brep->impl().geometries[object.geometry].shape, TopAbs_EDGE, edges);
+        TopExp::MapShapes(scene.brep->shape(object.geometry).shape, TopAbs_EDGE, edges);
         if (thing.edge->edge >= uint32_t(edges.Extent())) return std::nullopt;
         return Located{edges(int(thing.edge->edge) + 1).Moved(placement(object.world)), true};
     }
@@ -153,8 +153,7 @@ std::optional<DistanceReport> exactDistance(const Scene& scene, const Thing& a, 
 
 SolidProperties exactProperties(const Scene& scene, uint32_t object) {
     const Object& o = scene.objects[object];
-    const TopoDS_Shape shape =
-        scene.brep->impl().geometries[o.geometry].shape.Moved(placement(o.world));
+    const TopoDS_Shape shape = scene.brep->shape(o.geometry).shape.Moved(placement(o.world));
     SolidProperties p;
     p.object = object;
     p.unit = scene.unit;

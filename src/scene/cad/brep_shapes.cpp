@@ -1,17 +1,15 @@
-// brep_shapes.cpp - the kept B-rep and its bytes in the tessellation cache (brep_shapes.h).
+// brep_shapes.cpp - the kept B-rep: shapes encoded, decoded one geometry at a time when asked
+// (brep_shapes.h, brep_occt.h).
 #include "scene/cad/brep_shapes.h"
 
 #include <sstream>
 #include <stdexcept>
 
-#include <BRep_Builder.hxx>
 #include <BinTools.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
-#include <TopoDS_Iterator.hxx>
 #include <gp_Trsf.hxx>
 
 #include "scene/cad/brep_occt.h"
@@ -19,85 +17,103 @@
 
 namespace scene {
 
-BrepShapes::BrepShapes(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-BrepShapes::~BrepShapes() = default;
-
-uint32_t BrepShapes::geometryCount() const {
-    return uint32_t(impl_->geometries.size());
+uint32_t encodedFaceCount(std::string_view bytes) {
+    ByteReader in(bytes);
+    return uint32_t(in.get<uint64_t>()); // the face order's length, first
 }
 
+BrepShapes::BrepShapes(std::vector<Stored> stored, std::shared_ptr<const EncodedShapeFile> file)
+    : stored_(std::move(stored)), file_(std::move(file)), decoded_(stored_.size()) {}
+
+BrepShapes::~BrepShapes() = default;
+
 bool BrepShapes::has(uint32_t geometry) const {
-    return geometry < impl_->geometries.size() && !impl_->geometries[geometry].shape.IsNull();
+    return geometry < stored_.size() && stored_[geometry].present;
 }
 
 uint32_t BrepShapes::faceCount(uint32_t geometry) const {
-    return has(geometry) ? uint32_t(impl_->geometries[geometry].faces.size()) : 0;
+    return has(geometry) ? stored_[geometry].faces : 0;
 }
 
-// Layout: the shapes with one in a BinTools compound (its children in geometry order), then per
-// geometry a flag and, for those with a shape, each face's position in the shape's
-// TopExp::MapShapes face order (sewing leaves the faces in another order than the map's).
-std::string encodeBrep(const BrepShapes& shapes) {
-    const auto& geometries = shapes.impl().geometries;
-    TopoDS_Compound all;
-    BRep_Builder builder;
-    builder.MakeCompound(all);
-    ByteWriter out;
-    out.put(uint64_t(geometries.size()));
-    for (const auto& g : geometries) {
-        out.put(uint8_t(!g.shape.IsNull()));
-        if (g.shape.IsNull()) continue;
-        builder.Add(all, g.shape);
-        TopTools_IndexedMapOfShape mapped;
-        TopExp::MapShapes(g.shape, TopAbs_FACE, mapped);
-        std::vector<int32_t> order;
-        for (const TopoDS_Face& face : g.faces) order.push_back(mapped.FindIndex(face));
-        out.putArray(order);
+std::string BrepShapes::encoded(uint32_t geometry) const {
+    const Stored& s = stored_.at(geometry);
+    if (!s.present) return {};
+    if (!s.bytes.empty() || !file_) return s.bytes;
+    return file_->read(s.offset, s.size, s.hash);
+}
+
+const BrepShapes::Shape& BrepShapes::shape(uint32_t geometry) const {
+    static const Shape none;
+    if (!has(geometry)) return none;
+    const std::lock_guard lock(mutex_);
+    std::unique_ptr<Shape>& kept = decoded_[geometry];
+    if (!kept) {
+        kept = std::make_unique<Shape>(decodeShape(encoded(geometry)));
+        if (kept->faces.size() != stored_[geometry].faces)
+            throw std::runtime_error("B-rep: another face count than stored");
     }
+    return *kept;
+}
+
+uint32_t BrepShapes::decodedCount() const {
+    const std::lock_guard lock(mutex_);
+    uint32_t count = 0;
+    for (const auto& kept : decoded_) count += kept != nullptr;
+    return count;
+}
+
+std::string encodeShape(const BrepShapes::Shape& shape) {
+    TopTools_IndexedMapOfShape mapped;
+    TopExp::MapShapes(shape.shape, TopAbs_FACE, mapped);
+    std::vector<int32_t> order;
+    order.reserve(shape.faces.size());
+    for (const TopoDS_Face& face : shape.faces) order.push_back(mapped.FindIndex(face));
     std::ostringstream binary;
-    BinTools::Write(all, binary, false, false, BinTools_FormatVersion_CURRENT);
+    // Without triangulations: the scene has its own, and they are most of the bytes.
+    BinTools::Write(shape.shape, binary, false, false, BinTools_FormatVersion_CURRENT);
+    ByteWriter out;
+    out.putArray(order);
     out.putString(binary.str());
     return std::move(out.bytes());
 }
 
-std::shared_ptr<const BrepShapes> decodeBrep(std::string_view bytes) {
+BrepShapes::Shape decodeShape(std::string_view bytes) {
     ByteReader in(bytes);
-    auto impl = std::make_unique<BrepShapes::Impl>();
-    const uint64_t count = in.get<uint64_t>();
-    if (count > bytes.size()) throw std::runtime_error("B-rep: geometry count too large");
-    std::vector<std::vector<int32_t>> orders(count);
-    std::vector<bool> present(count);
-    for (uint64_t g = 0; g < count; ++g) {
-        present[g] = in.get<uint8_t>() != 0;
-        if (present[g]) orders[g] = in.getArray<int32_t>();
-    }
+    const std::vector<int32_t> order = in.getArray<int32_t>();
     std::istringstream binary{std::string(in.getBytes())};
-    if (!in.done()) throw std::runtime_error("B-rep: bytes after the shapes");
-    TopoDS_Shape all;
+    if (!in.done()) throw std::runtime_error("B-rep: bytes after the shape");
+    BrepShapes::Shape shape;
     try {
-        BinTools::Read(all, binary);
+        BinTools::Read(shape.shape, binary);
     } catch (const Standard_Failure& e) {
         throw std::runtime_error(std::string("B-rep: ") + e.GetMessageString());
     }
-    if (all.IsNull()) throw std::runtime_error("B-rep: no shapes");
-    impl->geometries.resize(count);
-    TopoDS_Iterator child(all);
-    for (uint64_t g = 0; g < count; ++g) {
-        if (!present[g]) continue;
-        if (!child.More()) throw std::runtime_error("B-rep: fewer shapes than geometries");
-        auto& shape = impl->geometries[g];
-        shape.shape = child.Value();
-        child.Next();
-        TopTools_IndexedMapOfShape mapped;
-        TopExp::MapShapes(shape.shape, TopAbs_FACE, mapped);
-        for (int32_t index : orders[g]) {
-            if (index < 1 || index > mapped.Extent())
-                throw std::runtime_error("B-rep: a face index outside its shape");
-            shape.faces.push_back(TopoDS::Face(mapped(index)));
-        }
+    if (shape.shape.IsNull()) throw std::runtime_error("B-rep: no shape");
+    TopTools_IndexedMapOfShape mapped;
+    TopExp::MapShapes(shape.shape, TopAbs_FACE, mapped);
+    for (int32_t index : order) {
+        if (index < 1 || index > mapped.Extent())
+            throw std::runtime_error("B-rep: a face index outside its shape");
+        shape.faces.push_back(TopoDS::Face(mapped(index)));
     }
-    if (child.More()) throw std::runtime_error("B-rep: more shapes than geometries");
-    return std::make_shared<const BrepShapes>(std::move(impl));
+    return shape;
+}
+
+std::vector<BrepShapes::Shape> decodedShapes(const BrepShapes& shapes) {
+    std::vector<BrepShapes::Shape> out;
+    for (uint32_t g = 0; g < shapes.geometryCount(); ++g) out.push_back(shapes.shape(g));
+    return out;
+}
+
+std::shared_ptr<const BrepShapes> encodedShapes(const std::vector<BrepShapes::Shape>& shapes) {
+    std::vector<BrepShapes::Stored> stored(shapes.size());
+    for (size_t g = 0; g < shapes.size(); ++g) {
+        if (shapes[g].shape.IsNull()) continue;
+        stored[g].present = true;
+        stored[g].faces = uint32_t(shapes[g].faces.size());
+        stored[g].bytes = encodeShape(shapes[g]);
+    }
+    return std::make_shared<const BrepShapes>(std::move(stored));
 }
 
 std::optional<TopoDS_Face> partFace(const Scene& scene, uint32_t uniquePartId) {
@@ -107,10 +123,9 @@ std::optional<TopoDS_Face> partFace(const Scene& scene, uint32_t uniquePartId) {
     const uint32_t geometry = scene.objects[ref->object].geometry;
     const Geometry& g = scene.geometries[geometry];
     if (!scene.brep->has(geometry) || ref->localPart >= g.partFaces.size()) return std::nullopt;
-    const auto& faces = scene.brep->impl().geometries[geometry].faces;
     const uint32_t face = g.partFaces[ref->localPart];
-    if (face >= faces.size()) return std::nullopt;
-    return faces[face];
+    if (face >= scene.brep->faceCount(geometry)) return std::nullopt;
+    return scene.brep->shape(geometry).faces[face];
 }
 
 TopLoc_Location placement(const glm::dmat4& world) {

@@ -17,26 +17,9 @@
 namespace scene::cad {
 namespace {
 
-uint32_t packed(const Rgba& c) {
-    auto byte = [](double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
-    // Colours as stored (XCAF keeps them linear); 8 bits each is plenty to tell them apart.
+glm::dvec4 rgbaOf(const Rgba& c) {
     const Quantity_Color& rgb = c.GetRGB();
-    return byte(rgb.Red()) << 24 | byte(rgb.Green()) << 16 | byte(rgb.Blue()) << 8 |
-           byte(c.Alpha());
-}
-
-std::string hex(const Rgba& color) {
-    char text[16];
-    std::snprintf(text, sizeof text, "#%08x", packed(color));
-    return text;
-}
-
-// Double, as Open CASCADE keeps it: a part placed kilometres away keeps its millimetres.
-glm::dmat4 toMatrix(const gp_Trsf& t) {
-    glm::dmat4 m(1.0);
-    for (int row = 1; row <= 3; ++row)
-        for (int col = 1; col <= 4; ++col) m[col - 1][row - 1] = t.Value(row, col);
-    return m;
+    return {rgb.Red(), rgb.Green(), rgb.Blue(), c.Alpha()};
 }
 
 // A new distinct shape: its faces, bounds and the colours its leaf gives them. Coloured
@@ -66,21 +49,23 @@ Distinct distinctOf(const Leaf& leaf) {
     return d;
 }
 
-// Appends the faces of `d` as the parts of a new geometry (the last of the scene).
+// Appends the faces of `d` as the parts of a new geometry (the last of the scene), one part
+// per face: a face that did not triangulate keeps its part, with no triangles, so that the
+// parts after it keep their unique IDs.
 void appendFaces(Scene& scene, const Distinct& d, Materials& materials, BuiltGeometries& counts) {
     SharedPoints shared;
     const uint32_t firstVertex = scene.geometries.back().firstVertex;
     for (Standard_Integer f = 1; f <= d.faces.Extent(); ++f) {
         ++counts.faces;
-        if (appendFace(scene, TopoDS::Face(d.faces(f)), firstVertex, &shared)) {
-            Geometry& built = scene.geometries.back();
-            built.partFaces.push_back(uint32_t(f - 1));
-            built.partSurfaces.push_back(surfaceOf(TopoDS::Face(d.faces(f))));
-            const auto& own = d.faceColor[size_t(f - 1)];
-            built.partMaterials.push_back(own ? materials.of(*own) : gpu::OBJECT_MATERIAL);
-        } else {
+        if (!appendFace(scene, TopoDS::Face(d.faces(f)), firstVertex, &shared)) {
+            appendEmptyPart(scene);
             ++counts.facesFailed;
         }
+        Geometry& built = scene.geometries.back();
+        built.partFaces.push_back(uint32_t(f - 1));
+        built.partSurfaces.push_back(surfaceOf(TopoDS::Face(d.faces(f))));
+        const auto& own = d.faceColor[size_t(f - 1)];
+        built.partMaterials.push_back(own ? materials.of(*own) : gpu::OBJECT_MATERIAL);
         if (scene.vertices.size() > std::numeric_limits<uint32_t>::max() / 2 ||
             scene.indices.size() > std::numeric_limits<uint32_t>::max() / 2)
             throw Bad("the tessellation is too large (try a larger --deflection)");
@@ -88,6 +73,22 @@ void appendFaces(Scene& scene, const Distinct& d, Materials& materials, BuiltGeo
 }
 
 } // namespace
+
+std::string colourName(const glm::dvec4& rgba) {
+    auto byte = [](double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+    // Colours as stored (XCAF keeps them linear); 8 bits each is plenty to tell them apart.
+    char text[32];
+    std::snprintf(text, sizeof text, "colour #%08x",
+                  byte(rgba.r) << 24 | byte(rgba.g) << 16 | byte(rgba.b) << 8 | byte(rgba.a));
+    return text;
+}
+
+glm::dmat4 toMatrix(const gp_Trsf& t) {
+    glm::dmat4 m(1.0);
+    for (int row = 1; row <= 3; ++row)
+        for (int col = 1; col <= 4; ++col) m[col - 1][row - 1] = t.Value(row, col);
+    return m;
+}
 
 DistinctShapes distinctShapes(const std::vector<Leaf>& leaves) {
     DistinctShapes out;
@@ -114,14 +115,11 @@ Materials::Materials(Scene& scene)
     : scene_(scene), grey_(addMaterial(scene, "default", Material{}.color)) {}
 
 uint32_t Materials::of(const Rgba& color) {
-    auto [it, added] = byColor_.try_emplace(packed(color), 0);
-    if (added) {
-        const Quantity_Color& rgb = color.GetRGB();
-        // XCAF holds linear RGB, as the renderer's material colours are.
-        it->second = addMaterial(
-            scene_, "colour " + hex(color),
-            glm::vec4(float(rgb.Red()), float(rgb.Green()), float(rgb.Blue()), color.Alpha()));
-    }
+    const glm::dvec4 rgba = rgbaOf(color);
+    const std::string name = colourName(rgba);
+    auto [it, added] = byName_.try_emplace(name, 0);
+    // XCAF holds linear RGB, as the renderer's material colours are.
+    if (added) it->second = addMaterial(scene_, name, glm::vec4(rgba));
     return it->second;
 }
 
@@ -147,11 +145,7 @@ BuiltGeometries buildGeometries(Scene& scene, std::vector<Distinct>& shapes,
             built.partMaterials.clear(); // every face takes its object's colour
         built.vertexCount = uint32_t(scene.vertices.size()) - built.firstVertex;
         built.partCount = uint32_t(scene.parts.size()) - built.firstPart;
-        if (built.partCount == 0) {
-            ++counts.emptyShapes;
-            scene.geometries.pop_back();
-            continue;
-        }
+        counts.emptyShapes += built.triangleCount == 0; // kept: its parts keep their IDs
         d.geometry = int64_t(scene.geometries.size() - 1);
     }
     return counts;
@@ -174,18 +168,15 @@ void addObjects(Scene& scene, const std::vector<Leaf>& leaves, const DistinctSha
     if (scene.objects.empty()) throw Bad("no face of the model could be triangulated");
 }
 
-std::unique_ptr<BrepShapes::Impl> keptShapes(const std::vector<Distinct>& shapes,
-                                             size_t geometries) {
-    auto impl = std::make_unique<BrepShapes::Impl>();
-    impl->geometries.resize(geometries);
+std::vector<BrepShapes::Shape> keptShapes(const std::vector<Distinct>& shapes, size_t geometries) {
+    std::vector<BrepShapes::Shape> kept(geometries);
     for (const Distinct& d : shapes) {
         if (d.geometry < 0) continue;
-        BRepTools::Clean(d.shape);
-        auto& kept = impl->geometries[size_t(d.geometry)];
-        kept.shape = d.shape;
-        for (int f = 1; f <= d.faces.Extent(); ++f) kept.faces.push_back(TopoDS::Face(d.faces(f)));
+        auto& shape = kept[size_t(d.geometry)];
+        shape.shape = d.shape;
+        for (int f = 1; f <= d.faces.Extent(); ++f) shape.faces.push_back(TopoDS::Face(d.faces(f)));
     }
-    return impl;
+    return kept;
 }
 
 } // namespace scene::cad

@@ -39,6 +39,12 @@ struct DistinctShapes {
     Bnd_Box world;              // the leaves with faces, placed
 };
 
+// A colour material's name, "colour #rrggbbaa" (8 bits each): materials of one name are one.
+std::string colourName(const glm::dvec4& rgba);
+
+// Double, as Open CASCADE keeps it: a part placed kilometres away keeps its millimetres.
+glm::dmat4 toMatrix(const gp_Trsf& t);
+
 // The leaves' distinct shapes, with their faces and their faces' own colours.
 DistinctShapes distinctShapes(const std::vector<Leaf>& leaves);
 
@@ -53,20 +59,20 @@ class Materials {
   private:
     Scene& scene_;
     uint32_t grey_ = 0;
-    std::map<uint32_t, uint32_t> byColor_; // packed RGBA to material
+    std::map<std::string, uint32_t> byName_; // colourName to material
 };
 
 // What building the geometries counted.
 struct BuiltGeometries {
     uint32_t faces = 0;       // over all distinct shapes
-    uint32_t facesFailed = 0; // of those, without triangles (left out)
-    uint32_t emptyShapes = 0; // shapes no face of which triangulated (left out)
+    uint32_t facesFailed = 0; // of those, without triangles (parts that draw nothing)
+    uint32_t emptyShapes = 0; // shapes no face of which triangulated (geometries that draw nothing)
 };
 
 // A geometry per distinct shape with faces, from the shapes' current triangulations, named
-// after the product (else "<stem> shape N"), one part per face that has triangles; sets each
-// shape's `geometry`. Reports "building" progress; throws Bad when `cancel` is set or the
-// tessellation is too large for 32-bit indices.
+// after the product (else "<stem> shape N"), one part per face, in TopExp::MapShapes order: a
+// face without triangles keeps its part, empty; sets each shape's `geometry`. Reports "building"
+// progress; throws Bad when `cancel` is set or the tessellation is too large for 32-bit indices.
 BuiltGeometries buildGeometries(Scene& scene, std::vector<Distinct>& shapes,
                                 const std::string& stem, Materials& materials,
                                 const CadProgress& progress, const std::atomic<bool>* cancel);
@@ -77,9 +83,7 @@ void addObjects(Scene& scene, const std::vector<Leaf>& leaves, const DistinctSha
                 Materials& materials, const std::string& stem);
 
 // The shapes the geometries were built from, by geometry index (`geometries` of them), for
-// exact inspection (brep_shapes.h); their triangulations are dropped, the scene has its own
-// copy.
-std::unique_ptr<BrepShapes::Impl> keptShapes(const std::vector<Distinct>& shapes,
-                                             size_t geometries);
+// exact inspection (brep_shapes.h) and levels of detail.
+std::vector<BrepShapes::Shape> keptShapes(const std::vector<Distinct>& shapes, size_t geometries);
 
 } // namespace scene::cad

@@ -9,7 +9,10 @@
 // Open CASCADE types.
 //
 // Entry layout: "idviewTC" (8 bytes), format version (u32), key size (u64) and key, payload
-// size (u64), payload checksum (u64, hash64), payload. Host byte order.
+// size (u64), payload checksum (u64, hash64), payload (the scene, the load's figures, and the
+// B-rep's table: per geometry its faces and where its shape's bytes lie, with their hash), then
+// the shapes' bytes one after the other. Host byte order. A hit reads the head and the payload
+// only: each shape is read back from the entry when a query first asks for it.
 #pragma once
 
 #include <atomic>
@@ -23,10 +26,12 @@
 namespace scene {
 
 // Bumped whenever the entry layout or what the loader puts in a scene changes.
-// 6: levels of detail chosen by the policy meshes share (lod_policy.h), among tessellations at
-// more deflections; 5: the B-rep kept (brep_shapes.h); 4: placements in double; 3: IGES gaps
-// sewn, edge points shared.
-constexpr uint32_t kCadCacheVersion = 6;
+// 7: faces that did not triangulate keep their (empty) parts; STEP files split and read by
+// worker processes, healing in the key; each shape's bytes apart, read when asked. 6: levels of
+// detail chosen by the policy meshes share (lod_policy.h), among tessellations at more deflections;
+// 5: the B-rep kept (brep_shapes.h); 4: placements in double; 3: IGES gaps sewn, edge points
+// shared.
+constexpr uint32_t kCadCacheVersion = 7;
 
 struct CadCacheKey {
     std::string path; // absolute, symbolic links resolved
@@ -35,6 +40,7 @@ struct CadCacheKey {
     double deflection = 0.0;  // as asked (0: automatic)
     double angularDeflection = 0.0;
     uint32_t levels = 1;
+    bool healing = true;
     bool operator==(const CadCacheKey&) const = default;
 };
 
@@ -51,15 +57,17 @@ std::filesystem::path cadCacheEntry(const std::filesystem::path& folder, const C
 std::optional<CadLoadResult> readCadCache(const std::filesystem::path& entry,
                                           const CadCacheKey& key, std::string& why);
 
-// Writes `result` as the entry; returns "" or why it could not.
+// Writes `result` as the entry; returns "" or why it could not. Once written, the scene's
+// B-rep reads its shapes back from the entry, and the bytes it held in memory go.
 std::string writeCadCache(const std::filesystem::path& entry, const CadCacheKey& key,
-                          const CadLoadResult& result);
+                          CadLoadResult& result);
 
 // loadCad through the cache: a valid entry is returned (CadLoadResult::cache "hit", no
 // progress reported, the --max-triangles limit still applied); otherwise the file is loaded
 // ("miss", cacheNote saying why) and its entry written, a failure to write being a warning.
 CadLoadResult loadCadCached(const std::string& path, const CadOptions& options,
                             const CadProgress& progress = {}, uint32_t levels = 1,
-                            const std::atomic<bool>* cancel = nullptr);
+                            const std::atomic<bool>* cancel = nullptr,
+                            const CadPartialSink& partial = {});
 
 } // namespace scene

@@ -17,14 +17,18 @@ namespace scene {
 namespace {
 
 // The faces of `shape` in the order full detail's parts number them, at their current
-// triangulation; no parts where a face has no triangles: the hole it left would show, where
-// the mesh path's welded surface still covers a part it drops.
-LevelMesh tessellated(const Geometry& full, const BrepShapes::Impl::Shape& shape) {
+// triangulation; no parts where a face that full detail draws has no triangles: the hole it
+// left would show, where the mesh path's welded surface still covers a part it drops. A face
+// full detail has no triangles for stays empty here too.
+LevelMesh tessellated(const Scene& scene, const Geometry& full, const BrepShapes::Shape& shape) {
     Scene scratch;
     scratch.geometries.emplace_back();
     SharedPoints shared;
-    for (uint32_t face : full.partFaces)
-        if (!appendFace(scratch, shape.faces[face], 0, &shared)) return {};
+    for (uint32_t p = 0; p < full.partCount; ++p) {
+        if (appendFace(scratch, shape.faces[full.partFaces[p]], 0, &shared)) continue;
+        if (scene.parts[full.firstPart + p].triangleCount > 0) return {};
+        appendEmptyPart(scratch);
+    }
     LevelMesh level;
     level.vertices = std::move(scratch.vertices);
     for (const Part& part : scratch.parts) {
@@ -57,7 +61,7 @@ void tessellate(const std::vector<TopoDS_Shape>& shapes, double deflection, doub
 } // namespace
 
 std::vector<GeometryCandidates> cadCandidates(const Scene& scene,
-                                              const std::vector<BrepShapes::Impl::Shape>& shapes,
+                                              const std::vector<BrepShapes::Shape>& shapes,
                                               double deflection, double angularDeflection,
                                               const std::set<const void*>& skipped,
                                               const std::function<void(double)>& progress) {
@@ -92,11 +96,11 @@ std::vector<GeometryCandidates> cadCandidates(const Scene& scene,
             skipped);
         for (size_t i : going) {
             out[i].chains[0].push_back(
-                tessellated(scene.geometries[out[i].geometry], shapes[out[i].geometry]));
+                tessellated(scene, scene.geometries[out[i].geometry], shapes[out[i].geometry]));
             measures.emplace_back(i, out[i].chains[0].size() - 1);
         }
     }
-    for (const BrepShapes::Impl::Shape& shape : shapes)
+    for (const BrepShapes::Shape& shape : shapes)
         if (!shape.shape.IsNull()) BRepTools::Clean(shape.shape);
     // Measured as every kind of level is: the deflection asked is no bound (the mesher keeps it
     // only where it samples, and on a plane it is no distance at all), nor is full detail's own

@@ -31,7 +31,7 @@ constexpr double kCandidateDeflections[] = {2, 4, 8, 16, 32, 64, 128, 256};
 // `skipped` are not meshed; the shapes keep no triangulation afterwards. `progress` gets 0..1
 // and may throw to stop.
 std::vector<GeometryCandidates> cadCandidates(const Scene& scene,
-                                              const std::vector<BrepShapes::Impl::Shape>& shapes,
+                                              const std::vector<BrepShapes::Shape>& shapes,
                                               double deflection, double angularDeflection,
                                               const std::set<const void*>& skipped,
                                               const std::function<void(double)>& progress = {});

@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,11 +43,38 @@ struct CadOptions {
     // The most triangles full detail may have (over the distinct shapes, before instancing):
     // the tessellation stops as soon as its faces pass it, and the load fails in words.
     uint64_t maxTriangles = kDefaultMaxTriangles;
+    // Open CASCADE's shape healing (ShapeFix) after a STEP file's translation: off skips it,
+    // which takes most of the translation's time (4.2 of 5.1 s on a 41 MB board), leaving
+    // the file's own flaws (gaps, wrong tolerances, missing seams) as they are.
+    bool healing = true;
+    // Worker processes that read, translate and mesh a file's pieces: 0, one per core. The
+    // scene does not depend on it.
+    unsigned workers = 0;
     bool operator==(const CadOptions&) const = default;
 };
 
 // The automatic linear deflection, as a fraction of the bounding box diagonal.
 constexpr double kRelativeDeflection = 0.001;
+
+// Where a parallel load spent its time and memory (--stats "stages"). Milliseconds of wall time
+// for the parent's own stages; of the workers' own time, summed over pieces, for theirs.
+struct CadStageFigures {
+    bool split = false;   // read as a skeleton and pieces; else whole, in one worker
+    std::string notSplit; // why not, where it was not
+    uint32_t workers = 0; // worker processes
+    uint32_t pieces = 0, piecesLost = 0, workerRestarts = 0;
+    double lexMs = 0.0, splitMs = 0.0, skeletonMs = 0.0; // the parent's, before any piece
+    double firstSolidMs = 0.0;   // from the start of the load to the first solid meshed
+    double piecesMs = 0.0;       // from the first piece sent to the last answer
+    double largestPieceMs = 0.0; // the longest piece: the parallel stage's floor
+    double parseMs = 0.0, transferMs = 0.0, healingMs = 0.0, meshMs = 0.0, buildMs = 0.0,
+           levelsMs = 0.0, encodeMs = 0.0; // the workers', summed
+    double assemblyMs = 0.0;               // the parent putting the answers together, levels chosen
+    // Peak resident memory of the whole process tree (this process and its workers added up,
+    // sampled while it waits), per stage, and the workers' own peaks at their largest.
+    uint64_t peakLexBytes = 0, peakSkeletonBytes = 0, peakPiecesBytes = 0, peakAssemblyBytes = 0;
+    uint64_t peakWorkerBytes = 0;
+};
 
 // What a CAD load took and did, beside the scene it built.
 struct CadLoadFigures {
@@ -62,6 +90,7 @@ struct CadLoadFigures {
     std::string cache = "off";
     std::string cacheNote;
     double cacheMs = 0.0;
+    CadStageFigures stages;
 };
 
 struct CadLoadResult : CadLoadFigures {
@@ -93,6 +122,22 @@ bool isCadPath(const std::string& path);
 // unit the file was written in; BREP files store none.
 LengthUnit cadUnit(const std::string& path);
 
+// What a load has shown so far, for a viewer that draws it while the rest loads. Every object
+// of the model is there from the start, with its final unique part IDs (a pick or selection
+// made now stays valid); an object whose solid is not meshed yet draws nothing (its geometry's
+// parts have no triangles) and has the box of its vertices as the file states them.
+struct CadPartial {
+    std::shared_ptr<const Scene> scene;
+    std::vector<Bounds> boxes;  // per object, in the world
+    std::vector<uint8_t> state; // per object: kObjectWaiting, kObjectReady or kObjectLost
+    uint32_t solidsReady = 0, solidsLost = 0, solidsTotal = 0;
+    uint64_t bytesDone = 0, bytesTotal = 0; // of the file's pieces, read and meshed
+};
+constexpr uint8_t kObjectWaiting = 0, kObjectReady = 1, kObjectLost = 2;
+// Called on the loading thread: first with the assembly tree and every box, then as solids
+// come, at most every so often (and not at all for files that are read whole).
+using CadPartialSink = std::function<void(const CadPartial&)>;
+
 // Loads the whole model. The result passes scene::validate(). Throws ModelError with one
 // line "<path>: <reason>"; never returns a half-built scene. With `levels` above 1 (up to
 // maxLevels, scene/lod.h), each shape also gets up to levels - 1 levels of detail: its faces
@@ -102,9 +147,21 @@ LengthUnit cadUnit(const std::string& path);
 // While `cancel` is set the load stops at the next face or progress step, throwing ModelError
 // "<path>: cancelled". A tessellation that passes options.maxTriangles stops between faces
 // and throws ModelError "<path>: <triangleLimitReason>".
+//
+// STEP files are split into a skeleton and pieces (scene/step/step_split.h) that worker
+// processes read, translate and mesh in parallel (options.workers); other files, and STEP files
+// that cannot be split, are read whole by one worker. A worker that crashes or is killed costs
+// the solids it was on (named in a warning), never the load; no worker outlives the call.
 CadLoadResult loadCad(const std::string& path, const CadOptions& options = {},
                       const CadProgress& progress = {}, uint32_t levels = 1,
-                      const std::atomic<bool>* cancel = nullptr);
+                      const std::atomic<bool>* cancel = nullptr,
+                      const CadPartialSink& partial = {});
+
+// The whole file read in this process, on its threads: what a worker does with a file it
+// reads whole, and what the fuzzer drives. Same contract as loadCad.
+CadLoadResult loadCadInProcess(const std::string& path, const CadOptions& options = {},
+                               const CadProgress& progress = {}, uint32_t levels = 1,
+                               const std::atomic<bool>* cancel = nullptr);
 
 // "the tessellation passes --max-triangles LIMIT (about ESTIMATE triangles at deflection D);
 // try --deflection X": X is D scaled so that the estimate falls to half the limit (a curved

@@ -59,6 +59,10 @@ bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVer
     return true;
 }
 
+void appendEmptyPart(Scene& scene) {
+    scene.parts.push_back({scene.geometries.back().triangleCount, 0});
+}
+
 namespace {
 
 uint64_t trianglesOf(const TopoDS_Face& face) {

@@ -25,6 +25,10 @@ namespace scene {
 bool appendFace(Scene& scene, const TopoDS_Face& face, uint32_t geometryFirstVertex,
                 SharedPoints* shared = nullptr);
 
+// Appends a part with no triangles to scene.geometries.back(): a face that did not triangulate
+// keeps its part and unique ID.
+void appendEmptyPart(Scene& scene);
+
 // What one tessellation may take: its triangles, counted face by face as the mesher's
 // threads finish them, and a flag another thread may set to stop it.
 struct MeshBudget {

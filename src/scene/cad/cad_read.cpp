@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include <map>
+#include <sstream>
 
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -162,6 +163,15 @@ struct DocumentGuard {
     }
 };
 
+IFSelect_ReturnStatus readInto(STEPCAFControl_Reader& reader, const XdeSource& source) {
+    if (!source.text) return reader.ReadFile(source.path.c_str());
+    std::istringstream stream(*source.text);
+    return reader.ChangeReader().ReadStream(source.path.c_str(), stream);
+}
+IFSelect_ReturnStatus readInto(IGESCAFControl_Reader& reader, const XdeSource& source) {
+    return reader.ReadFile(source.path.c_str());
+}
+
 Handle(XSControl_WorkSession) sessionOf(STEPCAFControl_Reader& reader) {
     return reader.ChangeReader().WS();
 }
@@ -169,10 +179,10 @@ Handle(XSControl_WorkSession) sessionOf(IGESCAFControl_Reader& reader) {
     return reader.WS();
 }
 
-// Reads the file into `doc` with names and colours; throws Bad with the reader's verdict.
-// Returns what the reading dropped.
+// Reads the file (or `text`, STEP only, where it is given) into `doc` with names and colours;
+// throws Bad with the reader's verdict. Returns what the reading dropped.
 template <typename Reader>
-ReaderLosses transfer(Reader& reader, const std::string& path, const std::string& format,
+ReaderLosses transfer(Reader& reader, const XdeSource& source, const std::string& format,
                       Handle(TDocStd_Document) & doc, const CadProgress& progress,
                       const std::atomic<bool>* cancel) {
     reader.SetColorMode(true);
@@ -182,7 +192,7 @@ ReaderLosses transfer(Reader& reader, const std::string& path, const std::string
     IFSelect_ReturnStatus status;
     {
         const OcctLeaksIgnored ignored; // the IGES parser's buffers on a failed read
-        status = reader.ReadFile(path.c_str());
+        status = readInto(reader, source);
     }
     if (status != IFSelect_RetDone) throw Bad(statusReason(status, format.c_str()));
     if (reader.NbRootsForTransfer() == 0) throw Bad("the " + format + " file holds no shapes");
@@ -273,9 +283,9 @@ Format formatOf(const std::string& path) {
     return Format::None;
 }
 
-std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
+std::vector<Leaf> readXde(const XdeSource& source, Format format, const CadProgress& progress,
                           ReaderLosses& losses, double& sewTolerance,
-                          const std::atomic<bool>* cancel) {
+                          const std::atomic<bool>* cancel, const SessionInspector& inspect) {
     DocumentGuard guard;
     // The first reader of each kind registers the toolkit's parameters, once per process.
     std::optional<OcctLeaksIgnored> ignored(std::in_place);
@@ -286,13 +296,16 @@ std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgr
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
         reader.SetViewMode(false);
-        losses = transfer(reader, path, "STEP", guard.doc, progress, cancel);
+        losses = transfer(reader, source, "STEP", guard.doc, progress, cancel);
+        if (inspect) inspect(sessionOf(reader));
     } else {
+        if (source.text) throw Bad("IGES is read from its file only");
         IGESCAFControl_Reader reader;
         ignored.reset();
-        losses = transfer(reader, path, "IGES", guard.doc, progress, cancel);
+        losses = transfer(reader, source, "IGES", guard.doc, progress, cancel);
         const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
         if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
+        if (inspect) inspect(sessionOf(reader));
     }
     return TreeWalker(guard.doc).run();
 }

@@ -28,6 +28,10 @@ namespace scene::cad {
 struct Bad : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+// A tessellation past --max-triangles: in a worker, it stops the whole load, not its piece.
+struct OverBudget : Bad {
+    using Bad::Bad;
+};
 enum class Format { Step, Iges, Brep, None };
 
 // By the file name's extension, in any case.
@@ -99,13 +103,23 @@ struct Leaf {
     std::vector<std::pair<TopoDS_Shape, Rgba>> subColors;
 };
 
+// What an XDE reader reads: a file, or (STEP only) text in memory, `path` then naming it in
+// Open CASCADE's messages.
+struct XdeSource {
+    std::string path;
+    const std::string* text = nullptr;
+};
+// Sees the reader's session once the file is transferred (its model and what each entity
+// became), before the document is walked.
+using SessionInspector = std::function<void(const Handle(XSControl_WorkSession)&)>;
+
 // The leaves of a STEP or IGES file with names and colours; `losses`: what the reader dropped;
 // `sewTolerance`: for IGES, the file's resolution, within which its faces are sewn (else
 // left as it is). Throws Bad with the reader's verdict. Translation stops while `cancel` is
 // set (the caller then says so).
-std::vector<Leaf> readXde(const std::string& path, Format format, const CadProgress& progress,
+std::vector<Leaf> readXde(const XdeSource& source, Format format, const CadProgress& progress,
                           ReaderLosses& losses, double& sewTolerance,
-                          const std::atomic<bool>* cancel);
+                          const std::atomic<bool>* cancel, const SessionInspector& inspect = {});
 
 // A BREP file's shape as one leaf named `stem`. Throws Bad.
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,

@@ -57,7 +57,7 @@ const TopTools_IndexedMapOfShape* edgeMap(const Scene& scene, uint32_t geometry)
     std::lock_guard guard(lock);
     if (kept.shapes.lock() != scene.brep || kept.geometry != geometry) {
         kept.edges.Clear();
-        TopExp::MapShapes(scene.brep->impl().geometries[geometry].shape, TopAbs_EDGE, kept.edges);
+        TopExp::MapShapes(scene.brep->shape(geometry).shape, TopAbs_EDGE, kept.edges);
         kept.shapes = scene.brep;
         kept.geometry = geometry;
     }

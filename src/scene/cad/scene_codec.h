@@ -92,6 +92,7 @@ class ByteReader {
         return bytes;
     }
     bool done() const { return at_ == bytes_.size(); }
+    size_t left() const { return bytes_.size() - at_; }
 
     template <typename T>
     void operator()(T& value) {
