@@ -2,7 +2,7 @@
 // IDV_SEARCH_COUNT consecutive parts; the triangle's part is found by walking their triangle
 // counts. The loop has a fixed length and is unrolled, its loads independent of the
 // comparisons so they can all be in flight at once; the counts buffer is padded so reading
-// past the batch's last part stays inside it.
+// past the batch's last part stays inside it. An empty part's count of 0 holds no triangle.
 uint lookupLocalPart(FrameData frame, DrawData draw, uint primitive) {
     UintsRef counts = UintsRef(frame.idsAddress);
     uint begin = 0u;

@@ -10,7 +10,8 @@
 //   IDV_NSEARCH_STEPS   N-ary steps at most; the linear scan finishes whatever is left, so
 //                       the answer is exact for any cap and the loops always end.
 // Invariant throughout: offsets[low] <= primitive < offsets[high], so the part is in
-// [low, high).
+// [low, high), and the answer is the last part that starts at or before the triangle: an empty
+// part starts where the next one does, so it is never the answer.
 
 // Gallops away from a guessed part until the range brackets the primitive. Each probe
 // doubles the distance, so a guess k parts off costs about 2 log2(k) loads.

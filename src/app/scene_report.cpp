@@ -49,6 +49,7 @@ void sceneMembers(util::JsonWriter& json, const LoadedScene& loaded, uint32_t se
         .member("objects", s.objects.size())
         .member("geometries", s.geometries.size())
         .member("parts", s.uniquePartCount())
+        .member("empty_parts", scene::emptyParts(s).size())
         .member("geometry_parts", s.parts.size())
         .member("triangles", s.drawnTriangleCount())
         .member("unique_triangles", s.indices.size() / 3)

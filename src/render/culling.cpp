@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "scene/bounds.h"
 #include "vk/barrier.h"
 #include "vk/check.h"
 #include "vk/debug.h"
@@ -99,6 +100,8 @@ std::string describeCulling(const Technique& technique, const DrawMode& mode, Cu
 
 bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3 eye,
                     const scene::Bounds& box) {
+    // Its infinite corners would make NaNs, which fail every plane's test.
+    if (scene::isEmpty(box)) return true;
     // The same inflated box as cull.glsl's viewBox(), in its float arithmetic (geometry
     // coordinates: the box's double values are floats).
     const glm::vec3 boxMin(box.min), boxMax(box.max);

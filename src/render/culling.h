@@ -69,7 +69,8 @@ bool levelsChosenIn(const DrawMode& mode);
 std::string describeCulling(const Technique& technique, const DrawMode& mode, CullMode culling);
 
 // The CPU's frustum test of push mode: whether `box` (in the coordinates `world` places)
-// lies outside the view frustum with the margins cull.glsl uses (CULL_RELATIVE_MARGIN).
+// lies outside the view frustum with the margins cull.glsl uses (CULL_RELATIVE_MARGIN). An
+// empty box (scene::isEmpty: an object without triangles) always does.
 bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3 eye,
                     const scene::Bounds& box);
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "scene/bounds.h"
 #include "scene/lod.h"
@@ -35,9 +36,12 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
     for (size_t i = 0; i < list.ranges.size(); ++i) {
         const DrawItem& d = list.ranges[i];
         const uint32_t g = d.geometry;
-        scene::Bounds box =
+        const scene::Bounds box =
             scene::partRangeBounds(scene, sceneGpu.partBounds(), g, d.firstPart, d.partCount);
-        if (scene::isEmpty(box)) box = {}; // no triangles: nothing to draw anyway
+        // An empty box would reach the GPU as infinities that no test can be sure to cull.
+        if (scene::isEmpty(box))
+            throw std::logic_error("a draw of geometry '" + scene.geometries[g].name +
+                                   "' has no triangles");
         gpu::DrawCull cull{};
         cull.boxMin = box.min;
         cull.boxMax = box.max;

@@ -14,8 +14,9 @@ namespace render {
 
 SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     : objectCount_(static_cast<uint32_t>(scene.objects.size())) {
-    if (scene.objects.empty() || scene.indices.empty())
-        throw vk::Error("the scene is empty: nothing to draw");
+    // Objects without triangles yet (a load shown as it goes) draw nothing, and their empty
+    // arrays get buffers of a few bytes.
+    if (scene.objects.empty()) throw vk::Error("the scene is empty: nothing to draw");
 
     std::vector<gpu::ObjectData> objects;
     std::vector<glm::dmat4> rest;

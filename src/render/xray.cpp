@@ -22,11 +22,13 @@ std::vector<TranslucentDraw> translucentDraws(const scene::Scene& scene,
         if (!parts.anyIn(object.uniquePartOffset, geometry.partCount)) continue;
         bool open = false; // the last draw is this object's and ends at the part before
         for (uint32_t p = 0; p < geometry.partCount; ++p) {
+            const scene::Part& part = scene.parts[geometry.firstPart + p];
+            // An empty part draws nothing and breaks no run: its neighbours' triangles touch.
+            if (part.empty()) continue;
             if (!parts.contains(object.uniquePartOffset + p)) {
                 open = false;
                 continue;
             }
-            const scene::Part& part = scene.parts[geometry.firstPart + p];
             const uint32_t first = geometry.firstIndex + 3 * part.firstTriangle;
             // Parts lie in their geometry in order; a gap between two starts another draw.
             if (!open || draws.back().firstIndex + draws.back().indexCount != first)

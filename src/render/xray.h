@@ -34,7 +34,7 @@ struct TranslucentDraw {
     int32_t vertexOffset = 0;
 };
 // The fewest draws that cover `parts` in `scene`: parts next to each other in an object's
-// geometry are one draw.
+// geometry, or with only empty parts between them, are one draw; empty parts get none.
 std::vector<TranslucentDraw> translucentDraws(const scene::Scene& scene,
                                               const scene::PartSet& parts);
 

@@ -16,10 +16,12 @@ Bounds emptyBounds();
 Bounds unite(const Bounds& a, const Bounds& b);
 bool isEmpty(const Bounds& b);
 
-// Per entry of Scene::parts: the box of the vertices its triangles use.
+// Per entry of Scene::parts: the box of the vertices its triangles use; empty (isEmpty) for
+// an empty part.
 std::vector<Bounds> partBounds(const Scene& scene);
 
-// The box of parts [firstPart, firstPart + count) of geometry `g`, from partBounds().
+// The box of parts [firstPart, firstPart + count) of geometry `g`, from partBounds(); empty
+// where they all are.
 Bounds partRangeBounds(const Scene& scene, const std::vector<Bounds>& parts, uint32_t g,
                        uint32_t firstPart, uint32_t count);
 
@@ -29,7 +31,7 @@ Bounds partsWorldBounds(const Scene& scene, const PartSet& parts);
 
 // Each part's triangles in runs of at most `maxTriangles` in index order (clusters), each
 // run's box and part: what culling tests a draw by, cluster by cluster, where its own box
-// is not enough (shaders/cull.comp).
+// is not enough (shaders/cull.comp). An empty part has none, so no cluster's box is empty.
 struct Clusters {
     std::vector<Bounds> boxes;       // per cluster
     std::vector<uint32_t> localPart; // per cluster: its part's index in its geometry

@@ -84,7 +84,10 @@ std::string faceReportJson(const FaceReport& r) {
             .endObject();
     if (s.kind == SurfaceKind::Sphere)
         json.member("radius", s.radius).member("center", s.axisOrigin);
-    json.beginObject("bbox").member("min", r.bbox.min).member("max", r.bbox.max).endObject();
+    if (isEmpty(r.bbox)) // an empty part (no triangles)
+        json.key("bbox").null();
+    else
+        json.beginObject("bbox").member("min", r.bbox.min).member("max", r.bbox.max).endObject();
     unitMember(json, r.unit);
     return json.endObject().text();
 }

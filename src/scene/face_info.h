@@ -36,7 +36,7 @@ std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b)
 
 // {"part","object","face","surface","area",...,"bbox","unit"}: "normal" and "d" for planes,
 // "radius" and "axis" {origin, direction} for cylinders, "radius" and "center" for spheres;
-// lengths and coordinates in "unit", the area in it squared.
+// lengths and coordinates in "unit", the area in it squared; "bbox" null for an empty part.
 std::string faceReportJson(const FaceReport& report);
 
 // What the panel and the event lines say of a face, with units: "cylinder r 5 mm, area

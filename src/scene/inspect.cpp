@@ -48,11 +48,14 @@ namespace {
 // The members after "object", what a solid and a sum print alike; closes the line.
 std::string finishProperties(util::JsonWriter& json, const SolidProperties& p) {
     json.member("volume", p.volume).member("area", p.area).member("center", p.center);
-    json.beginObject("bbox")
-        .member("min", p.bbox.min)
-        .member("max", p.bbox.max)
-        .member("size", p.bbox.max - p.bbox.min)
-        .endObject();
+    if (isEmpty(p.bbox)) // an object without triangles (not meshed)
+        json.key("bbox").null();
+    else
+        json.beginObject("bbox")
+            .member("min", p.bbox.min)
+            .member("max", p.bbox.max)
+            .member("size", p.bbox.max - p.bbox.min)
+            .endObject();
     json.member("closed", p.closed);
     unitMember(json, p.unit);
     return json.endObject().text();

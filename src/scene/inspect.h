@@ -77,7 +77,7 @@ SolidProperties sumProperties(const std::vector<SolidProperties>& each);
 // "point_to_plane".
 std::string distanceJson(const DistanceReport& report);
 // {"object":O,"volume":V,"area":A,"center":[..],"bbox":{"min":[..],"max":[..],"size":[..]},
-// "closed":true,"unit":"mm"}.
+// "closed":true,"unit":"mm"}; "bbox" is null for an object without triangles.
 std::string propertiesJson(const SolidProperties& properties);
 // A sum's line: {"object":"all","objects":N,"volume":...} as propertiesJson.
 std::string totalPropertiesJson(const SolidProperties& sum);

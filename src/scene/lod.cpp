@@ -20,6 +20,7 @@ namespace {
 // with the part, not with its geometry, and its border is the part's own outline.
 PartLevel simplifyPart(const Scene& scene, const Geometry& g, const Part& part,
                        size_t targetTriangles) {
+    if (part.empty()) return {}; // empty at every level
     const uint32_t* source = scene.indices.data() + g.firstIndex + 3 * part.firstTriangle;
     const size_t count = 3 * size_t(part.triangleCount);
     std::unordered_map<uint32_t, uint32_t> local;
@@ -52,7 +53,8 @@ PartLevel simplifyPart(const Scene& scene, const Geometry& g, const Part& part,
 // Simplifies the geometry as a whole, every part on vertices of its own: where parts meet,
 // meshoptimizer sees a seam, which it simplifies on both sides alike, so a part's outline may
 // move (within the level's error) but never opens a crack; where three parts meet, the vertex
-// stays. Every triangle keeps the part of its corners. Empty when a part would vanish.
+// stays. Every triangle keeps the part of its corners. Empty when a part would vanish (one
+// empty at full detail stays empty).
 std::vector<PartLevel> simplifyWhole(const Scene& scene, const Geometry& g, double share) {
     std::vector<uint32_t> indices, originOf, partOf;
     std::vector<glm::vec3> positions;
@@ -85,8 +87,8 @@ std::vector<PartLevel> simplifyWhole(const Scene& scene, const Geometry& g, doub
             throw std::logic_error("levels of detail: a triangle spans two parts");
         for (int k = 0; k < 3; ++k) parts[p].indices.push_back(originOf[reduced[t + k]]);
     }
-    for (const PartLevel& part : parts)
-        if (part.indices.empty()) return {};
+    for (uint32_t p = 0; p < g.partCount; ++p)
+        if (parts[p].indices.empty() && !scene.parts[g.firstPart + p].empty()) return {};
     return parts;
 }
 
@@ -141,8 +143,10 @@ constexpr double candidateShares[] = {0.7, 0.5, 0.35, 0.25, 0.12, 0.06, 0.03, 0.
 std::vector<GeometryCandidates> meshCandidates(const Scene& scene, const LodOptions& options,
                                                const LodProgress& progress) {
     std::vector<GeometryCandidates> out;
+    // A geometry without triangles has nothing to simplify, and no level.
     for (uint32_t g = 0; g < scene.geometries.size(); ++g)
-        if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty())
+        if (scene.geometries[g].level == 0 && scene.geometries[g].levels.empty() &&
+            scene.geometries[g].triangleCount > 0)
             out.push_back({g, {}});
     // Every candidate is a task of its own, the largest geometries' first, so that no thread
     // is left with a large one at the end.

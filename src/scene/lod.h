@@ -5,7 +5,8 @@
 // A level is a geometry of its own in Scene::geometries, with the same parts in the same
 // order (the same partFaces and partMaterials), so every technique's ID data is built for it
 // as for any geometry. The full-detail geometry lists its levels (Geometry::levels) and each
-// level its error in model units (Geometry::lodError).
+// level its error in model units (Geometry::lodError). A part empty at full detail is empty at
+// every level, and a geometry without triangles has no levels.
 #pragma once
 
 #include <cstdint>

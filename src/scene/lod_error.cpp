@@ -99,6 +99,7 @@ float levelError(const Scene& scene, const Geometry& full, const LevelMesh& leve
     float error = 0.0f;
     for (uint32_t p = 0; p < full.partCount && error <= limit; ++p) {
         const Part& part = scene.parts[full.firstPart + p];
+        if (part.empty()) continue; // nothing to lose, and levels keep it empty
         std::vector<Triangle> fine, coarse;
         for (uint32_t t = part.firstTriangle; t < part.firstTriangle + part.triangleCount; ++t) {
             const uint32_t* i = &scene.indices[full.firstIndex + 3 * size_t(t)];

@@ -16,8 +16,9 @@ namespace scene {
 // A candidate level of one full-detail geometry before it becomes one: vertices of its own
 // and, for each of full detail's parts in order, the triangles drawn for that part (three
 // indices into `vertices` each), so that every triangle belongs to one part. A part whose
-// triangles all have their corners at one point is drawn nowhere. No parts at all: the maker
-// failed (lod_policy.h ends the candidate's chain there).
+// triangles all have their corners at one point is drawn nowhere; a part empty at full detail
+// (Part::empty) has no triangles here either. No parts at all: the maker failed (lod_policy.h
+// ends the candidate's chain there).
 struct LevelMesh {
     std::vector<Vertex> vertices;
     std::vector<std::vector<uint32_t>> parts;
@@ -28,13 +29,13 @@ struct LevelMesh {
 
 // A level's error in model units: the farthest, over the parts, that a corner, edge midpoint
 // or centre of a part's triangles at either level lies from the same part's triangles at the
-// other; a part drawn nowhere counts its diagonal. Measured both ways, so that a part that
-// shrank counts as much as one that bulged, and part by part, so that a part's outline moving
-// along the surface counts too. Every kind of level takes this and nothing else: what its
-// maker says of it (meshoptimizer's error, the deflection asked of Open CASCADE's mesher) is
-// no bound on it, and full detail's own distance from an exact surface is no part of it, full
-// detail being what level 0 draws. Past `limit` it stops measuring and returns a distance
-// beyond it.
+// other; a part drawn nowhere counts its diagonal, one empty at full detail nothing. Measured
+// both ways, so that a part that shrank counts as much as one that bulged, and part by part,
+// so that a part's outline moving along the surface counts too. Every kind of level takes this and
+// nothing else: what its maker says of it (meshoptimizer's error, the deflection asked of Open
+// CASCADE's mesher) is no bound on it, and full detail's own distance from an exact surface is no
+// part of it, full detail being what level 0 draws. Past `limit` it stops measuring and returns a
+// distance beyond it.
 float levelError(const Scene& scene, const Geometry& full, const LevelMesh& level,
                  float limit = FLT_MAX);
 

@@ -46,6 +46,8 @@ float geometrySize(const Scene& scene, const Geometry& g) {
 
 void measureCandidate(const Scene& scene, const Geometry& full, LevelMesh& level, float size) {
     if (level.parts.empty()) return;
+    for (uint32_t p = 0; p < full.partCount && p < level.parts.size(); ++p)
+        if (scene.parts[full.firstPart + p].empty()) level.parts[p].clear();
     level.triangles = 0;
     for (const std::vector<uint32_t>& part : level.parts) level.triangles += part.size() / 3;
     level.bytes = geometryBytes(level.vertices.size(), level.triangles, full.partCount);

@@ -29,7 +29,9 @@ constexpr float kUsefulErrorShare = 0.5f;
 float geometrySize(const Scene& scene, const Geometry& g);
 
 // Counts a candidate's triangles and bytes and measures its error (levelError), up to
-// kUsefulErrorShare of `size` (geometrySize).
+// kUsefulErrorShare of `size` (geometrySize). A part empty at full detail is emptied first:
+// whatever made the candidate (a coarser mesher run may mesh a face the fine one could not),
+// no level draws what full detail does not.
 void measureCandidate(const Scene& scene, const Geometry& full, LevelMesh& level, float size);
 
 // The candidates worth weighing, from every chain: up to the first that failed or whose error

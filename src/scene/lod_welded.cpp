@@ -146,10 +146,11 @@ std::vector<PartLevel> simplifyWelded(const Scene& scene, const Geometry& g, dou
     }
 
     for (uint32_t p = 0; p < g.partCount; ++p) {
-        if (!parts[p].indices.empty()) continue;
-        // A triangle of zero area on one of its own vertices: the part stays, drawn nowhere.
-        const uint32_t v =
-            scene.indices[g.firstIndex + 3 * scene.parts[g.firstPart + p].firstTriangle];
+        const Part& part = scene.parts[g.firstPart + p];
+        if (!parts[p].indices.empty() || part.empty()) continue;
+        // A triangle of zero area on one of its own vertices: the part stays, drawn nowhere,
+        // and levelError counts what it lost.
+        const uint32_t v = scene.indices[g.firstIndex + 3 * part.firstTriangle];
         parts[p].indices = {v, v, v};
     }
     return parts;

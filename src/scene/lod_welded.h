@@ -21,9 +21,9 @@ struct PartLevel {
 // locked, so no crack opens inside it or along its border. Each triangle goes to the part
 // that all its corners share, else to the part of the full-detail triangle nearest its
 // centre, and takes that part's vertex at each corner where it has one. A part left
-// without triangles keeps one of zero area, which draws nothing (every part of a geometry has
-// triangles). Empty where the geometry has a single part (lod.cpp's own way does the same
-// there).
+// without triangles keeps one of zero area, which draws nothing (its error counts its
+// diagonal, lod_error.h); a part empty at full detail stays empty. Empty where the geometry
+// has a single part (lod.cpp's own way does the same there).
 std::vector<PartLevel> simplifyWelded(const Scene& scene, const Geometry& g, double share);
 
 } // namespace scene

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace scene {
 namespace {
@@ -17,6 +18,17 @@ DrawRange rangeOf(const Scene& scene, uint32_t object, uint32_t geometry, uint32
             g.level,       firstPart,
             partCount,     g.firstIndex + 3 * first.firstTriangle,
             3 * triangles, static_cast<int32_t>(g.firstVertex)};
+}
+
+// Parts [first, first + count) of geometry `g` less the empty ones at either end: (first, 0)
+// where all are empty.
+std::pair<uint32_t, uint32_t> withoutEmptyEnds(const Scene& scene, uint32_t g, uint32_t first,
+                                               uint32_t count) {
+    const Part* parts = &scene.parts[scene.geometries[g].firstPart];
+    uint32_t end = first + count;
+    while (first < end && parts[first].empty()) ++first;
+    while (end > first && parts[end - 1].empty()) --end;
+    return {first, end - first};
 }
 
 // Calls perGeometry(object, geometry) for every object that has `level`.
@@ -42,7 +54,8 @@ std::vector<DrawRange> drawsPerPart(const Scene& scene, uint32_t level) {
 
 std::vector<DrawRange> drawsPerObject(const Scene& scene, uint32_t level) {
     return drawsOf(scene, level, [&](uint32_t o, uint32_t g, std::vector<DrawRange>& draws) {
-        draws.push_back(rangeOf(scene, o, g, 0, scene.geometries[g].partCount));
+        if (scene.geometries[g].triangleCount > 0)
+            draws.push_back(rangeOf(scene, o, g, 0, scene.geometries[g].partCount));
     });
 }
 
@@ -50,8 +63,11 @@ std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount, u
     if (searchCount == 0) throw std::invalid_argument("search batch must be at least 1");
     return drawsOf(scene, level, [&](uint32_t o, uint32_t g, std::vector<DrawRange>& draws) {
         const uint32_t parts = scene.geometries[g].partCount;
-        for (uint32_t first = 0; first < parts; first += searchCount)
-            draws.push_back(rangeOf(scene, o, g, first, std::min(searchCount, parts - first)));
+        for (uint32_t first = 0; first < parts; first += searchCount) {
+            const auto [from, count] =
+                withoutEmptyEnds(scene, g, first, std::min(searchCount, parts - first));
+            if (count > 0) draws.push_back(rangeOf(scene, o, g, from, count));
+        }
     });
 }
 

@@ -24,10 +24,14 @@ struct DrawRange {
 };
 
 // The draws of every object at `level`: its own geometry at 0, else that level of it, and
-// none for objects whose geometry has fewer levels.
+// none for objects whose geometry has fewer levels. No draw holds empty parts (Part::empty)
+// alone, so a geometry without triangles has none.
 std::vector<DrawRange> drawsPerPart(const Scene& scene, uint32_t level = 0);
+// All of the geometry's parts, empty ones at its ends included: the offset searches
+// (bsearch-*, nsearch-*) index parts from the geometry's first.
 std::vector<DrawRange> drawsPerObject(const Scene& scene, uint32_t level = 0);
-// Up to searchCount consecutive parts of a geometry per draw.
+// Up to searchCount consecutive parts of a geometry per draw, less the empty ones at the
+// batch's ends.
 std::vector<DrawRange> drawsPerBatch(const Scene& scene, uint32_t searchCount, uint32_t level = 0);
 
 // Bytes per local part index for a geometry with this many parts: 1, 2 or 4.

@@ -31,6 +31,7 @@ static bool intersect(glm::dvec3 origin, glm::dvec3 dir, glm::dvec3 a, glm::dvec
 
 // Slab test of the segment origin + t * direction, t in [0, ray.end], against a box.
 static bool hitsBox(const Ray& ray, const Bounds& box) {
+    if (isEmpty(box)) return false;
     double t0 = 0.0, t1 = ray.end;
     for (int axis = 0; axis < 3; ++axis) {
         const double inv = 1.0 / ray.direction[axis]; // +-inf for axis-parallel rays is fine
@@ -57,6 +58,10 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene) {
     }
     for (const Object& object : scene.objects) {
         const Bounds& b = local[object.geometry];
+        if (isEmpty(b)) { // no triangles: no ray meets it
+            objects_.push_back({glm::dmat4(1.0), emptyBounds()});
+            continue;
+        }
         Bounds world = emptyBounds();
         for (int corner = 0; corner < 8; ++corner) {
             glm::dvec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,

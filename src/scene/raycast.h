@@ -23,7 +23,8 @@ struct Hit {
 };
 
 // Prepares per-object inverse matrices and world bounds once, so rays skip the objects
-// whose box they miss; every remaining triangle is tested exactly (no approximation).
+// whose box they miss (and those without triangles); every remaining triangle is tested
+// exactly (no approximation). An empty part has no triangle to hit.
 class RayCaster {
   public:
     explicit RayCaster(const Scene& scene);

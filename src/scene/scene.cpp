@@ -49,10 +49,21 @@ std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId) 
     return info;
 }
 
+PartSet emptyParts(const Scene& scene) {
+    PartSet empty(scene.uniquePartCount());
+    for (const Object& object : scene.objects) {
+        const Geometry& g = scene.geometries[object.geometry];
+        for (uint32_t p = 0; p < g.partCount; ++p)
+            if (scene.parts[g.firstPart + p].empty()) empty.insert(object.uniquePartOffset + p);
+    }
+    return empty;
+}
+
 Bounds Scene::bounds() const {
     Bounds b;
     b.min = glm::dvec3(std::numeric_limits<double>::max());
     b.max = glm::dvec3(std::numeric_limits<double>::lowest());
+    bool any = false;
     for (const auto& object : objects) {
         const Geometry& g = geometries[object.geometry];
         for (uint32_t v = 0; v < g.vertexCount; ++v) {
@@ -60,8 +71,10 @@ Bounds Scene::bounds() const {
             b.min = glm::min(b.min, p);
             b.max = glm::max(b.max, p);
         }
+        any = any || g.vertexCount > 0;
     }
-    if (objects.empty()) b = {};
+    // Nothing meshed yet: a point, which cameras fit as they fit an empty scene.
+    if (!any) b = {};
     return b;
 }
 
@@ -125,6 +138,9 @@ void validate(const Scene& scene) {
             expected += part.triangleCount;
         }
         if (expected != g.triangleCount) fail(name + " parts do not cover all its triangles");
+        // Bounds come from vertices: one without triangles would give an empty part a box.
+        if (g.triangleCount == 0 && g.vertexCount != 0)
+            fail(name + " has vertices but no triangles");
         for (uint32_t i = 0; i < 3 * g.triangleCount; ++i)
             if (scene.indices[g.firstIndex + i] >= g.vertexCount)
                 fail(name + " indexes a vertex it does not own");

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/part_set.h"
 #include "scene/surface_info.h"
 #include "scene/units.h"
 #include "shared.h"
@@ -22,16 +23,22 @@ class BrepShapes; // scene/cad/brep_shapes.h
 
 using Vertex = gpu::Vertex;
 
-// A CAD face: a contiguous range of its geometry's triangles.
+// A CAD face: a contiguous range of its geometry's triangles. The range may be empty (a face
+// that did not triangulate, a solid not meshed yet): an empty part keeps its unique part ID
+// (and its B-rep face) but draws nothing, is never picked, and has no bounds, so fits, box
+// selections, ray casts, levels of detail and exports pass over it.
 struct Part {
     uint32_t firstTriangle = 0; // relative to the geometry's first triangle
     uint32_t triangleCount = 0;
+    bool empty() const { return triangleCount == 0; }
 };
 
 // Geometry::partFaces of a part whose face the file lists but its reader did not give.
 constexpr uint32_t kNoFace = 0xFFFFFFFFu;
 
-// Vertices and triangles in the scene's shared arrays, drawable as one draw call.
+// Vertices and triangles in the scene's shared arrays, drawable as one draw call. A geometry
+// has at least one part; all of them may be empty, and then it has no triangles and no
+// vertices (an object whose solid is not meshed yet points to one) and draws nothing.
 struct Geometry {
     std::string name;
     uint32_t firstVertex = 0; // into Scene::vertices; the draw's vertexOffset
@@ -126,6 +133,7 @@ struct Scene {
     // Triangles drawn for all objects (instanced geometry counted per object).
     uint64_t drawnTriangleCount() const;
     std::optional<PartRef> locate(uint32_t uniquePartId) const;
+    // The box of every object's vertices; a point at the origin when none has any.
     Bounds bounds() const;
 };
 
@@ -136,6 +144,9 @@ inline glm::dvec3 placed(const glm::dmat4& world, const glm::vec3& position) {
 
 // nullopt when the ID names no part of `scene` (background, or a stale ID after a reload).
 std::optional<PartInfo> describePart(const Scene& scene, uint32_t uniquePartId);
+
+// The unique parts without triangles (Part::empty): what no image can show.
+PartSet emptyParts(const Scene& scene);
 
 // Adds an object and gives it the next free range of unique part IDs.
 uint32_t addObject(Scene& scene, uint32_t geometry, uint32_t material, const glm::dmat4& world,
@@ -169,7 +180,9 @@ struct ModelError : std::runtime_error {
 };
 
 // Throws std::invalid_argument naming the first inconsistency (index out of range, parts not
-// covering their geometry's triangles, overlapping unique IDs, ...).
+// covering their geometry's triangles in order, a geometry without parts, overlapping unique
+// IDs, ...). Empty parts and geometries without triangles are consistent: an empty part
+// starts where the triangles before it end.
 void validate(const Scene& scene);
 
 } // namespace scene

@@ -27,8 +27,10 @@ struct Shell {
 };
 
 // Why the view is empty: a word for the event line ("empty: all hidden") and a sentence for
-// people. `visible`: the visible part count of a frame that shows the current hidden parts
-// and section, nullopt when there is none yet or the renderer counts no parts (a floor).
+// people. `partCount`: the parts that can show (those with triangles), `hiddenCount` the
+// hidden ones of them. `visible`: the visible part count of a frame that shows the current
+// hidden parts and section, nullopt when there is none yet or the renderer counts no parts
+// (a floor).
 struct EmptyReason {
     std::string event, message;
 };

@@ -272,6 +272,7 @@ void SceneState::sceneChanged() {
     exploded_.reset();
     explodedAt_ = 0.0f;
     idBytes_ = scene::idDataBytes(atRest(), renderer_.settings().pipeline.searchBatch);
+    emptyParts_ = scene::emptyParts(atRest());
     error_.clear();
 }
 

@@ -91,6 +91,8 @@ class SceneState {
     render::Renderer& renderer() { return renderer_; }
     const std::shared_ptr<const render::SceneTargets>& targets() const { return targets_; }
     const scene::IdDataBytes& idBytes() const { return idBytes_; }
+    // The scene's parts without triangles (scene::emptyParts), which no frame shows.
+    const scene::PartSet& emptyParts() const { return emptyParts_; }
     VkSampleCountFlags sampleCounts() const { return sampleCounts_; } // the device renders
     // The last failed action's message, until the next success.
     const std::string& error() const { return error_; }
@@ -130,6 +132,7 @@ class SceneState {
     double explodeReach_ = 1.0;
     const std::vector<glm::vec4>& explodeOffsets();
     scene::IdDataBytes idBytes_;
+    scene::PartSet emptyParts_;
     VkSampleCountFlags sampleCounts_;
     std::string error_;
     std::optional<Wait> settingsWait_, hiddenWait_; // what each waits for, while it builds

@@ -110,7 +110,15 @@ void Viewer::drawOverlays() {
     } else if (shell_.empty == "section" && section == shell_.countedSection) {
         visible = 0;
     }
-    const auto empty = whyEmpty(scene_.scene().uniquePartCount(), selection.hidden().size(),
+    // Empty parts never show, hidden or not: they count neither way.
+    const scene::PartSet& neverShown = scene_.emptyParts();
+    uint32_t hidden = selection.hidden().size();
+    if (!neverShown.empty()) {
+        scene::PartSet emptyShown = neverShown;
+        emptyShown.eraseAll(selection.hidden());
+        hidden -= neverShown.size() - emptyShown.size();
+    }
+    const auto empty = whyEmpty(scene_.scene().uniquePartCount() - neverShown.size(), hidden,
                                 section.any(), visible);
     const std::string reason = empty ? empty->event : "";
     if (reason != shell_.empty) {

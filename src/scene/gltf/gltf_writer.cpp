@@ -1,5 +1,6 @@
-// gltf_writer.cpp - Scene to .glb through tinygltf. Each part gets its own accessors over the
-// vertex range it uses, so parts stay separate primitives and indices can often be 16-bit.
+// gltf_writer.cpp - Scene to .glb through tinygltf. Each part with triangles gets its own
+// accessors over the vertex range it uses, so parts stay separate primitives and indices can
+// often be 16-bit.
 #include "scene/gltf/gltf_writer.h"
 
 #include <algorithm>
@@ -31,7 +32,9 @@ class GlbBuilder {
         for (const Object& object : scene_.objects) {
             tinygltf::Node node;
             node.name = object.name;
-            node.mesh = meshFor(object.geometry, object.material);
+            // glTF has no mesh without primitives: an object without triangles is a bare node.
+            if (scene_.geometries[object.geometry].triangleCount > 0)
+                node.mesh = meshFor(object.geometry, object.material);
             const glm::dmat4 world = up * object.world;
             const double* m = &world[0][0];
             node.matrix.assign(m, m + 16); // both column-major
@@ -47,7 +50,7 @@ class GlbBuilder {
     struct GeometryViews {
         int vertices = -1, indices = -1;
         bool shortIndices = false;
-        std::vector<int> positions, normals, indexAccessors; // per part
+        std::vector<int> positions, normals, indexAccessors; // per part with triangles
     };
 
     void addMaterial(const Material& m) {
@@ -99,17 +102,23 @@ class GlbBuilder {
         GeometryViews v;
         v.vertices = appendView(&scene_.vertices[g.firstVertex], g.vertexCount * sizeof(Vertex),
                                 sizeof(Vertex), TINYGLTF_TARGET_ARRAY_BUFFER);
+        // An empty part has no primitive (a glTF primitive has triangles), so the file holds
+        // the parts with triangles alone.
+        std::vector<const Part*> drawn;
+        for (uint32_t p = 0; p < g.partCount; ++p)
+            if (!scene_.parts[g.firstPart + p].empty())
+                drawn.push_back(&scene_.parts[g.firstPart + p]);
         std::vector<std::pair<uint32_t, uint32_t>> ranges;
         v.shortIndices = true;
-        for (uint32_t p = 0; p < g.partCount; ++p) {
-            ranges.push_back(vertexRange(g, scene_.parts[g.firstPart + p]));
+        for (const Part* part : drawn) {
+            ranges.push_back(vertexRange(g, *part));
             v.shortIndices &= ranges.back().second - ranges.back().first < 0xFFFFu;
         }
         std::vector<uint8_t> indexBytes;
         std::vector<size_t> indexOffsets;
         const size_t width = v.shortIndices ? 2 : 4;
-        for (uint32_t p = 0; p < g.partCount; ++p) {
-            const Part& part = scene_.parts[g.firstPart + p];
+        for (size_t p = 0; p < drawn.size(); ++p) {
+            const Part& part = *drawn[p];
             indexOffsets.push_back(indexBytes.size());
             for (uint32_t i = 0; i < 3 * part.triangleCount; ++i) {
                 uint32_t local =
@@ -121,7 +130,7 @@ class GlbBuilder {
         }
         v.indices = appendView(indexBytes.data(), indexBytes.size(), 0,
                                TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-        for (uint32_t p = 0; p < g.partCount; ++p) {
+        for (size_t p = 0; p < drawn.size(); ++p) {
             const auto [first, last] = ranges[p];
             const size_t count = last - first + 1;
             const size_t offset = first * sizeof(Vertex);
@@ -138,11 +147,11 @@ class GlbBuilder {
             v.positions.push_back(position);
             v.normals.push_back(addAccessor(v.vertices, offset + offsetof(Vertex, normal), count,
                                             TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3));
-            v.indexAccessors.push_back(addAccessor(
-                v.indices, indexOffsets[p], 3 * scene_.parts[g.firstPart + p].triangleCount,
-                v.shortIndices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
-                               : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                TINYGLTF_TYPE_SCALAR));
+            v.indexAccessors.push_back(
+                addAccessor(v.indices, indexOffsets[p], 3 * drawn[p]->triangleCount,
+                            v.shortIndices ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
+                                           : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                            TINYGLTF_TYPE_SCALAR));
         }
         return views_.emplace(geometry, std::move(v)).first->second;
     }

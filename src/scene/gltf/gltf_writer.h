@@ -3,7 +3,9 @@
 // also turns idview's z-up into glTF's y-up. Loading the file back in `primitives` part mode
 // gives the same parts, triangles, unique part IDs and object names; the nodes are flat (a
 // hierarchy would reorder objects and so change their IDs), so each path comes back as just
-// the object's name.
+// the object's name. Empty parts (Part::empty) are left out, as glTF has no primitive without
+// triangles, and an object without triangles is a node without a mesh: where a scene has
+// them, the parts with triangles come back in order, numbered without the empty ones.
 #pragma once
 
 #include <string>
