@@ -60,5 +60,8 @@ cd "$build"
 #   other scenes;
 # - the closed-solid checks: Open CASCADE (not instrumented) tessellating 28 files at four
 #   levels; idview's part of that runs here in the CAD loader tests.
+# And one that cannot run here: a CAD worker whose heap is bounded to a few MiB
+# (CadWorkers.RunningOutOfMemory...): AddressSanitizer's own mappings count against that bound,
+# so the instrumented worker cannot start at all; the Release pass runs it.
 ctest --output-on-failure -j"$(nproc)" -L 'unit|lavapipe|viewer' \
-    -E 'PickPerTechnique\..*_msaa4|AllTechniques\..*/engine_level_2_|CadClosedSolids\.' "$@"
+    -E 'PickPerTechnique\..*_msaa4|AllTechniques\..*/engine_level_2_|CadClosedSolids\.|CadWorkers\.RunningOutOfMemory' "$@"

@@ -226,6 +226,25 @@ TEST(CadWorkers, CancelStopsEveryWorkerAtOnce) {
     EXPECT_TRUE(children().empty());
 }
 
+// A worker that runs out of memory (its heap bounded by the tests' fault injection) costs its
+// piece; where none is left to read the file with, the load is refused in one line that says
+// so, and no worker is left.
+TEST(CadWorkers, RunningOutOfMemoryIsARefusalInOneLine) {
+    const fs::path file = copiesOf("screw.step", 5);
+    ::setenv("IDVIEW_TEST_WORKER_MEMORY", "4", 1);
+    try {
+        scene::loadCad(file.string(), withWorkers(2));
+        ADD_FAILURE() << "loaded in 4 MiB";
+    } catch (const scene::ModelError& e) {
+        const std::string said = e.what();
+        EXPECT_EQ(said.rfind(file.string() + ": ", 0), 0u) << said;
+        EXPECT_NE(said.find("out of memory"), std::string::npos) << said;
+        EXPECT_EQ(said.find('\n'), std::string::npos) << said;
+    }
+    ::unsetenv("IDVIEW_TEST_WORKER_MEMORY");
+    EXPECT_TRUE(children().empty());
+}
+
 // Without its worker program a load is refused in one line that says where it looked.
 TEST(CadWorkers, AMissingWorkerProgramIsRefusedInOneLine) {
     ::setenv("IDVIEW_LOAD_WORKER", "/nonexistent/idview-load-worker", 1);

@@ -168,8 +168,7 @@ void CadAssembly::add(const PieceAnswer& answer) {
         state_[object] = kObjectReady;
     }
     for (const std::string& warning : answer.warnings)
-        warnings_.push_back(scene_.geometries[geometries.empty() ? 0 : geometries[0]].name + ": " +
-                            warning);
+        warnings_.push_back(scene_.objects[objectsOf_[piece].at(0)].path + ": " + warning);
     faces_ += answer.faces;
     facesFailed_ += answer.facesFailed;
     for (const Geometry& g : mesh.geometries) emptyShapes_ += g.triangleCount == 0;
@@ -183,8 +182,9 @@ void CadAssembly::lose(uint32_t piece, const std::string& why) {
     const std::vector<uint32_t>& objects = objectsOf_[piece];
     if (objects.empty()) return;
     for (uint32_t object : objects) state_[object] = kObjectLost;
+    // Named by the first of its objects' paths: products' own names repeat ("SOLID").
     const Object& first = scene_.objects[objects[0]];
-    lost_.push_back(scene_.geometries[first.geometry].name + " (" + std::to_string(objects.size()) +
+    lost_.push_back(first.path + " (" + std::to_string(objects.size()) +
                     (objects.size() == 1 ? " solid" : " solids") + "): " + why);
     bytesDone_ += pieces_[piece].bytes;
 }

@@ -8,6 +8,7 @@
 #include "scene/cad/cad_healing.h"
 #include "scene/cad/cad_session.h"
 #include "scene/cad/cad_stages.h"
+#include "util/memory.h"
 
 #include <algorithm>
 #include <chrono>
@@ -115,7 +116,8 @@ CadLoadResult refusedInWords(const std::string& path, const std::atomic<bool>* c
         throw ModelError(path + ": Open CASCADE failed: " + e.DynamicType()->Name() +
                          (message && *message ? std::string(": ") + message : std::string()));
     } catch (const std::bad_alloc&) {
-        throw ModelError(path + ": out of memory");
+        throw ModelError(path + ": out of memory reading it whole (" +
+                         std::to_string(util::mebibytes(util::residentBytes())) + " MiB in use)");
     }
 }
 

@@ -27,6 +27,18 @@ constexpr auto kPartialEvery = std::chrono::milliseconds(1500);
 constexpr auto kPartialSoonest = std::chrono::milliseconds(250);
 constexpr double kPartialGrowth = 0.25;
 
+// Runs `body`, a stage of the parent's work, turning a failed allocation into words that name
+// what did not fit.
+template <typename Body>
+auto inMemory(const std::string& what, Body&& body) -> decltype(body()) {
+    try {
+        return body();
+    } catch (const std::bad_alloc&) {
+        throw Bad("out of memory " + what + " (" +
+                  std::to_string(util::mebibytes(util::residentBytes())) + " MiB in use)");
+    }
+}
+
 // Thrown where the skeleton does not stand for the file: it is read whole instead.
 struct Unsplittable : Bad {
     using Bad::Bad;
@@ -81,7 +93,8 @@ class SplitLoad {
         const auto skeletonStart = Clock::now();
         const SkeletonAnswer skeleton = readSkeleton();
         try {
-            assembly_.emplace(skeleton, split_.pieces(), stem);
+            inMemory("laying out the assembly",
+                     [&] { assembly_.emplace(skeleton, split_.pieces(), stem); });
         } catch (const Bad& e) {
             throw Unsplittable(e.what());
         }
@@ -96,7 +109,8 @@ class SplitLoad {
         const auto assemblyStart = Clock::now();
         if (progress_) progress_("building", 0.0);
         memory_.sample(stages_.peakAssemblyBytes, true);
-        CadLoadResult result = assembly_->finish(levels_);
+        CadLoadResult result =
+            inMemory("putting the solids together", [&] { return assembly_->finish(levels_); });
         stages_.assemblyMs = msSince(assemblyStart);
         memory_.sample(stages_.peakAssemblyBytes, true);
         result.deflection = deflection_;
@@ -202,7 +216,7 @@ class SplitLoad {
             pool_.killAll();
             throw Bad(triangleLimitReason(estimate(), options_.maxTriangles, deflection_));
         }
-        assembly_->add(answer);
+        inMemory("putting the solids together", [&] { assembly_->add(answer); });
         if (answered_++ == 0) stages_.firstSolidMs = msSince(start_);
         report();
         publish(false);
@@ -363,9 +377,13 @@ CadLoadResult loadSplitOrWhole(const std::string& path, const CadOptions& option
         if (progress) progress("reading", 0.0);
         std::optional<step::StepSplit> split;
         try {
-            split.emplace(path);
+            inMemory("indexing the file's entities", [&] { split.emplace(path); });
+        } catch (const Bad&) {
+            throw;
         } catch (const std::runtime_error& e) {
-            throw Bad(e.what());
+            // The mapping names the file; the loader puts its name in front already.
+            const std::string said = e.what(), named = path + ": ";
+            throw Bad(said.rfind(named, 0) == 0 ? said.substr(named.size()) : said);
         }
         stages.lexMs = split->lexMs();
         stages.splitMs = split->splitMs();
@@ -392,6 +410,7 @@ CadLoadResult loadSplitOrWhole(const std::string& path, const CadOptions& option
             stages.notSplit = split->notSplit()->reason;
         }
     }
+    checkWholeFileSize(path);
     CadLoadResult result = loadWhole(path, options, levels, progress, cancel, stages);
     stages.firstSolidMs = msSince(start);
     result.stages = stages;

@@ -22,17 +22,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Far beyond any sample; a bound on what the readers are asked to hold in memory.
+// Far beyond any sample; a bound on what the readers are asked to hold in memory. A STEP file
+// is split before any reader sees it (each reads a piece), so it may be larger: it is only
+// mapped and indexed, about 31 bytes an entity.
 constexpr uintmax_t kMaxFileBytes = uintmax_t(1) << 31;
+constexpr uintmax_t kMaxStepBytes = uintmax_t(1) << 36;
 
-void checkFile(const std::string& path) {
+void checkFile(const std::string& path, Format format) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Bad("file not found");
     if (!fs::is_regular_file(path, ec)) throw Bad("not a regular file");
     const uintmax_t size = fs::file_size(path, ec);
     if (ec) throw Bad("cannot read the file size: " + ec.message());
     if (size == 0) throw Bad("the file is empty");
-    if (size > kMaxFileBytes) throw Bad("file too large (" + std::to_string(size) + " bytes)");
+    if (size > (format == Format::Step ? kMaxStepBytes : kMaxFileBytes))
+        throw Bad("file too large (" + std::to_string(size) + " bytes)");
 }
 
 // Refuses a tessellation that passed the budget, in words: what the whole would have come
@@ -47,6 +51,13 @@ void checkFile(const std::string& path) {
 }
 
 } // namespace
+
+void checkWholeFileSize(const std::string& path) {
+    std::error_code ec;
+    const uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size > kMaxFileBytes)
+        throw Bad("file too large to read whole (" + std::to_string(size) + " bytes)");
+}
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -69,7 +80,7 @@ Format checkedFormat(const std::string& path, const CadOptions& options, uint32_
     if (levels > maxLevels)
         throw Bad("levels of detail: 1 to " + std::to_string(maxLevels) + ", not " +
                   std::to_string(levels));
-    checkFile(path);
+    checkFile(path, format);
     return format;
 }
 

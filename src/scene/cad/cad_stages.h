@@ -39,6 +39,9 @@ void guarded(const char* stage, Body&& body) {
 
 // The file's format, once the settings and the file itself are fit to load. Throws Bad.
 Format checkedFormat(const std::string& path, const CadOptions& options, uint32_t levels);
+// Throws Bad where the file is too large for a reader to hold whole (a STEP file may be
+// larger when it is split).
+void checkWholeFileSize(const std::string& path);
 
 // What reading a file gives.
 struct Read {

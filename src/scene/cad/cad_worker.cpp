@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <map>
 #include <new>
+#include <sys/resource.h>
 
 #include <BRep_TVertex.hxx>
 #include <Standard_Failure.hxx>
@@ -184,6 +185,13 @@ WholeFileAnswer readWholeFile(const WholeFileJob& job, const CadProgress& progre
 }
 
 int runLoadWorker(int fd) {
+    // For the tests of a worker running out of memory: IDVIEW_TEST_WORKER_MEMORY=MiB bounds its
+    // heap (RLIMIT_DATA), so that an allocation fails as it would on a full machine.
+    if (const char* mib = std::getenv("IDVIEW_TEST_WORKER_MEMORY"); mib && *mib) {
+        const rlim_t bytes = rlim_t(std::strtoull(mib, nullptr, 10)) << 20;
+        const rlimit limit{bytes, bytes};
+        setrlimit(RLIMIT_DATA, &limit);
+    }
     util::Frame frame;
     while (util::receiveFrame(fd, frame)) runJob(fd, frame);
     return 0;
