@@ -3,13 +3,18 @@
 // both sides. With that, the rasterizer's rules leave no pixel between two triangles.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <tuple>
+#include <unistd.h>
 
 #include "closed_cad_files.h"
+#include "rig_step.h"
 #include "scene/lod.h"
 
 namespace {
+
+namespace fs = std::filesystem;
 
 using Point = std::tuple<float, float, float>;
 
@@ -52,4 +57,39 @@ TEST(CadClosedSolids, EveryLevelOfAClosedModelIsAClosedMesh) {
         }
     }
     EXPECT_GT(levels, files.size()); // coarser levels were built, and checked
+}
+
+// Healing skipped where it may be (--healing auto): a piece whose solids do not mesh whole
+// without Open CASCADE's healing is read again healed, so the closed STEP samples (which need
+// it: linkrods.step unhealed leaves 16 of its 37 faces without triangles) come out as healing
+// on makes them, closed; the rig written by Open CASCADE needs none, and stays unhealed and
+// closed. (The sanitizer pass leaves this file's tests out: Open CASCADE's tessellation, not
+// idview's code, is most of their time.)
+TEST(CadClosedSolids, HealingIsSkippedOnlyWhereTheSolidsStayClosed) {
+    std::vector<std::string> files;
+    for (const std::string& path : testing_support::closedCadFiles())
+        if (path.ends_with(".step") || path.ends_with(".stp")) files.push_back(path);
+    ASSERT_GE(files.size(), 2u) << "linkrods.step and screw.step (package occt-misc)";
+    const fs::path rig =
+        fs::temp_directory_path() / ("idview_closed_rig_" + std::to_string(::getpid()) + ".step");
+    cadtest::writeRigStep(rig);
+    files.push_back(rig.string());
+    scene::CadOptions on, off, skip;
+    off.healing = scene::Healing::Off;
+    skip.healing = scene::Healing::Auto;
+    for (const std::string& path : files) {
+        const scene::CadLoadResult healed = scene::loadCad(path, on);
+        const scene::CadLoadResult unhealed = scene::loadCad(path, off);
+        const scene::CadLoadResult r = scene::loadCad(path, skip);
+        const bool needed = unhealed.facesFailed > 0;
+        EXPECT_EQ(r.stages.piecesHealed, needed ? r.stages.pieces : 0u) << path;
+        EXPECT_EQ(r.facesFailed, 0u) << path;
+        EXPECT_EQ(r.scene.drawnTriangleCount(),
+                  (needed ? healed : unhealed).scene.drawnTriangleCount())
+            << path;
+        for (const scene::Geometry& g : r.scene.geometries)
+            EXPECT_EQ(edgesUsedOnce(r.scene, g), 0u) << path << ", geometry " << g.name;
+    }
+    EXPECT_TRUE(scene::loadCad("/usr/share/opencascade/data/step/linkrods.step", off).facesFailed);
+    fs::remove(rig);
 }

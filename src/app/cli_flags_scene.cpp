@@ -105,11 +105,20 @@ std::vector<Flag> cadFlags(const Options& d) {
          [](Options& o, auto& v) {
              o.scene.cad.workers = parseCount("--load-workers", v, 0, 256);
          }},
-        {"--healing", "on|off",
-         "CAD files: Open CASCADE's shape healing after a STEP file's translation; off skips "
-         "it, most of the translation's time, and leaves the file's own flaws as they are" +
-             onOff(d.scene.cad.healing),
-         [](Options& o, auto& v) { o.scene.cad.healing = parseOnOff("--healing", v); }},
+        {"--healing", "auto|on|off",
+         "CAD files: Open CASCADE's shape healing after a STEP file's translation, most of its "
+         "time: on; off (the file's own flaws stay, faces may not mesh); auto reads each piece "
+         "without it and keeps that where every solid meshes whole and consistently oriented, "
+         "else reads the piece again healed" +
+             byDefault(scene::healingName(d.scene.cad.healing)),
+         [](Options& o, auto& v) {
+             if (v == "auto" || v == "on" || v == "off")
+                 o.scene.cad.healing = v == "on"    ? scene::Healing::On
+                                       : v == "off" ? scene::Healing::Off
+                                                    : scene::Healing::Auto;
+             else
+                 throw UsageError("--healing expects auto, on or off, not '" + v + "'");
+         }},
         {"--progress", nullptr,
          "print progress on stderr even when it is no terminal (a pipe, a log): a CAD "
          "load's, from the start (at a terminal once it has taken a second), and the "

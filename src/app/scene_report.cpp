@@ -97,6 +97,7 @@ void loadMembers(util::JsonWriter& json, const scene::CadLoadFigures& f) {
         .member("parse_ms", ms(s.parseMs))
         .member("transfer_ms", ms(s.transferMs))
         .member("healing_ms", ms(s.healingMs))
+        .member("pieces_healed", s.piecesHealed)
         .member("mesh_ms", ms(s.meshMs))
         .member("build_ms", ms(s.buildMs))
         .member("levels_ms", ms(s.levelsMs))

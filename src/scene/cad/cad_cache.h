@@ -40,7 +40,7 @@ struct CadCacheKey {
     double deflection = 0.0;  // as asked (0: automatic)
     double angularDeflection = 0.0;
     uint32_t levels = 1;
-    bool healing = true;
+    Healing healing = Healing::On;
     bool operator==(const CadCacheKey&) const = default;
 };
 

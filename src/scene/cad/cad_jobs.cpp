@@ -16,7 +16,7 @@ void meshFields(IO& io, M& m) {
 template <typename IO, typename F>
 void figureFields(IO& io, F& f) {
     fields(io, f.parseMs, f.transferMs, f.healingMs, f.meshMs, f.buildMs, f.levelsMs, f.encodeMs,
-           f.peakBytes, f.entities, f.failedEntities, f.faceEntities);
+           f.peakBytes, f.healed, f.entities, f.failedEntities, f.faceEntities);
 }
 
 template <typename IO, typename L>
@@ -66,7 +66,7 @@ std::string encodeWith(const Value& value, Fields fieldsOf) {
 }
 
 constexpr auto skeletonJobFields = [](auto& io, auto& j) {
-    fields(io, j.text, j.dummySets, j.healing);
+    fields(io, j.text, j.dummySets);
 };
 constexpr auto skeletonAnswerFields = [](auto& io, auto& a) {
     io.records(a.leaves, [](auto& io, auto& leaf) { leafFields(io, leaf); });

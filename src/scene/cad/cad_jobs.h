@@ -38,7 +38,7 @@ struct MeshSettings {
         0.0; // model units, never 0 in a job: the parent works out the automatic one
     double angularDeflection = 0.5;
     uint32_t levels = 1;
-    bool healing = true; // Open CASCADE's shape healing after a STEP transfer
+    Healing healing = Healing::On; // Open CASCADE's shape healing after a STEP transfer
     uint64_t maxTriangles = kDefaultMaxTriangles;
 };
 
@@ -47,7 +47,6 @@ struct MeshSettings {
 struct SkeletonJob {
     std::string text;
     std::vector<uint64_t> dummySets;
-    bool healing = true;
 };
 
 // A leaf of the skeleton's assembly tree, as the whole file would give it.
@@ -79,6 +78,7 @@ struct WorkerFigures {
     double parseMs = 0.0, transferMs = 0.0, healingMs = 0.0, meshMs = 0.0, buildMs = 0.0,
            levelsMs = 0.0, encodeMs = 0.0;
     uint64_t peakBytes = 0; // the worker's VmHWM when it answered
+    bool healed = false;    // read with Open CASCADE's healing (Auto: read again with it)
     uint32_t entities = 0, failedEntities = 0, faceEntities = 0; // ReaderLosses
 };
 

@@ -51,7 +51,8 @@ CadLoadResult loadHere(const std::string& path, const CadOptions& options,
                        const std::atomic<bool>* cancel) {
     const Format format = checkedFormat(path, options, levels);
     quietOcct();
-    setStepHealing(options.healing);
+    // A file read whole is read healed unless asked not to: it has no pieces to try without.
+    setStepHealing(options.healing != Healing::Off);
     const std::string stem = fs::path(path).stem().string();
     CadLoadResult result;
     auto start = Clock::now();
@@ -122,6 +123,10 @@ CadLoadResult refusedInWords(const std::string& path, const std::atomic<bool>* c
 }
 
 } // namespace
+
+const char* healingName(Healing healing) {
+    return healing == Healing::On ? "on" : healing == Healing::Off ? "off" : "auto";
+}
 
 bool isCadPath(const std::string& path) {
     return formatOf(path) != Format::None;

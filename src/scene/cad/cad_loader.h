@@ -35,6 +35,10 @@ namespace scene {
 // 1.8 GB, 31.6 s) is not stopped half-way; the viewer's Cancel is.
 constexpr uint64_t kDefaultMaxTriangles = 4'000'000;
 
+enum class Healing : uint8_t { On, Off, Auto };
+// "auto", "on", "off".
+const char* healingName(Healing healing);
+
 struct CadOptions {
     // Linear deflection of the tessellation in model units; 0 picks
     // kRelativeDeflection x the model's bounding box diagonal.
@@ -43,10 +47,13 @@ struct CadOptions {
     // The most triangles full detail may have (over the distinct shapes, before instancing):
     // the tessellation stops as soon as its faces pass it, and the load fails in words.
     uint64_t maxTriangles = kDefaultMaxTriangles;
-    // Open CASCADE's shape healing (ShapeFix) after a STEP file's translation: off skips it,
-    // which takes most of the translation's time (4.2 of 5.1 s on a 41 MB board), leaving
-    // the file's own flaws (gaps, wrong tolerances, missing seams) as they are.
-    bool healing = true;
+    // Open CASCADE's shape healing (ShapeFix) after a STEP file's translation, which takes
+    // most of the translation's time (4.2 of 5.1 s on a 41 MB board): On (the default);
+    // Off never, leaving the file's own flaws (gaps, wrong tolerances, missing seams) as they
+    // are; Auto reads each piece of a split file without it and keeps that only where every
+    // solid of the piece meshes whole (every face triangulated, every triangle edge met once
+    // each way by another), else reads the piece again healed. Files read whole heal unless Off.
+    Healing healing = Healing::On;
     // Worker processes that read, translate and mesh a file's pieces: 0, one per core. The
     // scene does not depend on it.
     unsigned workers = 0;
@@ -67,6 +74,7 @@ struct CadStageFigures {
     double firstSolidMs = 0.0;   // from the start of the load to the first solid meshed
     double piecesMs = 0.0;       // from the first piece sent to the last answer
     double largestPieceMs = 0.0; // the longest piece: the parallel stage's floor
+    uint32_t piecesHealed = 0;   // read healed: asked, or read again since they did not mesh whole
     double parseMs = 0.0, transferMs = 0.0, healingMs = 0.0, meshMs = 0.0, buildMs = 0.0,
            levelsMs = 0.0, encodeMs = 0.0; // the workers', summed
     double assemblyMs = 0.0;               // the parent putting the answers together, levels chosen

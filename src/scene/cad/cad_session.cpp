@@ -64,6 +64,7 @@ void addFigures(CadStageFigures& stages, const WorkerFigures& f) {
     stages.parseMs += f.parseMs;
     stages.transferMs += f.transferMs;
     stages.healingMs += f.healingMs;
+    stages.piecesHealed += f.healed;
     stages.meshMs += f.meshMs;
     stages.buildMs += f.buildMs;
     stages.levelsMs += f.levelsMs;
@@ -122,7 +123,6 @@ class SplitLoad {
         if (progress_) progress_("reading the assembly structure", 0.0);
         SkeletonJob job;
         job.text = split_.skeleton();
-        job.healing = options_.healing;
         for (const step::Piece& piece : split_.pieces()) job.dummySets.push_back(piece.dummySet);
         pool_.send(0, uint32_t(JobKind::Skeleton), encode(job));
         for (;;) {

@@ -149,7 +149,7 @@ void runJob(int fd, const util::Frame& frame) {
 SkeletonAnswer readSkeleton(const SkeletonJob& job) {
     const auto start = Clock::now();
     quietOcct();
-    setStepHealing(job.healing);
+    setStepHealing(false); // the sets are points: nothing to heal
     std::map<const void*, int32_t> sets;
     Read read;
     guarded("reading the assembly structure", [&] {
