@@ -1,0 +1,263 @@
+#!/usr/bin/python3
+"""cad_bench.py - big CAD files opened by idview and by f3d on this machine: time to the first
+picture and to the whole model, a cached reopen, and the peak memory of each program's whole
+process tree (idview and its load workers; f3d), sampled from /proc every 50 ms.
+
+    scripts/cad_bench.py run FOLDER FILE... [--idview build/idview] [--f3d f3d]
+                         [--workers N] [--viewer] [--f3d-timeout S]
+        measures every FILE and writes FOLDER/cad-bench.json (the commands, the machine, each
+        run's figures and idview's --stats); --viewer also times the first picture in the
+        viewer (under Xvfb, from its event lines)
+    scripts/cad_bench.py table FOLDER [projection]
+        the table docs/cad.md shows, printed from FOLDER/cad-bench.json; `projection`: the
+        stage times and their projection to 16 cores
+    scripts/cad_bench.py --check [PAGE] | --write [PAGE]     (default docs/cad.md)
+        the page's generated blocks (<!-- generated: cad_bench.py ... -->) are what `table`
+        prints for their arguments / are printed into the page again
+
+The projection to N cores takes the parent's own stages (lexing, splitting, the skeleton,
+putting the solids together, the cache) as they were, and the workers' stages (parsing,
+translating, healing, meshing, building, encoding: their own time, summed) spread over N
+workers, no faster than the largest piece alone: serial + max(largest piece, work / N).
+"""
+import json
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+import doc_blocks
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PAGE = os.path.join(ROOT, "docs", "cad.md")
+SCRIPT = "cad_bench.py"
+STAGES = ("parse_ms", "transfer_ms", "healing_ms", "mesh_ms", "build_ms", "levels_ms",
+          "encode_ms")
+SERIAL = ("lex_ms", "split_ms", "skeleton_ms", "assembly_ms")
+
+
+class TreeMemory(threading.Thread):
+    """Samples the resident memory of the processes below `pid` whose names are in `names`,
+    added up, every 50 ms; `peak` is the most seen at once, in MiB."""
+
+    def __init__(self, pid, names):
+        super().__init__(daemon=True)
+        self.pid, self.names, self.peak, self.done = pid, names, 0.0, False
+
+    def tree(self):
+        children = {}
+        for entry in os.listdir("/proc"):
+            if not entry.isdigit():
+                continue
+            try:
+                with open(f"/proc/{entry}/stat") as f:
+                    stat = f.read()
+            except OSError:
+                continue
+            close = stat.rfind(")")
+            name = stat[stat.find("(") + 1:close]
+            parent = int(stat[close + 2:].split()[1])
+            children.setdefault(parent, []).append((int(entry), name))
+        found, todo = [], [self.pid]
+        while todo:
+            for child, name in children.get(todo.pop(), []):
+                found.append((child, name))
+                todo.append(child)
+        return found
+
+    def run(self):
+        while not self.done:
+            total = 0
+            for pid, name in self.tree():
+                if name not in self.names:
+                    continue
+                try:
+                    with open(f"/proc/{pid}/status") as f:
+                        m = re.search(r"^VmRSS:\s+(\d+) kB", f.read(), re.M)
+                    total += int(m.group(1)) if m else 0
+                except OSError:
+                    pass
+            self.peak = max(self.peak, total / 1024.0)
+            time.sleep(0.05)
+
+
+def measure(command, names, env=None, timeout=None):
+    """Runs `command` under a shell of its own, sampling its tree; its wall time (s), peak
+    tree memory (MiB), exit status and stdout."""
+    start = time.monotonic()
+    process = subprocess.Popen(["/bin/sh", "-c", "exec " + command], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True, env=env)
+    sampler = TreeMemory(os.getpid(), names)
+    sampler.start()
+    try:
+        out, err = process.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        out, err = process.communicate()
+    sampler.done = True
+    sampler.join()
+    return {"command": command, "seconds": round(time.monotonic() - start, 2),
+            "peak_mib": round(sampler.peak), "status": process.returncode,
+            "stdout": out, "stderr": err[-2000:]}
+
+
+def idview_runs(idview, path, workers, cache):
+    env = dict(os.environ, XDG_CACHE_HOME=cache)
+    command = f"{idview} --stats --load-workers {workers} --model '{path}'"
+    names = {"idview", "idview-load-wor"}
+    first = measure(command, names, env)
+    again = measure(command, names, env)
+    for run in (first, again):
+        run["stats"] = json.loads(run.pop("stdout").strip().splitlines()[-1])
+    return first, again
+
+
+def viewer_run(idview, path, workers, cache):
+    """The viewer on `path` under Xvfb, until its event lines say the model is complete: the
+    first picture's and the whole model's seconds, from those lines."""
+    script = os.path.join(cache, "quit.txt")
+    with open(script, "w") as f:
+        f.write("wait-load\nquit\n")
+    env = dict(os.environ, XDG_CACHE_HOME=cache, XDG_CONFIG_HOME=cache)
+    command = (f"xvfb-run -a {idview} --no-saved-settings --load-workers {workers} "
+               f"--script '{script}' --model '{path}'")
+    run = measure(command, {"idview", "idview-load-wor"}, env)
+    first = re.search(r"loading: \d+ of \d+ solids shown after ([0-9.]+) s", run["stdout"])
+    run["first_picture_s"] = float(first.group(1)) if first else None
+    run.pop("stdout")
+    return run
+
+
+def run(argv):
+    folder, files, opts = argv[0], [], {"--idview": os.path.join(ROOT, "build", "idview"),
+                                        "--f3d": "f3d", "--workers": "0",
+                                        "--f3d-timeout": "3600"}
+    viewer, i = False, 1
+    while i < len(argv):
+        if argv[i] == "--viewer":
+            viewer, i = True, i + 1
+        elif argv[i] in opts:
+            opts[argv[i]], i = argv[i + 1], i + 2
+        else:
+            files.append(os.path.abspath(argv[i]))
+            i += 1
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    results = {"commit": commit, "machine": platform.node(), "cores": os.cpu_count(),
+               "files": []}
+    for path in files:
+        entry = {"file": os.path.basename(path), "bytes": os.path.getsize(path)}
+        with tempfile.TemporaryDirectory() as cache:
+            entry["idview_first"], entry["idview_again"] = idview_runs(
+                opts["--idview"], path, opts["--workers"], cache)
+        if viewer:
+            with tempfile.TemporaryDirectory() as cache:
+                entry["viewer"] = viewer_run(opts["--idview"], path, opts["--workers"], cache)
+        if shutil.which(opts["--f3d"]):
+            png = os.path.join(tempfile.gettempdir(), "cad_bench_f3d.png")
+            entry["f3d"] = measure(
+                f"xvfb-run -a {opts['--f3d']} --output='{png}' --resolution=800,600 '{path}'",
+                {"f3d"}, timeout=float(opts["--f3d-timeout"]))
+            entry["f3d"].pop("stdout")
+        results["files"].append(entry)
+        print(json.dumps({k: v for k, v in entry.items() if k in ("file", "bytes")}),
+              file=sys.stderr)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "cad-bench.json"), "w") as f:
+        json.dump(results, f, indent=1)
+
+
+def load(folder):
+    with open(os.path.join(ROOT, "docs", "benchmarks", folder, "cad-bench.json")) as f:
+        return json.load(f)
+
+
+def projected(stats, cores):
+    """The load's seconds on `cores` workers, from its stage times (see the top)."""
+    load = stats["load"]
+    serial = sum(load[k] for k in SERIAL) + load["cache_ms"]
+    work = sum(load[k] for k in STAGES)
+    return (serial + max(load["largest_piece_ms"], work / cores)) / 1000.0
+
+
+def table(folder, kind="times"):
+    results = load(folder)
+    lines = []
+    if kind == "times":
+        lines += ["| file | | first picture (s) | complete (s) | cached reopen (s) | "
+                  "peak memory, process tree (MiB) |",
+                  "|---|---|---:|---:|---:|---:|"]
+        for e in results["files"]:
+            first, again = e["idview_first"], e["idview_again"]
+            picture = e.get("viewer", {}).get("first_picture_s")
+            shown = f"{picture:.1f}" if picture is not None else \
+                f"{first['stats']['load']['first_solid_ms'] / 1000:.1f} (headless)"
+            size = f"{e['bytes'] / 1e6:.0f} MB"
+            lines.append(f"| {e['file']} ({size}) | idview | {shown} | {first['seconds']:.1f} | "
+                         f"{again['seconds']:.1f} | {first['peak_mib']} |")
+            if "f3d" in e:
+                f = e["f3d"]
+                done = f"{f['seconds']:.1f}" if f["status"] == 0 else f"> {f['seconds']:.0f}"
+                lines.append(f"| | f3d | {done} | {done} | {done} | {f['peak_mib']} |")
+                if f["status"] == 0:
+                    lines.append(f"| | idview / f3d | | **{first['seconds'] / f['seconds']:.3f}** "
+                                 f"| | **{first['peak_mib'] / max(f['peak_mib'], 1):.2f}** |")
+    else:
+        lines += ["| file | lex + split + skeleton | parse | translate | heal | mesh | build "
+                  "+ encode | put together | largest piece | measured, "
+                  f"{results['cores']} cores | projected, 2 | projected, 16 |",
+                  "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        for e in results["files"]:
+            s = e["idview_first"]["stats"]
+            ld = s["load"]
+            sec = lambda *keys: f"{sum(ld[k] for k in keys) / 1000:.1f}"
+            lines.append(
+                f"| {e['file']} | {sec('lex_ms', 'split_ms', 'skeleton_ms')} | "
+                f"{sec('parse_ms')} | {sec('transfer_ms')} | {sec('healing_ms')} | "
+                f"{sec('mesh_ms')} | {sec('build_ms', 'encode_ms')} | {sec('assembly_ms')} | "
+                f"{sec('largest_piece_ms')} | {s['load_ms'] / 1000:.1f} | "
+                f"{projected(s, 2):.1f} | {projected(s, 16):.1f} |")
+    lines.append(f"\n*`scripts/cad_bench.py table {folder}{'' if kind == 'times' else ' ' + kind}`"
+                 f" prints this from docs/benchmarks/{folder}/cad-bench.json (idview "
+                 f"{results['commit']}, {results['cores']} cores).*")
+    return "\n".join(lines)
+
+
+def page_blocks(path, write):
+    with open(path) as f:
+        lines = f.read().split("\n")
+    wrong = 0
+    for block in reversed(doc_blocks.blocks(lines, SCRIPT, path)):
+        want = table(*block.args).split("\n")
+        if lines[block.first:block.last] != want:
+            if write:
+                lines[block.first:block.last] = want
+            else:
+                wrong += 1
+                print(f"{path}:{block.first}: not what `{SCRIPT} table "
+                      f"{' '.join(block.args)}` prints", file=sys.stderr)
+    if write:
+        with open(path, "w") as f:
+            f.write("\n".join(lines))
+    return wrong
+
+
+def main(argv):
+    if len(argv) >= 3 and argv[1] == "run":
+        run(argv[2:])
+    elif len(argv) >= 3 and argv[1] == "table":
+        print(table(*argv[2:4]))
+    elif len(argv) >= 2 and argv[1] in ("--check", "--write"):
+        sys.exit(1 if page_blocks(argv[2] if len(argv) > 2 else PAGE, argv[1] == "--write")
+                 else 0)
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    main(sys.argv)
