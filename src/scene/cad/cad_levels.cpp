@@ -26,7 +26,7 @@ LevelMesh tessellated(const Geometry& full, const BrepShapes::Impl::Shape& shape
     for (uint32_t face : full.partFaces)
         if (!appendFace(scratch, shape.faces[face], 0, &shared)) return {};
     LevelMesh level;
-    level.vertices = std::move(scratch.vertices);
+    level.vertices = scratch.vertices.take();
     for (const Part& part : scratch.parts) {
         const auto first = scratch.indices.begin() + 3 * ptrdiff_t(part.firstTriangle);
         level.parts.emplace_back(first, first + 3 * ptrdiff_t(part.triangleCount));
