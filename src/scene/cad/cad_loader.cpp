@@ -29,6 +29,7 @@
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
 #include <Standard_Failure.hxx>
+#include <Standard_OutOfMemory.hxx>
 #include <TopoDS_Compound.hxx>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -299,6 +300,8 @@ CadLoadResult loadCad(const std::string& path, const CadOptions& options,
         // A reader broken off by the flag says only that it read nothing.
         if (cancel && *cancel) throw ModelError(path + ": cancelled");
         throw ModelError(path + ": " + e.what());
+    } catch (const Standard_OutOfMemory&) {
+        throw ModelError(path + ": out of memory");
     } catch (const Standard_Failure& e) {
         const char* message = e.GetMessageString();
         throw ModelError(path + ": Open CASCADE failed: " + e.DynamicType()->Name() +
