@@ -4,7 +4,9 @@
 # build-asan/ and runs the unit, lavapipe and viewer tests there (cli_test.sh,
 # benchmark_test.sh and viewer_test.sh get build-asan/idview; the viewer runs under Xvfb with
 # GLFW, X11 and Dear ImGui in the process). Any ASan, UBSan or LeakSanitizer report fails.
-# The fuzz label has its own ASan/UBSan build (fuzz/run_fuzz.sh) and does not run here.
+# The fuzz label has its own ASan/UBSan build (fuzz/run_fuzz.sh) and does not run here; nor
+# does the memory label (tests/memory_limit_test.sh): an address-space limit cannot hold under
+# AddressSanitizer, which reserves terabytes for its shadow memory.
 # scripts/setup.sh test runs this after the normal ctest; it needs the packages setup.sh
 # installs, and lavapipe from Mesa 25 (scripts/fetch-lavapipe.sh, run here too: quick when
 # it is there). The tests get the same lavapipe environment as in build/ from ctest.

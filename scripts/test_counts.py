@@ -38,6 +38,7 @@ LABELS = {
     "viewer": "the viewer under Xvfb on lavapipe, driven by scripts",
     "fuzz": "the glTF and CAD loaders under libFuzzer",
     "far": "models far from the origin, against the same models at the origin",
+    "memory": "running out of memory under an address-space limit: one line, exit 1",
 }
 
 

@@ -106,7 +106,7 @@ inline WithEmptyParts withEmptyParts(const scene::Scene& plain) {
     s = plain;
     s.parts.clear();
     s.objects.clear();
-    for (scene::Geometry& g : s.geometries) insertEmptyParts(plain, g, s.parts);
+    for (scene::Geometry& g : s.geometries) insertEmptyParts(plain, g, s.parts.edit());
     // A geometry of three empty parts and nothing else, as a solid not meshed yet points to.
     scene::Geometry none;
     none.name = "not meshed";

@@ -31,7 +31,7 @@ std::vector<uint32_t> uniquePartSizes(const Scene& s) {
 }
 
 template <typename T>
-bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+bool sameBytes(const scene::SharedArray<T>& a, const scene::SharedArray<T>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 

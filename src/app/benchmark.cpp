@@ -177,7 +177,7 @@ struct RowTimer {
     BenchmarkRow time(const scene::Scene& scene, const render::RenderSettings& settings,
                       bool first) {
         if (first) {
-            rig.renderer.setScene(scene, settings);
+            uploadScene(rig.renderer, sourceOf(options.scene), scene, settings);
             rig.renderer.setHidden(hiddenParts(options, scene));
         } else
             rig.renderer.configure(scene, settings);

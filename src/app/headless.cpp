@@ -127,7 +127,7 @@ void HeadlessRun::switchTo(const render::RenderSettings& settings, bool first,
                            HeadlessResult& result) {
     render::Renderer& renderer = rig_.renderer;
     if (first)
-        renderer.setScene(scene_, settings);
+        uploadScene(renderer, sourceOf(options_.scene), scene_, settings);
     else
         renderer.configure(scene_, settings);
     rig_.useMsaa(settings.pipeline.msaa);

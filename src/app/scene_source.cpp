@@ -9,7 +9,9 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "app/out_of_memory.h"
 #include "app/progress_lines.h"
+#include "render/renderer.h"
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
@@ -67,6 +69,11 @@ std::string defaultModelPath() {
     return IDVIEW_SOURCE_ASSET_DIR "/default.glb";
 }
 
+std::string sourceOf(const SceneSettings& settings) {
+    if (settings.model.empty() && !settings.builtin.empty()) return settings.builtin;
+    return settings.model.empty() ? defaultModelPath() : settings.model;
+}
+
 // Copies add objects: refuse in words, before allocating, a count whose object arrays (the
 // scene's on the host, the GPU's copy, the draw lists) would not fit in this machine's RAM.
 void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
@@ -81,67 +88,98 @@ void checkCopiesFit(const scene::Scene& scene, uint32_t copies) {
                                  "this machine has " + std::to_string(ram >> 30) + " GiB");
 }
 
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+// A CAD file into `loaded`: through the tessellation cache unless --no-cache.
+void loadCadFile(LoadedScene& loaded, const SceneSettings& settings, LoadProgress* progress,
+                 const std::atomic<bool>* cancel, const scene::CadPartialSink& partial) {
+    const scene::CadProgress onStderr = stderrProgress(loaded.source, settings.progress);
+    const scene::CadProgress report = [&](const char* stage, double fraction) {
+        if (onStderr) onStderr(stage, fraction);
+        if (progress) progress->set(stage, fraction);
+    };
+    scene::CadLoadResult result = settings.cadCache
+                                      ? scene::loadCadCached(loaded.source, settings.cad, report,
+                                                             settings.lodLevels, cancel, partial)
+                                      : scene::loadCad(loaded.source, settings.cad, report,
+                                                       settings.lodLevels, cancel, partial);
+    loaded.cad = true;
+    loaded.cadLoad = result; // the figures; the scene and warnings move below
+    if (!settings.cadCache) loaded.cadLoad.cacheNote = "--no-cache";
+    loaded.lodMs = result.levelsMs;
+    loaded.scene = std::move(result.scene);
+    loaded.warnings = std::move(result.warnings);
+    if (settings.parts != scene::PartMode::Primitives)
+        loaded.warnings.insert(loaded.warnings.begin(),
+                               "--parts is ignored for CAD files: a part is a B-rep face");
+    loaded.scene.unit = scene::cadUnit(loaded.source);
+}
+
+// The file, built-in or procedural scene `settings` name, as it is (no levels, no copies).
+void loadSource(LoadedScene& loaded, const SceneSettings& settings, LoadProgress* progress,
+                const std::atomic<bool>* cancel, const scene::CadPartialSink& partial) {
+    loaded.source = sourceOf(settings);
+    if (!settings.model.empty() || settings.builtin.empty()) {
+        refuseOutOfMemory(loaded.source, loadingWhat(loaded.source), [&] {
+            if (scene::isCadPath(loaded.source))
+                return loadCadFile(loaded, settings, progress, cancel, partial);
+            scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
+            loaded.scene = std::move(result.scene);
+            loaded.warnings = std::move(result.warnings);
+            loaded.scene.unit = scene::gltfUnit();
+        });
+        return;
+    }
+    const SceneSpec spec = parseSceneSpec(settings.builtin);
+    refuseOutOfMemory(loaded.source, "generating it", [&] {
+        if (spec.builtin == "procedural")
+            loaded.scene = scene::makeProcedural({spec.preset, spec.seed});
+        else
+            loaded.scene = scene::makeScene(spec.builtin);
+    });
+    loaded.tilesLayout = spec.builtin == "tiles" && settings.copies == 1;
+}
+
+} // namespace
+
 LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
                       const std::atomic<bool>* cancel, const scene::CadPartialSink& partial) {
     const auto start = std::chrono::steady_clock::now();
     LoadedScene loaded;
     loaded.settings = settings;
-    if (!settings.model.empty() || settings.builtin.empty()) {
-        loaded.source = settings.model.empty() ? defaultModelPath() : settings.model;
-        if (scene::isCadPath(loaded.source)) {
-            const scene::CadProgress onStderr = stderrProgress(loaded.source, settings.progress);
-            const scene::CadProgress report = [&](const char* stage, double fraction) {
-                if (onStderr) onStderr(stage, fraction);
-                if (progress) progress->set(stage, fraction);
-            };
-            scene::CadLoadResult result =
-                settings.cadCache ? scene::loadCadCached(loaded.source, settings.cad, report,
-                                                         settings.lodLevels, cancel, partial)
-                                  : scene::loadCad(loaded.source, settings.cad, report,
-                                                   settings.lodLevels, cancel, partial);
-            loaded.cad = true;
-            loaded.cadLoad = result; // the figures; the scene and warnings move below
-            if (!settings.cadCache) loaded.cadLoad.cacheNote = "--no-cache";
-            loaded.lodMs = result.levelsMs;
-            loaded.scene = std::move(result.scene);
-            loaded.warnings = std::move(result.warnings);
-            if (settings.parts != scene::PartMode::Primitives)
-                loaded.warnings.insert(loaded.warnings.begin(),
-                                       "--parts is ignored for CAD files: a part is a B-rep face");
-            loaded.scene.unit = scene::cadUnit(loaded.source);
-        } else {
-            scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
-            loaded.scene = std::move(result.scene);
-            loaded.warnings = std::move(result.warnings);
-            loaded.scene.unit = scene::gltfUnit();
-        }
-    } else {
-        const SceneSpec spec = parseSceneSpec(settings.builtin);
-        loaded.source = settings.builtin;
-        if (spec.builtin == "procedural")
-            loaded.scene = scene::makeProcedural({spec.preset, spec.seed});
-        else
-            loaded.scene = scene::makeScene(spec.builtin);
-        loaded.tilesLayout = spec.builtin == "tiles" && settings.copies == 1;
-    }
+    loadSource(loaded, settings, progress, cancel, partial);
     if (settings.lodLevels > 1 && !loaded.cad) {
         // Before the copies, which share their geometries. CAD files tessellate theirs.
         const auto lodStart = std::chrono::steady_clock::now();
-        scene::buildLevels(loaded.scene, {.levels = settings.lodLevels}, [&](double fraction) {
-            if (progress) progress->set("levels of detail", fraction);
+        refuseOutOfMemory(loaded.source, levelsWhat(settings.lodLevels, loaded.scene), [&] {
+            scene::buildLevels(loaded.scene, {.levels = settings.lodLevels}, [&](double fraction) {
+                if (progress) progress->set("levels of detail", fraction);
+            });
         });
-        loaded.lodMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lodStart)
-                .count();
+        loaded.lodMs = msSince(lodStart);
     }
-    if (settings.copies > 1) {
-        checkCopiesFit(loaded.scene, settings.copies);
-        loaded.scene = scene::replicate(loaded.scene, settings.copies, settings.copyAxes);
-    }
+    if (settings.copies > 1)
+        loaded.scene = makeCopies(loaded.source, loaded.scene, settings.copies, settings.copyAxes);
     if (settings.lodLevel > 0) scene::retargetToLevel(loaded.scene, settings.lodLevel);
-    loaded.loadMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    loaded.loadMs = msSince(start);
     return loaded;
+}
+
+scene::Scene makeCopies(const std::string& source, const scene::Scene& scene, uint32_t copies,
+                        uint32_t axes) {
+    checkCopiesFit(scene, copies);
+    return refuseOutOfMemory(source, copiesWhat(copies, scene),
+                             [&] { return scene::replicate(scene, copies, axes); });
+}
+
+void uploadScene(render::Renderer& renderer, const std::string& source, const scene::Scene& scene,
+                 const render::RenderSettings& settings) {
+    refuseOutOfMemory(source, uploadWhat(scene), [&] { renderer.setScene(scene, settings); });
 }
 
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const CameraSettings& view) {

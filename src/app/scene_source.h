@@ -21,8 +21,10 @@ namespace util {
 class JsonWriter;
 }
 namespace render {
+class Renderer;
+struct RenderSettings;
 struct RenderStats;
-}
+} // namespace render
 
 namespace app {
 
@@ -52,6 +54,8 @@ struct LoadedScene {
 // The model idview opens when none is given: assets/default.glb beside the executable
 // (a bundled copy), else in the source tree.
 std::string defaultModelPath();
+// What `settings` open, as messages name it: the model's path or the built-in scene's spec.
+std::string sourceOf(const SceneSettings& settings);
 
 // Loads or generates the scene `settings` name and makes its copies. Throws
 // scene::ModelError / std::runtime_error with a one-line message.
@@ -86,6 +90,14 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress = nu
 // Throws std::runtime_error, one line, when `copies` of `scene` would not fit in this
 // machine's memory (checked before any allocation).
 void checkCopiesFit(const scene::Scene& scene, uint32_t copies);
+// scene::replicate, checked first by checkCopiesFit; running out of memory making them is
+// refused in one line naming `source` and the copies (app/out_of_memory.h).
+scene::Scene makeCopies(const std::string& source, const scene::Scene& scene, uint32_t copies,
+                        uint32_t axes);
+// renderer.setScene, where running out of host memory is refused in one line naming `source`
+// and what was uploaded (out of device memory, vk::Allocation names the buffer).
+void uploadScene(render::Renderer& renderer, const std::string& source, const scene::Scene& scene,
+                 const render::RenderSettings& settings);
 
 // The camera idview opens a scene with, at this aspect ratio.
 scene::Camera initialCamera(const LoadedScene& loaded, float aspect,

@@ -70,6 +70,17 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
     return bits;
 }
 
+// Lets go of what the GPU alone reads once it is uploaded: the ID data always; the ranges, data
+// and meshlet counts of an indirect list too (its frames draw by commands on the GPU), which
+// for the per-part modes of a large scene are tens of bytes per part.
+void keepOnlyWhatFramesRead(DrawList& list, bool indirect) {
+    std::vector<uint8_t>().swap(list.idBytes);
+    if (!indirect) return;
+    std::vector<DrawItem>().swap(list.ranges);
+    std::vector<gpu::DrawData>().swap(list.data);
+    std::vector<uint32_t>().swap(list.meshletCounts);
+}
+
 uint32_t taskGroups(uint32_t meshlets) {
     return (meshlets + gpu::TASK_GROUP_SIZE - 1) / gpu::TASK_GROUP_SIZE;
 }
@@ -86,8 +97,9 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
     // Only what this technique draws is held (and counted in its stats).
     if (key.technique->primitives == Primitives::PartVertices) b->partVertices = partVertices;
     if (key.technique->usesMeshShader()) b->meshlets = meshlets;
-    b->list = buildDrawList(scene, key, draws,
-                            derivedPrimitives(b->partVertices.get(), b->meshlets.get()), levels);
+    const DerivedPrimitives derived = derivedPrimitives(b->partVertices.get(), b->meshlets.get());
+    b->list = buildDrawList(scene, key, draws, derived, levels);
+    b->stats = statsFor(b->list, *key.mode, derived);
     b->key = key;
     b->inputs = draws;
     b->levels = levels;
@@ -153,6 +165,7 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
                 scene::partRangeBounds(scene, sceneGpu.partBounds(), o.geometry, 0,
                                        scene.geometries[o.geometry].partCount));
     }
+    keepOnlyWhatFramesRead(b->list, indirect);
     return b;
 }
 

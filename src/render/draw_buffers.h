@@ -17,7 +17,11 @@
 namespace render {
 
 struct DrawBuffers {
+    // What the CPU still reads of the list once it is uploaded: in push mode every draw's
+    // range and data (recorded each frame), in the mdi modes only fullDetailDraws; the ID
+    // data is on the GPU alone.
     DrawList list;
+    RenderStats stats; // of the whole list, worked out before it was let go of
     vk::Buffer ids, draws, indirect, drawIndices;
     // The derived geometry the draws read, if the technique draws one.
     std::shared_ptr<const PartVertexBuffers> partVertices;

@@ -58,6 +58,7 @@ DerivedPrimitives DerivedGeometry::view() const {
     d.partVertices = partVertices ? &*partVertices : nullptr;
     d.meshlets = meshlets ? &*meshlets : nullptr;
     d.bytes = derivedBytes(d.partVertices, d.meshlets);
+    d.meshletCount = meshlets ? meshlets->meshlets.size() : 0;
     return d;
 }
 
@@ -76,7 +77,7 @@ RenderStats statsFor(const DrawList& list, const DrawMode& mode, const DerivedPr
         stats.addedVertices = derived.partVertices->addedVertices;
         stats.addedVertexBytes = stats.addedVertices * sizeof(gpu::Vertex);
     }
-    if (derived.meshlets) stats.meshlets = derived.meshlets->meshlets.size();
+    stats.meshlets = derived.meshletCount;
     stats.geometryBytes = derived.bytes;
     for (size_t i = 0; i < list.fullDetailDraws; ++i)
         stats.triangles += list.ranges[i].indexCount / 3;

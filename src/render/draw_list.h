@@ -38,7 +38,8 @@ struct DrawList {
 struct DerivedPrimitives {
     const scene::PartVertices* partVertices = nullptr; // Primitives::PartVertices
     const scene::Meshlets* meshlets = nullptr;         // Primitives::Meshlets
-    uint64_t bytes = 0; // of the derived geometry on the GPU, for the stats
+    uint64_t bytes = 0;        // of the derived geometry on the GPU, for the stats
+    uint64_t meshletCount = 0; // likewise (the meshlets themselves are the GPU's)
 };
 
 // What a configuration costs, for --stats and the panel (no GPU needed).

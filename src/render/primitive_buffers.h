@@ -24,11 +24,14 @@ struct PartVertexBuffers {
 struct MeshletBuffers {
     MeshletBuffers(const scene::Scene& scene, vk::UploadBatch& upload);
     scene::PartVertices partVertices; // vertices and indices dropped once uploaded
-    scene::Meshlets cpu;              // corners and source triangles dropped once uploaded
-    vk::Buffer meshlets;              // gpu::Meshlet[]
-    vk::Buffer data;                  // uint[]: meshlet vertices, then packed corners
-    vk::Buffer vertices;              // the part vertices, read by address
-    vk::Buffer boxes;                 // gpu::CullBox[]: what the task shader culls by
+    // What the draw lists read (the per-geometry layout, the parts of vertices and triangles);
+    // the meshlets, their vertices, corners and source triangles dropped once uploaded.
+    scene::Meshlets cpu;
+    uint64_t meshletCount = 0;
+    vk::Buffer meshlets; // gpu::Meshlet[]
+    vk::Buffer data;     // uint[]: meshlet vertices, then packed corners
+    vk::Buffer vertices; // the part vertices, read by address
+    vk::Buffer boxes;    // gpu::CullBox[]: what the task shader culls by
     uint64_t bytes = 0;
 };
 

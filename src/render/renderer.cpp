@@ -139,8 +139,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
         objectHidden_.assign(scene.objects.size(), 0);
     }
     settings_ = settings;
-    stats_ = statsFor(draws_->list, *key.mode,
-                      derivedPrimitives(draws_->partVertices.get(), draws_->meshlets.get()));
+    stats_ = draws_->stats;
     stats_.gsPassthrough = key.gsPassthrough;
     lastSwitch_ = {msSince(start), cached, keepDraws};
 }

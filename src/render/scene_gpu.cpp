@@ -38,8 +38,9 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
 
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    vertices_ = upload.add(scene.vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
-    indices_ = upload.add(scene.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices");
+    vertices_ =
+        upload.add(scene.vertices.get(), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
+    indices_ = upload.add(scene.indices.get(), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices");
     objects_ = upload.add(objects, shaderRead, "scene objects");
     materials_ = upload.add(materials, shaderRead, "scene materials");
     rest_ = upload.add(rest, shaderRead, "animation rest matrices");

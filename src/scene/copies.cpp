@@ -15,6 +15,7 @@ Scene replicate(const Scene& scene, uint32_t copies, uint32_t axes) {
                                     std::to_string(scene.uniquePartCount()) + " parts need " +
                                     std::to_string(ids) +
                                     " unique part IDs, more than 32-bit IDs can name");
+    // The copy shares the scene's geometry (scene/shared_array.h): only its objects are new.
     Scene result = scene;
     result.objects.clear();
     result.objects.reserve(scene.objects.size() * copies);

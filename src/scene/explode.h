@@ -25,7 +25,8 @@ std::vector<glm::vec4> explodeOffsets(const Scene& scene);
 // with exactly the float operations animate.comp performs, so both render the same pixels.
 void placeExploded(Scene& moved, const Scene& rest, const std::vector<glm::vec4>& offsets,
                    float explode);
-// A copy of `scene` with every object's translation moved by explode * its offset.
+// A copy of `scene` with every object's translation moved by explode * its offset; it shares
+// the scene's geometry (scene/shared_array.h) and holds objects of its own.
 Scene explodedScene(const Scene& scene, float explode);
 
 // The animation loop: 0 at t = 0, 1 at half the period, back to 0 after `periodSeconds`

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <exception>
 #include <limits>
+#include <mutex>
 #include <thread>
 
 #include "scene/lod_choice.h"
@@ -99,27 +100,34 @@ void addChosenLevels(Scene& scene, std::vector<GeometryCandidates>& candidates,
 void forEachTask(size_t count, const std::function<void(size_t)>& task,
                  const std::function<void(double)>& progress) {
     std::atomic<size_t> next{0}, done{0};
-    auto work = [&](bool report) {
-        for (size_t t; (t = next.fetch_add(1)) < count;) {
-            task(t);
-            const size_t finished = ++done;
-            if (report && progress) progress(double(finished) / double(count));
+    std::mutex failing;
+    std::exception_ptr failed;
+    // Each thread catches what its tasks throw (std::bad_alloc too; the caller's progress may
+    // stop the work, a cancelled load): the first is rethrown on the caller once every thread
+    // has stopped, and no thread takes a further task.
+    auto work = [&](bool report) noexcept {
+        try {
+            for (size_t t; (t = next.fetch_add(1)) < count;) {
+                task(t);
+                const size_t finished = ++done;
+                if (report && progress) progress(double(finished) / double(count));
+            }
+        } catch (...) {
+            const std::lock_guard lock(failing);
+            if (!failed) failed = std::current_exception();
+            next = count;
         }
     };
     const unsigned threads =
         std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(count)));
-    std::exception_ptr failed;
     {
         std::vector<std::jthread> workers;
-        for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, false);
         try {
-            work(true);
-        } catch (...) {
-            // The caller's progress may stop the work (a cancelled load): the other threads
-            // take no further task.
-            failed = std::current_exception();
-            next = count;
+            for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, false);
+        } catch (const std::exception&) {
+            // A thread that cannot start leaves its tasks to those that did.
         }
+        work(true);
     } // joins
     if (failed) std::rethrow_exception(failed);
 }

@@ -57,7 +57,9 @@ std::vector<GeometryCandidates> meshCandidates(const Scene& scene, const LodOpti
 
 // Runs task(i) for every i below `count` on every hardware thread, the calling thread too,
 // which calls `progress` (the share of tasks finished) between its tasks. Tasks run in the
-// order of i, each once, but may finish in any order.
+// order of i, each once, but may finish in any order. What a task or `progress` throws, on
+// any thread (std::bad_alloc included), stops the tasks not begun and is rethrown here once
+// the threads are done.
 void forEachTask(size_t count, const std::function<void(size_t)>& task,
                  const std::function<void(double)>& progress = {});
 

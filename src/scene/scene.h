@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/part_set.h"
+#include "scene/shared_array.h"
 #include "scene/surface_info.h"
 #include "scene/units.h"
 #include "shared.h"
@@ -111,12 +112,15 @@ struct PartInfo {
     std::optional<uint32_t> face; // CAD files: the part's B-rep face (Geometry::partFaces)
 };
 
+// A copy of a scene shares its geometry (vertices, indices, parts, geometries with their
+// per-part arrays, materials) until one of them changes it (scene/shared_array.h): model copies
+// and the exploded view copy only the objects they place.
 struct Scene {
-    std::vector<Vertex> vertices;
-    std::vector<uint32_t> indices;
-    std::vector<Part> parts;
-    std::vector<Geometry> geometries;
-    std::vector<Material> materials;
+    SharedArray<Vertex> vertices;
+    SharedArray<uint32_t> indices;
+    SharedArray<Part> parts;
+    SharedArray<Geometry> geometries;
+    SharedArray<Material> materials;
     std::vector<Object> objects;
     // What the coordinates are in: set where the scene is loaded (app::loadScene), for every
     // length the viewer and the JSON show.

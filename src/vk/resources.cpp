@@ -1,6 +1,7 @@
 // resources.cpp - buffer and image creation, and the device memory behind them.
 #include "vk/resources.h"
 
+#include <cstdint>
 #include <string>
 #include <utility>
 
@@ -75,9 +76,16 @@ Buffer::Buffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
     memory_ = Allocation(device, requirements, memoryFlags, deviceAddress, name);
     check(vkBindBufferMemory(device.handle(), buffer_.get(), memory_.get(), 0),
           "vkBindBufferMemory");
-    if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+    if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
         check(vkMapMemory(device.handle(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped_),
               "vkMapMemory");
+        // lavapipe (Mesa 25) out of address space answers VK_SUCCESS with mmap's MAP_FAILED,
+        // all ones, as the address: written to, that would crash; said as the allocation's
+        // own failure is.
+        if (!mapped_ || mapped_ == reinterpret_cast<void*>(~uintptr_t(0)))
+            throw Error("out of host memory mapping " + mebibytes(requirements.size) + " for '" +
+                        name + "'; try fewer --copies or a smaller model");
+    }
     if (deviceAddress) {
         auto addressInfo =
             vk::init<VkBufferDeviceAddressInfo>(VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO);

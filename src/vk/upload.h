@@ -1,13 +1,15 @@
 // upload.h - device-local buffers filled from host data, many at once: every add() of one
-// batch goes through one staging buffer and one queue submission, and nothing waits for it.
-// The submission's last barrier makes the copies visible to everything submitted after it on
-// the queue (the frames that draw with the buffers); the staging memory is freed once the
-// GPU has run it (Device::collectFinishedUploads).
+// batch is copied straight into host-visible staging memory (a few large chunks, so the host
+// holds no second copy of what it uploads) and recorded into one queue submission, and
+// nothing waits for it. The submission's last barrier makes the copies visible to everything
+// submitted after it on the queue (the frames that draw with the buffers); the staging memory
+// is freed once the GPU has run it (Device::collectFinishedUploads).
 #pragma once
 
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vk/resources.h"
@@ -33,17 +35,26 @@ class UploadBatch {
 
     // Records every copy and submits them once; an empty batch submits nothing.
     void submit();
-    VkDeviceSize bytes() const { return bytes_.size(); }
+    VkDeviceSize bytes() const { return bytes_; } // added so far
 
   private:
+    // The staging chunk with room for `bytes` more (a new one where the last is full), and
+    // where in it they go.
+    std::pair<size_t, VkDeviceSize> stagingFor(VkDeviceSize bytes);
     struct Copy {
         VkBuffer destination;
+        size_t chunk;
         VkDeviceSize offset, size;
     };
+    struct Chunk {
+        Buffer staging;
+        VkDeviceSize used = 0;
+    };
     Device& device_;
-    std::vector<std::byte> bytes_; // what the staging buffer will hold
+    std::vector<Chunk> chunks_;
     std::vector<Copy> copies_;
     std::vector<std::shared_ptr<const void>> owners_;
+    VkDeviceSize bytes_ = 0;
 };
 
 } // namespace vk

@@ -89,6 +89,30 @@ std::optional<ChooserResult> askPortal(const std::string&, const std::vector<Fil
 }
 #endif
 
+namespace {
+
+// The portal's answer, else zenity's, on the worker.
+ChooserResult ask(const std::string& title, const std::vector<FileFilter>& filters,
+                  FileChooser::Job& job) {
+    std::optional<ChooserResult> answer =
+        askPortal(title, filters, [&job](std::function<void()> close) {
+            std::lock_guard lock(job.mutex);
+            job.closePortal = std::move(close);
+            if (job.quitting && job.closePortal) job.closePortal();
+        });
+    {
+        std::lock_guard lock(job.mutex);
+        job.closePortal = nullptr;
+    }
+    if (!answer || answer->kind == ChooserResult::Kind::Unavailable)
+        answer = runZenity(title, filters, job);
+    if (answer->kind == ChooserResult::Kind::Unavailable)
+        answer->via = "neither the desktop portal nor zenity is there (" + answer->via + ")";
+    return *answer;
+}
+
+} // namespace
+
 FileChooser::~FileChooser() {
     if (job_) {
         std::lock_guard lock(job_->mutex);
@@ -105,20 +129,16 @@ bool FileChooser::start(const std::string& title, const std::vector<FileFilter>&
     if (worker_.joinable()) worker_.join(); // the last one's thread, done already
     job_ = std::make_shared<Job>();
     worker_ = std::thread([job = job_, title, filters, done = std::move(done)] {
-        std::optional<ChooserResult> answer =
-            askPortal(title, filters, [&job](std::function<void()> close) {
-                std::lock_guard lock(job->mutex);
-                job->closePortal = std::move(close);
-                if (job->quitting && job->closePortal) job->closePortal();
-            });
-        {
-            std::lock_guard lock(job->mutex);
-            job->closePortal = nullptr;
+        std::optional<ChooserResult> answer;
+        try {
+            answer = ask(title, filters, *job);
+        } catch (const std::exception& e) {
+            // Out of memory, no thread or process to start: the viewer says so in its panel,
+            // as it does when no chooser is there.
+            answer = ChooserResult{ChooserResult::Kind::Unavailable,
+                                   {},
+                                   std::string("the file chooser failed: ") + e.what()};
         }
-        if (!answer || answer->kind == ChooserResult::Kind::Unavailable)
-            answer = runZenity(title, filters, *job);
-        if (answer->kind == ChooserResult::Kind::Unavailable)
-            answer->via = "neither the desktop portal nor zenity is there (" + answer->via + ")";
         {
             std::lock_guard lock(job->mutex);
             job->result = std::move(answer);

@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "app/headless.h" // pipelineCacheFolder
-#include "scene/copies.h"
 #include "scene/explode.h"
 #include "vk/check.h"
 
@@ -133,11 +132,9 @@ void SceneState::load(const SceneSettings& settings, const render::RenderSetting
 void SceneState::use(LoadedScene loaded, const SceneSettings& settings,
                      const render::RenderSettings& render) {
     std::optional<scene::Scene> copies;
-    if (settings.copies > 1) {
-        checkCopiesFit(loaded.scene, settings.copies);
-        copies = scene::replicate(loaded.scene, settings.copies, settings.copyAxes);
-    }
-    renderer_.setScene(copies ? *copies : loaded.scene, render);
+    if (settings.copies > 1)
+        copies = makeCopies(loaded.source, loaded.scene, settings.copies, settings.copyAxes);
+    uploadScene(renderer_, loaded.source, copies ? *copies : loaded.scene, render);
     for (const auto& warning : loaded.warnings)
         Events::problem("warning: " + loaded.source + ": " + warning);
     loaded.settings = settings;
@@ -151,11 +148,8 @@ void SceneState::use(LoadedScene loaded, const SceneSettings& settings,
 bool SceneState::setCopies(uint32_t copies, uint32_t axes) {
     std::optional<scene::Scene> next;
     try {
-        if (copies > 1) {
-            checkCopiesFit(base_.scene, copies);
-            next = scene::replicate(base_.scene, copies, axes);
-        }
-        renderer_.setScene(next ? *next : base_.scene, renderer_.settings());
+        if (copies > 1) next = makeCopies(base_.source, base_.scene, copies, axes);
+        uploadScene(renderer_, base_.source, next ? *next : base_.scene, renderer_.settings());
     } catch (const std::exception& e) {
         fail(e.what());
         return false;
@@ -296,7 +290,8 @@ bool SceneState::explode(float explode) {
         exploded_.reset(); // the copy's memory back while nothing is exploded
         return true;
     }
-    // Copied once; moving it again touches the placements alone.
+    // Copied once (the objects; the geometry stays shared); moving it again touches the
+    // placements alone.
     if (!exploded_) exploded_ = atRest();
     scene::placeExploded(*exploded_, atRest(), explodeOffsets(), explode);
     return true;

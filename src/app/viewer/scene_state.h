@@ -122,10 +122,13 @@ class SceneState {
     const Events& events_;
     render::Renderer renderer_;
     std::shared_ptr<const render::SceneTargets> targets_;
-    LoadedScene base_;                   // as loaded, one copy (its settings: what is drawn)
-    std::optional<scene::Scene> copies_; // with model copies, when more than one
+    LoadedScene base_; // as loaded, one copy (its settings: what is drawn)
+    // With model copies, when more than one: objects of its own, base_'s geometry shared
+    // (scene/shared_array.h).
+    std::optional<scene::Scene> copies_;
     // The exploded view: the objects' offsets (worked out once a scene first explodes), and
-    // the scene with them applied at explodedAt_ while that is above 0.
+    // the scene with them applied at explodedAt_ while that is above 0 (its objects moved, the
+    // geometry shared with the scene at rest).
     std::vector<glm::vec4> explodeOffsets_;
     std::optional<scene::Scene> exploded_;
     float explodedAt_ = 0.0f;

@@ -30,7 +30,7 @@ LevelMesh tessellated(const Scene& scene, const Geometry& full, const BrepShapes
         appendEmptyPart(scratch);
     }
     LevelMesh level;
-    level.vertices = std::move(scratch.vertices);
+    level.vertices = scratch.vertices.take();
     for (const Part& part : scratch.parts) {
         const auto first = scratch.indices.begin() + 3 * ptrdiff_t(part.firstTriangle);
         level.parts.emplace_back(first, first + 3 * ptrdiff_t(part.triangleCount));

@@ -20,6 +20,7 @@
 #include <set>
 
 #include <Standard_Failure.hxx>
+#include <Standard_OutOfMemory.hxx>
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/lsan_interface.h>
@@ -112,6 +113,9 @@ CadLoadResult refusedInWords(const std::string& path, const std::atomic<bool>* c
         // A reader broken off by the flag says only that it read nothing.
         if (cancel && *cancel) throw ModelError(path + ": cancelled");
         throw ModelError(path + ": " + e.what());
+    } catch (const Standard_OutOfMemory&) {
+        throw ModelError(path + ": out of memory reading it whole (" +
+                         std::to_string(util::mebibytes(util::residentBytes())) + " MiB in use)");
     } catch (const Standard_Failure& e) {
         const char* message = e.GetMessageString();
         throw ModelError(path + ": Open CASCADE failed: " + e.DynamicType()->Name() +

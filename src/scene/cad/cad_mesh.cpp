@@ -2,6 +2,7 @@
 #include "scene/cad/cad_mesh.h"
 
 #include <algorithm>
+#include <new>
 #include <set>
 
 #include <BRepMesh_Context.hxx>
@@ -14,6 +15,7 @@
 #include <IMeshData_Face.hxx>
 #include <Poly.hxx>
 #include <Poly_Triangulation.hxx>
+#include <Standard_OutOfMemory.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -88,9 +90,17 @@ class CountingAlgo : public IMeshTools_MeshAlgo {
         // A triangulation the face had (read from a BREP file) was counted before meshing
         // began, and this one replaces it.
         const uint64_t before = trianglesOf(face->GetFace());
-        inner_->Perform(face, parameters, range);
-        if (!fallback_.IsNull() && trianglesOf(face->GetFace()) == 0 && !budget_.stop())
-            fallback_->Perform(face, parameters, range);
+        try {
+            inner_->Perform(face, parameters, range);
+            if (!fallback_.IsNull() && trianglesOf(face->GetFace()) == 0 && !budget_.stop())
+                fallback_->Perform(face, parameters, range);
+        } catch (const Standard_OutOfMemory&) {
+            budget_.outOfMemory = true;
+            throw;
+        } catch (const std::bad_alloc&) {
+            budget_.outOfMemory = true;
+            throw;
+        }
         const uint64_t after = trianglesOf(face->GetFace());
         const uint64_t total = budget_.triangles.fetch_add(after - before) + (after - before);
         if (total > budget_.maxTriangles) budget_.over = true;
@@ -154,7 +164,14 @@ void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& paramet
     BRepMesh_IncrementalMesh mesher;
     mesher.SetShape(shape);
     mesher.ChangeParameters() = parameters;
-    mesher.Perform(context, range);
+    try {
+        mesher.Perform(context, range);
+    } catch (const Standard_Failure&) {
+        // Open CASCADE's own thread pool (without TBB) hands a worker's std::bad_alloc on as
+        // a Standard_ProgramError.
+        if (!budget.outOfMemory) throw;
+    }
+    if (budget.outOfMemory) throw std::bad_alloc();
 }
 
 } // namespace scene

@@ -37,9 +37,11 @@ struct MeshBudget {
     std::atomic<uint64_t> triangles{0};
     std::atomic<uint32_t> facesMeshed{0}; // faces counted, with triangles kept or new
     std::atomic<bool> over{false};
+    // A face's meshing ran out of memory (Open CASCADE would only mark the face failed).
+    std::atomic<bool> outOfMemory{false};
     // Faces (by TShape) the mesher is not given; they stay without triangles.
     std::set<const void*> skipped;
-    bool stop() const { return over || (cancel && *cancel); }
+    bool stop() const { return over || outOfMemory || (cancel && *cancel); }
 };
 
 // BRepMesh_IncrementalMesh(shape, parameters) with the faces' triangles counted into
@@ -47,7 +49,8 @@ struct MeshBudget {
 // alone pass the budget), each face's new ones as soon as it is meshed: once they
 // pass budget.maxTriangles (or budget.cancel is set) no further face is begun, and `range`'s
 // indicator should report a break (budget.stop()) so that Open CASCADE leaves the face it is in.
-// The shape is then partly meshed; the caller throws it away.
+// The shape is then partly meshed; the caller throws it away. A face that ran out of memory
+// on any of the mesher's threads stops it too, and std::bad_alloc is thrown here.
 void meshCounted(const TopoDS_Shape& shape, const IMeshTools_Parameters& parameters,
                  MeshBudget& budget, const Message_ProgressRange& range);
 

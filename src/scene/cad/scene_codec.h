@@ -47,11 +47,19 @@ class ByteWriter {
     void operator()(const std::vector<T>& values) {
         putArray(values);
     }
+    template <typename T>
+    void operator()(const SharedArray<T>& values) {
+        putArray(values.get());
+    }
     // A list of records, each written by fields(*this, record).
     template <typename T, typename Fields>
     void records(const std::vector<T>& values, Fields fields) {
         put(uint64_t(values.size()));
         for (const T& value : values) fields(*this, value);
+    }
+    template <typename T, typename Fields>
+    void records(const SharedArray<T>& values, Fields fields) {
+        records(values.get(), fields);
     }
 
   private:
@@ -103,6 +111,10 @@ class ByteReader {
     void operator()(std::vector<T>& values) {
         values = getArray<T>();
     }
+    template <typename T>
+    void operator()(SharedArray<T>& values) {
+        values = getArray<T>();
+    }
     // A list of records, each read by fields(*this, record). Records take a byte at least, so
     // a damaged count stops at the end of the bytes, not at an allocation.
     template <typename T, typename Fields>
@@ -111,6 +123,12 @@ class ByteReader {
         if (count > bytes_.size() - at_) throw std::runtime_error("count too large");
         values.clear();
         for (uint64_t i = 0; i < count; ++i) fields(*this, values.emplace_back());
+    }
+    template <typename T, typename Fields>
+    void records(SharedArray<T>& values, Fields fields) {
+        std::vector<T> read;
+        records(read, fields);
+        values = std::move(read);
     }
 
   private:
