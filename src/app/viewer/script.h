@@ -24,6 +24,8 @@
 //   4.5 drop model.glb      a file dropped on the window
 //   4.6 loaded              wait until every dropped model has loaded (they load while
 //                           frames go on), however long that takes
+//   4.7 solids 3            wait until the model loading shows 3 solids (a big CAD file
+//                           shown as it loads), or is no longer loading
 //   4.8 frames 5            let 5 frames pass before the next line (results of a pick
 //                           arrive a frame or two later, however slow the frames are)
 //   4.85 redraw             the next frame draws everything anew (with what follows at the
@@ -69,7 +71,9 @@
 //                           the Pictures folder)
 //   4.4 open model.glb      open a file as the panel's open field does (without: Ctrl+O's
 //                           file chooser)
-//   4.7 cancel              the panel's Cancel: stop the model loading and those queued
+//   4.7 cancel              the panel's Cancel: stop the model loading and those queued; the
+//                           model shown before it comes back (`stop`: the panel's Stop here,
+//                           what the load shows stays, marked incomplete)
 //   4.75 clear-recent       the recent files' "clear list" entry
 //   5   quit
 //
@@ -102,6 +106,7 @@ enum class ScriptOp {
     Resize,
     Drop,
     Loaded,
+    Solids,
     Frames,
     Redraw,
     Blink,
@@ -117,7 +122,8 @@ struct ScriptLine {
                                     // Pipeline: the word
     int key = 0;                    // Key: the GLFW key code
     int mods = 0;                   // Key, Box, Click: GLFW modifier bits held
-    std::array<double, 4> values{}; // coordinates, wheel steps, window size, frames, seconds
+    std::array<double, 4> values{}; // coordinates, wheel steps, window size, frames, seconds,
+                                    // solids
     std::optional<Command> command; // Command: what it asks for
     std::string where;              // "file:line", for messages while it runs
 };
