@@ -120,11 +120,17 @@ shown_all=$(awk '/^idview: hidden: 0 parts/ {on = 1} on && /^idview: visible par
     fail "visible parts once loaded '$hidden_kept', after showing all '$shown_all'"
 
 # (c) Esc on the model given at start (no model before it): Stop, what is shown stays, marked
-# incomplete in the title.
+# incomplete in the title; the same file dropped again and cancelled brings the incomplete
+# model back, still marked.
 t=0.5
 {
     at solids 7
     at frames 3
+    at key ESC
+    at loaded
+    at frames 6
+    at drop "$model"
+    at solids 7
     at key ESC
     at loaded
     at frames 6
@@ -137,9 +143,14 @@ said "command: " | grep -qx stop && [[ $(said "loading: stopped: ") == "7 of 8 s
     ! grep -q '^idview: loading: complete' "$work/stop.out" &&
     ok "Esc stopped the first model: 7 of 8 solids shown, marked incomplete" ||
     fail "stop: $(grep -E '^idview: (command|loading|title):' "$work/stop.out" | tail -4 | paste -sd'|')"
-visible=$(said "visible parts: " | tail -1)
+visible=$(awk '/^idview: visible parts: / {v = $4} /^idview: loading: stopped/ {on = 1}
+    on && /^idview: loading: (assembly shown|cancelled)/ {print v; exit}' "$work/stop.out")
 [[ ${visible:-0} -gt 0 ]] && ok "what the stopped load showed stayed: $visible visible parts" ||
     fail "nothing visible after Stop"
+[[ $(said "loading: cancelled, back to ") == "$model" ]] &&
+    [[ $(grep '^idview: title: ' "$work/stop.out" | tail -1) == *" - incomplete: 1 of 8 solids missing - "* ]] &&
+    ok "a load cancelled over the stopped model brought it back, still incomplete" ||
+    fail "cancel over the stopped model: $(grep -E '^idview: (loading: cancelled|title:)' "$work/stop.out" | tail -2 | paste -sd'|')"
 
 # (c, d) Esc on a dropped model (the small scene before it): Cancel, the small scene back with
 # its view and selection; then the model again, and the window closed while it loads.

@@ -95,7 +95,10 @@ SceneState::Change SceneState::showPartial(scene::CadPartial partial, SceneSetti
         return Change::None;
     }
     const bool first = !open.shown;
-    if (first && hasModel()) before_ = Drawn{std::move(base_), std::move(copies_)};
+    if (first && hasModel())
+        before_ = Drawn{std::move(base_), std::move(copies_), std::move(partial_),
+                        std::move(incomplete_)};
+    incomplete_.clear();
     base_ = std::move(loaded);
     copies_.reset();
     partial_ = std::move(partial);
@@ -203,9 +206,10 @@ SceneState::Change SceneState::ended(PendingOpen& done, const std::string& error
 
 SceneState::Change SceneState::restoreBefore(const SceneSettings& loadSettings,
                                              SceneSettings& settings) {
-    Drawn back = before_ ? std::move(*before_) : Drawn{nothingOpen(), std::nullopt};
-    if (!before_) back.base.settings = loadSettings; // nothing open: apply() asks for nothing
+    const bool hadModel = before_.has_value();
+    Drawn back = hadModel ? std::move(*before_) : Drawn{nothingOpen(), {}, {}, {}};
     before_.reset();
+    if (!hadModel) back.base.settings = loadSettings; // nothing open: apply() asks for nothing
     try {
         renderer_.setScene(back.copies ? *back.copies : back.base.scene, renderer_.settings());
     } catch (const std::exception& e) {
@@ -213,8 +217,8 @@ SceneState::Change SceneState::restoreBefore(const SceneSettings& loadSettings,
         incomplete_ = missingLine(*partial_);
         return Change::None;
     }
-    partial_.reset();
-    incomplete_.clear();
+    partial_ = std::move(back.partial);
+    incomplete_ = std::move(back.incomplete);
     base_ = std::move(back.base);
     copies_ = std::move(back.copies);
     sceneChanged();
@@ -245,7 +249,10 @@ std::optional<SceneState::Loading> SceneState::loading() const {
     loading.seconds = std::chrono::duration<double>(Clock::now() - pending_->start).count();
     loading.stage = stage;
     loading.fraction = fraction;
-    if (pending_->shown && partial_) loading.shown = shownLine(*partial_);
+    if (pending_->shown && partial_) {
+        loading.shown = shownLine(*partial_);
+        loading.solidsShown = partial_->solidsReady;
+    }
     loading.modelBefore = pending_->shown ? before_.has_value() : hasModel();
     loading.stopping = pending_->ending != PendingOpen::Ending::Load;
     return loading;

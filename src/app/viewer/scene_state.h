@@ -60,6 +60,7 @@ class SceneState {
         std::string stage;    // CAD files: reading, translating, tessellating, building
         double fraction = 0.0;
         std::string shown;        // a model shown as it loads: shownLine(), else ""
+        uint32_t solidsShown = 0; // of a model shown as it loads
         bool modelBefore = false; // Cancel goes back to a model (else to nothing open)
         bool stopping = false;    // Stop or Cancel asked: the workers are being killed
     };
@@ -177,10 +178,13 @@ class SceneState {
         bool shown = false;      // a partial scene of it is drawn
         bool saidSolids = false; // its first solids were told
     };
-    // What was drawn before a load's first partial scene took its place, until the load ends.
+    // What was drawn before a load's first partial scene took its place, until the load ends
+    // (a model stopped while it loaded has its partial's boxes and what it lacks).
     struct Drawn {
         LoadedScene base;
         std::optional<scene::Scene> copies;
+        std::optional<scene::CadPartial> partial;
+        std::string incomplete;
     };
     static LoadedScene nothingOpen(); // the empty start: one object that draws nothing
     void launchNext();

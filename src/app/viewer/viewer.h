@@ -111,7 +111,10 @@ class Viewer {
     // The model loading, if one is (Esc stops or cancels it: commands.h).
     std::optional<SceneState::Loading> modelLoading() const { return scene_.loading(); }
     // The solids a model loading shows so far (the script's `solids N` waits for them).
-    uint32_t solidsShown() const { return scene_.partial() ? scene_.partial()->solidsReady : 0; }
+    uint32_t solidsShown() const {
+        const auto loading = scene_.loading();
+        return loading ? loading->solidsShown : 0;
+    }
     bool pipelinePending() const { return scene_.pipelinePending(); }
     // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
     void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
