@@ -204,7 +204,7 @@ void source(const PanelInfo& info) {
         ImGui::TextWrapped("incomplete: %s (stopped while loading)", info.incomplete.c_str());
         ImGui::PopStyleColor();
     }
-    if (!info.scene) return;
+    if (!info.scene || info.source.empty()) return; // nothing open: no unit either
     const scene::LengthUnit& unit = info.scene->unit;
     const std::string line = unit.symbol.empty() ? "lengths: no unit (" + unit.source + ")"
                                                  : "lengths in " + unit.symbol;
