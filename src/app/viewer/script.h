@@ -1,9 +1,10 @@
 // script.h - scripted input for the viewer (`--script FILE`), so tests can drive the
 // real window: one line per step, `<seconds> <what> [args]`, run when that many seconds
-// have passed since the first frame. A line is either input as a hand gives it (keys, the
-// pointer, the window) or a wait of the test's own, played into the same handlers as real
-// input; or it is a command of the viewer by its name (commands.h): the same Command a key
-// or the panel makes, run by the same executor. Parsing is plain C++ and unit-tested.
+// have passed since the model given at start showed (whole, or the first partial picture of
+// a big CAD file). A line is either input as a hand gives it (keys, the pointer, the window)
+// or a wait of the test's own, played into the same handlers as real input; or it is a
+// command of the viewer by its name (commands.h): the same Command a key or the panel makes,
+// run by the same executor. Parsing is plain C++ and unit-tested.
 //
 // Input and waits:
 //   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB,
@@ -155,7 +156,7 @@ class ScriptPlayer {
     // Lines with equal times keep their order in the file.
     explicit ScriptPlayer(std::vector<ScriptLine> lines);
 
-    // The lines due at `seconds` since the first frame that were not handed out yet.
+    // The lines due at `seconds` (the script's clock) that were not handed out yet.
     std::vector<ScriptLine> due(double seconds);
     // The time of the next line, so an idle (minimised) viewer knows when to wake up.
     std::optional<double> nextTime() const;
