@@ -203,6 +203,18 @@ TEST(InputScript, FramesWaitsAWholeNumberOfFrames) {
     EXPECT_THROW(app::parseScript("1 frames 2.5\n", "s.txt"), app::ScriptError);
 }
 
+// `solids N` waits for a model loading to show N solids; the stop command is a row too.
+TEST(InputScript, SolidsWaitsAWholeCountAndStopIsACommand) {
+    const auto commands = app::parseScript("1 solids 7\n2 stop\n", "s.txt");
+    ASSERT_EQ(commands.size(), 2u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Solids);
+    EXPECT_EQ(commands[0].values[0], 7.0);
+    ASSERT_TRUE(commands[1].command.has_value());
+    EXPECT_EQ(commands[1].command->id, app::CommandId::Stop);
+    EXPECT_THROW(app::parseScript("1 solids 0\n", "s.txt"), app::ScriptError);
+    EXPECT_THROW(app::parseScript("1 solids 1.5\n", "s.txt"), app::ScriptError);
+}
+
 // `view NAME` takes every standard view the registry lists, and nothing else; `ortho` takes
 // on or off.
 // The panel's sort draws once and Reset to defaults as script lines.

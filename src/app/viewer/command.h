@@ -36,6 +36,7 @@ enum class CommandId : uint8_t {
     Vsync,
     ReloadShaders,
     Cancel,
+    Stop,
     ClearRecent,
     Defaults,
     // The camera.

@@ -98,8 +98,9 @@ std::vector<CommandDef> windowCommands() {
          },
          [](const Viewer& v, const Input&) { return v.helpOpen(); }},
         {CommandId::Escape, "escape", Kind::None,
-         "cancel: the help, a box drag, measure mode, then the selection and things A and B "
-         "(never quits)",
+         "cancel: the help, a box drag, a model loading (cancel where a model was shown "
+         "before it, else stop), measure mode, then the selection and things A and B (never "
+         "quits)",
          keys({{GLFW_KEY_ESCAPE, 0}}), escape},
         {CommandId::Quit, "quit", Kind::None, "quit idview (or close the window)",
          keys({{GLFW_KEY_Q, ctrl}}), [](Viewer& v, Input&, const Argument&) { v.quit(); }},
@@ -126,9 +127,19 @@ std::vector<CommandDef> windowCommands() {
         {CommandId::Cancel,
          "cancel",
          Kind::None,
-         "stop the model loading, and forget those queued (the panel's Cancel)",
+         "stop the model loading and forget those queued; the model shown before it comes "
+         "back (the panel's Cancel)",
          {},
          [](Viewer& v, Input&, const Argument&) { v.cancelLoads(); },
+         nullptr,
+         [](const Viewer& v, const Input&) { return v.loading(); }},
+        {CommandId::Stop,
+         "stop",
+         Kind::None,
+         "stop the model loading here: what it shows stays, marked incomplete, and those "
+         "queued are forgotten (the panel's Stop here)",
+         {},
+         [](Viewer& v, Input&, const Argument&) { v.stopLoads(); },
          nullptr,
          [](const Viewer& v, const Input&) { return v.loading(); }},
         {CommandId::ClearRecent,
@@ -398,6 +409,12 @@ std::optional<std::string> cancelOne(Viewer& viewer, Input& input) {
         return "help";
     }
     if (input.cancelBox()) return "box";
+    // A model loading: back to the model before it, or where there was none, what it shows
+    // kept (a first model cancelled would leave nothing open).
+    if (const auto load = viewer.modelLoading(); load && !load->stopping) {
+        execute({load->modelBefore ? CommandId::Cancel : CommandId::Stop}, viewer, input);
+        return "load";
+    }
     if (viewer.measuring()) {
         viewer.toggleMeasure();
         return "measure";

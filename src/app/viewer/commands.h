@@ -129,9 +129,10 @@ std::vector<HelpLine> helpLines();
 // Key chords and mouse gestures the help lists ("help: N bindings").
 size_t bindingCount();
 
-// Esc: cancels the first thing in progress of the help overlay, a box drag, measure mode and
-// the selection (typing in a panel field never gets here: ImGui takes the Esc and leaves the
-// field). Says what it cancelled; nullopt when there was nothing, and nothing happens then.
+// Esc: cancels the first thing in progress of the help overlay, a box drag, a model loading
+// (Cancel where a model was shown before it, else Stop), measure mode and the selection (typing in
+// a panel field never gets here: ImGui takes the Esc and leaves the field). Says what it cancelled;
+// nullopt when there was nothing, and nothing happens then.
 std::optional<std::string> cancelOne(Viewer& viewer, Input& input);
 
 } // namespace app

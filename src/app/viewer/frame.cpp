@@ -102,6 +102,9 @@ void Viewer::drawPanel() {
     drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
     edgeHover_.draw(viewProj_, glm::vec2(display.x, display.y));
     drawInspect(inspect_.report(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
+    if (const scene::CadPartial* partial = scene_.partial())
+        drawWaitingBoxes(scene_.scene(), *partial, input_.selection().hidden(), viewProj_,
+                         glm::vec2(display.x, display.y));
     drawOverlays();
     ImGui::Render();
 }
@@ -113,6 +116,7 @@ void Viewer::act(const PanelActions& actions) {
 
 void Viewer::applySettings() {
     follow(scene_.poll(settings_.scene));
+    if (!scene_.loading()) before_.reset(); // only Cancel during a load brings it back
     follow(scene_.apply(settings_.scene, settings_.render));
     explode();
     scene_.resize(presenter_.extent());
@@ -143,44 +147,6 @@ void Viewer::openDrops() {
                         "' is neither a glTF model (.gltf, .glb) nor a CAD file (.step, .stp, "
                         ".iges, .igs, .brep)");
     }
-}
-
-// A new scene: part IDs name other parts now. New copies keep the view, a new model opens
-// at its own.
-void Viewer::follow(SceneState::Change change) {
-    if (change == SceneState::Change::None) return;
-    // The new scene exploded as the slider stands, before the camera frames it; its copy may
-    // lie where the last one did, so the part details start over.
-    scene_.explode(settings_.animation.animate ? 0.0f : settings_.animation.explode);
-    partDetails_ = PartDetailsCache{};
-    const scene::Scene& scene = scene_.scene();
-    input_.forgetParts(scene.uniquePartCount());
-    measure_.forget();
-    edgeHover_.forget();
-    inspect_.forget();
-    startClean(change); // section, history: what belonged to the model before
-    scene::AssemblyNode root = scene::assemblyTree(scene, treeRootName(scene_.loaded()));
-    scene::sortNatural(root); // the panel lists siblings by name, --tree in scene order
-    tree_ = scene::treeRows(root);
-    namedSelection_ = {};
-    selectedRow_.reset();
-    view_.treeOpen.clear();
-    view_.treeShown.clear();
-    if (change == SceneState::Change::Copies) {
-        camera_.setBounds(scene.bounds()); // more copies: same view, planes follow
-        return;
-    }
-    remember(scene_.loaded().source);
-    scene::Camera initial = initialCamera(scene_.loaded(), aspect());
-    if (scene_.loaded().settings.copies > 1) // copy 0's opening view, drawn back to take in all
-        initial = scene::fitCamera(scene.bounds(), initial.eye - initial.target, initial.up,
-                                   initial.fovY, aspect());
-    // The model's up axis comes from the three-quarter view; --view turns from there; then it
-    // is framed beside the panel, as F frames it, not partly under it.
-    camera_ = OrbitCamera(initial, scene.bounds(), settings_.camera.standard);
-    camera_.fit(aspect(), panelSpan());
-    camera_.setHome(); // Home comes back here, beside the panel
-    sayFitted();
 }
 
 // A model file that opened joins the recent files, and the open field empties for the next.
@@ -297,8 +263,11 @@ PanelInfo Viewer::panelInfo() const {
     info.gltf = isGltf(info.source);
     info.error = scene_.error();
     if (const auto loading = scene_.loading())
-        info.loading =
-            PanelInfo::Loading{loading->path, loading->seconds, loading->stage, loading->fraction};
+        info.loading = PanelInfo::Loading{loading->path,     loading->seconds, loading->stage,
+                                          loading->fraction, loading->shown,   loading->modelBefore,
+                                          loading->stopping};
+    info.incomplete = scene_.incomplete();
+    if (const scene::CadPartial* partial = scene_.partial()) info.objectStates = &partial->state;
     if (const auto building = scene_.building())
         info.building = PanelInfo::Building{building->pipeline, building->seconds, building->then};
     info.scene = &scene_.scene();
@@ -366,9 +335,12 @@ PanelInfo Viewer::panelInfo() const {
 void Viewer::updateTitle(double seconds, bool now) {
     const render::PipelineKey& key = scene_.renderer().settings().pipeline;
     const bool continuous = !presenter_.vsync();
+    // A model stopped while it loaded says so, and what it lacks.
+    const std::string& incomplete = scene_.incomplete();
     const std::string what = std::string(key.technique->name) + " + " + key.mode->name +
                              " - vsync " + presenter_.vsyncState() +
-                             (continuous ? ", continuous" : ", draws on change");
+                             (continuous ? ", continuous" : ", draws on change") +
+                             (incomplete.empty() ? "" : " - incomplete: " + incomplete);
     now = now || title_.find("idview - " + what + " - ") != 0;
     if (!now && seconds - titleTime_ < 0.25) return;
     if (seconds > titleTime_) fps_ = double(frameNumber_ - titleFrame_) / (seconds - titleTime_);

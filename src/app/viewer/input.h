@@ -116,13 +116,15 @@ class Input {
     };
     void queue(const ScriptLine& line);
     void queuePointer(const ScriptLine& line); // move, click, dblclick, drag, box, scroll
-    void queueWait(const ScriptLine& line);    // loaded, frames, redraw, blink, rest, pipeline
-    void chord(int key, int mods); // a script's key: modifiers down, the key, modifiers up
+    void queueWait(const ScriptLine& line); // loaded, solids, frames, redraw, blink, rest, pipeline
+    void chord(int key, int mods);          // a script's key: modifiers down, the key, modifiers up
     void step(std::function<void()> run, bool endsFrame) {
         steps_.push_back({std::move(run), endsFrame});
     }
     // A step that comes back every frame while a dropped model is loading.
     void waitForLoads();
+    // The same until the model loading shows `solids` solids (`solids N`).
+    void waitForSolids(uint32_t solids);
     // The same while a pipeline is being built or awaited (`pipeline ready`).
     void waitForPipelines();
 

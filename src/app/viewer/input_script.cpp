@@ -55,6 +55,11 @@ void Input::waitForLoads() {
     if (viewer_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
 }
 
+void Input::waitForSolids(uint32_t solids) {
+    if (viewer_.loading() && viewer_.solidsShown() < solids)
+        steps_.push_front({[this, solids] { waitForSolids(solids); }, true});
+}
+
 void Input::waitForPipelines() {
     if (viewer_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
 }
@@ -101,6 +106,7 @@ void Input::queue(const ScriptLine& line) {
         queuePointer(line);
         break;
     case ScriptOp::Loaded:
+    case ScriptOp::Solids:
     case ScriptOp::Frames:
     case ScriptOp::Redraw:
     case ScriptOp::Blink:
@@ -174,6 +180,9 @@ void Input::queueWait(const ScriptLine& line) {
     switch (line.op) {
     case ScriptOp::Loaded:
         step([this] { waitForLoads(); }, true);
+        break;
+    case ScriptOp::Solids:
+        step([this, solids = uint32_t(line.values[0])] { waitForSolids(solids); }, true);
         break;
     case ScriptOp::Frames: // empty steps, one frame each: what follows waits for them
         for (int i = 0; i < int(line.values[0]); ++i) step([] {}, true);

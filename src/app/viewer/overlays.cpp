@@ -3,10 +3,12 @@
 #include "app/viewer/overlays.h"
 
 #include <algorithm>
+#include <array>
 
 #include <imgui.h>
 
 #include "app/viewer/commands.h"
+#include "scene/bounds.h"
 
 namespace app {
 
@@ -77,6 +79,49 @@ void drawCentred(const std::string& text, FreeSpan span, float heightFraction) {
                         ImVec2(at.x + size.x + pad, at.y + size.y + pad), IM_COL32(0, 0, 0, 150),
                         6.0f);
     draw->AddText(nullptr, 0.0f, at, IM_COL32(220, 220, 220, 255), text.c_str(), nullptr, wrap);
+}
+
+namespace {
+
+// A world segment from clip-space ends, cut where it passes behind the eye (w near 0 would
+// project to infinity), drawn in window coordinates.
+void clippedLine(ImDrawList* draw, glm::dvec4 a, glm::dvec4 b, glm::vec2 size, ImU32 colour) {
+    const double nearW = 1e-4 * std::max(a.w, b.w);
+    if (a.w < nearW && b.w < nearW) return;
+    if (a.w < nearW) a = glm::mix(a, b, (nearW - a.w) / (b.w - a.w));
+    if (b.w < nearW) b = glm::mix(b, a, (nearW - b.w) / (a.w - b.w));
+    auto window = [&](const glm::dvec4& clip) {
+        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+        return ImVec2(float((ndc.x * 0.5 + 0.5) * size.x), float((ndc.y * 0.5 + 0.5) * size.y));
+    };
+    draw->AddLine(window(a), window(b), colour, 1.0f);
+}
+
+} // namespace
+
+void drawWaitingBoxes(const scene::Scene& scene, const scene::CadPartial& partial,
+                      const scene::PartSet& hidden, const glm::dmat4& viewProj, glm::vec2 size) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const size_t count =
+        std::min({partial.boxes.size(), partial.state.size(), scene.objects.size()});
+    for (size_t i = 0; i < count; ++i) {
+        const scene::Bounds& box = partial.boxes[i];
+        if (partial.state[i] == scene::kObjectReady || scene::isEmpty(box)) continue;
+        const scene::Object& object = scene.objects[i];
+        if (hidden.allIn(object.uniquePartOffset, scene.geometries[object.geometry].partCount))
+            continue;
+        const ImU32 colour = partial.state[i] == scene::kObjectLost ? IM_COL32(255, 90, 80, 170)
+                                                                    : IM_COL32(200, 205, 215, 110);
+        std::array<glm::dvec4, 8> corner;
+        for (int c = 0; c < 8; ++c)
+            corner[c] = viewProj * glm::dvec4((c & 1) ? box.max.x : box.min.x,
+                                              (c & 2) ? box.max.y : box.min.y,
+                                              (c & 4) ? box.max.z : box.min.z, 1.0);
+        // The twelve edges: corners one bit apart.
+        for (int c = 0; c < 8; ++c)
+            for (int bit = 1; bit < 8; bit <<= 1)
+                if (!(c & bit)) clippedLine(draw, corner[c], corner[c | bit], size, colour);
+    }
 }
 
 } // namespace app

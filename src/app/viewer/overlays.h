@@ -1,7 +1,7 @@
 // overlays.h - what the viewer draws over the view besides the panel: the help overlay (the
 // command table, F1 or ?), a quiet line in the middle of the free area saying why nothing is
-// drawn, and a short notice (the screenshot's file). The state they keep, with the undo
-// history they watch, is the Viewer's Shell.
+// drawn, a short notice (the screenshot's file) and the boxes of solids still loading. The state
+// they keep, with the undo history they watch, is the Viewer's Shell.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +10,7 @@
 
 #include "app/viewer/history.h"
 #include "app/viewer/orbit_camera.h"
+#include "scene/cad/cad_loader.h"
 
 namespace app {
 
@@ -40,5 +41,11 @@ std::optional<EmptyReason> whyEmpty(uint32_t partCount, uint32_t hiddenCount, bo
 // Each frame, inside the ImGui frame. drawHelp clears `open` when its window is closed.
 void drawHelp(bool& open);
 void drawCentred(const std::string& text, FreeSpan span, float heightFraction);
+// A model shown as it loads: the box of each solid not meshed yet, thin lines under the panel
+// (lost ones red), so the assembly's shape shows before its solids; none for an object
+// whose parts are all hidden. `viewProj` takes world points to clip space, `size` is the
+// window's.
+void drawWaitingBoxes(const scene::Scene& scene, const scene::CadPartial& partial,
+                      const scene::PartSet& hidden, const glm::dmat4& viewProj, glm::vec2 size);
 
 } // namespace app

@@ -48,7 +48,7 @@ class FramePacer {
     // what the GPU reads back (hovered part, visible parts) arrives two frames later.
     static constexpr int settleFrames = 3;
     // A load's or a build's progress line is drawn this often, in seconds.
-    static constexpr double progressInterval = 0.1;
+    static constexpr double progressInterval = 0.25;
 
     // Whether a frame is due now.
     bool due(const FrameWants& wants);

@@ -132,6 +132,41 @@ void viewRow(const Options& settings, const ViewSettings& view, PanelActions& ac
     }
 }
 
+// A model loading: its stage and bar; a big CAD file shown as it loads says what is shown
+// and what is left, and offers Stop here beside Cancel.
+void loadingLines(const PanelInfo::Loading& loading, PanelActions& actions) {
+    // CAD loads report their stage and how far it is; glTF loads report nothing, and the
+    // bar sweeps once a second while they run.
+    const double t = loading.seconds;
+    char label[96];
+    std::snprintf(label, sizeof label, "%s %.0f%%, %.1f s",
+                  loading.stage.empty() ? "loading" : loading.stage.c_str(),
+                  100.0 * loading.fraction, t);
+    ImGui::TextWrapped("%s", loading.path.c_str());
+    if (!loading.shown.empty()) ImGui::TextWrapped("%s", loading.shown.c_str());
+    const double shown = loading.stage.empty() ? t - std::floor(t) : loading.fraction;
+    ImGui::ProgressBar(float(shown), ImVec2(-1, 0), label);
+    if (loading.stopping) {
+        textDisabledWrapped("stopping: the workers are killed");
+        return;
+    }
+    // CAD loads stop at their next face or progress step; glTF loads run to their end. Esc
+    // does Cancel where there was a model before, else Stop (commands.h).
+    const std::string esc = " (" + keysOf(CommandId::Escape) + ")";
+    if (!loading.shown.empty()) {
+        if (ImGui::Button("Stop here")) actions.ask({CommandId::Stop});
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("stop loading: what is shown stays, marked incomplete%s",
+                              loading.modelBefore ? "" : esc.c_str());
+        ImGui::SameLine();
+    }
+    if (ImGui::Button("Cancel")) actions.ask({CommandId::Cancel});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", loading.modelBefore
+                                    ? ("stop loading, back to the model shown before" + esc).c_str()
+                                    : "stop loading: nothing stays open");
+}
+
 void status(const PanelInfo& info, PanelActions& actions) {
     // The frame rate on the device's line where the widest rate would fit there too, else on
     // a line of its own: a rate gaining a digit never wraps the line and moves what follows.
@@ -157,27 +192,19 @@ void status(const PanelInfo& info, PanelActions& actions) {
         ImGui::TextWrapped("building pipeline %s, %.1f s: what is drawn stays until it is "
                            "ready, then %s",
                            building->pipeline.c_str(), building->seconds, building->then.c_str());
-    if (const auto& loading = info.loading) {
-        // CAD loads report their stage and how far it is; glTF loads report nothing, and the
-        // bar sweeps once a second while they run.
-        const double t = loading->seconds;
-        char label[96];
-        std::snprintf(label, sizeof label, "%s %.0f%%, %.1f s",
-                      loading->stage.empty() ? "loading" : loading->stage.c_str(),
-                      100.0 * loading->fraction, t);
-        ImGui::TextWrapped("%s", loading->path.c_str());
-        const double shown = loading->stage.empty() ? t - std::floor(t) : loading->fraction;
-        ImGui::ProgressBar(float(shown), ImVec2(-1, 0), label);
-        // CAD loads stop at their next face or progress step; glTF loads run to their end.
-        if (ImGui::Button("Cancel")) actions.ask({CommandId::Cancel});
-    }
+    if (const auto& loading = info.loading) loadingLines(*loading, actions);
 }
 
 // The scene's source and the unit its lengths are in (where the unit comes from in a
 // tooltip).
 void source(const PanelInfo& info) {
     textDisabledWrapped(info.source.c_str());
-    if (!info.scene) return;
+    if (!info.incomplete.empty()) { // stopped while it loaded
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.72f, 0.1f, 1.0f));
+        ImGui::TextWrapped("incomplete: %s (stopped while loading)", info.incomplete.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (!info.scene || info.source.empty()) return; // nothing open: no unit either
     const scene::LengthUnit& unit = info.scene->unit;
     const std::string line = unit.symbol.empty() ? "lengths: no unit (" + unit.source + ")"
                                                  : "lengths in " + unit.symbol;

@@ -94,8 +94,16 @@ struct PanelInfo {
         double seconds = 0.0;
         std::string stage; // "" when the loader reports no stages
         double fraction = 0.0;
+        std::string shown;        // a model shown as it loads: "3 of 8 solids shown, ..."
+        bool modelBefore = false; // Cancel goes back to a model
+        bool stopping = false;    // Stop or Cancel asked, the load not ended yet
     };
-    std::optional<Loading> loading; // a dropped model still loading
+    std::optional<Loading> loading; // a model still loading
+    // A model stopped while it loaded: what it lacks ("5 of 8 solids missing"), else "".
+    std::string incomplete;
+    // A model shown as it loads (and after Stop): each object's scene::kObjectWaiting,
+    // kObjectReady or kObjectLost, for the tree's rows; nullptr once whole.
+    const std::vector<uint8_t>* objectStates = nullptr;
     struct Building {
         std::string pipeline;
         double seconds = 0.0;

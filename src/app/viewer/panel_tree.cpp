@@ -12,6 +12,7 @@
 
 #include "app/viewer/commands.h"
 #include "app/viewer/panel_widgets.h"
+#include "scene/cad/cad_loader.h" // kObjectWaiting, kObjectLost
 
 namespace app {
 
@@ -55,6 +56,20 @@ Shown shownOf(const scene::PartRanges& parts, const scene::PartSet& hidden) {
     return anyHidden ? (anyShown ? Shown::Some : Shown::None) : Shown::All;
 }
 
+// An object's row while its model loads, and after Stop: " (loading)" or " (missing)" until
+// its solid is meshed, " (lost)" where its worker died; "" once it is drawn.
+std::string stateSuffix(const PanelInfo& info, const scene::TreeRow& row, bool loading) {
+    if (!info.objectStates || !row.object || *row.object >= info.objectStates->size()) return "";
+    switch ((*info.objectStates)[*row.object]) {
+    case scene::kObjectWaiting:
+        return loading ? " (loading)" : " (missing)";
+    case scene::kObjectLost:
+        return " (lost)";
+    default:
+        return "";
+    }
+}
+
 // One row: its arrow (a branch, not the root, while not filtering), its checkbox and its
 // name. Checked: every part under the node shows; a click hides them all, or shows them all
 // when some are hidden. Highlighted: every part under it is selected (a row click, a solid, a
@@ -84,12 +99,17 @@ void treeRow(ViewSettings& view, const PanelInfo& info, uint32_t i, bool filteri
     if (state == Shown::Some) ImGui::PopStyleVar();
     ImGui::SameLine();
     const bool selected = info.selectedParts && allIn(row.parts, *info.selectedParts);
-    const std::string& label = row.label.empty() ? row.name : row.label;
+    const std::string suffix = stateSuffix(info, row, info.loading.has_value());
+    const std::string label = (row.label.empty() ? row.name : row.label) + suffix;
     const std::string shown = elided(label, ImGui::GetContentRegionAvail().x);
+    const bool drawn = suffix.empty(); // greyed until its solid is
+    if (!drawn)
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     if (ImGui::Selectable((shown + "###row").c_str(), selected))
         actions.ask(
             {CommandId::Node,
              nodeOfRow(rows, i, ImGui::GetIO().KeyCtrl ? NodeAction::Add : NodeAction::Select)});
+    if (!drawn) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered() && (!row.path.empty() || shown != label))
         ImGui::SetTooltip("%s", row.path.empty() ? label.c_str() : row.path.c_str());
     if (indent > 0.0f) ImGui::Unindent(indent);

@@ -17,8 +17,15 @@ SceneState::SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, c
       sampleCounts_(render::supportedSampleCounts(device)) {
     const uint32_t msaa = settings.render.pipeline.msaa;
     targets_ = std::make_shared<render::SceneTargets>(device, renderer_.pass(msaa), extent);
-    // At start, as headless: a scene that cannot be opened ends the run with its message.
-    load(settings.scene, settings.render);
+    // The window opens at once, drawing nothing until the model comes; the renderer is
+    // configured now, so a device or technique that cannot be used ends the run as headless.
+    LoadedScene nothing = nothingOpen();
+    nothing.settings = settings.scene; // what is being opened: apply() leaves it to the load
+    renderer_.setScene(nothing.scene, settings.render);
+    base_ = std::move(nothing);
+    sceneChanged();
+    queued_.push_back(settings.scene);
+    launchNext();
 }
 
 void SceneState::fail(const std::string& message) {
@@ -29,14 +36,17 @@ void SceneState::fail(const std::string& message) {
 SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettings& render) {
     Change change = Change::None;
     const SceneSettings& drawn = base_.settings;
-    if (wanted.model != drawn.model || wanted.builtin != drawn.builtin ||
-        wanted.parts != drawn.parts || wanted.lodLevels != drawn.lodLevels) {
+    // A model shown as it loads keeps its settings until it is whole: its copies would be
+    // placed by the extent of the solids meshed so far, which grows with each one.
+    const bool growing = pending_ && pending_->shown;
+    if (!growing && (wanted.model != drawn.model || wanted.builtin != drawn.builtin ||
+                     wanted.parts != drawn.parts || wanted.lodLevels != drawn.lodLevels)) {
         if (openScene(wanted))
             change = Change::Model;
         else
             wanted = drawn; // the scene drawn stays, and so do its settings
     }
-    if (wanted.copies != drawn.copies || wanted.copyAxes != drawn.copyAxes) {
+    if (!growing && (wanted.copies != drawn.copies || wanted.copyAxes != drawn.copyAxes)) {
         if (setCopies(wanted.copies, wanted.copyAxes))
             change = std::max(change, Change::Copies);
         else
@@ -50,60 +60,6 @@ SceneState::Change SceneState::apply(SceneSettings& wanted, render::RenderSettin
     return change;
 }
 
-void SceneState::startOpen(const std::string& path, const SceneSettings& settings) {
-    SceneSettings wanted = settings;
-    wanted.model = path;
-    wanted.builtin.clear();
-    queued_.push_back(wanted);
-    launchNext();
-}
-
-void SceneState::launchNext() {
-    if (pending_ || queued_.empty()) return;
-    SceneSettings single = queued_.front();
-    single.copies = 1;
-    // Loading touches no Vulkan object and nothing the frames use: safe on its own thread.
-    auto progress = std::make_shared<LoadProgress>();
-    auto cancel = std::make_shared<std::atomic<bool>>(false);
-    pending_ = PendingOpen{std::async(std::launch::async,
-                                      [single, progress, cancel] {
-                                          return loadScene(single, progress.get(), cancel.get());
-                                      }),
-                           queued_.front(), std::chrono::steady_clock::now(), progress, cancel};
-    queued_.pop_front();
-}
-
-SceneState::Change SceneState::poll(SceneSettings& settings) {
-    using namespace std::chrono_literals;
-    if (!pending_ || pending_->scene.wait_for(0s) != std::future_status::ready) return Change::None;
-    PendingOpen done = std::move(*pending_);
-    pending_.reset();
-    launchNext();
-    try {
-        use(done.scene.get(), done.settings, renderer_.settings());
-    } catch (const std::exception& e) {
-        fail(e.what()); // one line naming the file; the previous scene stays
-        return Change::None;
-    }
-    opened();
-    settings = done.settings;
-    return Change::Model;
-}
-
-void SceneState::cancelOpen() {
-    queued_.clear();
-    if (pending_) *pending_->cancel = true;
-}
-
-std::optional<SceneState::Loading> SceneState::loading() const {
-    if (!pending_) return std::nullopt;
-    const auto [stage, fraction] = pending_->progress->get();
-    return Loading{
-        pending_->settings.model,
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - pending_->start).count(),
-        stage, fraction};
-}
-
 bool SceneState::openScene(const SceneSettings& settings) {
     try {
         load(settings, renderer_.settings());
@@ -113,13 +69,6 @@ bool SceneState::openScene(const SceneSettings& settings) {
     }
     opened();
     return true;
-}
-
-void SceneState::opened() {
-    const scene::Scene& scene = atRest();
-    events_.say("opened: " + base_.source + " (" + std::to_string(scene.objects.size()) +
-                " objects, " + std::to_string(scene.uniquePartCount()) + " parts, " +
-                std::to_string(scene.drawnTriangleCount()) + " triangles)");
 }
 
 // The model alone is loaded; the copies are made here, so changing them needs no reload.

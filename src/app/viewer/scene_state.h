@@ -18,6 +18,7 @@
 #include "app/cli.h"
 #include "app/scene_source.h"
 #include "app/viewer/events.h"
+#include "app/viewer/progressive.h"
 #include "render/renderer.h"
 #include "render/targets.h"
 #include "scene/part_data.h"
@@ -26,12 +27,21 @@ namespace app {
 
 class SceneState {
   public:
-    // Opens the scene `settings.scene` names and configures the renderer for
-    // `settings.render`. Throws at start-up, as headless would (exit 1).
+    // Configures the renderer for `settings.render` over a scene with nothing in it and starts
+    // opening the model `settings.scene` names as a dropped one opens (startOpen): the window
+    // shows it as it comes. Throws what the renderer refuses at start-up, as headless would
+    // (exit 1); a model that cannot be opened is firstFailure()'s.
     SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, const Events& events,
                const Options& settings, VkExtent2D extent);
 
-    enum class Change { None, Copies, Model }; // what the camera and selection must follow
+    // What the camera and selection must follow.
+    enum class Change {
+        None,
+        Copies,   // other copies: part IDs name other parts, the view stays
+        Model,    // another model, or the first partial scene of one: its own view
+        Grown,    // the model loading shows more solids, or all of them: the same part IDs
+        Restored, // a load cancelled: the model shown before it is back
+    };
     // Applies what differs between `wanted` and what is drawn. What fails is put back in
     // `wanted`, so the panel shows what is drawn.
     Change apply(SceneSettings& wanted, render::RenderSettings& render);
@@ -39,8 +49,9 @@ class SceneState {
     // on a worker thread: the scene drawn stays interactive meanwhile. One at a time: a drop
     // while one loads waits for it, in the order dropped.
     void startOpen(const std::string& path, const SceneSettings& settings);
-    // Once per frame: when the model being opened has loaded, uploads it and puts its
-    // settings in `settings` (Change::Model); a load that failed leaves its message.
+    // Once per frame: takes the newest partial scene of a big CAD file (progressive.h) when
+    // the upload pace allows, and the model once it has loaded; puts the settings of a model
+    // shown in `settings`. A load that failed leaves its message.
     Change poll(SceneSettings& settings);
     // The model being opened, for the panel's progress line.
     struct Loading {
@@ -48,11 +59,29 @@ class SceneState {
         double seconds = 0.0; // since the drop
         std::string stage;    // CAD files: reading, translating, tessellating, building
         double fraction = 0.0;
+        std::string shown;        // a model shown as it loads: shownLine(), else ""
+        uint32_t solidsShown = 0; // of a model shown as it loads
+        bool modelBefore = false; // Cancel goes back to a model (else to nothing open)
+        bool stopping = false;    // Stop or Cancel asked: the workers are being killed
     };
     std::optional<Loading> loading() const;
     // The panel's Cancel: the drops queued are forgotten and the load running is told to
-    // stop; it fails with "<file>: cancelled" and the scene drawn stays.
+    // stop; it fails with "<file>: cancelled" and the model shown before it is drawn again.
     void cancelOpen();
+    // The panel's Stop here: as Cancel, but what the load has shown stays, marked incomplete.
+    void stopOpen();
+    // While the model given at start has shown nothing yet (the script waits for it).
+    bool waitingForFirst() const { return !shownAny_ && pending_ && pending_->first; }
+    // The message the model given at start failed with: the viewer ends with it.
+    const std::optional<std::string>& firstFailure() const { return firstFailure_; }
+    // The partial scene drawn (its boxes and each object's state; its scene is atRest()):
+    // while a big CAD file loads, and after Stop; nullptr once a model is whole.
+    const scene::CadPartial* partial() const { return partial_ ? &*partial_ : nullptr; }
+    // After Stop: what the model shown lacks ("5 of 8 solids missing"), else "".
+    const std::string& incomplete() const { return incomplete_; }
+    // The box the camera frames a new model in: a partial scene's boxes (the whole assembly,
+    // not the few solids meshed), else the scene's.
+    scene::Bounds extent() const;
     // Targets at the window's new size.
     void resize(VkExtent2D extent);
     // R: shaders from disk, caches cleared; a compile error keeps the last good pipeline.
@@ -139,16 +168,46 @@ class SceneState {
     VkSampleCountFlags sampleCounts_;
     std::string error_;
     std::optional<Wait> settingsWait_, hiddenWait_; // what each waits for, while it builds
+    // Opening models (scene_loads.cpp).
     struct PendingOpen {
         std::future<LoadedScene> scene;
         SceneSettings settings;
         std::chrono::steady_clock::time_point start;
         std::shared_ptr<LoadProgress> progress;    // written by the worker
         std::shared_ptr<std::atomic<bool>> cancel; // read by the worker
+        std::shared_ptr<PartialSlot> partials;     // written by the worker
+        bool first = false; // the model given at start: its failure ends the viewer
+        enum class Ending { Load, Stop, Cancel } ending = Ending::Load; // what was asked
+        bool shown = false;      // a partial scene of it is drawn
+        bool saidSolids = false; // its first solids were told
     };
-    std::deque<SceneSettings> queued_;   // drops waiting for the one loading
-    std::optional<PendingOpen> pending_; // destroyed first: waits for the worker
+    // What was drawn before a load's first partial scene took its place, until the load ends
+    // (a model stopped while it loaded has its partial's boxes and what it lacks).
+    struct Drawn {
+        LoadedScene base;
+        std::optional<scene::Scene> copies;
+        std::optional<scene::CadPartial> partial;
+        std::string incomplete;
+    };
+    static LoadedScene nothingOpen(); // the empty start: one object that draws nothing
     void launchNext();
+    void endOpen(PendingOpen::Ending ending); // Stop or Cancel: the workers are killed
+    Change showPartial(scene::CadPartial partial, SceneSettings& settings);
+    Change finishOpen(SceneSettings& settings);
+    Change whole(PendingOpen& done, LoadedScene loaded, SceneSettings& settings);
+    Change ended(PendingOpen& done, const std::string& error, SceneSettings& settings);
+    Change restoreBefore(const SceneSettings& loadSettings, SceneSettings& settings);
+    void tellPartial(PendingOpen& open, bool first, double uploadMs);
+    bool hasModel() const { return !base_.source.empty(); } // not the empty start
+    std::deque<SceneSettings> queued_;                      // drops waiting for the one loading
+    bool startModel_ = true; // the next launch is the model given at start
+    bool shownAny_ = false;  // a model or a partial scene of one has been drawn
+    std::optional<std::string> firstFailure_;
+    std::optional<Drawn> before_;              // Cancel draws it again
+    std::optional<scene::CadPartial> partial_; // without its scene (base_ holds it)
+    std::string incomplete_;
+    UploadPacer uploads_;
+    std::optional<PendingOpen> pending_; // destroyed first: waits for the worker
 };
 
 } // namespace app

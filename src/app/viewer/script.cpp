@@ -39,6 +39,7 @@ const InputSpec inputSpecs[] = {
     {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT", false},
     {"drop", ScriptOp::Drop, 0, "drop FILE", false},
     {"loaded", ScriptOp::Loaded, 0, "loaded", false},
+    {"solids", ScriptOp::Solids, 1, "solids N", false},
     {"frames", ScriptOp::Frames, 1, "frames N", false},
     {"redraw", ScriptOp::Redraw, 0, "redraw", false},
     {"blink", ScriptOp::Blink, 0, "blink strong|weak|clock", false},
@@ -118,6 +119,9 @@ void checkInput(const InputSpec& spec, ScriptLine& line) {
         break;
     case ScriptOp::Frames:
         if (!whole(v[0], 1.0, 1000.0)) fail("frames takes a whole number from 1 to 1000");
+        break;
+    case ScriptOp::Solids:
+        if (!whole(v[0], 1.0, 1e9)) fail("solids takes a whole number from 1");
         break;
     case ScriptOp::Rest:
         if (v[0] <= 0.0 || v[0] > 60.0) fail("rest takes seconds, more than 0 and at most 60");

@@ -1,9 +1,10 @@
 // script.h - scripted input for the viewer (`--script FILE`), so tests can drive the
 // real window: one line per step, `<seconds> <what> [args]`, run when that many seconds
-// have passed since the first frame. A line is either input as a hand gives it (keys, the
-// pointer, the window) or a wait of the test's own, played into the same handlers as real
-// input; or it is a command of the viewer by its name (commands.h): the same Command a key
-// or the panel makes, run by the same executor. Parsing is plain C++ and unit-tested.
+// have passed since the model given at start showed (whole, or the first partial picture of
+// a big CAD file). A line is either input as a hand gives it (keys, the pointer, the window)
+// or a wait of the test's own, played into the same handlers as real input; or it is a
+// command of the viewer by its name (commands.h): the same Command a key or the panel makes,
+// run by the same executor. Parsing is plain C++ and unit-tested.
 //
 // Input and waits:
 //   0.5 key V               press and release a key (A-Z, 0-9, F1-F12, ESC, SPACE, ENTER, TAB,
@@ -24,6 +25,8 @@
 //   4.5 drop model.glb      a file dropped on the window
 //   4.6 loaded              wait until every dropped model has loaded (they load while
 //                           frames go on), however long that takes
+//   4.7 solids 3            wait until the model loading shows 3 solids (a big CAD file
+//                           shown as it loads), or is no longer loading
 //   4.8 frames 5            let 5 frames pass before the next line (results of a pick
 //                           arrive a frame or two later, however slow the frames are)
 //   4.85 redraw             the next frame draws everything anew (with what follows at the
@@ -69,7 +72,9 @@
 //                           the Pictures folder)
 //   4.4 open model.glb      open a file as the panel's open field does (without: Ctrl+O's
 //                           file chooser)
-//   4.7 cancel              the panel's Cancel: stop the model loading and those queued
+//   4.7 cancel              the panel's Cancel: stop the model loading and those queued; the
+//                           model shown before it comes back (`stop`: the panel's Stop here,
+//                           what the load shows stays, marked incomplete)
 //   4.75 clear-recent       the recent files' "clear list" entry
 //   5   quit
 //
@@ -102,6 +107,7 @@ enum class ScriptOp {
     Resize,
     Drop,
     Loaded,
+    Solids,
     Frames,
     Redraw,
     Blink,
@@ -117,7 +123,8 @@ struct ScriptLine {
                                     // Pipeline: the word
     int key = 0;                    // Key: the GLFW key code
     int mods = 0;                   // Key, Box, Click: GLFW modifier bits held
-    std::array<double, 4> values{}; // coordinates, wheel steps, window size, frames, seconds
+    std::array<double, 4> values{}; // coordinates, wheel steps, window size, frames, seconds,
+                                    // solids
     std::optional<Command> command; // Command: what it asks for
     std::string where;              // "file:line", for messages while it runs
 };
@@ -149,7 +156,7 @@ class ScriptPlayer {
     // Lines with equal times keep their order in the file.
     explicit ScriptPlayer(std::vector<ScriptLine> lines);
 
-    // The lines due at `seconds` since the first frame that were not handed out yet.
+    // The lines due at `seconds` (the script's clock) that were not handed out yet.
     std::vector<ScriptLine> due(double seconds);
     // The time of the next line, so an idle (minimised) viewer knows when to wake up.
     std::optional<double> nextTime() const;

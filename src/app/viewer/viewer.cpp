@@ -50,7 +50,9 @@ Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, S
     events_.say("window: " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " at " +
                 std::to_string(position[0]) + "," + std::to_string(position[1]) + ", " +
                 std::to_string(view_.recentFiles.size()) + " recent files");
-    follow(SceneState::Change::Model);
+    // Nothing is open until the model given at start shows (follow, from the frames' poll).
+    input_.forgetParts(scene_.scene().uniquePartCount());
+    startClean(SceneState::Change::None); // no undo step of the empty start's parts
     window.listen(input_);
     // A pipeline built on a worker wakes the resting loop, which then switches to it.
     scene_.renderer().onPipelineBuilt(&Window::wake);
@@ -272,15 +274,16 @@ bool Viewer::actOnNode(const NodeTarget& node) {
 }
 
 void Viewer::run() {
-    while (!window_.closing() && !input_.failure()) {
+    while (!window_.closing() && !input_.failure() && !scene_.firstFailure()) {
         window_.pollEvents();
         openDrops();
         if (!presenter_.ready(view_.vsync)) { // minimised: render nothing, sleep until woken
-            window_.waitEvents(input_.wakeIn(elapsed()));
+            window_.waitEvents(scriptStart_ ? input_.wakeIn(scriptSeconds()) : std::nullopt);
             continue;
         }
         if (!start_) start_ = Clock::now();
-        input_.runScript(elapsed());
+        if (!scriptStart_ && !scene_.waitingForFirst()) scriptStart_ = Clock::now();
+        if (scriptStart_) input_.runScript(scriptSeconds());
         if (window_.closing() || input_.failure()) break;
         const FrameWants wants = frameWants();
         if (pacer_.due(wants)) {
@@ -291,9 +294,22 @@ void Viewer::run() {
         rest();
         window_.waitEvents(pacer_.rest(wants));
     }
+    // A load still running stops now: its workers are killed, and the thread waited for at
+    // the end is one that has seen the cancel, not one that goes on to the model's end.
+    if (const auto loading = scene_.loading(); loading && !loading->stopping) {
+        events_.say("loading: cancelled, the window closed");
+        scene_.cancelOpen();
+    }
     slots_.finish();
     if (input_.failure()) std::rethrow_exception(input_.failure());
+    // The model given at start failed: the run ends with its message (exit 1), as it did when
+    // that model was loaded before the window showed.
+    if (const auto& failed = scene_.firstFailure()) throw scene::ModelError(*failed);
     savePipelineCache(scene_.renderer());
+}
+
+double Viewer::scriptSeconds() const {
+    return scriptStart_ ? std::chrono::duration<double>(Clock::now() - *scriptStart_).count() : 0.0;
 }
 
 FrameWants Viewer::frameWants() const {
@@ -306,7 +322,7 @@ FrameWants Viewer::frameWants() const {
                  inspect_.stale(input_.selection().selected(), input_.things());
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = input_.selection().hovered().has_value();
-    wants.scriptWake = input_.wakeIn(wants.now);
+    if (scriptStart_) wants.scriptWake = input_.wakeIn(scriptSeconds());
     if (!shell_.notice.empty()) wants.changeAt = shell_.noticeUntil; // the notice goes then
     return wants;
 }

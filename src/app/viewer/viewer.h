@@ -105,8 +105,16 @@ class Viewer {
     // defaults, in the viewer and in the file (saved_settings.h).
     void resetSettings();
     void cancelLoads() { scene_.cancelOpen(); } // the panel's Cancel
+    void stopLoads() { scene_.stopOpen(); }     // the panel's Stop here
     // A dropped model loading, or a file chooser open (what it chooses loads next).
     bool loading() const { return scene_.loading().has_value() || chooser_.open(); }
+    // The model loading, if one is (Esc stops or cancels it: commands.h).
+    std::optional<SceneState::Loading> modelLoading() const { return scene_.loading(); }
+    // The solids a model loading shows so far (the script's `solids N` waits for them).
+    uint32_t solidsShown() const {
+        const auto loading = scene_.loading();
+        return loading ? loading->solidsShown : 0;
+    }
     bool pipelinePending() const { return scene_.pipelinePending(); }
     // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
     void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
@@ -137,8 +145,12 @@ class Viewer {
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);
-    void startClean(SceneState::Change change);              // viewer_commands.cpp, from follow
-    void drawOverlays();                                     // help, empty view, notice; undo steps
+    void grown();                               // follow: the model loading shows more of itself
+    void rebuildTree(bool keepOpen);            // follow: the panel's rows of the scene's tree
+    void startClean(SceneState::Change change); // viewer_commands.cpp, from follow
+    void drawOverlays();                        // help, empty view, notice; undo steps
+    std::optional<EmptyReason> emptyView(uint32_t partCount, uint32_t hidden, bool sectionOn,
+                                         std::optional<uint32_t> visible) const;
     void restore(const ShownState& state, const char* what); // undo, redo
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
@@ -153,6 +165,9 @@ class Viewer {
     void updateTitle(double seconds, bool now);
     PanelInfo panelInfo() const;
     double elapsed() const; // seconds since the first frame
+    // Seconds of the script's clock: it starts once the model given at start shows (a partial
+    // scene of it, or the whole), so that its lines act on a model.
+    double scriptSeconds() const;
 
     Options settings_; // the scene, render and animation settings, edited in place
     ViewSettings view_;
@@ -197,7 +212,7 @@ class Viewer {
     bool redrawNext_ = false;
     std::optional<bool> blinkHeld_; // strong (true) or weak
     uint64_t frameNumber_ = 0;
-    std::optional<Clock::time_point> start_;
+    std::optional<Clock::time_point> start_, scriptStart_;
     std::deque<double> cpuRecordMs_;
     double titleTime_ = 0.0, fps_ = 0.0;
     uint64_t titleFrame_ = 0;
@@ -208,6 +223,14 @@ class Viewer {
     uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
     std::optional<uint32_t> saidHovered_; // the hovered part last told
     Shell shell_;                         // the help, undo history and overlays (overlays.h)
+    // What a model's first partial scene replaced, for Cancel to bring back with the model
+    // drawn before (SceneState::Change::Restored).
+    struct Before {
+        OrbitCamera camera;
+        Selection selection;
+        scene::Section section;
+    };
+    std::optional<Before> before_;
 };
 
 } // namespace app

@@ -75,6 +75,21 @@ void Viewer::startClean(SceneState::Change change) {
     shell_.changedAt = frameNumber_;
 }
 
+// Why nothing shows (overlays.h's whyEmpty), or that a model is loading and none of its solids
+// is meshed yet, or that nothing is open (the model given at start stopped or cancelled).
+std::optional<EmptyReason> Viewer::emptyView(uint32_t partCount, uint32_t hidden, bool sectionOn,
+                                             std::optional<uint32_t> visible) const {
+    if (partCount > 0) return whyEmpty(partCount, hidden, sectionOn, visible);
+    if (const auto loading = scene_.loading())
+        return EmptyReason{"loading",
+                           "Opening " + loading->path +
+                               (scene_.partial() ? ": its solids show as they are meshed" : "")};
+    if (scene_.loaded().source.empty())
+        return EmptyReason{"nothing open",
+                           "Nothing is open - " + keysOf(CommandId::Open) + " opens a model"};
+    return whyEmpty(partCount, hidden, sectionOn, visible);
+}
+
 // After the panel, inside the ImGui frame. The hidden parts and section are compared with the
 // last frame's, not copied, so a frame at rest costs two comparisons; a change becomes an undo
 // step once no widget is held (a slider drag is one step).
@@ -118,10 +133,11 @@ void Viewer::drawOverlays() {
         emptyShown.eraseAll(selection.hidden());
         hidden -= neverShown.size() - emptyShown.size();
     }
-    const auto empty = whyEmpty(scene_.scene().uniquePartCount() - neverShown.size(), hidden,
-                                section.any(), visible);
+    const auto empty = emptyView(scene_.scene().uniquePartCount() - neverShown.size(), hidden,
+                                 section.any(), visible);
     const std::string reason = empty ? empty->event : "";
-    if (reason != shell_.empty) {
+    // Until the model given at start shows, the view says what opens, without a line.
+    if (reason != shell_.empty && !scene_.waitingForFirst()) {
         shell_.empty = reason;
         events_.say("empty: " + (reason.empty() ? std::string("no") : reason));
     }

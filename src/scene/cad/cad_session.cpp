@@ -142,6 +142,9 @@ class SplitLoad {
         for (;;) {
             if (cancel_ && *cancel_) cancelled(pool_);
             memory_.sample(stagePeak);
+            // Solids held back by the pace go out once their time has come, though no piece
+            // answers meanwhile: a long last piece would hide them for as long as it takes.
+            if (assembly_) publish(false);
             Event event = pool_.wait(kPoll);
             if (event.kind != Event::Kind::Timeout) return event;
         }
