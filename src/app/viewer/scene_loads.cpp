@@ -11,12 +11,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// What the panel and messages call the model a load opens.
-std::string sourceOf(const SceneSettings& settings) {
-    if (!settings.model.empty()) return settings.model;
-    return settings.builtin.empty() ? defaultModelPath() : settings.builtin;
-}
-
 } // namespace
 
 LoadedScene SceneState::nothingOpen() {
