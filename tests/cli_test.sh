@@ -229,7 +229,7 @@ expect bad-scene 2 "--scene: unknown procedural preset 'huge'" -- "$idview" --sc
 # CAD files (samples from Debian's occt-misc): counts are checked against OCCT in the unit tests.
 screw=/usr/share/opencascade/data/step/screw.step
 if [[ -f $screw ]]; then
-    expect cad-stats 0 '"part_mode":"faces".*"objects":1,.*"tessellation_ms":[0-9.]+,"faces_failed":0,"unit":"mm","deflection":0\.1' -- \
+    expect cad-stats 0 '"part_mode":"faces".*"objects":1,.*"tessellation_ms":[0-9.]+,"faces_failed":0,"unit":"mm","deflection":0\.048' -- \
         "$idview" --model "$screw" --stats
     expect cad-parts-ignored 0 '"warnings":\["--parts is ignored for CAD files' -- \
         "$idview" --model "$screw" --parts components --stats

@@ -4,6 +4,8 @@
 #include "scene/step/step_pieces.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "scene/step/step_record.h"
@@ -55,7 +57,8 @@ PieceFacts PieceWalker::facts(uint32_t repIndex) {
     facts.layout = layout(p_.reps[repIndex]);
     walk(repIndex, [&](uint32_t r, bool inSolids) {
         facts.recordBytes += x_.length[r] + 1;
-        if (inSolids && (p_.flagsOf(x_, r) & kVertexPoint)) addVertex(r, facts.box);
+        if (const uint32_t flags = p_.flagsOf(x_, r); inSolids && (flags & kBounding))
+            addBounds(r, flags, facts.box);
         if (p_.marked(r, kStyledOnGeometry)) facts.styled.push_back(r);
     });
     std::sort(facts.styled.begin(), facts.styled.end());
@@ -120,23 +123,58 @@ uint32_t PieceWalker::countFaces(uint32_t item) {
     return faces;
 }
 
-// VERTEX_POINT('name', #point) with CARTESIAN_POINT('name', (x, y, z)).
-void PieceWalker::addVertex(uint32_t vertex, VertexBox& box) const {
-    const auto refs = x_.refsOf(vertex);
-    if (refs.empty() || refs.back() == kNoRecord) return;
-    const uint32_t point = refs.back();
-    if (!(p_.flagsOf(x_, point) & kCartesianPoint)) return;
+// VERTEX_POINT('name', #point); EDGE_CURVE('name', #start, #end, #curve, sense) closed on
+// CIRCLE('name', #placement, radius) or ELLIPSE('name', #placement, semi-axis 1, semi-axis 2),
+// the placement's first reference its location.
+void PieceWalker::addBounds(uint32_t record, uint32_t flags, VertexBox& box) const {
+    const auto refs = x_.refsOf(record);
+    if (flags & kVertexPoint) {
+        if (!refs.empty() && refs.back() != kNoRecord) addPoint(refs.back(), 0.0, box);
+        return;
+    }
+    if (refs.size() < 3 || refs[0] != refs[1] || refs[2] == kNoRecord ||
+        !(p_.flagsOf(x_, refs[2]) & kConic))
+        return;
+    addConic(refs[2], box);
+}
+
+void PieceWalker::addConic(uint32_t record, VertexBox& box) const {
+    const auto refs = x_.refsOf(record);
+    const std::vector<Parameter> parameters = parametersOf(x_, record);
+    if (refs.empty() || refs[0] == kNoRecord || parameters.size() < 3) return;
+    double radius = 0.0;
+    for (size_t i = 2; i < parameters.size(); ++i)
+        radius = std::max(radius, std::abs(realOf(parameters[i].text).value_or(0.0)));
+    const auto location = x_.refsOf(refs[0]);
+    if (!location.empty() && location[0] != kNoRecord) addPoint(location[0], radius, box);
+}
+
+// CARTESIAN_POINT('name', (x, y, z)), each coordinate widened by `pad`; not a point in
+// space (2D, or no point at all): nothing.
+void PieceWalker::addPoint(uint32_t point, double pad, VertexBox& box) const {
+    if (point == kNoRecord || !(p_.flagsOf(x_, point) & kCartesianPoint)) return;
     const std::vector<Parameter> parameters = parametersOf(x_, point);
     const auto coordinates =
         parameters.size() == 2 ? listElements(parameters[1].text) : std::nullopt;
-    if (!coordinates || coordinates->size() != 3) return; // not a point in space
+    if (!coordinates || coordinates->size() != 3) return;
     for (size_t axis = 0; axis < 3; ++axis) {
         const std::string_view text = (*coordinates)[axis];
         const auto value = realOf(text);
         if (!value)
             throw std::runtime_error(x_.describe(point) + " has a coordinate that is not a number");
-        if (!box.any || *value < box.low[axis]) box.low[axis] = *value, box.lowText[axis] = text;
-        if (!box.any || *value > box.high[axis]) box.high[axis] = *value, box.highText[axis] = text;
+        const double low = *value - pad, high = *value + pad;
+        // The file's own text where the corner is its point, else the number written out.
+        auto written = [&](double v) {
+            if (pad == 0.0) return std::string(text);
+            char number[32];
+            std::snprintf(number, sizeof number, "%.17G", v);
+            std::string out = number;
+            if (out.find_first_of(".E") == std::string::npos) out += '.';
+            return out;
+        };
+        if (!box.any || low < box.low[axis]) box.low[axis] = low, box.lowText[axis] = written(low);
+        if (!box.any || high > box.high[axis])
+            box.high[axis] = high, box.highText[axis] = written(high);
     }
     box.any = true;
 }

@@ -21,6 +21,8 @@ uint32_t geometricFlags(std::string_view name) {
     if (name == "ADVANCED_FACE" || name == "FACE_SURFACE") return kFace;
     if (name == "ORIENTED_FACE") return kOrientedFace;
     if (name == "VERTEX_POINT") return kVertexPoint;
+    if (name == "CIRCLE" || name == "ELLIPSE") return kConic;
+    if (name == "EDGE_CURVE") return kEdgeCurve;
     if (name == "CARTESIAN_POINT") return kCartesianPoint | kShareable;
     if (name == "DIRECTION" || name == "AXIS2_PLACEMENT_3D") return kShareable;
     return 0;

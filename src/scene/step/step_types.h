@@ -28,7 +28,11 @@ enum TypeFlag : uint32_t {
     kLayer = 1u << 13,          // PRESENTATION_LAYER_ASSIGNMENT
     kMappedItem = 1u << 14,
     kStyleByContext = 1u << 15, // PRESENTATION_STYLE_BY_CONTEXT: a style for one instance
+    kConic = 1u << 16,          // CIRCLE, ELLIPSE
+    kEdgeCurve = 1u << 17,      // EDGE_CURVE
 };
+// What bounds a piece's geometry in its box (step_pieces.h, VertexBox).
+constexpr uint32_t kBounding = kVertexPoint | kEdgeCurve;
 constexpr uint32_t kSolidLike = kSolid | kSurfaceModel;
 
 // One entry per type of `types`. A complex type takes the geometric flags (solid, shell,

@@ -66,7 +66,7 @@ std::string instanceStyle(const StepIndex& index, uint32_t record, uint64_t set)
            "," + std::string(parameters[1].text) + "," + entityName(set) + ");\n";
 }
 
-std::string point(uint64_t id, const std::array<std::string_view, 3>& coordinates, bool any) {
+std::string point(uint64_t id, const std::array<std::string, 3>& coordinates, bool any) {
     std::string text = entityName(id) + "=CARTESIAN_POINT('',(";
     for (size_t axis = 0; axis < 3; ++axis)
         text += std::string(axis ? "," : "") + (any ? std::string(coordinates[axis]) : "0.");
