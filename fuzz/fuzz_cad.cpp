@@ -1,6 +1,8 @@
 // fuzz_cad.cpp - libFuzzer entry for the CAD loader (STEP, IGES and BREP through Open
-// CASCADE): any input must either load into a scene that passes validate() or fail with a
-// one-line ModelError that names the file; anything else aborts. Open CASCADE itself is not
+// CASCADE), in process as a worker reads a whole file, and for the STEP splitter, which lexes
+// every STEP file before Open CASCADE sees it: any input must either load into a scene that
+// passes validate() or fail with a one-line ModelError that names the file; the splitter must
+// split it (every piece's text made) or refuse it in one line; anything else aborts. Open CASCADE itself is not
 // instrumented (Debian's build), so coverage guides the fuzzer through idview's code only,
 // while the sanitizers watch every byte idview touches.
 #include <atomic>
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 #include "scene/cad/cad_loader.h"
+#include "scene/step/step_split.h"
 #include "util/deadline.h"
 
 namespace {
@@ -46,12 +49,29 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
         if (!out) fail("cannot write the input to", path.c_str());
     }
+    if (std::strcmp(extensionOf(data, size), ".step") == 0) {
+        try {
+            const scene::step::StepSplit split(path);
+            if (const auto& refused = split.notSplit()) {
+                if (refused->reason.empty() || refused->reason.find('\n') != std::string::npos)
+                    fail("the splitter's refusal breaks the one-line contract",
+                         refused->reason.c_str());
+            } else {
+                (void)split.skeleton().size();
+                for (size_t i = 0; i < split.pieces().size(); ++i)
+                    if (split.pieceText(i).size() != split.pieces()[i].bytes)
+                        fail("a piece's text is not its announced size", path.c_str());
+            }
+        } catch (const std::runtime_error& e) {
+            fail("the splitter threw", e.what()); // only a file it cannot map may
+        }
+    }
     scene::CadOptions options;
     options.maxTriangles = 200'000; // a bound on each input's time, as --max-triangles is
     std::atomic<bool> cancel{false};
     try {
         const util::Deadline watchdog(kCancelAfter, [&cancel] { cancel = true; });
-        scene::CadLoadResult result = scene::loadCad(path, options, {}, 1, &cancel);
+        scene::CadLoadResult result = scene::loadCadInProcess(path, options, {}, 1, &cancel);
         scene::validate(result.scene);
     } catch (const scene::ModelError& e) {
         if (std::strchr(e.what(), '\n') || std::strncmp(e.what(), path.c_str(), path.size()) != 0)
