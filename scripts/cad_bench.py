@@ -8,7 +8,10 @@ process tree (idview and its load workers; f3d), sampled from /proc every 50 ms.
         measures every FILE and writes FOLDER/cad-bench.json (the commands, the machine, each
         run's figures and idview's --stats); --viewer also times the first picture in the
         viewer (under Xvfb, from its event lines)
-    scripts/cad_bench.py table FOLDER [projection]
+    scripts/cad_bench.py speedup FOLDER FILE... [--idview build/idview]
+        adds to FOLDER/cad-bench.json, per FILE, a headless first open with one worker and one
+        with two (no cache): the parallel stage's time with each (`speedup` table)
+    scripts/cad_bench.py table FOLDER [projection|speedup]
         the table docs/cad.md shows, printed from FOLDER/cad-bench.json; `projection`: the
         stage times and their projection to 16 cores
     scripts/cad_bench.py --check [PAGE] | --write [PAGE]     (default docs/cad.md)
@@ -118,18 +121,42 @@ def idview_runs(idview, path, workers, cache):
 
 
 def viewer_run(idview, path, workers, cache):
-    """The viewer on `path` under Xvfb, until its event lines say the model is complete: the
-    first picture's and the whole model's seconds, from those lines."""
-    script = os.path.join(cache, "quit.txt")
-    with open(script, "w") as f:
-        f.write("wait-load\nquit\n")
+    """The viewer on `path` under Xvfb until its event lines say the model is complete (then it
+    is ended): the first picture's and the whole model's seconds, from those lines, and the
+    peak memory of the viewer and its workers. Run twice: the first run fills the driver's
+    pipeline cache, as any earlier start of idview has, and its tessellation is then thrown
+    away, so that the second, measured, opens the file for the first time."""
+    viewer_once(idview, path, workers, cache)
+    for entry in os.listdir(os.path.join(cache, "idview")):
+        if entry.endswith(".tess"):
+            os.remove(os.path.join(cache, "idview", entry))
+    return viewer_once(idview, path, workers, cache)
+
+
+def viewer_once(idview, path, workers, cache):
     env = dict(os.environ, XDG_CACHE_HOME=cache, XDG_CONFIG_HOME=cache)
-    command = (f"xvfb-run -a {idview} --no-saved-settings --load-workers {workers} "
-               f"--script '{script}' --model '{path}'")
-    run = measure(command, {"idview", "idview-load-wor"}, env)
-    first = re.search(r"loading: \d+ of \d+ solids shown after ([0-9.]+) s", run["stdout"])
-    run["first_picture_s"] = float(first.group(1)) if first else None
-    run.pop("stdout")
+    command = (f"xvfb-run -a {idview} --print-events --no-saved-settings --load-workers {workers} "
+               f"--model '{path}'")
+    start = time.monotonic()
+    process = subprocess.Popen(["/bin/sh", "-c", "exec " + command], stdout=subprocess.PIPE,
+                               stderr=subprocess.DEVNULL, text=True, env=env,
+                               start_new_session=True)
+    sampler = TreeMemory(os.getpid(), {"idview", "idview-load-wor"})
+    sampler.start()
+    run = {"command": command, "first_picture_s": None, "complete_s": None}
+    for line in process.stdout:
+        first = re.search(r"loading: \d+ of \d+ solids shown after ([0-9.]+) s", line)
+        if first and run["first_picture_s"] is None:
+            run["first_picture_s"] = float(first.group(1))
+        if "loading: complete" in line:
+            run["complete_s"] = float(re.search(r"after ([0-9.]+) s", line).group(1))
+            break
+    run["seconds"] = round(time.monotonic() - start, 2)
+    os.killpg(process.pid, 15)
+    process.wait()
+    sampler.done = True
+    sampler.join()
+    run["peak_mib"] = round(sampler.peak)
     return run
 
 
@@ -172,6 +199,28 @@ def run(argv):
         json.dump(results, f, indent=1)
 
 
+def speedup(argv):
+    folder, idview, files, i = argv[0], os.path.join(ROOT, "build", "idview"), [], 1
+    while i < len(argv):
+        if argv[i] == "--idview":
+            idview, i = argv[i + 1], i + 2
+        else:
+            files.append(os.path.abspath(argv[i]))
+            i += 1
+    path = os.path.join(folder, "cad-bench.json")
+    with open(path) as f:
+        results = json.load(f)
+    for file in files:
+        entry = next(e for e in results["files"] if e["file"] == os.path.basename(file))
+        for workers in (1, 2):
+            run = measure(f"{idview} --stats --no-cache --load-workers {workers} --model '{file}'",
+                          {"idview", "idview-load-wor"})
+            run["stats"] = json.loads(run.pop("stdout").strip().splitlines()[-1])
+            entry[f"workers_{workers}"] = run
+    with open(path, "w") as f:
+        json.dump(results, f, indent=1)
+
+
 def load(folder):
     with open(os.path.join(ROOT, "docs", "benchmarks", folder, "cad-bench.json")) as f:
         return json.load(f)
@@ -189,24 +238,42 @@ def table(folder, kind="times"):
     results = load(folder)
     lines = []
     if kind == "times":
-        lines += ["| file | | first picture (s) | complete (s) | cached reopen (s) | "
+        lines += ["| file | program | first picture (s) | complete (s) | cached reopen (s) | "
                   "peak memory, process tree (MiB) |",
                   "|---|---|---:|---:|---:|---:|"]
         for e in results["files"]:
             first, again = e["idview_first"], e["idview_again"]
-            picture = e.get("viewer", {}).get("first_picture_s")
-            shown = f"{picture:.1f}" if picture is not None else \
-                f"{first['stats']['load']['first_solid_ms'] / 1000:.1f} (headless)"
-            size = f"{e['bytes'] / 1e6:.0f} MB"
-            lines.append(f"| {e['file']} ({size}) | idview | {shown} | {first['seconds']:.1f} | "
-                         f"{again['seconds']:.1f} | {first['peak_mib']} |")
-            if "f3d" in e:
-                f = e["f3d"]
-                done = f"{f['seconds']:.1f}" if f["status"] == 0 else f"> {f['seconds']:.0f}"
-                lines.append(f"| | f3d | {done} | {done} | {done} | {f['peak_mib']} |")
-                if f["status"] == 0:
-                    lines.append(f"| | idview / f3d | | **{first['seconds'] / f['seconds']:.3f}** "
-                                 f"| | **{first['peak_mib'] / max(f['peak_mib'], 1):.2f}** |")
+            lines.append(f"| {e['file']} ({e['bytes'] / 1e6:.0f} MB) | | | | | |")
+            rows = []
+            if "viewer" in e:
+                v = e["viewer"]
+                rows.append(("idview, the viewer", v["first_picture_s"], v["complete_s"], None,
+                             v["peak_mib"]))
+            rows.append(("idview `--stats`", first["stats"]["load"]["first_solid_ms"] / 1000,
+                         first["seconds"], again["seconds"], first["peak_mib"]))
+            f = e.get("f3d")
+            if f:
+                done = f["seconds"] if f["status"] == 0 else None
+                rows.append(("f3d", done, done, done, f["peak_mib"]))
+            cell = lambda x: "" if x is None else f"{x:.1f}"
+            for name, shown, complete, reopen, peak in rows:
+                lines.append(f"| | {name} | {cell(shown)} | {cell(complete)} | {cell(reopen)} | "
+                             f"{peak} |")
+            if f and f["status"] == 0:
+                for name, _, complete, _, peak in rows[:-1]:
+                    lines.append(f"| | {name} / f3d | | **{complete / f['seconds']:.3f}** | | "
+                                 f"**{peak / max(f['peak_mib'], 1):.2f}** |")
+    elif kind == "speedup":
+        lines += ["| file | pieces, 1 worker (s) | pieces, 2 workers (s) | speed-up | "
+                  "whole load, 1 worker (s) | whole load, 2 workers (s) |",
+                  "|---|---:|---:|---:|---:|---:|"]
+        for e in results["files"]:
+            if "workers_1" not in e:
+                continue
+            one, two = e["workers_1"], e["workers_2"]
+            p1, p2 = one["stats"]["load"]["pieces_ms"] / 1000, two["stats"]["load"]["pieces_ms"] / 1000
+            lines.append(f"| {e['file']} | {p1:.1f} | {p2:.1f} | **{p1 / p2:.2f}x** | "
+                         f"{one['seconds']:.1f} | {two['seconds']:.1f} |")
     else:
         lines += ["| file | lex + split + skeleton | parse | translate | heal | mesh | build "
                   "+ encode | put together | largest piece | measured, "
@@ -250,6 +317,8 @@ def page_blocks(path, write):
 def main(argv):
     if len(argv) >= 3 and argv[1] == "run":
         run(argv[2:])
+    elif len(argv) >= 3 and argv[1] == "speedup":
+        speedup(argv[2:])
     elif len(argv) >= 3 and argv[1] == "table":
         print(table(*argv[2:4]))
     elif len(argv) >= 2 and argv[1] in ("--check", "--write"):

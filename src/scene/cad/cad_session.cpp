@@ -376,8 +376,9 @@ CadLoadResult loadSplitOrWhole(const std::string& path, const CadOptions& option
     const auto start = Clock::now();
     const Format format = checkedFormat(path, options, levels);
     CadStageFigures stages;
+    // Said at once, before any worker starts, so that a load shows it began.
+    if (progress) progress("reading", 0.0);
     if (format == Format::Step) {
-        if (progress) progress("reading", 0.0);
         std::optional<step::StepSplit> split;
         try {
             inMemory("indexing the file's entities", [&] { split.emplace(path); });
