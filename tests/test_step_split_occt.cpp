@@ -291,14 +291,15 @@ std::string writeRig(const steptest::TempFile& file) {
     app->NewDocument("MDTV-XCAF", doc);
     ignored.reset();
     buildRig(doc);
-    ignored.emplace(); // the STEP writer's setup is never freed by OCCT
+    // The STEP writer's setup and its first translation's tables are never freed by OCCT.
+    ignored.emplace();
     STEPCAFControl_Writer writer;
-    ignored.reset();
     const StaticParameter metres("write.step.unit", "M");
     const scene::cad::CoutCapture quiet; // the writer's statistics
     writer.SetColorMode(true);
     writer.SetNameMode(true);
     EXPECT_TRUE(writer.Transfer(doc, STEPControl_AsIs));
+    ignored.reset();
     EXPECT_EQ(writer.Write(file.path().c_str()), IFSelect_RetDone);
     app->Close(doc);
     return file.path();
