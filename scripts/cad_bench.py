@@ -6,11 +6,14 @@ process tree (idview and its load workers; f3d), sampled from /proc every 50 ms.
     scripts/cad_bench.py run FOLDER FILE... [--idview build/idview] [--f3d f3d]
                          [--workers N] [--viewer] [--f3d-timeout S]
         measures every FILE and writes FOLDER/cad-bench.json (the commands, the machine, each
-        run's figures and idview's --stats); --viewer also times the first picture in the
-        viewer (under Xvfb, from its event lines)
+        run's figures and idview's --stats); --viewer also times the viewer (under Xvfb):
+        the first picture and the whole model from its event lines, and a cached reopen
     scripts/cad_bench.py speedup FOLDER FILE... [--idview build/idview]
         adds to FOLDER/cad-bench.json, per FILE, a headless first open with one worker and one
         with two (no cache): the parallel stage's time with each (`speedup` table)
+    scripts/cad_bench.py reopen FOLDER FILE... [--idview build/idview] [--workers N]
+        measures the viewer's cached reopen again, per FILE (the cache filled by a headless
+        --stats run), into FOLDER/cad-bench.json
     scripts/cad_bench.py table FOLDER [projection|speedup]
         the table docs/cad.md shows, printed from FOLDER/cad-bench.json; `projection`: the
         stage times and their projection to 16 cores
@@ -28,6 +31,7 @@ import os
 import platform
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -94,13 +98,15 @@ def measure(command, names, env=None, timeout=None):
     tree memory (MiB), exit status and stdout."""
     start = time.monotonic()
     process = subprocess.Popen(["/bin/sh", "-c", "exec " + command], stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True, env=env)
+                               stderr=subprocess.PIPE, text=True, env=env,
+                               start_new_session=True)
     sampler = TreeMemory(os.getpid(), names)
     sampler.start()
     try:
         out, err = process.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
-        process.kill()
+        # The whole group: xvfb-run's children (Xvfb, f3d) too.
+        os.killpg(process.pid, signal.SIGKILL)
         out, err = process.communicate()
     sampler.done = True
     sampler.join()
@@ -125,85 +131,51 @@ def viewer_run(idview, path, workers, cache):
     is ended): the first picture's and the whole model's seconds, from those lines, and the
     peak memory of the viewer and its workers. Run twice: the first run fills the driver's
     pipeline cache, as any earlier start of idview has, and its tessellation is then thrown
-    away, so that the second, measured, opens the file for the first time."""
+    away, so that the second, measured, opens the file for the first time. A third opens it
+    again from the tessellation cache the second wrote: its whole run, from the start to the
+    end of a script that waits for the model and quits, is the cached reopen."""
     viewer_once(idview, path, workers, cache)
     for entry in os.listdir(os.path.join(cache, "idview")):
         if entry.endswith(".tess"):
             os.remove(os.path.join(cache, "idview", entry))
-    return viewer_once(idview, path, workers, cache)
-
-
-def viewer_once(idview, path, workers, cache):
-    env = dict(os.environ, XDG_CACHE_HOME=cache, XDG_CONFIG_HOME=cache)
-    command = (f"xvfb-run -a {idview} --print-events --no-saved-settings --load-workers {workers} "
-               f"--model '{path}'")
-    start = time.monotonic()
-    process = subprocess.Popen(["/bin/sh", "-c", "exec " + command], stdout=subprocess.PIPE,
-                               stderr=subprocess.DEVNULL, text=True, env=env,
-                               start_new_session=True)
-    sampler = TreeMemory(os.getpid(), {"idview", "idview-load-wor"})
-    sampler.start()
-    run = {"command": command, "first_picture_s": None, "complete_s": None}
-    for line in process.stdout:
-        first = re.search(r"loading: \d+ of \d+ solids shown after ([0-9.]+) s", line)
-        if first and run["first_picture_s"] is None:
-            run["first_picture_s"] = float(first.group(1))
-        if "loading: complete" in line:
-            run["complete_s"] = float(re.search(r"after ([0-9.]+) s", line).group(1))
-            break
-    run["seconds"] = round(time.monotonic() - start, 2)
-    os.killpg(process.pid, 15)
-    process.wait()
-    sampler.done = True
-    sampler.join()
-    run["peak_mib"] = round(sampler.peak)
+    run = viewer_once(idview, path, workers, cache)
+    run["again"] = viewer_reopen(idview, path, workers, cache)
     return run
 
 
-def run(argv):
-    folder, files, opts = argv[0], [], {"--idview": os.path.join(ROOT, "build", "idview"),
-                                        "--f3d": "f3d", "--workers": "0",
-                                        "--f3d-timeout": "3600"}
-    viewer, i = False, 1
+def viewer_reopen(idview, path, workers, cache):
+    """The viewer opening `path` from the tessellation cache in `cache`, from its start to the
+    end of a script that waits for the model and quits: the second of two such runs, so that
+    the driver's pipeline cache is warm."""
+    script = os.path.join(cache, "quit.txt")
+    with open(script, "w") as f:
+        f.write("0 loaded\n0 quit\n")
+    env = dict(os.environ, XDG_CACHE_HOME=cache, XDG_CONFIG_HOME=cache)
+    command = (f"xvfb-run -a {idview} --no-saved-settings --load-workers {workers} "
+               f"--script '{script}' --model '{path}'")
+    for _ in range(2):
+        again = measure(command, {"idview", "idview-load-wor"}, env)
+    again.pop("stdout")
+    return again
+
+
+def reopen(entry, file, opts):
+    with tempfile.TemporaryDirectory() as cache:
+        filled = measure(f"{opts['--idview']} --stats --load-workers {opts['--workers']} "
+                         f"--model '{file}'", {"idview"}, dict(os.environ, XDG_CACHE_HOME=cache))
+        if filled["status"] != 0:
+            sys.exit(f"cad_bench: {file}: {filled['stderr'].strip()}")
+        entry["viewer"]["again"] = viewer_reopen(opts["--idview"], file, opts["--workers"], cache)
+
+
+def added_runs(argv, measure_file):
+    """FOLDER FILE... [--idview P] [--workers N]: `measure_file(entry, file, opts)` adds its
+    runs to each FILE's entry of FOLDER/cad-bench.json."""
+    folder, opts = argv[0], {"--idview": os.path.join(ROOT, "build", "idview"), "--workers": "0"}
+    files, i = [], 1
     while i < len(argv):
-        if argv[i] == "--viewer":
-            viewer, i = True, i + 1
-        elif argv[i] in opts:
+        if argv[i] in opts:
             opts[argv[i]], i = argv[i + 1], i + 2
-        else:
-            files.append(os.path.abspath(argv[i]))
-            i += 1
-    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True).stdout.strip()
-    results = {"commit": commit, "machine": platform.node(), "cores": os.cpu_count(),
-               "files": []}
-    for path in files:
-        entry = {"file": os.path.basename(path), "bytes": os.path.getsize(path)}
-        with tempfile.TemporaryDirectory() as cache:
-            entry["idview_first"], entry["idview_again"] = idview_runs(
-                opts["--idview"], path, opts["--workers"], cache)
-        if viewer:
-            with tempfile.TemporaryDirectory() as cache:
-                entry["viewer"] = viewer_run(opts["--idview"], path, opts["--workers"], cache)
-        if shutil.which(opts["--f3d"]):
-            png = os.path.join(tempfile.gettempdir(), "cad_bench_f3d.png")
-            entry["f3d"] = measure(
-                f"xvfb-run -a {opts['--f3d']} --output='{png}' --resolution=800,600 '{path}'",
-                {"f3d"}, timeout=float(opts["--f3d-timeout"]))
-            entry["f3d"].pop("stdout")
-        results["files"].append(entry)
-        print(json.dumps({k: v for k, v in entry.items() if k in ("file", "bytes")}),
-              file=sys.stderr)
-    os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "cad-bench.json"), "w") as f:
-        json.dump(results, f, indent=1)
-
-
-def speedup(argv):
-    folder, idview, files, i = argv[0], os.path.join(ROOT, "build", "idview"), [], 1
-    while i < len(argv):
-        if argv[i] == "--idview":
-            idview, i = argv[i + 1], i + 2
         else:
             files.append(os.path.abspath(argv[i]))
             i += 1
@@ -212,13 +184,17 @@ def speedup(argv):
         results = json.load(f)
     for file in files:
         entry = next(e for e in results["files"] if e["file"] == os.path.basename(file))
-        for workers in (1, 2):
-            run = measure(f"{idview} --stats --no-cache --load-workers {workers} --model '{file}'",
-                          {"idview", "idview-load-wor"})
-            run["stats"] = json.loads(run.pop("stdout").strip().splitlines()[-1])
-            entry[f"workers_{workers}"] = run
+        measure_file(entry, file, opts)
     with open(path, "w") as f:
         json.dump(results, f, indent=1)
+
+
+def speedup(entry, file, opts):
+    for workers in (1, 2):
+        run = measure(f"{opts['--idview']} --stats --no-cache --load-workers {workers} "
+                      f"--model '{file}'", {"idview", "idview-load-wor"})
+        run["stats"] = json.loads(run.pop("stdout").strip().splitlines()[-1])
+        entry[f"workers_{workers}"] = run
 
 
 def load(folder):
@@ -247,15 +223,19 @@ def table(folder, kind="times"):
             rows = []
             if "viewer" in e:
                 v = e["viewer"]
-                rows.append(("idview, the viewer", v["first_picture_s"], v["complete_s"], None,
+                reopen = v["again"]["seconds"] if "again" in v else None
+                rows.append(("idview, the viewer", v["first_picture_s"], v["complete_s"], reopen,
                              v["peak_mib"]))
             rows.append(("idview `--stats`", first["stats"]["load"]["first_solid_ms"] / 1000,
                          first["seconds"], again["seconds"], first["peak_mib"]))
             f = e.get("f3d")
             if f:
-                done = f["seconds"] if f["status"] == 0 else None
-                rows.append(("f3d", done, done, done, f["peak_mib"]))
-            cell = lambda x: "" if x is None else f"{x:.1f}"
+                # f3d shows the model once it has read all of it, and keeps no cache. A run
+                # stopped at --f3d-timeout gives a lower bound, and its peak so far.
+                done = f["seconds"] if f["status"] == 0 else f"> {f['seconds']:.0f} (stopped)"
+                peak = f["peak_mib"] if f["status"] == 0 else f"{f['peak_mib']} when stopped"
+                rows.append(("f3d", done, done, done, peak))
+            cell = lambda x: "" if x is None else x if isinstance(x, str) else f"{x:.1f}"
             for name, shown, complete, reopen, peak in rows:
                 lines.append(f"| | {name} | {cell(shown)} | {cell(complete)} | {cell(reopen)} | "
                              f"{peak} |")
@@ -318,7 +298,9 @@ def main(argv):
     if len(argv) >= 3 and argv[1] == "run":
         run(argv[2:])
     elif len(argv) >= 3 and argv[1] == "speedup":
-        speedup(argv[2:])
+        added_runs(argv[2:], speedup)
+    elif len(argv) >= 3 and argv[1] == "reopen":
+        added_runs(argv[2:], reopen)
     elif len(argv) >= 3 and argv[1] == "table":
         print(table(*argv[2:4]))
     elif len(argv) >= 2 and argv[1] in ("--check", "--write"):

@@ -7,7 +7,8 @@
 # Then the generated parts of the docs: docs/benchmarks.md's tables are what
 # scripts/bench_tables.py prints from the runs they cite (the culling rework's table checked
 # against the JSON too), and the counts of tests in
-# docs/testing.md and docs/reliability.md what scripts/test_counts.py finds in BUILD.
+# docs/testing.md and docs/reliability.md what scripts/test_counts.py finds in BUILD, and
+# docs/cad.md's tables of big STEP files what scripts/cad_bench.py prints from its run.
 set -uo pipefail
 root=$1
 build=$2
@@ -200,6 +201,15 @@ grep -q '^<!-- generated: bench_tables.py techniques h100-2026-11-27-culling msa
     "$work/moved.md" || fail "--from did not move the techniques table"
 grep -q '^<!-- generated: bench_tables.py rework h100-2026-11-27-still before=h100-2026-11-27-before runs=techniques-1x,techniques-4x -->$' \
     "$work/moved.md" || fail "--from moved the before-and-after table"
+# docs/cad.md's tables of big STEP files are what scripts/cad_bench.py prints from the run it
+# cites; a number changed in one of them fails.
+/usr/bin/python3 "$root/scripts/cad_bench.py" --check "$root/docs/cad.md" >"$work/cad.txt" 2>&1 ||
+    fail "docs/cad.md: $(cat "$work/cad.txt")"
+sed '0,/^| | idview `--stats` | [0-9.]*/s//| | idview `--stats` | 9.999/' "$root/docs/cad.md" \
+    >"$work/cad-changed.md"
+cmp -s "$root/docs/cad.md" "$work/cad-changed.md" && fail "docs/cad.md has no idview row to change"
+out=$(/usr/bin/python3 "$root/scripts/cad_bench.py" --check "$work/cad-changed.md" 2>&1)
+[[ $? -ne 0 && $out == *"cad-changed.md"* ]] || fail "a changed CAD table passed: $out"
 # The counts of tests in docs/testing.md and docs/reliability.md are the build's.
 /usr/bin/python3 "$root/scripts/test_counts.py" --check "$build" >"$work/counts.txt" 2>&1 ||
     fail "test counts: $(cat "$work/counts.txt")"
