@@ -18,6 +18,24 @@ constexpr uint32_t kNoRecord = 0xffffffffu;
 // "#id", the way a STEP file names an entity.
 std::string entityName(uint64_t id);
 
+// Thrown where a file leaves what the lexer or the planner takes.
+struct Refused {
+    std::string reason;
+};
+
+// Runs `run`, which fills `out`: nothing where it finishes, else the reason it was refused,
+// `out` left empty.
+template <typename Out, typename Run>
+std::optional<std::string> refusalOf(Out& out, Run&& run) {
+    try {
+        run();
+        return std::nullopt;
+    } catch (const Refused& refused) {
+        out = Out();
+        return refused.reason;
+    }
+}
+
 // The hash of a keyword, one character at a time (FNV-1a), so that the lexer works it out
 // while it reads the keyword.
 constexpr uint64_t kHashStart = 14695981039346656037ull;

@@ -10,11 +10,6 @@
 namespace scene::step {
 namespace {
 
-// Where the text leaves what the lexer takes; caught by lexStep.
-struct Refused {
-    std::string reason;
-};
-
 constexpr uint32_t kDuplicate = 0xfffffffeu;
 
 // The bytes the parameter loop must look at: everything else is skipped in a tight loop.
@@ -354,13 +349,7 @@ void Lexer::resolve() {
 } // namespace
 
 std::optional<std::string> lexStep(std::string_view text, StepIndex& index) {
-    try {
-        Lexer(text, index).run();
-        return std::nullopt;
-    } catch (const Refused& refused) {
-        index = StepIndex();
-        return refused.reason;
-    }
+    return refusalOf(index, [&] { Lexer(text, index).run(); });
 }
 
 } // namespace scene::step

@@ -11,10 +11,6 @@
 namespace scene::step {
 namespace {
 
-struct Refused {
-    std::string reason;
-};
-
 class Planner {
   public:
     Planner(const StepIndex& index, Plan& plan) : x_(index), p_(plan) {}
@@ -256,13 +252,7 @@ void Planner::checkGeometryReps() const {
 } // namespace
 
 std::optional<std::string> makePlan(const StepIndex& index, Plan& plan) {
-    try {
-        Planner(index, plan).run();
-        return std::nullopt;
-    } catch (const Refused& refused) {
-        plan = Plan();
-        return refused.reason;
-    }
+    return refusalOf(plan, [&] { Planner(index, plan).run(); });
 }
 
 } // namespace scene::step
