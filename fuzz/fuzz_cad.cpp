@@ -2,9 +2,9 @@
 // CASCADE), in process as a worker reads a whole file, and for the STEP splitter, which lexes
 // every STEP file before Open CASCADE sees it: any input must either load into a scene that
 // passes validate() or fail with a one-line ModelError that names the file; the splitter must
-// split it (every piece's text made) or refuse it in one line; anything else aborts. Open CASCADE itself is not
-// instrumented (Debian's build), so coverage guides the fuzzer through idview's code only,
-// while the sanitizers watch every byte idview touches.
+// split it (every piece's text made) or refuse it in one line; anything else aborts. Open CASCADE
+// itself is not instrumented (Debian's build), so coverage guides the fuzzer through idview's code
+// only, while the sanitizers watch every byte idview touches.
 #include <atomic>
 #include <chrono>
 #include <cstdio>

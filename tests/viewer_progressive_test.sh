@@ -49,10 +49,14 @@ wait_line() {
     done
 }
 # The viewer's process (not xvfb-run's shell, which has the same arguments), and its workers.
+# A worker being started is a copy of the viewer until it runs its own program: not its parent.
 viewer_pid() {
-    local pid
+    local pid parent exe
+    exe=$(readlink -f "$idview")
     for pid in $(pgrep -f -- "--script $work/$session_name.txt"); do
-        [[ $(readlink "/proc/$pid/exe") == "$(readlink -f "$idview")" ]] && echo "$pid"
+        [[ $(readlink "/proc/$pid/exe") == "$exe" ]] || continue
+        parent=$(awk '{print $4}' "/proc/$pid/stat" 2>/dev/null)
+        [[ -n $parent && $(readlink "/proc/$parent/exe" 2>/dev/null) == "$exe" ]] || echo "$pid"
     done
 }
 stopped_worker() { ps -o pid=,stat= --ppid "$(viewer_pid)" | awk '$2 ~ /^T/ {print $1}'; }
@@ -111,8 +115,10 @@ before "^idview: loading: partial: 7 of 8 solids" "^idview: selected: part " &&
     grep -q "^idview: selected: 37 parts$" "$work/pick.out" &&
     ok "the tree had its $tree_nodes nodes before the solids; the copy still loading was selected in it" ||
     fail "tree while loading: '$(said "loading: tree of ")', --tree $tree_nodes nodes, $objects objects; selections: $(said "selected: " | paste -sd'|')"
-hidden_kept=$(awk '/^idview: loading: complete/ {on = 1} on && /^idview: visible parts: / {v = $4}
-    /^idview: command: escape/ {print v; exit}' "$work/pick.out")
+# The count just before Shift+H, the model whole: the line may come before "loading: complete"
+# where the last piece's partial scene was drawn first (the same parts) and none after it.
+hidden_kept=$(awk '/^idview: hidden: 0 parts/ {print v; exit} /^idview: visible parts: / {v = $4}' \
+    "$work/pick.out")
 shown_all=$(awk '/^idview: hidden: 0 parts/ {on = 1} on && /^idview: visible parts: / {v = $4}
     END {print v}' "$work/pick.out")
 [[ -n $hidden_kept && -n $shown_all && $shown_all -gt $hidden_kept ]] &&

@@ -65,9 +65,7 @@ std::string encodeWith(const Value& value, Fields fieldsOf) {
     return std::move(out.bytes());
 }
 
-constexpr auto skeletonJobFields = [](auto& io, auto& j) {
-    fields(io, j.text, j.dummySets);
-};
+constexpr auto skeletonJobFields = [](auto& io, auto& j) { fields(io, j.text, j.dummySets); };
 constexpr auto skeletonAnswerFields = [](auto& io, auto& a) {
     io.records(a.leaves, [](auto& io, auto& leaf) { leafFields(io, leaf); });
     fields(io, a.entities, a.failedEntities, a.ms);
