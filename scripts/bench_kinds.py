@@ -268,7 +268,7 @@ KINDS = {
     **bench_kinds_lod.KINDS,
     **bench_kinds_size.KINDS,
 }
-# Kinds of experiments (shader copies): runs h100-runs.sh does not make.
+# Kinds of experiments (shader copies): runs gpu-runs.sh does not make.
 EXPERIMENTS = {"shaders"}
 # Kinds that compare two named builds (before=FOLDER): --from moves them nowhere.
 COMPARISONS = {"rework"}

@@ -4,7 +4,7 @@ occlusion, and the triangles each level drew.
 """
 from bench_runs import row, f3, triangles, MDI
 
-# What a run shows, as a column's heading (every run h100-runs.sh makes with levels).
+# What a run shows, as a column's heading (every run gpu-runs.sh makes with levels).
 LABELS = {"view-1x": "benchmark view, 1x", "view-4x": "benchmark view, 4x",
           "copies16-1x": "16 copies, 1x", "copies16-4x": "16 copies, 4x",
           "orbit-1x": "`orbit` path, 1x", "dolly-1x": "`dolly` path, 1x",

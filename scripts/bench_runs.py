@@ -1,6 +1,6 @@
 """bench_runs.py - reading the benchmark runs under docs/benchmarks/ for bench_tables.py: a
 run's rows, the idview command that made a run (rebuilt from what its JSON records), and the
-runs scripts/h100-runs.sh makes.
+runs scripts/gpu-runs.sh makes.
 """
 import json
 import os
@@ -11,7 +11,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH = os.path.join(ROOT, "docs", "benchmarks")
-H100_RUNS = os.path.join(ROOT, "scripts", "h100-runs.sh")
+H100_RUNS = os.path.join(ROOT, "scripts", "gpu-runs.sh")
 
 # The registry's order (idview --list-renderers): what `--renderer all` and `--mode all` mean,
 # and how `--culling` lists its modes.
@@ -25,13 +25,13 @@ CULLING = ["off", "frustum", "occlusion"]
 DEFAULTS = {"--size": "2560x1440", "--copies": "3", "--model": "default.glb",
             "--clear": "auto", "--search-batch": "16", "--visible": "1", "--edge-width": "1",
             "--camera-path": "none"}
-# The order a command's flags are written in, here and in h100-runs.sh.
+# The order a command's flags are written in, here and in gpu-runs.sh.
 ORDER = ["--size", "--msaa", "--model", "--copies", "--frames", "--camera-path", "--renderer",
          "--mode", "--culling", "--lod-levels", "--lod-error", "--search-batch", "--visible",
          "--no-sort-draws", "--gs-ordinary", "--edges", "--edge-width", "--visible-parts",
          "--hide", "--isolate", "--clear"]
 # The parts hidden or isolated by the hiding runs, as the page writes them and as
-# h100-runs.sh spells them: every third unique part ID below 3,000.
+# gpu-runs.sh spells them: every third unique part ID below 3,000.
 THIRDS = "0,3,6,...,2997"
 THIRDS_COUNT = 1000
 
@@ -143,7 +143,7 @@ def command(flags):
 
 def parse(args):
     """A command's flags from its words (after idview --headless --benchmark), as flags_of
-    gives them: h100-runs.sh's $thirds as the page writes it, a model by its file name, and
+    gives them: gpu-runs.sh's $thirds as the page writes it, a model by its file name, and
     the defaults left out."""
     flags, words = {}, shlex.split(args.replace("$thirds", THIRDS))
     i = 0
@@ -161,16 +161,16 @@ def parse(args):
 
 
 def script_runs(path=H100_RUNS):
-    """h100-runs.sh's runs, as its --list prints them: {name: (part, flags)}."""
+    """gpu-runs.sh's runs, as its --list prints them: {name: (part, flags)}."""
     listed = subprocess.run(["bash", path, "--list", "idview", "out"], capture_output=True,
                             text=True, check=True).stdout
     runs = {}
     for line in listed.splitlines():
         m = re.match(r"^part (\d+) (\S+): idview --headless --benchmark (.*)$", line)
         if not m:
-            sys.exit(f"h100-runs.sh --list: not a run: {line}")
+            sys.exit(f"gpu-runs.sh --list: not a run: {line}")
         if m.group(2) in runs:
-            sys.exit(f"h100-runs.sh: two runs named {m.group(2)}")
+            sys.exit(f"gpu-runs.sh: two runs named {m.group(2)}")
         runs[m.group(2)] = (int(m.group(1)), parse(m.group(3)))
     return runs
 

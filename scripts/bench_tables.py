@@ -7,17 +7,17 @@ docs/benchmarks/ that the table cites, so that the page repeats the runs and not
     scripts/bench_tables.py --check [PAGE]    (default docs/benchmarks.md)
         every generated block of the page (<!-- generated: bench_tables.py ... -->) is what
         this script prints for its arguments, and every run a block reads is one that
-        scripts/h100-runs.sh makes (under the same name); exit 1 otherwise
+        scripts/gpu-runs.sh makes (under the same name); exit 1 otherwise
     scripts/bench_tables.py --write [PAGE] [--from FOLDER]
         prints the blocks into the page again; with --from, every block whose files are all
-        in FOLDER (a folder of docs/benchmarks/, as h100-runs.sh writes one) cites FOLDER
+        in FOLDER (a folder of docs/benchmarks/, as gpu-runs.sh writes one) cites FOLDER
         from then on, its old folder's layout and commit arguments dropped
     scripts/bench_tables.py status [PAGE]
         per block: its folder, commit, and whether each file's command (as its JSON records
-        it) is the one h100-runs.sh runs today; those that are not are made by older commands
+        it) is the one gpu-runs.sh runs today; those that are not are made by older commands
 
 A block's arguments: KIND FOLDER [commit=HASH] [KEY=VALUE...]. The commit is the build the
-folder's runs were made with (the JSON does not record it; h100-runs.sh writes it into the
+folder's runs were made with (the JSON does not record it; gpu-runs.sh writes it into the
 folder's runs*.txt, read where no commit= is given). A comparison of two builds (the kinds in
 bench_kinds.COMPARISONS) names the earlier build's folder too (before=FOLDER); --from leaves
 it where it is, as it compares those two builds and no others.
@@ -33,7 +33,7 @@ import doc_blocks
 SCRIPT = "bench_tables.py"
 PAGE = os.path.join(runs.ROOT, "docs", "benchmarks.md")
 # Arguments that describe an old folder's layout or build: dropped when a block moves to a
-# folder h100-runs.sh wrote.
+# folder gpu-runs.sh wrote.
 LAYOUT = ("commit", "dir", "prefix")
 
 
@@ -95,15 +95,15 @@ def render(args):
 
 
 def check_runs(page):
-    """Every run a block would read from a folder h100-runs.sh wrote (its layout arguments
-    dropped) is one h100-runs.sh makes, and h100-runs.sh names no --benchmark-out of its own
-    (it writes NAME.json). Blocks of experiments (kinds h100-runs.sh cannot run) are left
+    """Every run a block would read from a folder gpu-runs.sh wrote (its layout arguments
+    dropped) is one gpu-runs.sh makes, and gpu-runs.sh names no --benchmark-out of its own
+    (it writes NAME.json). Blocks of experiments (kinds gpu-runs.sh cannot run) are left
     out."""
     made = runs.script_runs()
     bad = 0
     for name, (_, flags) in made.items():
         if "--benchmark-out" in flags:
-            print(f"h100-runs.sh: {name} names its own --benchmark-out")
+            print(f"gpu-runs.sh: {name} names its own --benchmark-out")
             bad += 1
     with open(page) as f:
         lines = f.read().split("\n")
@@ -114,7 +114,7 @@ def check_runs(page):
         kept = {k: v for k, v in params.items() if k not in LAYOUT}
         for _, stem, _ in entries(block.args, kept):
             if stem not in made:
-                print(f"{page}:{block.first}: h100-runs.sh makes no run '{stem}'")
+                print(f"{page}:{block.first}: gpu-runs.sh makes no run '{stem}'")
                 bad += 1
     return bad
 
@@ -126,18 +126,18 @@ def status(page):
     for block in doc_blocks.blocks(lines, SCRIPT, page):
         kind, folder, params = split(block.args)
         print(f"{kind} {folder} (commit {commit_of(folder, params)}), line {block.first}:")
-        # The same run under the name h100-runs.sh gives it (an old folder's layout dropped).
+        # The same run under the name gpu-runs.sh gives it (an old folder's layout dropped).
         kept = {k: v for k, v in params.items() if k not in LAYOUT}
         for (where, stem, extra), (_, name, _) in zip(entries(block.args),
                                                       entries(block.args, kept)):
             have = runs.flags_of(runs.load(where, stem), extra)
             stem = stem if where == folder else f"{where}/{stem}"
             if name not in made:
-                print(f"  {stem}: no run of h100-runs.sh")
+                print(f"  {stem}: no run of gpu-runs.sh")
             elif made[name][1] == have:
-                print(f"  {stem}: h100-runs.sh part {made[name][0]}, the same command")
+                print(f"  {stem}: gpu-runs.sh part {made[name][0]}, the same command")
             else:
-                print(f"  {stem}: h100-runs.sh part {made[name][0]} runs another command:"
+                print(f"  {stem}: gpu-runs.sh part {made[name][0]} runs another command:"
                       f"\n    had:  {runs.command(have)}\n    runs: {runs.command(made[name][1])}")
 
 

@@ -58,6 +58,11 @@ layout(buffer_reference, std430, buffer_reference_align = 16) buffer MeshTaskCom
     MeshTaskCommand commands[];
 };
 
+// The visibility buffer.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer VisibilityDrawsRef {
+    VisibilityDraw draws[];
+};
+
 // Culling.
 layout(buffer_reference, std430, buffer_reference_align = 16) buffer DrawCullsRef {
     DrawCull draws[];

@@ -11,12 +11,6 @@ bool partInSet(uint64_t address, uint id) {
     return (UintsRef(address).values[id >> 5] & (1u << (id & 31u))) != 0u;
 }
 
-// From the surface point `worldPos` toward the viewer, not normalised: to the eye in
-// perspective (FrameData::eyePosition.w 1), the one direction of the view in ortho (w 0).
-vec3 toViewer(FrameData frame, vec3 worldPos) {
-    return frame.eyePosition.w != 0.0 ? frame.eyePosition.xyz - worldPos : frame.eyePosition.xyz;
-}
-
 FrameData loadFrame() {
     return FrameRef(push.frameAddress).frame;
 }

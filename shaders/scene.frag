@@ -1,7 +1,7 @@
 #version 460
 // scene.frag - finds the unique part ID of the fragment (the technique's job, here or in an
 // earlier stage), writes it to the ID attachment and shades the fragment with it.
-#if IDV_LOOKUP_IN_MESH
+#if IDV_LOOKUP_IN_MESH || IDV_VISIBILITY
 #extension GL_EXT_mesh_shader : require
 #endif
 #include "prelude.glsl"
@@ -27,7 +27,8 @@ layout(early_fragment_tests) in;
 layout(location = VARYING_WORLD_POS) in vec3 inWorldPos;
 layout(location = VARYING_WORLD_NORMAL) in vec3 inWorldNormal;
 layout(location = VARYING_DRAW_INDEX) flat in uint inDrawIndex;
-#if IDV_LOOKUP_IN_MESH && !IDV_MESH_PART_PER_VERTEX
+#if (IDV_LOOKUP_IN_MESH && !IDV_MESH_PART_PER_VERTEX) || IDV_VISIBILITY
+// The part, or the visibility buffer's payload (shared_visibility.h).
 layout(location = VARYING_PART_INDEX) perprimitiveEXT flat in uint inPartIndex;
 #elif IDV_PART_FROM_EARLIER_STAGE
 layout(location = VARYING_PART_INDEX) flat in uint inPartIndex;
@@ -74,6 +75,18 @@ bool backFacing(FrameData frame) {
 }
 #endif
 
+#if IDV_VISIBILITY
+// The visibility buffer (shared_visibility.h): the mesh shader's payload goes where the other
+// techniques write the part ID; the shading pass (visibility.comp) finds the part, shades and
+// picks. The mesh shader dropped hidden parts; section planes cut here, so that what they cut
+// writes no depth.
+void main() {
+#if IDV_SECTION
+    if (cutAway(loadFrame(), inWorldPos)) discard;
+#endif
+    outPartId = inPartIndex;
+}
+#else
 void main() {
     FrameData frame = loadFrame();
 #if IDV_SECTION
@@ -83,10 +96,7 @@ void main() {
 #endif
     DrawData draw = loadDraw(frame, inDrawIndex);
     ObjectData object = loadObject(frame.objectsAddress, draw.objectIndex);
-    vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
-    if ((frame.flags & FRAME_IGNORE_MATERIALS) != 0u) base = vec3(NEUTRAL_MATERIAL);
-    if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(draw.drawIndex ^ 0x9e3779b9u);
-    if ((frame.flags & FRAME_TINT_LEVELS) != 0u) base = levelTint(draw.lodLevel);
+    vec3 base = drawBase(frame, object, draw.drawIndex, draw.lodLevel);
 #if IDV_NO_ID
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.
 #if IDV_SECTION
@@ -107,12 +117,6 @@ void main() {
 #endif
 #endif
     uint uniquePartId = object.uniquePartOffset + localPart;
-    if (frame.partMaterialsAddress != 0ul && (frame.flags & FRAME_IGNORE_MATERIALS) == 0u &&
-        (frame.flags & (FRAME_COLORIZE_DRAWS | FRAME_TINT_LEVELS)) == 0u) {
-        // A face with a colour of its own (CAD files) shows it instead of its object's.
-        uint own = UintsRef(frame.partMaterialsAddress).values[object.firstPart + localPart];
-        if (own != OBJECT_MATERIAL) base = MaterialsRef(frame.materialsAddress).materials[own].color.rgb;
-    }
     // Before any discard: derivatives need the whole quad.
     float depth = pickDepth(frame);
 #if IDV_HIDE_IN_FRAGMENT
@@ -123,7 +127,7 @@ void main() {
 #endif
     outPartId = uniquePartId;
 
-    base = mix(base, hashColor(uniquePartId), frame.partColorWeight);
+    base = partBase(frame, object, localPart, uniquePartId, base);
     vec3 color = cap ? capColor(base, gl_FragCoord.xy)
                      : headlight(base, inWorldNormal, toViewer(frame, inWorldPos));
 
@@ -136,3 +140,4 @@ void main() {
     outColor = vec4(color, 1.0);
 #endif
 }
+#endif

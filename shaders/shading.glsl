@@ -1,4 +1,12 @@
-// shading.glsl - colour from an ID and the headlight model shared by all techniques.
+// shading.glsl - colour from an ID and the headlight model shared by all techniques: the
+// scene pass's fragment shader and the visibility buffer's shading pass (include buffers.glsl
+// first).
+
+// From the surface point `worldPos` toward the viewer, not normalised: to the eye in
+// perspective (FrameData::eyePosition.w 1), the one direction of the view in ortho (w 0).
+vec3 toViewer(FrameData frame, vec3 worldPos) {
+    return frame.eyePosition.w != 0.0 ? frame.eyePosition.xyz - worldPos : frame.eyePosition.xyz;
+}
 
 // A well-mixed integer hash (PCG output permutation) so neighbouring IDs get unrelated colours.
 uint hashId(uint v) {
@@ -21,8 +29,7 @@ vec3 hashColor(uint id) {
 
 // Light placed at the eye: faces turned to the viewer are bright whatever the orientation,
 // which is what CAD users expect from an inspection view. Two-sided, since CAD exports often
-// have inconsistent winding. `toViewer`: from the point toward the viewer (prelude.glsl's
-// toViewer), so an orthographic view lights every point from its one direction.
+// have inconsistent winding. `toViewer`: from the point toward the viewer (toViewer above), so an orthographic view lights every point from its one direction.
 vec3 headlight(vec3 base, vec3 worldNormal, vec3 toViewer) {
     vec3 n = normalize(worldNormal);
     vec3 v = normalize(toViewer);
@@ -43,4 +50,25 @@ vec3 capColor(vec3 base, vec2 fragCoord) {
 // shows the same ones), far apart in hue so that neighbouring objects read apart.
 vec3 levelTint(uint level) {
     return LEVEL_TINTS[min(level, LOD_MAX_LEVELS - 1u)];
+}
+
+// The colour a draw's surface starts from: its object's material, or what the frame's flags
+// put in its place (one neutral grey, a colour per draw, a colour per level of detail).
+vec3 drawBase(FrameData frame, ObjectData object, uint drawIndex, uint lodLevel) {
+    vec3 base = MaterialsRef(frame.materialsAddress).materials[object.materialIndex].color.rgb;
+    if ((frame.flags & FRAME_IGNORE_MATERIALS) != 0u) base = vec3(NEUTRAL_MATERIAL);
+    if ((frame.flags & FRAME_COLORIZE_DRAWS) != 0u) base = hashColor(drawIndex ^ 0x9e3779b9u);
+    if ((frame.flags & FRAME_TINT_LEVELS) != 0u) base = levelTint(lodLevel);
+    return base;
+}
+
+// The colour a part is shaded in: a face with a colour of its own (CAD files) shows it instead
+// of its object's where materials show, then the part's hash colour is blended over.
+vec3 partBase(FrameData frame, ObjectData object, uint localPart, uint uniquePartId, vec3 base) {
+    if (frame.partMaterialsAddress != 0ul && (frame.flags & FRAME_IGNORE_MATERIALS) == 0u &&
+        (frame.flags & (FRAME_COLORIZE_DRAWS | FRAME_TINT_LEVELS)) == 0u) {
+        uint own = UintsRef(frame.partMaterialsAddress).values[object.firstPart + localPart];
+        if (own != OBJECT_MATERIAL) base = MaterialsRef(frame.materialsAddress).materials[own].color.rgb;
+    }
+    return mix(base, hashColor(uniquePartId), frame.partColorWeight);
 }

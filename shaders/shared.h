@@ -10,6 +10,7 @@
 //                       depth pyramid and the counters (its table is the culling's design)
 //   shared_animate.h    the exploded view's placement pass
 //   shared_id_passes.h  the passes over the resolved ID image and the compute resolve
+//   shared_visibility.h the visibility buffer's payload and its shading pass
 // Layout rule: members are ordered largest-alignment first so that std430 (GLSL) and the C++
 // ABI agree without hidden padding; each header's static_asserts prove it for its structs.
 // Include this file, never a member of the family alone: it defines what they share.
@@ -45,6 +46,8 @@ using dvec4 = glm::dvec4;
 #include "shared_animate.h"
 
 #include "shared_id_passes.h"
+
+#include "shared_visibility.h"
 
 #ifdef __cplusplus
 } // namespace gpu

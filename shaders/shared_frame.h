@@ -104,6 +104,10 @@ struct FrameData {
     uint64_t meshletBitsAddress;
     uint64_t cullStatsAddress;
     uint64_t cullStateAddress;
+    // The visibility buffer (shared_visibility.h), 0 for the other techniques: VisibilityDraw[]
+    // of the draw list, and per meshlet slot of payloads its draw (uint[]).
+    uint64_t visibilityDrawsAddress;
+    uint64_t visibilityBlocksAddress;
     uvec2 pickPixel; // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     vec2 sampleZero; // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
     float time;      // seconds since the start (no shader reads it today)
@@ -160,8 +164,8 @@ struct Material {
 
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 320 && offsetof(FrameData, pickPixel) == 240);
-static_assert(offsetof(FrameData, sectionPlanes) == 272);
+static_assert(sizeof(FrameData) == 336 && offsetof(FrameData, pickPixel) == 256);
+static_assert(offsetof(FrameData, sectionPlanes) == 288);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(ObjectData) == 144 && sizeof(Material) == 16);
 #endif

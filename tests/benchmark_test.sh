@@ -100,7 +100,15 @@ else
 fi
 grep -qE "^clear $ran \(auto: pass [0-9.]+ ms, compute [0-9.]+ ms, (timed now|remembered)\)$" \
     "$work/table.txt" || fail "the table's header lacks the clear path: $(sed -n 2p "$work/table.txt")"
-[[ $(grep -c "\"clear_path\":\"$ran\"" "$work/rows.json") -eq $rows &&
+# A visibility buffer always ends its pass in compute (its shading pass writes the background).
+visRows=$(for r in $(awk '/^renderers:/{r=1;next} /^per-draw modes:/{r=0} r && /visibility buffer/ {print $1}' <<<"$list"); do
+    printf '"renderer":"%s",|' "$r"; done)
+visRows=${visRows%|}
+visCount=0
+[[ -z $visRows ]] || visCount=$(grep -cE "$visRows" "$work/rows.json")
+[[ -z $visRows || $(grep -E "$visRows" "$work/rows.json" | grep -c '"clear_path":"compute"') -eq $visCount ]] ||
+    fail "a visibility buffer's row drew with other than compute"
+[[ $(grep -vE "${visRows:-^$}" "$work/rows.json" | grep -c "\"clear_path\":\"$ran\"") -eq $((rows - visCount)) &&
     $(grep -c "^ \"fixed_cost\":.*\"clear_path\":\"$ran\"" "$work/b.json") -eq 1 ]] ||
     fail "not every row (and the fixed cost) drew with $ran"
 # The fixed cost: once, the first technique in its first mode drawing nothing, culling off;

@@ -142,7 +142,7 @@ out=$(/usr/bin/python3 "$root/scripts/fixed_cost_chart.py" "${files[0]}" -o "$wo
 [[ $? -ne 0 && $out == *"no fixed_cost"* && ! -e $work/old.png ]] ||
     fail "a run without a fixed cost: $out"
 # Every table of docs/benchmarks.md is what scripts/bench_tables.py prints from the run folder
-# it cites, and every run the tables read is one scripts/h100-runs.sh makes.
+# it cites, and every run the tables read is one scripts/gpu-runs.sh makes.
 /usr/bin/python3 "$root/scripts/bench_tables.py" --check "$root/docs/benchmarks.md" \
     >"$work/tables.txt" 2>&1 || fail "docs/benchmarks.md: $(cat "$work/tables.txt")"
 # A copy of the page with one number of a table changed fails, naming the number.

@@ -79,7 +79,8 @@ ClearTiming timeClearPaths(vk::Device& device, const ScenePass& pass, const Reso
 
 } // namespace
 
-ClearPath Renderer::clearPathFor(ClearPath wanted, uint32_t msaa) {
+ClearPath Renderer::clearPathFor(ClearPath wanted, uint32_t msaa, const Technique& technique) {
+    if (technique.isVisibilityBuffer()) return ClearPath::Compute;
     if (wanted != ClearPath::Auto) return wanted;
     if (auto known = clearTimings_.find(msaa); known != clearTimings_.end())
         return known->second.faster();

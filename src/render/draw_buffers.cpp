@@ -75,6 +75,8 @@ uint32_t cullBoxes(const scene::Scene& scene, const SceneGpu& sceneGpu, const Dr
 // for the per-part modes of a large scene are tens of bytes per part.
 void keepOnlyWhatFramesRead(DrawList& list, bool indirect) {
     std::vector<uint8_t>().swap(list.idBytes);
+    std::vector<gpu::VisibilityDraw>().swap(list.visibilityDraws);
+    std::vector<uint32_t>().swap(list.visibilityBlocks);
     if (!indirect) return;
     std::vector<DrawItem>().swap(list.ranges);
     std::vector<gpu::DrawData>().swap(list.data);
@@ -109,6 +111,10 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
     const VkBufferUsageFlags shaderRead =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     if (!list.idBytes.empty()) b->ids = upload.add(list.idBytes, shaderRead, "technique ID data");
+    if (!list.visibilityDraws.empty()) {
+        b->visibilityDraws = upload.add(list.visibilityDraws, shaderRead, "visibility draws");
+        b->visibilityBlocks = upload.add(list.visibilityBlocks, shaderRead, "visibility blocks");
+    }
 
     const bool indirect = key.mode->indirect && !list.data.empty();
     if (indirect) b->draws = upload.add(list.data, shaderRead, "per-draw data");

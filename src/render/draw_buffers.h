@@ -23,6 +23,9 @@ struct DrawBuffers {
     DrawList list;
     RenderStats stats; // of the whole list, worked out before it was let go of
     vk::Buffer ids, draws, indirect, drawIndices;
+    // The visibility buffer: its draws and the draw of each meshlet slot of payloads
+    // (DrawList::visibilityDraws, visibilityBlocks); empty for the other techniques.
+    vk::Buffer visibilityDraws, visibilityBlocks;
     // The derived geometry the draws read, if the technique draws one.
     std::shared_ptr<const PartVertexBuffers> partVertices;
     std::shared_ptr<const MeshletBuffers> meshlets;

@@ -197,6 +197,26 @@ std::vector<DrawItem> drawRanges(const scene::Scene& scene, const PipelineKey& k
     return all;
 }
 
+// The visibility buffer's payloads (shared_visibility.h): each draw's meshlets numbered from a
+// base, VIS_MESHLET_PAYLOADS apiece, the draw of each meshlet slot, and what the mesh shader
+// and the shading pass read of each draw. Payloads are 32 bits and BACKGROUND_ID is none.
+void numberTriangles(DrawList& list) {
+    const uint64_t slot = gpu::VIS_MESHLET_PAYLOADS;
+    uint64_t next = 0;
+    for (uint32_t i = 0; i < list.ranges.size(); ++i) {
+        const gpu::DrawData& data = list.data[i];
+        list.visibilityDraws.push_back({data.objectIndex, data.idsOffset, data.idsWidth,
+                                        data.firstElement, uint32_t(next), i, data.lodLevel, 0});
+        next += list.meshletCounts[i] * slot;
+        if (next >= gpu::BACKGROUND_ID)
+            throw vk::Error("visbuffer names a triangle in 32 bits, and the meshlets of this "
+                            "scene (every level of detail included) hold more than 33 million: "
+                            "use another technique");
+        list.visibilityBlocks.resize(next / slot, i);
+    }
+    if (list.visibilityBlocks.empty()) list.visibilityBlocks.push_back(0); // a buffer to address
+}
+
 } // namespace
 
 DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const DrawSettings& draws,
@@ -240,6 +260,7 @@ DrawList buildDrawList(const scene::Scene& scene, const PipelineKey& key, const 
         }
         list.data.push_back(data);
     }
+    if (technique.isVisibilityBuffer()) numberTriangles(list);
     return list;
 }
 

@@ -31,6 +31,10 @@ struct DrawList {
     std::vector<uint8_t> idBytes;    // the technique's ID buffer; empty for IdBuffer::None
     // Primitives::Meshlets: mesh workgroups of each draw (its geometry's meshlet count).
     std::vector<uint32_t> meshletCounts;
+    // The visibility buffer (shared_visibility.h): what its mesh shader and shading pass read
+    // of each draw, and the draw of each meshlet slot of payloads.
+    std::vector<gpu::VisibilityDraw> visibilityDraws;
+    std::vector<uint32_t> visibilityBlocks;
 };
 
 // The geometry some techniques draw instead of the scene's indices: its per-geometry

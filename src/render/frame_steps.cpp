@@ -106,6 +106,8 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
         frame.drawIndicesAddress = draws_->drawIndices.address();
         frame.meshletBoxesAddress = draws_->meshlets->boxes.address();
     }
+    frame.visibilityDrawsAddress = draws_->visibilityDraws.address();
+    frame.visibilityBlocksAddress = draws_->visibilityBlocks.address();
     frame.selectedAddress = selected_->address();
     frame.hiddenAddress = hidden_->address();
     const CullBuffers& cull = *draws_->cull;
@@ -127,10 +129,14 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
 
 void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassPart part,
                          VkDeviceAddress frame, bool clearColor) const {
-    // The compute path's pass ignores the values of what it does not clear.
+    // The compute path's pass ignores the values of what it does not clear. X-ray's layers
+    // over a visibility buffer add up over black, with alpha for what shows through of the
+    // picture its shading pass draws under them.
     std::array<VkClearValue, 3> clears{};
-    clears[0].color = {
-        {backgroundColor.r, backgroundColor.g, backgroundColor.b, backgroundColor.a}};
+    const glm::vec4 under = pipeline_->key.technique->isVisibilityBuffer()
+                                ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
+                                : backgroundColor;
+    clears[0].color = {{under.r, under.g, under.b, under.a}};
     clears[1].color.uint32[0] = gpu::BACKGROUND_ID;
     clears[2].depthStencil = {0.0f, 0}; // reversed depth: 0 is the far plane
     auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
@@ -336,6 +342,13 @@ void Renderer::recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) cons
     vkCmdCopyBuffer(cmd, draws_->cull->stats.handle(), slot.cullReadback.handle(), 1, &counters);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+}
+
+gpu::VisibilityPush Renderer::visibilityPush(VkDeviceAddress frame, bool xray) const {
+    gpu::VisibilityPush push{};
+    push.frameAddress = frame;
+    push.flags = (xray ? gpu::VIS_XRAY : 0u) | (settings_.section.any() ? gpu::VIS_SECTION : 0u);
+    return push;
 }
 
 } // namespace render

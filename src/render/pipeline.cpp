@@ -127,6 +127,7 @@ blendAttachments(const ScenePipelineInfo& scene) {
         attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     if (!scene.writeIds) blend[1].colorWriteMask = 0;
+    if (!scene.writeColor) blend[0].colorWriteMask = 0;
     if (scene.translucent) {
         // Over: the fragment's alpha of its colour, the rest of what is there; the picture
         // keeps alpha 1.
@@ -135,7 +136,10 @@ blendAttachments(const ScenePipelineInfo& scene) {
         blend[0].dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
         blend[0].colorBlendOp = VK_BLEND_OP_ADD;
         blend[0].srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-        blend[0].dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        // Over the visibility buffer's black, alpha keeps what shows through of the picture
+        // the shading pass draws later; over a picture, alpha stays 1.
+        blend[0].dstAlphaBlendFactor =
+            scene.accumulate ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
         blend[0].alphaBlendOp = VK_BLEND_OP_ADD;
     }
     return blend;

@@ -32,8 +32,12 @@ struct ScenePipelineInfo {
     bool drawIndexAttribute = false; // the instanced uint attribute LOC_DRAW_INDEX (mdi-attribute)
     bool mesh = false;               // a mesh shader: no vertex input at all
     bool writeIds = true;            // false masks the ID attachment (the floors)
+    bool writeColor = true;          // false masks the colour attachment (the visibility buffer)
     // Blends its colour over the picture and writes no depth (X-ray's pass, render/xray.h).
     bool translucent = false;
+    // With `translucent`: X-ray's colour adds up over black and alpha keeps what shows
+    // through (PipelineKey::overVisibility).
+    bool accumulate = false;
 };
 
 // A compute pipeline from one shader file (with `defines`), and the layout: `pushBytes` of push

@@ -25,6 +25,7 @@ std::string describePipeline(const PipelineKey& key) {
     if (key.hiding) text += ", hiding parts";
     if (key.section) text += ", section";
     if (key.translucent) text += ", translucent";
+    if (key.overVisibility) text += " over a visibility buffer";
     if (key.clear == ClearPath::Compute) text += ", compute resolve"; // MSAA's other pass
     if (key.taskCulling || key.runOffsets) text += ", culling";
     return text;
@@ -183,6 +184,8 @@ std::shared_ptr<const Pipeline> PipelineCache::build(const PipelineKey& key, VkR
     info.drawIndexAttribute = key.mode->drawIndexAttribute && !info.mesh;
     info.writeIds = !key.technique->isFloor();
     info.translucent = key.translucent;
+    info.writeColor = !key.technique->isVisibilityBuffer();
+    info.accumulate = key.overVisibility;
     auto pipeline = std::make_shared<Pipeline>();
     pipeline->key = key;
     pipeline->handle = createScenePipeline(driverCache_, info, stages, baseName(key));

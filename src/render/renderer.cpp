@@ -42,7 +42,8 @@ Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler,
       animator_(std::make_shared<Animator>(device, compiler, pipelines_.driverCache())),
       idPasses_(std::make_shared<IdPasses>(device, compiler, pipelines_.driverCache())),
       culler_(std::make_shared<CullPasses>(device, compiler, pipelines_.driverCache())),
-      resolver_(std::make_shared<Resolver>(device, compiler, pipelines_.driverCache())) {
+      resolver_(std::make_shared<Resolver>(device, compiler, pipelines_.driverCache())),
+      visibility_(std::make_shared<VisibilityShading>(device, compiler, pipelines_.driverCache())) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -119,7 +120,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     upload.submit(); // nothing when nothing was added
     pipeline_ = std::move(pipeline);
     translucentPipeline_ = std::move(translucentPipeline);
-    clearPath_ = clearPathFor(settings.clear, key.msaa);
+    clearPath_ = clearPathFor(settings.clear, key.msaa, technique);
     if (newScene) {
         translucent_.reset();
         translucentSet_.reset();
@@ -147,7 +148,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
 PipelineKey Renderer::keyFor(const scene::Scene& scene, const RenderSettings& settings,
                              bool newScene) {
     PipelineKey wanted = settings.pipeline;
-    wanted.clear = clearPathFor(settings.clear, wanted.msaa);
+    wanted.clear = clearPathFor(settings.clear, wanted.msaa, *wanted.technique);
     wanted.hiding = !newScene && !hiddenSet_.empty(); // a new scene starts with none hidden
     const CullPlan plan = cullPlan(*wanted.technique, *wanted.mode, settings.culling.mode,
                                    settings.lod.errorPixels > 0.0f);
@@ -269,9 +270,9 @@ void Renderer::setTranslucent(const scene::Scene& scene, const scene::PartSet& p
     translucentPipeline_ = std::move(pipeline);
 }
 
-// The draw list depends on the technique's split and ID data, the search batch it reads, the
-// mode's buffers, the draw settings and whether levels of detail are on; a switch that changes
-// none of them keeps it.
+// The draw list depends on the technique's split, ID data and primitives, whether it numbers
+// payloads, the search batch it reads, the mode's buffers, the draw settings and whether levels
+// of detail are on; a switch that changes none of them keeps it.
 bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws,
                                bool levels) const {
     if (!draws_) return false;
@@ -279,6 +280,8 @@ bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws
     return built.technique->split == key.technique->split &&
            built.technique->ids == key.technique->ids &&
            built.technique->primitives == key.technique->primitives &&
+           // The visibility buffer's lists number the payloads too.
+           built.technique->isVisibilityBuffer() == key.technique->isVisibilityBuffer() &&
            built.searchBatch == key.searchBatch && built.mode == key.mode &&
            built.taskCulling == key.taskCulling && draws_->inputs == draws &&
            draws_->levels == levels;
@@ -305,7 +308,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     for (const std::shared_ptr<const void>& used :
          std::initializer_list<std::shared_ptr<const void>>{
              pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, resolver_,
-             selected_, hidden_, target, translucentPipeline_})
+             visibility_, selected_, hidden_, target, translucentPipeline_})
         slot.keep(used);
     slot.scenePass = true;
     composed_.reset(); // the images the composition reads are drawn again
@@ -382,7 +385,9 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
         recordTranslucent(cmd);
         vkCmdEndRenderPass(cmd);
     }
-    if (compute)
+    if (draws_->key.technique->isVisibilityBuffer())
+        visibility_->record(cmd, targets, visibilityPush(frame, clearColor));
+    else if (compute)
         resolver_->record(cmd, targets,
                           (clearColor ? gpu::RESOLVE_KEEP_COLOR : 0u) |
                               (draws_->key.technique->isFloor() ? gpu::RESOLVE_NO_IDS : 0u));

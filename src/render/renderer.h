@@ -25,6 +25,7 @@
 #include "render/scene_gpu.h"
 #include "render/settings.h"
 #include "render/targets.h"
+#include "render/visibility.h"
 #include "render/xray.h"
 #include "vk/shader_compiler.h"
 
@@ -196,8 +197,9 @@ class Renderer {
     // The effective key `settings` select; throws for what this device or scene cannot draw.
     PipelineKey keyFor(const scene::Scene& scene, const RenderSettings& settings, bool newScene);
     // `wanted`, or for Auto the faster path at `msaa` samples: timed on first need, or read
-    // from the file beside the pipeline cache (clear_timer.cpp).
-    ClearPath clearPathFor(ClearPath wanted, uint32_t msaa);
+    // from the file beside the pipeline cache (clear_timer.cpp). The visibility buffer always
+    // takes the compute path: its shading pass writes the background.
+    ClearPath clearPathFor(ClearPath wanted, uint32_t msaa, const Technique& technique);
     // The drawn pipeline's key with parts hidden or not.
     PipelineKey hidingKey(bool hiding) const;
     void bindGeometry(VkCommandBuffer cmd) const;
@@ -213,6 +215,8 @@ class Renderer {
     void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
     void recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const;
     void recordTranslucent(VkCommandBuffer cmd) const;
+    // The visibility buffer's shading pass: the frame's and the draw list's addresses.
+    gpu::VisibilityPush visibilityPush(VkDeviceAddress frame, bool xray) const;
     void recordPickReset(VkCommandBuffer cmd) const;
     void recordPickCopies(VkCommandBuffer cmd, const FrameSlot& slot) const;
     void recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneTargets& targets,
@@ -227,6 +231,7 @@ class Renderer {
     std::shared_ptr<const IdPasses> idPasses_;
     std::shared_ptr<const CullPasses> culler_;
     std::shared_ptr<const Resolver> resolver_;
+    std::shared_ptr<const VisibilityShading> visibility_;
     // gpu::PickData, shared by all frames in flight (ordered by barriers).
     std::shared_ptr<const vk::Buffer> pick_;
 

@@ -9,21 +9,22 @@
 
 namespace render {
 
-Resolver::Resolver(vk::Device& device, const vk::ShaderCompiler& compiler,
-                   const DiskPipelineCache& cache)
-    : device_(device) {
+ComputeEndPass::ComputeEndPass(vk::Device& device, const vk::ShaderCompiler& compiler,
+                               const DiskPipelineCache& cache, const char* file, uint32_t pushBytes,
+                               const std::string& name)
+    : device_(device), name_(name), pushBytes_(pushBytes) {
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     images_ = pushDescriptorLayout(device, {sampled, sampled, sampled, storage, storage},
-                                   "resolve images");
+                                   name + " images");
     for (const bool msaa : {false, true})
-        resolve_[msaa] = createComputePipeline(
-            device, compiler, cache, "resolve.comp", sizeof(gpu::ResolvePush), images_.get(),
-            msaa ? "compute resolve (MSAA)" : "compute background",
-            {{"IDV_RESOLVE_MSAA", msaa ? "1" : "0"}});
+        pipelines_[msaa] = createComputePipeline(device, compiler, cache, file, pushBytes,
+                                                 images_.get(), name + (msaa ? " (MSAA)" : ""),
+                                                 {{"IDV_RESOLVE_MSAA", msaa ? "1" : "0"}});
 }
 
-void Resolver::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool before) const {
+void ComputeEndPass::transition(VkCommandBuffer cmd, const SceneTargets& targets,
+                                bool before) const {
     const bool msaa = targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT;
     std::array<VkImageMemoryBarrier, 2> barriers{};
     const std::array<VkImage, 2> images = {targets.ids().handle(), targets.shaded().handle()};
@@ -33,7 +34,7 @@ void Resolver::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
         barriers[i] =
             before
                 ? vk::colorImageBarrier(images[i], msaa ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                                        VK_ACCESS_SHADER_WRITE_BIT,
+                                        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
                                         msaa ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_GENERAL,
                                         VK_IMAGE_LAYOUT_GENERAL)
                 : vk::colorImageBarrier(images[i], VK_ACCESS_SHADER_WRITE_BIT,
@@ -51,8 +52,9 @@ void Resolver::transition(VkCommandBuffer cmd, const SceneTargets& targets, bool
                          static_cast<uint32_t>(barriers.size()), barriers.data());
 }
 
-void Resolver::record(VkCommandBuffer cmd, const SceneTargets& targets, uint32_t flags) const {
-    vk::CmdLabel label(device_.debug(), cmd, "compute resolve");
+void ComputeEndPass::record(VkCommandBuffer cmd, const SceneTargets& targets,
+                            const void* push) const {
+    vk::CmdLabel label(device_.debug(), cmd, name_.c_str());
     const bool msaa = targets.pass().samples() != VK_SAMPLE_COUNT_1_BIT;
     transition(cmd, targets, true);
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
@@ -64,21 +66,26 @@ void Resolver::record(VkCommandBuffer cmd, const SceneTargets& targets, uint32_t
          {VK_NULL_HANDLE, targets.depth().view(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}},
         {3, storage, {VK_NULL_HANDLE, targets.ids().view(), VK_IMAGE_LAYOUT_GENERAL}},
         {4, storage, {VK_NULL_HANDLE, targets.shaded().view(), VK_IMAGE_LAYOUT_GENERAL}}};
-    if (msaa) { // 1x reads depth alone
+    if (msaa) { // at 1x the pass drew into the single-sample images themselves
         images.push_back({1, sampled, {VK_NULL_HANDLE, targets.multisampledIds().view(), read}});
         images.push_back({2, sampled, {VK_NULL_HANDLE, targets.multisampledColor().view(), read}});
     }
-    const ComputePipeline& pass = resolve_[msaa];
+    const ComputePipeline& pass = pipelines_[msaa];
     bindWithImages(device_, cmd, pass, images);
+    vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_, push);
+    const uint32_t tile = gpu::ID_PASS_TILE;
+    const VkExtent2D extent = targets.extent();
+    vkCmdDispatch(cmd, (extent.width + tile - 1) / tile, (extent.height + tile - 1) / tile, 1);
+    transition(cmd, targets, false);
+}
+
+void Resolver::record(VkCommandBuffer cmd, const SceneTargets& targets, uint32_t flags) const {
     gpu::ResolvePush push{};
     push.background = backgroundColor;
     push.extent = {targets.extent().width, targets.extent().height};
     push.samples = uint32_t(targets.pass().samples());
     push.flags = flags;
-    vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-    const uint32_t tile = gpu::ID_PASS_TILE;
-    vkCmdDispatch(cmd, (push.extent.x + tile - 1) / tile, (push.extent.y + tile - 1) / tile, 1);
-    transition(cmd, targets, false);
+    pass_.record(cmd, targets, &push);
 }
 
 } // namespace render

@@ -12,16 +12,19 @@
 
 namespace render {
 
-// One per renderer, with both its pipelines (1x and multisampled) made up front.
-class Resolver {
+// A compute pass that ends the compute path's scene pass (this resolve, or the visibility
+// buffer's shading, render/visibility.h): one pipeline at 1x, one multisampled (its shader
+// built with IDV_RESOLVE_MSAA), over a tile of ID_PASS_TILE pixels per workgroup. It reads
+// depth and, with MSAA, the multisampled IDs and colour (bindings 0-2); it reads and writes
+// the single-sample IDs and colour (3, 4), which afterwards are in TRANSFER_SRC_OPTIMAL as the
+// pass path leaves them.
+class ComputeEndPass {
   public:
-    Resolver(vk::Device& device, const vk::ShaderCompiler& compiler,
-             const DiskPipelineCache& cache);
-
-    // After the compute path's scene pass (whole, or its second half) into `targets`.
-    // `flags`: gpu::RESOLVE_KEEP_COLOR when the pass cleared colour (X-ray), RESOLVE_NO_IDS
-    // when its pipeline wrote no IDs (the floors).
-    void record(VkCommandBuffer cmd, const SceneTargets& targets, uint32_t flags) const;
+    ComputeEndPass(vk::Device& device, const vk::ShaderCompiler& compiler,
+                   const DiskPipelineCache& cache, const char* file, uint32_t pushBytes,
+                   const std::string& name);
+    // `push`: `pushBytes` of the shader's push block.
+    void record(VkCommandBuffer cmd, const SceneTargets& targets, const void* push) const;
 
   private:
     // Around the dispatch: the single-sample images to GENERAL, after the pass's writes (1x,
@@ -30,8 +33,26 @@ class Resolver {
     void transition(VkCommandBuffer cmd, const SceneTargets& targets, bool before) const;
 
     vk::Device& device_;
+    std::string name_;
+    uint32_t pushBytes_;
     vk::Handle<VkDescriptorSetLayout> images_; // depth, sample IDs, sample colours, IDs, colour
-    ComputePipeline resolve_[2];               // 1x, multisampled
+    ComputePipeline pipelines_[2];             // 1x, multisampled
+};
+
+// One per renderer, with both its pipelines made up front.
+class Resolver {
+  public:
+    Resolver(vk::Device& device, const vk::ShaderCompiler& compiler, const DiskPipelineCache& cache)
+        : pass_(device, compiler, cache, "resolve.comp", sizeof(gpu::ResolvePush),
+                "compute resolve") {}
+
+    // After the compute path's scene pass (whole, or its second half) into `targets`.
+    // `flags`: gpu::RESOLVE_KEEP_COLOR when the pass cleared colour (X-ray), RESOLVE_NO_IDS
+    // when its pipeline wrote no IDs (the floors).
+    void record(VkCommandBuffer cmd, const SceneTargets& targets, uint32_t flags) const;
+
+  private:
+    ComputeEndPass pass_;
 };
 
 } // namespace render

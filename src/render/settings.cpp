@@ -14,6 +14,7 @@ PipelineKey PipelineKey::effective(bool devicePassthrough) const {
     key.taskCulling = key.taskCulling && technique->usesMeshShader();
     key.runOffsets = key.runOffsets && technique->readsPrimitiveId() && mode->indirect;
     if (key.msaa == 1) key.clear = ClearPath::Pass;
+    key.overVisibility = key.overVisibility && key.translucent;
     return key;
 }
 

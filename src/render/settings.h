@@ -69,6 +69,11 @@ struct PipelineKey {
     // Nor this: the X-ray pass's pipeline (render/xray.h), the floor's shaders drawing
     // translucent (IDV_TRANSLUCENT): blended colour, no depth or ID written.
     bool translucent = false;
+    // Nor this: X-ray's pass beside the visibility buffer, whose picture is shaded after the
+    // pass: the translucent colour adds up over black, and what shows through of the picture
+    // (the product of one minus each layer's alpha) in alpha, for the shading pass to put
+    // the picture under (render/visibility.h).
+    bool overVisibility = false;
     // Nor this: the clear path the renderer draws with (never Auto). With MSAA the compute
     // path's scene pass resolves nothing, which makes it another render pass for pipelines;
     // at 1x the two are compatible and effective() drops it.

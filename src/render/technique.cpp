@@ -66,6 +66,12 @@ const std::vector<Technique>& techniques() {
          "the fragment shader reads it flat from each triangle's first (provoking) vertex",
          "techniques/packed_ids.glsl", Mesh, IdBuffer::MeshletVertexPartIds, DrawSplit::PerObject,
          Primitives::Meshlets},
+        {"visbuffer",
+         "visibility buffer: mesh-fs's meshlets write each sample's triangle (a per-primitive "
+         "payload) and no colour; a compute pass finds the part from the part per meshlet "
+         "triangle, shades and resolves",
+         "techniques/packed_ids.glsl", Shade, IdBuffer::MeshletTrianglePartIds,
+         DrawSplit::PerObject, Primitives::Meshlets},
         {"no-id",
          "reference floor: one draw per object, no part ID in any stage (material colour "
          "only, ID attachment masked)",

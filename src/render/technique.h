@@ -40,8 +40,10 @@ enum class DrawSplit { PerPart, PerObject, PerBatch };
 
 // Where the part lookup runs: the fragment shader (from gl_PrimitiveID), a geometry shader
 // once per triangle, the vertex shader once per vertex (handed on flat), or the mesh shader
-// once per triangle (a per-primitive output). None: no part ID at all, a benchmark floor.
-enum class LookupStage { Fragment, Geometry, Vertex, Mesh, None };
+// once per triangle (a per-primitive output). Shade: a compute pass after the scene pass, per
+// sample, from the visibility buffer's payload (render/visibility.h), which also shades.
+// None: no part ID at all, a benchmark floor.
+enum class LookupStage { Fragment, Geometry, Vertex, Mesh, Shade, None };
 
 // Parameters of the N-ary search (nsearch-*), compiled into the shader as IDV_NSEARCH_*
 // defines, so each set is its own pipeline (the loop unrolls over n - 1 independent loads).
@@ -70,6 +72,9 @@ struct Technique {
     bool isFloor() const { return stage == LookupStage::None; }
     bool readsSearchBatch() const { return ids == IdBuffer::PartTriangleCounts; }
     bool usesMeshShader() const { return primitives == Primitives::Meshlets; }
+    // The scene pass writes a triangle's payload per sample and no colour; a compute pass
+    // finds the part and shades (render/visibility.h).
+    bool isVisibilityBuffer() const { return stage == LookupStage::Shade; }
     bool usesPartVertices() const { return primitives != Primitives::SceneIndices; }
     // A stage finds the part from gl_PrimitiveID, which counts from the start of a draw
     // command: drawn by cluster runs, it adds the run's offset (PipelineKey::runOffsets).

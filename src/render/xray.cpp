@@ -48,6 +48,7 @@ PipelineKey translucentKey(const PipelineKey& drawn) {
     key.clear = drawn.clear; // the pass it draws in
     key.section = drawn.section;
     key.translucent = true;
+    key.overVisibility = drawn.technique->isVisibilityBuffer();
     return key.effective(false);
 }
 

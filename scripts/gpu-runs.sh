@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# h100-runs.sh [OPTIONS] IDVIEW OUT - makes the run folder that docs/benchmarks.md's tables
+# gpu-runs.sh [OPTIONS] IDVIEW OUT - makes the run folder that docs/benchmarks.md's tables
 # need: every `idview --headless --benchmark` run the page cites, with exactly the flags it
 # cites, each into OUT/NAME.json (its table on stdout in NAME.txt, its progress in NAME.log),
 # and a line per run in OUT/runs.txt (name, seconds, command; runs-partN.txt with --part, so
 # that the parts' files unpack side by side into one folder). IDVIEW is the program or the
 # bundle's `run` (shared/gpu/README.md); Motor-c.brep is read from --models.
 #
-#   --part N        only the runs of part N (1 to 4; default: all), each part one command
+#   --part N        only the runs of part N (1 to 5; default: all), each part one command
 #                   of the device, under 9 minutes (the estimates below)
 #   --only A,B      only the runs named
 #   --models DIR    where Motor-c.brep is (default: IDVIEW's folder/models)
@@ -21,7 +21,7 @@
 # that fails is said, the others go on, and the script exits 1 at the end.
 #
 # On the device (one command a part; 30 minutes of device time a session, 10 per command):
-#   mkdir -p /tmp/g && tar -xzf .gpu.tgz -C /tmp/g && scripts/h100-runs.sh --part 1 \
+#   mkdir -p /tmp/g && tar -xzf .gpu.tgz -C /tmp/g && scripts/gpu-runs.sh --part 1 \
 #     --commit HASH --pack $OUT/part1.tgz /tmp/g/.gpu/run /tmp/runs
 # then unpack the parts into docs/benchmarks/h100-DATE/ and print the page's tables from it:
 #   scripts/bench_tables.py --write --from h100-DATE
@@ -43,7 +43,7 @@ while [[ $# -gt 2 || ${1:-} == --list ]]; do
     --pack) pack=$2; shift 2 ;;
     --extra) extra=$2; shift 2 ;;
     --list) list=1; shift ;;
-    *) echo "h100-runs: unknown option '$1'" >&2; exit 2 ;;
+    *) echo "gpu-runs: unknown option '$1'" >&2; exit 2 ;;
     esac
 done
 if [[ $# -ne 2 ]]; then
@@ -71,16 +71,16 @@ run() {
     line=${line//$thirds/\$thirds} # the page writes the thousand IDs so
     if [[ $list -eq 1 ]]; then echo "part $p $name: $line"; return 0; fi
     if [[ -f $out/$name.json ]]; then
-        echo "h100-runs: $name.json is there, skipped" >&2
+        echo "gpu-runs: $name.json is there, skipped" >&2
         return 0
     fi
-    echo "h100-runs: part $p $name: $line" >&2
+    echo "gpu-runs: part $p $name: $line" >&2
     local start=$SECONDS status=0
     # shellcheck disable=SC2086 # --extra is words on purpose
     "$idview" --headless --benchmark "$@" $extra --benchmark-out "$out/$name.json" \
         >"$out/$name.txt" 2>"$out/$name.log" || status=$?
     if [[ $status -ne 0 ]]; then
-        echo "h100-runs: $name failed (exit $status): $(tail -1 "$out/$name.log")" >&2
+        echo "gpu-runs: $name failed (exit $status): $(tail -1 "$out/$name.log")" >&2
         echo "$name: failed (exit $status) after $((SECONDS - start)) s: $line" >>"$log"
         rm -f "$out/$name.json"
         failed=$((failed + 1))
@@ -144,6 +144,19 @@ for copies in 1 2 4 8; do
     run 3 copies$copies --msaa 4 --copies $copies --frames 100 --renderer per-draw,tri-fs \
         --mode push,mdi-baseinstance --culling off
 done
+# Part 5 (about 4 min): the visibility buffer against vertex-fs and their floor, each row in
+# the same run: the benchmark view, 16 copies, the dolly path and Motor-c, culling off and
+# occlusion, levels of detail off and at 1 px.
+vis=(--renderer no-id,vertex-fs,visbuffer --mode mdi-baseinstance --culling off,occlusion
+    --lod-error 0,1)
+for msaa in 1 4; do
+    run 5 "vis-view-$msaa" --msaa "$msaa" --frames 60 "${vis[@]}"
+    run 5 "vis-copies16-$msaa" --msaa "$msaa" --copies 16 --frames 30 "${vis[@]}"
+    run 5 "vis-dolly-$msaa" --msaa "$msaa" --frames 120 --camera-path dolly "${vis[@]}"
+    run 5 "vis-motor-$msaa" --msaa "$msaa" --model "$models/Motor-c.brep" --copies 1 \
+        --frames 60 "${vis[@]}"
+done
+
 # Part 4 (about 4.5 min): the ID-image passes, edges and the visible part count (68 s in
 # all), and hidden and isolated parts (95 s in all).
 for msaa in 1 4; do
@@ -165,7 +178,7 @@ for msaa in 1 4; do
 done
 [[ $list -eq 1 ]] && exit 0
 if [[ $failed -gt 0 ]]; then
-    echo "h100-runs: $failed run(s) failed, in $out ($(basename "$log") says which)" >&2
+    echo "gpu-runs: $failed run(s) failed, in $out ($(basename "$log") says which)" >&2
     exit 1
 fi
-echo "h100-runs: done, in $out" >&2
+echo "gpu-runs: done, in $out" >&2
