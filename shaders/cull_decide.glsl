@@ -27,7 +27,7 @@ bool hasHistory(FrameData frame, DrawData draw, DrawCull c) {
 // The first pass of a frame (NONE, FRUSTUM or EARLY): the draw's place in the view.
 uint decideFirst(FrameData frame, uint i, uint before) {
     if (frame.lodErrorPixels > 0.0 && (before & CULL_OTHER_LEVEL) != 0u) return CULL_OTHER_LEVEL;
-    if (cull.phase == CULL_PHASE_NONE) return CULL_DRAW_NOW;
+    if ((passBits() & CULL_PASS_TESTS) == 0u) return CULL_DRAW_NOW;
     DrawData draw = listDraw(i);
     ObjectData object = ObjectsRef(frame.objectsAddress).objects[draw.objectIndex];
     bool hidden = (frame.flags & FRAME_HIDING) != 0u &&
@@ -38,8 +38,8 @@ uint decideFirst(FrameData frame, uint i, uint before) {
     BoxView view = viewBox(frame, object.world, c.boxMin, c.boxMax);
     if (view.outside) return 0u;
     uint bits = CULL_IN_FRUSTUM | (view.inside ? CULL_INSIDE_FRUSTUM : 0u);
-    if (cull.phase == CULL_PHASE_FRUSTUM || hasHistory(frame, draw, c))
-        bits |= (cull.phase == CULL_PHASE_EARLY ? CULL_EARLY : 0u) | CULL_DRAW_NOW;
+    if (!earlyStep() || hasHistory(frame, draw, c))
+        bits |= (earlyStep() ? CULL_EARLY : 0u) | CULL_DRAW_NOW;
     return bits;
 }
 

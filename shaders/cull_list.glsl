@@ -35,8 +35,17 @@ uint drawOfPair(uint pair) {
     return UintsRef(cull.pairsAddress).values[pair];
 }
 
+// What this pass's steps do: its phase's row of shared_cull.h's table (CULL_PASS_*).
+uint passBits() {
+    return CULL_PHASES[cull.phase].pass;
+}
+
 bool lateStep() {
-    return cull.phase == CULL_PHASE_LATE;
+    return (passBits() & CULL_PASS_LATE) != 0u;
+}
+
+bool earlyStep() {
+    return (passBits() & CULL_PASS_EARLY) != 0u;
 }
 
 bool meshDraws() {

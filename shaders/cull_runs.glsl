@@ -49,21 +49,17 @@ void runClustersStep(uint pair) {
     bool candidate;
     if (lateStep())
         candidate = (bits & CULL_RETEST) != 0u;
-    else if (cull.phase == CULL_PHASE_EARLY)
-        candidate =
-            (bits & CULL_DRAW_NOW) != 0u && earlyCluster(pair, listDraw(d).objectIndex, before);
     else
-        candidate = (bits & CULL_DRAW_NOW) != 0u;
+        candidate = (bits & CULL_DRAW_NOW) != 0u &&
+                    (!earlyStep() || earlyCluster(pair, listDraw(d).objectIndex, before));
     bool passed = candidate && clusterPasses(cullFrame(), d, bits, pair);
-    uint after;
-    if (cull.phase == CULL_PHASE_EARLY) {
-        after = (before & CULL_PAIR_HISTORY) | (passed ? CULL_PAIR_EARLY | CULL_PAIR_NOW : 0u);
-    } else if (lateStep()) {
-        bool now = passed && (before & CULL_PAIR_EARLY) == 0u;
-        after = (passed ? CULL_PAIR_HISTORY : 0u) | (now ? CULL_PAIR_NOW : 0u);
-    } else {
-        after = passed ? CULL_PAIR_HISTORY | CULL_PAIR_NOW : 0u;
-    }
+    // The history is what passed where the pass makes it, else kept; the late pass lists
+    // only what the early one did not draw.
+    uint history = (passBits() & CULL_PASS_HISTORY) != 0u ? (passed ? CULL_PAIR_HISTORY : 0u)
+                                                          : before & CULL_PAIR_HISTORY;
+    bool now = passed && (!lateStep() || (before & CULL_PAIR_EARLY) == 0u);
+    uint after =
+        history | (passed && earlyStep() ? CULL_PAIR_EARLY : 0u) | (now ? CULL_PAIR_NOW : 0u);
     if (after != before) cullState().values[pairWord(pair)] = after;
 }
 
@@ -100,7 +96,7 @@ void runsCountStep(uint lane, uint pair) {
         uint d = drawOfPair(pair);
         start = runStart(pair, d);
         if (start) {
-            uint mark = CULL_LISTED | (cull.phase == CULL_PHASE_EARLY ? CULL_LISTED_EARLY : 0u);
+            uint mark = CULL_LISTED | (earlyStep() ? CULL_LISTED_EARLY : 0u);
             uint was = atomicOr(cullState().values[d], mark);
             newDraw = (was & CULL_LISTED) == 0u && (!lateStep() || (was & CULL_LISTED_EARLY) == 0u);
         }

@@ -32,9 +32,11 @@ using dvec4 = glm::dvec4;
 // A constant both languages read: written once below with these, so C++ and GLSL agree.
 #define IDV_CONST constexpr uint32_t
 #define IDV_FLOAT constexpr float
+#define IDV_TABLE constexpr // before the type of a constant array of structs
 #else
 #define IDV_CONST const uint
 #define IDV_FLOAT const float
+#define IDV_TABLE const
 #endif
 
 #include "shared_frame.h"
@@ -54,4 +56,5 @@ using dvec4 = glm::dvec4;
 #endif
 #undef IDV_CONST
 #undef IDV_FLOAT
+#undef IDV_TABLE
 #endif

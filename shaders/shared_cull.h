@@ -1,6 +1,7 @@
-// shared_cull.h - culling and levels of detail on the GPU: the design in one table, then its
-// constants and structs. Part of shared.h's family (include shared.h). render/culling.h
-// records the passes; shaders/cull.comp (with cull_*.glsl) and scene.task run them.
+// shared_cull.h - culling and levels of detail on the GPU: the design in one table
+// (CULL_PHASES), then its constants and structs. Part of shared.h's family (include
+// shared.h). render/culling.h records the passes; shaders/cull.comp (with cull_*.glsl) and
+// scene.task run them.
 #ifndef IDVIEW_SHARED_CULL_H
 #define IDVIEW_SHARED_CULL_H
 
@@ -31,38 +32,23 @@
 // frame's early depth, so behind its final depth, which this frame draws again; drawn late,
 // it writes no sample and ties none, so no order can change.
 //
-// The phases (CullPush::phase, DrawPush::cullPhase), the steps cull.comp runs in each, for
-// lists of runs and of whole draws, and what the task shader draws in each:
-// clang-format off
-// phase        when                    runs            draws        task shader draws
-// NONE         culling off             -               [L] D P      every meshlet
-// FRUSTUM      frustum culling         [L] D C RN RP   [L] D P      meshlets in view (history)
-// EARLY        occlusion, first half   [L] D C RN RP   [L] D P      meshlets with history, in view
-//   then the depth pyramid of the first half's depth
-// LATE         occlusion, second half  D C RN RP       D M N P      mdi: those M chose; push: in
-//                                                                   view, not behind the pyramid,
-//                                                                   without history (history)
-// FROZEN       freeze culling          nothing: the two lists of    meshlets with history
-// FROZEN_LATE                          the last culled frame again  the same, of draws not early
-// Steps: L levels (where FrameData::lodErrorPixels is above 0: a list holding every level of
-// every object, mdi modes), D decide, C clusters, M meshlets, N count, P compact, RN runs
-// count, RP runs compact (each described below); (history): what passed becomes the history.
-// clang-format on
-IDV_CONST CULL_PHASE_NONE = 0;
-IDV_CONST CULL_PHASE_FRUSTUM = 1;
-IDV_CONST CULL_PHASE_EARLY = 2;
-IDV_CONST CULL_PHASE_LATE = 3;
-IDV_CONST CULL_PHASE_FROZEN = 4;
-IDV_CONST CULL_PHASE_FROZEN_LATE = 5;
+// The phases (CullPush::phase, DrawPush::cullPhase), rows of CULL_PHASES below, in its order.
+IDV_CONST CULL_PHASE_NONE = 0;        // culling off
+IDV_CONST CULL_PHASE_FRUSTUM = 1;     // frustum culling
+IDV_CONST CULL_PHASE_EARLY = 2;       // occlusion, first half; then the pyramid of its depth
+IDV_CONST CULL_PHASE_LATE = 3;        // occlusion, second half
+IDV_CONST CULL_PHASE_FROZEN = 4;      // freeze culling: the last culled frame's first list
+IDV_CONST CULL_PHASE_FROZEN_LATE = 5; // and its second list
+IDV_CONST CULL_PHASE_COUNT = 6;
 
 // The steps (CullPush::step), each a dispatch over the list's draws or pairs:
 // - levels: whether each draw is of the level its object draws (CULL_OTHER_LEVEL);
 // - decide: each draw's bits for this pass, and a count per workgroup of the draws listed;
 // - clusters (runs): each (draw, cluster) pair of a draw in play is tested by its own box;
-// - meshlets (draws, late): each (draw, meshlet) pair of a draw whose box passed is tested
-//   as the task shader would; what passed becomes history, what passed and was not drawn
-//   early is what the late task shader draws (FrameData::lateMeshletWord);
-// - count (draws, late): each workgroup's draws counted again after the meshlets;
+// - meshlets (mesh draws, late): each (draw, meshlet) pair of a draw whose box passed is
+//   tested as the task shader would; what passed becomes history, what passed and was not
+//   drawn early is what the late task shader draws (FrameData::lateMeshletWord);
+// - count (mesh draws, late): each workgroup's draws counted again after the meshlets;
 // - compact: each workgroup adds the counts of the workgroups before its own and writes its
 //   commands there, so the list keeps the draw order;
 // - runs count, runs compact: the same for the runs of clusters that passed.
@@ -74,6 +60,67 @@ IDV_CONST CULL_STEP_COUNT = 4;
 IDV_CONST CULL_STEP_COMPACT = 5;
 IDV_CONST CULL_STEP_RUNS_COUNT = 6;
 IDV_CONST CULL_STEP_RUNS_COMPACT = 7;
+// A phase's steps as bits, the letters of the docs' table; a pass dispatches them in the
+// order of their numbers. Levels runs only where levels are chosen (CullPlan::levels: lists
+// holding every level of every object, mdi modes).
+IDV_CONST CULL_L = 1u << CULL_STEP_LEVELS;
+IDV_CONST CULL_D = 1u << CULL_STEP_DECIDE;
+IDV_CONST CULL_C = 1u << CULL_STEP_CLUSTERS;
+IDV_CONST CULL_M = 1u << CULL_STEP_MESHLETS;
+IDV_CONST CULL_N = 1u << CULL_STEP_COUNT;
+IDV_CONST CULL_P = 1u << CULL_STEP_COMPACT;
+IDV_CONST CULL_RN = 1u << CULL_STEP_RUNS_COUNT;
+IDV_CONST CULL_RP = 1u << CULL_STEP_RUNS_COMPACT;
+// The steps dispatched over the pairs, not the draws.
+IDV_CONST CULL_STEPS_OVER_PAIRS = CULL_C | CULL_M | CULL_RN | CULL_RP;
+
+// What a phase's pass of cull.comp does (CullPhase::pass).
+IDV_CONST CULL_PASS_TESTS = 1u;   // leaves out draws out of view; without it every draw is listed
+IDV_CONST CULL_PASS_EARLY = 2u;   // lists what the history says may show, marked drawn early
+IDV_CONST CULL_PASS_LATE = 4u;    // the second list: what the first found in view, tested against
+                                  // the pyramid, and what passed that the first did not draw
+IDV_CONST CULL_PASS_HISTORY = 8u; // what passed becomes the history (clusters', meshlets')
+
+// What the task shader draws in a phase (CullPhase::task): the meshlets that meet every bit;
+// none: every meshlet.
+IDV_CONST CULL_TASK_WITH_HISTORY = 1u;     // with history
+IDV_CONST CULL_TASK_NOT_EARLY = 2u;        // of draws not drawn early
+IDV_CONST CULL_TASK_CHOSEN = 4u;           // where cull.comp lists the draws (mdi): those the
+                                           // meshlets step chose, instead of the tests below
+IDV_CONST CULL_TASK_IN_VIEW = 8u;          // in the view frustum
+IDV_CONST CULL_TASK_NOT_BEHIND = 16u;      // not behind the depth pyramid
+IDV_CONST CULL_TASK_WITHOUT_HISTORY = 32u; // without history
+
+// One phase: the steps cull.comp runs for lists of runs, of mesh draws and of whole vertex
+// draws, what those steps do, and what the task shader draws. render/culling.cpp records the
+// steps, cull_*.glsl and scene.task read the rest; docs/techniques.md prints the table
+// (tests/test_cull_table.cpp checks it).
+struct CullPhase {
+    uint runs;
+    uint meshDraws;
+    uint vertexDraws;
+    uint pass; // CULL_PASS_*
+    uint task; // CULL_TASK_*
+};
+// Each row: the steps for runs, for mesh draws, for whole vertex draws; pass; task.
+IDV_TABLE CullPhase CULL_PHASES[CULL_PHASE_COUNT] = {
+    // NONE
+    {0u, CULL_L | CULL_D | CULL_P, CULL_L | CULL_D | CULL_P, 0u, 0u},
+    // FRUSTUM
+    {CULL_L | CULL_D | CULL_C | CULL_RN | CULL_RP, CULL_L | CULL_D | CULL_P,
+     CULL_L | CULL_D | CULL_P, CULL_PASS_TESTS | CULL_PASS_HISTORY, CULL_TASK_IN_VIEW},
+    // EARLY
+    {CULL_L | CULL_D | CULL_C | CULL_RN | CULL_RP, CULL_L | CULL_D | CULL_P,
+     CULL_L | CULL_D | CULL_P, CULL_PASS_TESTS | CULL_PASS_EARLY,
+     CULL_TASK_WITH_HISTORY | CULL_TASK_IN_VIEW},
+    // LATE
+    {CULL_D | CULL_C | CULL_RN | CULL_RP, CULL_D | CULL_M | CULL_N | CULL_P, CULL_D | CULL_P,
+     CULL_PASS_TESTS | CULL_PASS_LATE | CULL_PASS_HISTORY,
+     CULL_TASK_CHOSEN | CULL_TASK_IN_VIEW | CULL_TASK_NOT_BEHIND | CULL_TASK_WITHOUT_HISTORY},
+    // FROZEN, FROZEN_LATE: no pass; the two lists of the last culled frame are drawn again.
+    {0u, 0u, 0u, 0u, CULL_TASK_WITH_HISTORY},
+    {0u, 0u, 0u, CULL_PASS_LATE, CULL_TASK_WITH_HISTORY | CULL_TASK_NOT_EARLY},
+};
 
 // A draw's state word (CullPush::stateAddress), written anew every frame: by the levels step
 // (or decide where it does not run), then by each pass.

@@ -185,37 +185,27 @@ CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
 
 namespace {
 
-// The steps of one pass over a list (shared_cull.h's table).
+// The steps of one pass over a list: its row of shared_cull.h's table, in the steps' order.
 std::vector<uint32_t> cullSteps(const CullPlan& plan, uint32_t phase, bool mesh, bool runs) {
-    const bool late = phase == gpu::CULL_PHASE_LATE;
+    const gpu::CullPhase& row = gpu::CULL_PHASES[phase];
+    uint32_t bits = runs ? row.runs : mesh ? row.meshDraws : row.vertexDraws;
+    if (!plan.levels) bits &= ~gpu::CULL_L;
     std::vector<uint32_t> steps;
     steps.reserve(5); // the most a pass takes
-    if (plan.levels && !late) steps.push_back(gpu::CULL_STEP_LEVELS);
-    steps.push_back(gpu::CULL_STEP_DECIDE);
-    if (runs) {
-        steps.push_back(gpu::CULL_STEP_CLUSTERS);
-        steps.push_back(gpu::CULL_STEP_RUNS_COUNT);
-        steps.push_back(gpu::CULL_STEP_RUNS_COMPACT);
-        return steps;
-    }
-    if (late && mesh) {
-        steps.push_back(gpu::CULL_STEP_MESHLETS);
-        steps.push_back(gpu::CULL_STEP_COUNT);
-    }
-    steps.push_back(gpu::CULL_STEP_COMPACT);
+    for (uint32_t step = 0; bits >> step; ++step)
+        if (bits >> step & 1u) steps.push_back(step);
     return steps;
 }
 
 bool overPairs(uint32_t step) {
-    return step == gpu::CULL_STEP_CLUSTERS || step == gpu::CULL_STEP_MESHLETS ||
-           step == gpu::CULL_STEP_RUNS_COUNT || step == gpu::CULL_STEP_RUNS_COMPACT;
+    return (gpu::CULL_STEPS_OVER_PAIRS >> step & 1u) != 0;
 }
 
 } // namespace
 
 void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
                             const CullInputs& inputs, const CullPlan& plan, uint32_t phase) const {
-    const bool late = phase == gpu::CULL_PHASE_LATE;
+    const bool late = (gpu::CULL_PHASES[phase].pass & gpu::CULL_PASS_LATE) != 0;
     vk::CmdLabel label(device_.debug(), cmd, late ? "cull draws (late)" : "cull draws");
     // Earlier reads of what this pass writes (the last frame's draws of these lists, the
     // early pass's state) are done; the counters' reset and earlier passes' writes are seen.

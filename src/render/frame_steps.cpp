@@ -162,7 +162,7 @@ void Renderer::beginPass(VkCommandBuffer cmd, const SceneTargets& targets, PassP
 // The draws of one phase: the whole list, the GPU's list, or push mode's shown objects.
 void Renderer::drawPhase(VkCommandBuffer cmd, FrameCulling& culling, uint32_t phase) const {
     const DrawContext context{cmd, device_, pipelines_.layout(), pushStages_, *draws_};
-    const bool late = phase == gpu::CULL_PHASE_LATE || phase == gpu::CULL_PHASE_FROZEN_LATE;
+    const bool late = (gpu::CULL_PHASES[phase].pass & gpu::CULL_PASS_LATE) != 0;
     if (!culling.plan.on()) {
         recordAllDraws(context);
     } else if (culling.plan.gpuLists) {
