@@ -144,10 +144,10 @@ for copies in 1 2 4 8; do
     run 3 copies$copies --msaa 4 --copies $copies --frames 100 --renderer per-draw,tri-fs \
         --mode push,mdi-baseinstance --culling off
 done
-# Part 5 (about 4 min): the visibility buffer against vertex-fs and their floor, each row in
+# Part 5 (about 4 min): the visibility buffer against vertex-fs, mesh-fs and the floors, each row in
 # the same run: the benchmark view, 16 copies, the dolly path and Motor-c, culling off and
 # occlusion, levels of detail off and at 1 px.
-vis=(--renderer no-id,vertex-fs,visbuffer --mode mdi-baseinstance --culling off,occlusion
+vis=(--renderer no-id,no-id-mesh,vertex-fs,mesh-fs,visbuffer --mode mdi-baseinstance --culling off,occlusion
     --lod-error 0,1)
 for msaa in 1 4; do
     run 5 "vis-view-$msaa" --msaa "$msaa" --frames 60 "${vis[@]}"
