@@ -3,10 +3,11 @@ is a pair: files(params), the runs it reads as (stem, flags their JSON does not 
 block's folder, or (stem, flags, folder) in another; and table(runs, params), the Markdown (a
 caption line and the table) from those runs by stem (FOLDER/STEM for another folder's). Here
 the frame's fixed cost, the techniques, culling and the culling rework's before and after;
-bench_kinds_lod.py and bench_kinds_size.py hold the rest.
+bench_kinds_lod.py, bench_kinds_size.py and bench_kinds_vis.py hold the rest.
 """
 import bench_kinds_lod
 import bench_kinds_size
+import bench_kinds_vis
 from bench_runs import find, names, row, rows, f3, triangles, MDI
 
 
@@ -267,6 +268,7 @@ KINDS = {
     "rework": (rework_files, rework_table),
     **bench_kinds_lod.KINDS,
     **bench_kinds_size.KINDS,
+    **bench_kinds_vis.KINDS,
 }
 # Kinds of experiments (shader copies): runs gpu-runs.sh does not make.
 EXPERIMENTS = {"shaders"}

@@ -16,7 +16,10 @@ H100_RUNS = os.path.join(ROOT, "scripts", "gpu-runs.sh")
 # The registry's order (idview --list-renderers): what `--renderer all` and `--mode all` mean,
 # and how `--culling` lists its modes.
 TECHNIQUES = ["per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs", "bsearch-fs",
-              "nsearch-fs", "nsearch-gs", "vertex-fs", "mesh-fs", "mesh-vertex-fs"]
+              "nsearch-fs", "nsearch-gs", "vertex-fs", "mesh-fs", "mesh-vertex-fs", "visbuffer"]
+# Added to the registry after runs were made that named no renderer: for those, every renderer
+# meant the registry without these (the command as it was given).
+ADDED_LATER = ["visbuffer"]
 FLOORS = ["no-id", "no-id-mesh"]
 MODES = ["push", "mdi-baseinstance", "mdi-attribute"]
 CULLING = ["off", "frustum", "occlusion"]
@@ -88,9 +91,11 @@ def names(run, floors=True):
     return seen
 
 
-def listed(values, everything):
-    """A comma list, or None where it names everything (the flag's default)."""
-    if sorted(values, key=everything.index) == everything:
+def listed(values, everything, later=()):
+    """A comma list, or None where it names everything (the flag's default), or everything
+    but `later`, what the default named before those were added."""
+    ordered = sorted(values, key=everything.index)
+    if ordered in (everything, [v for v in everything if v not in later]):
         return None
     return ",".join(values)
 
@@ -111,7 +116,7 @@ def flags_of(run, extra=()):
     flags = {"--size": s["size"], "--msaa": str(s["msaa"]),
              "--model": os.path.basename(s["scene"]), "--copies": str(s["copies"]),
              "--frames": str(s["frames"]), "--camera-path": s.get("camera_path", "none"),
-             "--renderer": listed(names(run, floors=False), TECHNIQUES),
+             "--renderer": listed(names(run, floors=False), TECHNIQUES, ADDED_LATER),
              "--mode": listed(modes, MODES),
              # Runs from before culling or the compute clear path drew as these flags do now.
              "--culling": listed(cullings, CULLING) if "culling" in results[0] else "off",

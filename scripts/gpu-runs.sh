@@ -29,8 +29,9 @@
 # switch, as the JSON of the runs before recorded them for the same or the nearest
 # configuration, plus 5 s a process (8 s at 16 copies) for the device, the scene and its
 # levels: part 1 about 5.5 minutes, part 2 about 5, part 3 about 2, part 4 about 4.5 (17 in
-# all; 21 at 10 s a process). Parts 1 and 2 are the tables culling and levels of detail
-# change, part 1 first.
+# all; 21 at 10 s a process); part 5 took 2 minutes on the H200 (runs-part5.txt of
+# docs/benchmarks/h200-2026-11-29-vis). Parts 1 and 2 are the tables culling and levels of
+# detail change, part 1 first.
 set -euo pipefail
 
 part=all only="" models="" commit="" pack="" extra="" list=0 failed=0
@@ -144,10 +145,10 @@ for copies in 1 2 4 8; do
     run 3 copies$copies --msaa 4 --copies $copies --frames 100 --renderer per-draw,tri-fs \
         --mode push,mdi-baseinstance --culling off
 done
-# Part 5 (about 4 min): the visibility buffer against vertex-fs, mesh-fs and the floors, each row in
-# the same run: the benchmark view, 16 copies, the dolly path and Motor-c, culling off and
-# occlusion, levels of detail off and at 1 px.
-vis=(--renderer no-id,no-id-mesh,vertex-fs,mesh-fs,visbuffer --mode mdi-baseinstance --culling off,occlusion
+# Part 5 (about 2 min on the H200): the visibility buffer against vertex-fs, mesh-fs and the
+# floors, each row in the same run: the benchmark view, 16 copies, the dolly path and
+# Motor-c, culling off and occlusion, levels of detail off and at 1 px.
+vis=(--renderer vertex-fs,mesh-fs,visbuffer --mode mdi-baseinstance --culling off,occlusion
     --lod-error 0,1)
 for msaa in 1 4; do
     run 5 "vis-view-$msaa" --msaa "$msaa" --frames 60 "${vis[@]}"

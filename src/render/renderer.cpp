@@ -204,6 +204,8 @@ void Renderer::reloadShaders() {
     auto animator = std::make_shared<Animator>(device_, compiler_, cache);
     auto idPasses = std::make_shared<IdPasses>(device_, compiler_, cache);
     auto culler = std::make_shared<CullPasses>(device_, compiler_, cache);
+    auto resolver = std::make_shared<Resolver>(device_, compiler_, cache);
+    auto visibility = std::make_shared<VisibilityShading>(device_, compiler_, cache);
     bool cached = false;
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
     if (translucentPipeline_)
@@ -212,6 +214,8 @@ void Renderer::reloadShaders() {
     idPasses_ = std::move(idPasses);
     composed_.reset(); // their box of the hovered part's tiles is not written yet
     culler_ = std::move(culler);
+    resolver_ = std::move(resolver);
+    visibility_ = std::move(visibility);
     lastCulledView_.reset(); // the history is of what the old shaders found
 }
 

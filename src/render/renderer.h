@@ -139,8 +139,8 @@ class Renderer {
     void setTranslucent(const scene::Scene& scene, const scene::PartSet& parts);
 
     // Forgets every cached pipeline and SPIR-V (shaders edited on disk) and rebuilds the
-    // current pipeline. A compile error throws vk::ShaderError and the last good pipeline
-    // keeps drawing.
+    // current pipeline and the compute passes. A compile error throws vk::ShaderError and the
+    // last good pipeline keeps drawing.
     void reloadShaders();
 
     // Records the scene pass, with timestamps around only it, into the slot's command
