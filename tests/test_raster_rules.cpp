@@ -11,6 +11,8 @@
 // each, draws the same images, and with its rule turned around it does not.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -276,7 +278,9 @@ std::vector<uint32_t> computeRaster(const std::vector<RasterTriangle>& triangles
 
 TEST_P(RasterRulesTest, TheComputeRulesDrawTheHardwaresIdImage) {
     const uint32_t msaa = GetParam();
-    const std::filesystem::path dir = testing_support::shaderCopy("raster-rules");
+    // A copy of its own: the MSAA cases may run at once, and each edits its copy.
+    const std::filesystem::path dir = testing_support::shaderCopy(
+        "raster-rules-" + std::to_string(msaa) + "-" + std::to_string(getpid()));
     std::vector<RasterTriangle> onGrid;
     Drawn gridDrawn;
     RasterRules rules;
