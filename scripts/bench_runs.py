@@ -16,10 +16,11 @@ H100_RUNS = os.path.join(ROOT, "scripts", "gpu-runs.sh")
 # The registry's order (idview --list-renderers): what `--renderer all` and `--mode all` mean,
 # and how `--culling` lists its modes.
 TECHNIQUES = ["per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs", "bsearch-fs",
-              "nsearch-fs", "nsearch-gs", "vertex-fs", "mesh-fs", "mesh-vertex-fs", "visbuffer"]
+              "nsearch-fs", "nsearch-gs", "vertex-fs", "mesh-fs", "mesh-vertex-fs", "visbuffer",
+              "visbuffer-compute"]
 # Added to the registry after runs were made that named no renderer: for those, every renderer
 # meant the registry without these (the command as it was given).
-ADDED_LATER = ["visbuffer"]
+ADDED_LATER = ["visbuffer", "visbuffer-compute"]
 FLOORS = ["no-id", "no-id-mesh"]
 MODES = ["push", "mdi-baseinstance", "mdi-attribute"]
 CULLING = ["off", "frustum", "occlusion"]

@@ -53,6 +53,7 @@ void rowMembers(util::JsonWriter& json, const BenchmarkRow& row) {
         .member("draws_drawn", count(row.drawsDrawn))
         .member("triangles", row.stats.triangles)
         .member("triangles_drawn", count(row.trianglesDrawn))
+        .member("triangles_drawn_compute", count(row.computeTrianglesDrawn))
         .member("meshlets_drawn", count(row.meshletsDrawn))
         .beginArray("triangles_drawn_by_level");
     for (double triangles : row.levelTrianglesDrawn) json.value(count(triangles));
