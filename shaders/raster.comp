@@ -33,24 +33,51 @@ void project(FrameData frame, ObjectData object, uint vertex, uint slot) {
     cornerDepth[slot] = clip.z * invW;
 }
 
-// Every sample of the framebuffer the snapped triangle covers, by its pixels' rectangle.
+// Keeps `value` at sample `index` where it is nearer than what is there. The plain load first
+// skips the atomic where the sample already holds a nearer surface (values only grow within a
+// frame, so a stale load is never too large).
+void keepNearer(RasterSamplesRef samples, uint index, uint64_t value) {
+    if (value > samples.values[index]) atomicMax(samples.values[index], value);
+}
+
+// Every sample of the framebuffer the snapped triangle covers, by its pixels' rectangle: the
+// edge functions of raster.glsl's rasterCovers, stepped a pixel at a time (exact integers,
+// so each sample gets the same values, coverage and depth rasterCovers gives it).
 void rasterize(FrameData frame, RasterSetup s, uint payload) {
-    ivec2 lo = min(s.corner[0], min(s.corner[1], s.corner[2])) >> int(s.bits);
-    ivec2 hi = max(s.corner[0], max(s.corner[1], s.corner[2])) >> int(s.bits);
-    lo = max(lo, ivec2(0));
-    hi = min(hi, ivec2(frame.viewport) - 1);
+    if (s.area == 0) return;
+    ivec2 lo = max(min(s.corner[0], min(s.corner[1], s.corner[2])) >> int(s.bits), ivec2(0));
+    ivec2 hi = min(max(s.corner[0], max(s.corner[1], s.corner[2])) >> int(s.bits),
+                   ivec2(frame.viewport) - 1);
+    if (any(greaterThan(lo, hi))) return;
     RasterSamplesRef samples = RasterSamplesRef(frame.rasterSamplesAddress);
     int one = 1 << int(s.bits);
-    for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x)
-            for (uint k = 0u; k < raster.samples; ++k) {
-                float depth;
-                ivec2 at = ivec2(x, y) * one + snapToGrid(sampleOffset(raster.samples, k), s.bits);
+    ivec2 c1 = s.corner[1] - s.corner[0], c2 = s.corner[2] - s.corner[0];
+    // A sample is covered where each edge function reaches its edge's least: 0 on an edge the
+    // top-left rule gives the triangle, 1 elsewhere (raster.glsl's edgeCovers).
+    ivec3 least = ivec3(ownsEdge(s.corner[0], s.corner[1]) ? 0 : 1,
+                        ownsEdge(s.corner[1], s.corner[2]) ? 0 : 1,
+                        ownsEdge(s.corner[2], s.corner[0]) ? 0 : 1);
+    // Per pixel right and down, for e01, e12 and e20 (raster.glsl's order).
+    ivec3 stepX = ivec3(-c1.y, c1.y - c2.y, c2.y) * one;
+    ivec3 stepY = ivec3(c1.x, c2.x - c1.x, -c2.x) * one;
+    for (uint k = 0u; k < raster.samples; ++k) {
+        ivec2 p = lo * one + snapToGrid(sampleOffset(raster.samples, k), s.bits) - s.corner[0];
+        ivec3 row = ivec3(edgeFunction(ivec2(0), c1, p), edgeFunction(c1, c2, p),
+                          edgeFunction(c2, ivec2(0), p));
+        for (int y = lo.y; y <= hi.y; ++y, row += stepY) {
+            ivec3 e = row;
+            for (int x = lo.x; x <= hi.x; ++x, e += stepX) {
+                if (any(lessThan(e, least))) continue;
+                float depth =
+                    (float(e.y) * s.depth.x + float(e.z) * s.depth.y + float(e.x) * s.depth.z) /
+                    float(s.area);
                 // Depth outside 0..1 is clipped away, and 0 is the cleared far plane.
-                if (!rasterCovers(s, at, depth) || depth <= 0.0 || depth > 1.0) continue;
+                if (depth <= 0.0 || depth > 1.0) continue;
                 uint index = (uint(y) * frame.viewport.x + uint(x)) * raster.samples + k;
-                atomicMax(samples.values[index], visibilitySample(depth, payload));
+                keepNearer(samples, index, visibilitySample(depth, payload));
             }
+        }
+    }
 }
 
 void drawMeshlet(FrameData frame, RasterEntry entry) {

@@ -101,7 +101,8 @@ class Explainer {
                     const glm::dvec4 clip =
                         toClip * glm::dvec4(glm::dvec3(scene_.vertices[v].position), 1.0);
                     const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
-                    p.xyz[k] = {(ndc.x * 0.5 + 0.5) * extent_.x, (ndc.y * 0.5 + 0.5) * extent_.y, ndc.z};
+                    p.xyz[k] = {(ndc.x * 0.5 + 0.5) * extent_.x, (ndc.y * 0.5 + 0.5) * extent_.y,
+                                ndc.z};
                     p.corners.corner[k] = glm::dvec2(p.xyz[k]);
                 }
                 out.push_back(p);

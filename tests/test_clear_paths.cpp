@@ -18,12 +18,12 @@
 #include "app/offscreen.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
+#include "raster_explainer.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/camera_path.h"
 #include "scene/lod.h"
 #include "scene/raycast.h"
-#include "raster_explainer.h"
 #include "test_support.h"
 
 namespace {

@@ -14,10 +14,10 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
+#include "raster_explainer.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "shared_vertex_gltf.h"
-#include "raster_explainer.h"
 #include "test_support.h"
 
 namespace {

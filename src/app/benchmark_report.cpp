@@ -110,6 +110,8 @@ void settingsObject(util::JsonWriter& json, const BenchmarkReport& r) {
         .member("ignore_materials", s.shading.ignoreMaterials)
         .member("edges", s.edges.on)
         .member("edge_width", s.edges.width)
+        .member("raster_pixels", s.raster.trianglePixels)
+        .member("raster_all", s.raster.all)
         .member("hidden_parts", r.hiddenParts)
         .member("camera_path", r.cameraPath)
         .endObject();

@@ -205,8 +205,8 @@ void computeRaster(render::RasterSettings& r) {
                           "over %u pixels (--raster-all)",
                           gpu::RASTER_MAX_SPAN - 2);
     ImGui::BeginDisabled(r.all);
-    ImGui::SliderFloat(fitLabel("compute below [px/tri]").c_str(), &r.trianglePixels, 0.0f,
-                       64.0f, "%.1f");
+    ImGui::SliderFloat(fitLabel("compute below [px/tri]").c_str(), &r.trianglePixels, 0.0f, 64.0f,
+                       "%.1f");
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("meshlets whose projected rectangle holds at most this many pixels "
