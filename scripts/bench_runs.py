@@ -28,7 +28,7 @@ CULLING = ["off", "frustum", "occlusion"]
 # always written, as their benchmark defaults differ from the program's.
 DEFAULTS = {"--size": "2560x1440", "--copies": "3", "--model": "default.glb",
             "--clear": "auto", "--search-batch": "16", "--visible": "1", "--edge-width": "1",
-            "--camera-path": "none", "--raster-pixels": "8"}
+            "--camera-path": "none", "--raster-pixels": "32"}
 # The order a command's flags are written in, here and in gpu-runs.sh.
 ORDER = ["--size", "--msaa", "--model", "--copies", "--frames", "--camera-path", "--renderer",
          "--mode", "--culling", "--lod-levels", "--lod-error", "--raster-pixels", "--raster-all",

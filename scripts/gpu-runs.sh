@@ -149,7 +149,7 @@ done
 # vertex-fs, mesh-fs and the floors, each row in the same run: the benchmark view, 16 copies,
 # the dolly path and Motor-c, culling off and occlusion, levels of detail off and at 1 px;
 # then the compute rasterizer with every meshlet it can draw (--raster-all), and with fewer
-# and more of them than its default (--raster-pixels).
+# and more of them than its default of 32 (--raster-pixels).
 vis=(--renderer vertex-fs,mesh-fs,visbuffer,visbuffer-compute --mode mdi-baseinstance
     --culling off,occlusion --lod-error 0,1)
 for msaa in 1 4; do
@@ -168,7 +168,7 @@ for msaa in 1 4; do
     run 5 "rasterall-motor-$msaa" --msaa "$msaa" --model "$models/Motor-c.brep" --copies 1 \
         --frames 60 "${raster[@]}" --raster-all
 done
-for px in 2 32; do
+for px in 8 128; do
     run 5 "rasterpx$px-view-1" --msaa 1 --frames 60 "${raster[@]}" --raster-pixels $px
     run 5 "rasterpx$px-copies16-1" --msaa 1 --copies 16 --frames 30 "${raster[@]}" \
         --raster-pixels $px

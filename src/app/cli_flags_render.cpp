@@ -81,7 +81,8 @@ std::vector<Flag> techniqueFlags(const Options& d) {
          [](Options& o, auto& v) { o.render.draws.visible = parseFraction("--visible", v); }},
         {"--raster-pixels", "PX",
          "visbuffer-compute: rasterize in compute the meshlets whose projected rectangle "
-         "holds at most PX pixels per triangle; 0 draws every one on the hardware" +
+         "holds at most PX pixels per triangle (PX samples with MSAA: PX / 4 pixels at 4x); 0 "
+         "draws every one on the hardware" +
              byDefault(d.render.raster.trianglePixels),
          [](Options& o, auto& v) {
              o.render.raster.trianglePixels = parseNumber("--raster-pixels", v, 1e6f, "pixels");

@@ -116,9 +116,11 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
         // X-ray's layers depth-test against the attachment alone: under them, the hardware
         // draws everything.
         const bool xray = translucent_ && !translucent_->empty();
-        if (raster_->runsAt(uint32_t(targets.pass().samples())) && !xray)
-            frame.rasterTrianglePixels =
-                settings_.raster.all ? gpu::RASTER_ALL : settings_.raster.trianglePixels;
+        const uint32_t samples = uint32_t(targets.pass().samples());
+        if (raster_->runsAt(samples) && !xray)
+            frame.rasterTrianglePixels = settings_.raster.all
+                                             ? gpu::RASTER_ALL
+                                             : settings_.raster.trianglePixels / float(samples);
     }
     frame.selectedAddress = selected_->address();
     frame.hiddenAddress = hidden_->address();

@@ -205,13 +205,13 @@ void computeRaster(render::RasterSettings& r) {
                           "over %u pixels (--raster-all)",
                           gpu::RASTER_MAX_SPAN - 2);
     ImGui::BeginDisabled(r.all);
-    ImGui::SliderFloat(fitLabel("compute below [px/tri]").c_str(), &r.trianglePixels, 0.0f, 64.0f,
-                       "%.1f");
+    ImGui::SliderFloat(fitLabel("compute below [samples/tri]").c_str(), &r.trianglePixels, 0.0f,
+                       128.0f, "%.1f");
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("meshlets whose projected rectangle holds at most this many pixels "
-                          "per triangle are rasterized in compute, the rest by the hardware; "
-                          "0: none (--raster-pixels)");
+        ImGui::SetTooltip("meshlets whose projected rectangle holds at most this many samples "
+                          "per triangle (pixels at 1x) are rasterized in compute, the rest by "
+                          "the hardware; 0: none (--raster-pixels)");
 }
 
 // What draws: the renderer, its mode and the settings it reads, and how frames are sampled,
