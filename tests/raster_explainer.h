@@ -122,12 +122,12 @@ class Explainer {
 // by what explains them.
 struct Explained {
     size_t differ = 0, nearEdge = 0, depth = 0, unexplained = 0;
-    Explained& operator+=(const Explained& o) {
-        differ += o.differ;
-        nearEdge += o.nearEdge;
-        depth += o.depth;
-        unexplained += o.unexplained;
-        return *this;
+    // One pixel that differs, for the reason `why`.
+    void add(Explainer::Why why) {
+        ++differ;
+        ++(why == Explainer::Why::NearEdge ? nearEdge
+           : why == Explainer::Why::Depth  ? depth
+                                           : unexplained);
     }
 };
 inline Explained explainDifferences(const scene::Scene& scene, const scene::Camera& camera,
@@ -140,21 +140,10 @@ inline Explained explainDifferences(const scene::Scene& scene, const scene::Came
         return e;
     }
     const Explainer explainer(scene, camera, extent, msaa);
-    for (size_t i = 0; i < got.size(); ++i) {
-        if (got[i] == expected[i]) continue;
-        ++e.differ;
-        switch (explainer.explain(uint32_t(i % extent.x), uint32_t(i / extent.x), expected[i],
-                                  got[i])) {
-        case Explainer::Why::NearEdge:
-            ++e.nearEdge;
-            break;
-        case Explainer::Why::Depth:
-            ++e.depth;
-            break;
-        default:
-            ++e.unexplained;
-        }
-    }
+    for (size_t i = 0; i < got.size(); ++i)
+        if (got[i] != expected[i])
+            e.add(explainer.explain(uint32_t(i % extent.x), uint32_t(i / extent.x), expected[i],
+                                    got[i]));
     return e;
 }
 

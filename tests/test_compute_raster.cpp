@@ -44,7 +44,7 @@ const render::DrawMode& gpuMode() {
 }
 
 struct Tally {
-    size_t differ = 0, nearEdge = 0, depth = 0, unexplained = 0;
+    testing_support::Explained pixels;    // those that differ from vertex-fs's, and why
     uint64_t triangles = 0, computed = 0; // drawn, and drawn by the compute rasterizer
     // The largest difference from visbuffer's colour where the part agrees (1x), but where
     // another triangle of the part may have won by a rounding.
@@ -112,20 +112,12 @@ Tally compareScene(const std::string& sceneName, const std::string& shaderDir) {
                             tally.colour = std::max(tally.colour, most);
                     }
                     if (a == b) continue;
-                    ++tally.differ;
-                    switch (explainer.explain(x, y, a, b)) {
-                    case Explainer::Why::NearEdge:
-                        ++tally.nearEdge;
-                        break;
-                    case Explainer::Why::Depth:
-                        ++tally.depth;
-                        break;
-                    default:
-                        ++tally.unexplained;
+                    const Explainer::Why why = explainer.explain(x, y, a, b);
+                    tally.pixels.add(why);
+                    if (why == Explainer::Why::Unexplained)
                         std::printf("[ compute  ] %s, config %zu, frame %zu: (%u, %u) shows %u "
                                     "where vertex-fs shows %u, unexplained\n",
                                     sceneName.c_str(), c, f, x, y, b, a);
-                    }
                 }
         }
     }
@@ -136,14 +128,14 @@ class ComputeRasterScenes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ComputeRasterScenes, DrawVertexFsIdImagesButForExplainedPixels) {
     const Tally t = compareScene(GetParam(), "");
-    std::printf("[ compute  ] %s: %.1f %% of the triangles drawn in compute; %zu pixels differ "
-                "from vertex-fs over 16 configurations x %u frames: %zu within a subpixel step "
-                "of an edge, %zu within 2 ulps of depth, %zu unexplained; colour within %d of "
-                "visbuffer's elsewhere where the part agrees (1x)\n",
-                GetParam().c_str(),
-                100.0 * double(t.computed) / double(std::max<uint64_t>(t.triangles, 1)), t.differ,
-                FRAMES, t.nearEdge, t.depth, t.unexplained, t.colour);
-    EXPECT_EQ(t.unexplained, 0u);
+    std::printf(
+        "[ compute  ] %s: %.1f %% of the triangles drawn in compute; %zu pixels differ "
+        "from vertex-fs over 16 configurations x %u frames: %zu within a subpixel step "
+        "of an edge, %zu within 2 ulps of depth, %zu unexplained; colour within %d of "
+        "visbuffer's elsewhere where the part agrees (1x)\n",
+        GetParam().c_str(), 100.0 * double(t.computed) / double(std::max<uint64_t>(t.triangles, 1)),
+        t.pixels.differ, FRAMES, t.pixels.nearEdge, t.pixels.depth, t.pixels.unexplained, t.colour);
+    EXPECT_EQ(t.pixels.unexplained, 0u);
     EXPECT_LE(t.colour, 1) << "colour where the part agrees, 1x";
 }
 
@@ -159,8 +151,8 @@ TEST(ComputeRaster, TheBottomRightRuleIsCaught) {
                                    "return !(d.y < 0 || (d.y == 0 && d.x > 0));");
     const Tally t = compareScene("small", dir.string());
     std::printf("[ compute  ] the bottom-right rule: %zu pixels differ, %zu unexplained\n",
-                t.differ, t.unexplained);
-    EXPECT_GT(t.unexplained, 0u) << "the turned rule drew nothing the rules cannot explain";
+                t.pixels.differ, t.pixels.unexplained);
+    EXPECT_GT(t.pixels.unexplained, 0u) << "the turned rule drew nothing the rules cannot explain";
     std::filesystem::remove_all(dir);
 }
 
