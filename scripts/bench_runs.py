@@ -16,10 +16,11 @@ H100_RUNS = os.path.join(ROOT, "scripts", "gpu-runs.sh")
 # The registry's order (idview --list-renderers): what `--renderer all` and `--mode all` mean,
 # and how `--culling` lists its modes.
 TECHNIQUES = ["per-draw", "tri-fs", "tri-gs", "search-fs", "search-gs", "bsearch-fs",
-              "nsearch-fs", "nsearch-gs", "vertex-fs", "mesh-fs", "mesh-vertex-fs", "visbuffer"]
+              "nsearch-fs", "nsearch-gs", "vertex-fs", "mesh-fs", "mesh-vertex-fs", "visbuffer",
+              "visbuffer-compute"]
 # Added to the registry after runs were made that named no renderer: for those, every renderer
 # meant the registry without these (the command as it was given).
-ADDED_LATER = ["visbuffer"]
+ADDED_LATER = ["visbuffer", "visbuffer-compute"]
 FLOORS = ["no-id", "no-id-mesh"]
 MODES = ["push", "mdi-baseinstance", "mdi-attribute"]
 CULLING = ["off", "frustum", "occlusion"]
@@ -27,10 +28,11 @@ CULLING = ["off", "frustum", "occlusion"]
 # always written, as their benchmark defaults differ from the program's.
 DEFAULTS = {"--size": "2560x1440", "--copies": "3", "--model": "default.glb",
             "--clear": "auto", "--search-batch": "16", "--visible": "1", "--edge-width": "1",
-            "--camera-path": "none"}
+            "--camera-path": "none", "--raster-pixels": "32"}
 # The order a command's flags are written in, here and in gpu-runs.sh.
 ORDER = ["--size", "--msaa", "--model", "--copies", "--frames", "--camera-path", "--renderer",
-         "--mode", "--culling", "--lod-levels", "--lod-error", "--search-batch", "--visible",
+         "--mode", "--culling", "--lod-levels", "--lod-error", "--raster-pixels", "--raster-all",
+         "--search-batch", "--visible",
          "--no-sort-draws", "--gs-ordinary", "--edges", "--edge-width", "--visible-parts",
          "--hide", "--isolate", "--clear"]
 # The parts hidden or isolated by the hiding runs, as the page writes them and as
@@ -125,7 +127,10 @@ def flags_of(run, extra=()):
              "--visible": f"{s.get('visible', 1.0):g}",
              "--no-sort-draws": None if s.get("sort_draws", True) else True,
              "--edges": True if s.get("edges") else None,
-             "--edge-width": str(s.get("edge_width", 1)), "--clear": run.get("clear", "pass")}
+             "--edge-width": str(s.get("edge_width", 1)), "--clear": run.get("clear", "pass"),
+             # Runs from before the compute rasterizer did not record its settings.
+             "--raster-pixels": f"{s['raster_pixels']:g}" if "raster_pixels" in s else None,
+             "--raster-all": True if s.get("raster_all") else None}
     levels = s.get("lod_levels", 1)
     if levels != (4 if flags["--lod-error"] else 1):
         flags["--lod-levels"] = str(levels)

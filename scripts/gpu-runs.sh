@@ -29,8 +29,8 @@
 # switch, as the JSON of the runs before recorded them for the same or the nearest
 # configuration, plus 5 s a process (8 s at 16 copies) for the device, the scene and its
 # levels: part 1 about 5.5 minutes, part 2 about 5, part 3 about 2, part 4 about 4.5 (17 in
-# all; 21 at 10 s a process); part 5 took 2 minutes on the H200 (runs-part5.txt of
-# docs/benchmarks/h200-2026-11-29-vis). Parts 1 and 2 are the tables culling and levels of
+# all; 21 at 10 s a process); part 5 took 3.7 minutes on the H200 (runs-part5.txt of
+# docs/benchmarks/h200-2026-11-29-raster). Parts 1 and 2 are the tables culling and levels of
 # detail change, part 1 first.
 set -euo pipefail
 
@@ -145,17 +145,33 @@ for copies in 1 2 4 8; do
     run 3 copies$copies --msaa 4 --copies $copies --frames 100 --renderer per-draw,tri-fs \
         --mode push,mdi-baseinstance --culling off
 done
-# Part 5 (about 2 min on the H200): the visibility buffer against vertex-fs, mesh-fs and the
-# floors, each row in the same run: the benchmark view, 16 copies, the dolly path and
-# Motor-c, culling off and occlusion, levels of detail off and at 1 px.
-vis=(--renderer vertex-fs,mesh-fs,visbuffer --mode mdi-baseinstance --culling off,occlusion
-    --lod-error 0,1)
+# Part 5 (about 3.7 min on the H200): the visibility buffer and its compute rasterizer against
+# vertex-fs, mesh-fs and the floors, each row in the same run: the benchmark view, 16 copies,
+# the dolly path and Motor-c, culling off and occlusion, levels of detail off and at 1 px;
+# then the compute rasterizer with every meshlet it can draw (--raster-all), and with fewer
+# and more of them than its default of 32 (--raster-pixels).
+vis=(--renderer vertex-fs,mesh-fs,visbuffer,visbuffer-compute --mode mdi-baseinstance
+    --culling off,occlusion --lod-error 0,1)
 for msaa in 1 4; do
     run 5 "vis-view-$msaa" --msaa "$msaa" --frames 60 "${vis[@]}"
     run 5 "vis-copies16-$msaa" --msaa "$msaa" --copies 16 --frames 30 "${vis[@]}"
     run 5 "vis-dolly-$msaa" --msaa "$msaa" --frames 120 --camera-path dolly "${vis[@]}"
     run 5 "vis-motor-$msaa" --msaa "$msaa" --model "$models/Motor-c.brep" --copies 1 \
         --frames 60 "${vis[@]}"
+done
+raster=(--renderer visbuffer-compute --mode mdi-baseinstance --culling off,occlusion
+    --lod-error 0,1)
+for msaa in 1 4; do
+    run 5 "rasterall-view-$msaa" --msaa "$msaa" --frames 60 "${raster[@]}" --raster-all
+    run 5 "rasterall-copies16-$msaa" --msaa "$msaa" --copies 16 --frames 30 "${raster[@]}" \
+        --raster-all
+    run 5 "rasterall-motor-$msaa" --msaa "$msaa" --model "$models/Motor-c.brep" --copies 1 \
+        --frames 60 "${raster[@]}" --raster-all
+done
+for px in 8 128; do
+    run 5 "rasterpx$px-view-1" --msaa 1 --frames 60 "${raster[@]}" --raster-pixels $px
+    run 5 "rasterpx$px-copies16-1" --msaa 1 --copies 16 --frames 30 "${raster[@]}" \
+        --raster-pixels $px
 done
 
 # Part 4 (about 4.5 min): the ID-image passes, edges and the visible part count (68 s in

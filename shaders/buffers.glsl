@@ -62,6 +62,15 @@ layout(buffer_reference, std430, buffer_reference_align = 16) buffer MeshTaskCom
 layout(buffer_reference, std430, buffer_reference_align = 16) buffer VisibilityDrawsRef {
     VisibilityDraw draws[];
 };
+// The compute rasterizer's lists (a VkDispatchIndirectCommand and a count per pass, then the
+// entries) and its 64-bit samples.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer RasterListRef {
+    uint dispatch[8]; // per pass: x, y, z, and a word to spare
+    RasterEntry entries[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 8) buffer RasterSamplesRef {
+    uint64_t values[];
+};
 
 // Culling.
 layout(buffer_reference, std430, buffer_reference_align = 16) buffer DrawCullsRef {

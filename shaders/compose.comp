@@ -91,7 +91,14 @@ vec3 highlightSelected(vec3 color) {
 uint64_t hoverValue(uint id) {
     if (id == BACKGROUND_ID) return PICK_NONE;
     // Level 0 of a single-sample image, or sample 0 of a multisampled one.
-    const float depth = texelFetch(depthImage, ivec2(compose.hoverPixel), 0).r;
+    float depth = texelFetch(depthImage, ivec2(compose.hoverPixel), 0).r;
+    // The compute rasterizer's sample 0 there, where it drew the part shown.
+    if (compose.rasterSamplesAddress != 0ul) {
+        uint index =
+            (compose.hoverPixel.y * compose.extent.x + compose.hoverPixel.x) * compose.samples;
+        uint64_t computed = RasterSamplesRef(compose.rasterSamplesAddress).values[index];
+        depth = max(depth, uintBitsToFloat(uint(computed >> 32)));
+    }
     return pickKey(depth, id);
 }
 

@@ -30,14 +30,22 @@ shared float tile[PYRAMID_GROUP][PYRAMID_GROUP];
 float sourceDepth(PyramidRef p, ivec2 at) {
     if (pyramid.level == 0u) {
         if (any(greaterThanEqual(uvec2(at), pyramid.extent))) return 1.0;
-#if IDV_PYRAMID_MSAA
         float farthest = 1.0;
-        for (int s = 0; s < int(pyramid.samples); ++s)
-            farthest = min(farthest, texelFetch(depthImage, at, s).r);
-        return farthest;
+        for (int s = 0; s < int(pyramid.samples); ++s) {
+#if IDV_PYRAMID_MSAA
+            float depth = texelFetch(depthImage, at, s).r;
 #else
-        return texelFetch(depthImage, at, 0).r;
+            float depth = texelFetch(depthImage, at, 0).r;
 #endif
+            // The compute rasterizer's samples (the high word is their depth's bits).
+            if (pyramid.rasterSamplesAddress != 0ul) {
+                uint index = (uint(at.y) * pyramid.extent.x + uint(at.x)) * pyramid.samples + s;
+                uint64_t computed = RasterSamplesRef(pyramid.rasterSamplesAddress).values[index];
+                depth = max(depth, uintBitsToFloat(uint(computed >> 32)));
+            }
+            farthest = min(farthest, depth);
+        }
+        return farthest;
     }
     PyramidLevel below = p.header.level[pyramid.level - 1u];
     if (uint(at.x) >= below.width || uint(at.y) >= below.height) return 1.0;

@@ -8,9 +8,8 @@
 // buffers.glsl first (64-bit integers).
 //
 // Edge functions are 32-bit, relative to the first corner: a triangle may span at most
-// RASTER_MAX_SPAN pixels each way at 8 subpixel bits (products stay under 2^31). Larger ones
-// belong to the hardware path.
-const int RASTER_MAX_SPAN = 64;
+// RASTER_MAX_SPAN (shared_visibility.h) pixels each way at 8 subpixel bits (products stay
+// under 2^31). Larger ones belong to the hardware path.
 
 struct RasterSetup {
     ivec2 corner[3]; // snapped, in subpixels, ordered so that the inside is positive
@@ -75,9 +74,31 @@ bool rasterCovers(RasterSetup s, ivec2 at, out float depth) {
     return true;
 }
 
+// Where sample `s` of `samples` lies in its pixel: the centre without MSAA, Vulkan's standard
+// locations at 4x (the only counts the compute rasterizer runs at: ScenePass checks them).
+vec2 sampleOffset(uint samples, uint s) {
+    if (samples != 4u) return vec2(0.5);
+    const vec2 at4[4] =
+        vec2[4](vec2(0.375, 0.125), vec2(0.875, 0.375), vec2(0.125, 0.625), vec2(0.625, 0.875));
+    return at4[s];
+}
+
 // The visibility buffer's 64-bit sample: depth above, the payload inverted below, so that
 // atomicMax keeps the nearest surface (reversed depth: positive floats order as their bits)
 // and, where two tie, the smaller payload, the one drawn first.
 uint64_t visibilitySample(float depth, uint payload) {
     return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(~payload);
+}
+
+// The nearer of a hardware sample (depth, payload) and a compute one (`computed`, 0 where the
+// compute path covered nothing), by atomicMax's order: the greater depth, then the smaller
+// payload. The hardware's background is depth 0 with any payload.
+void nearerSample(uint64_t computed, inout float depth, inout uint payload) {
+    if (computed == 0ul) return;
+    float d = uintBitsToFloat(uint(computed >> 32));
+    uint p = ~uint(computed);
+    if (d > depth || (d == depth && p < payload)) {
+        depth = d;
+        payload = p;
+    }
 }

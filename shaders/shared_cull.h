@@ -202,7 +202,11 @@ struct CullStats {
     uint levelTriangles[LOD_MAX_LEVELS];
     uint meshlets, meshletTriangles;
     uint levelMeshletTriangles[LOD_MAX_LEVELS];
-    uint unused; // pads to 16 bytes
+    // The compute rasterizer: of those meshlets, the ones each pass's task shader listed for
+    // raster.comp (RasterEntry[] at FrameData::rasterListAddress) and their triangles.
+    uint rasterTriangles;
+    uint rasterMeshlets[2];
+    uint unused[2]; // pads to 16 bytes
 };
 
 // The depth pyramid (render/culling.h): level 0 holds, per 2x2 pixels, the farthest depth of
@@ -250,14 +254,17 @@ struct PyramidPush {
     uvec2 extent; // pixels of the depth attachment
     uint level;
     uint samples;
+    // The compute rasterizer's 64-bit samples (shared_visibility.h), whose depth counts as
+    // the attachment's does; 0 for the other techniques.
+    uint64_t rasterSamplesAddress;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DrawCull) == 80 && sizeof(CullBox) == 32);
-static_assert(sizeof(CullStats) == 64);
+static_assert(sizeof(CullStats) == 80);
 static_assert(sizeof(PyramidHeader) == 16 + 16 * PYRAMID_MAX_LEVELS);
 static_assert(sizeof(CullPush) == 112 && offsetof(CullPush, drawCount) == 80);
-static_assert(sizeof(PyramidPush) == 24);
+static_assert(sizeof(PyramidPush) == 32);
 #endif
 
 #endif

@@ -118,6 +118,16 @@ struct FrameData {
     // whose error spans under this many pixels (cull.glsl's lodChosen); 0: it does not run.
     float lodErrorPixels;
     float eyeReach; // |eye| in either projection: cull.glsl's rounding margins grow with it
+    // The compute rasterizer (shared_visibility.h), 0 for the other techniques: the task
+    // shader's lists of meshlets for raster.comp (RasterEntry[], rasterCapacity a pass), and
+    // the 64-bit visibility sample per framebuffer sample it writes.
+    uint64_t rasterListAddress;
+    uint64_t rasterSamplesAddress;
+    uint rasterCapacity;
+    // A meshlet goes to the compute path where its projected rectangle holds at most this
+    // many pixels per triangle (RASTER_ALL: every meshlet it can draw); 0: none does.
+    float rasterTrianglePixels;
+    uint unusedRaster[2]; // pads to 16 bytes
     // IDV_SECTION (scene/section.h): cut away where dot(plane, (p, 1)) > 0; unused (0,0,0,-1)
     vec4 sectionPlanes[SECTION_PLANES_MAX];
 };
@@ -164,8 +174,9 @@ struct Material {
 
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 336 && offsetof(FrameData, pickPixel) == 256);
-static_assert(offsetof(FrameData, sectionPlanes) == 288);
+static_assert(sizeof(FrameData) == 368 && offsetof(FrameData, pickPixel) == 256);
+static_assert(offsetof(FrameData, rasterListAddress) == 288);
+static_assert(offsetof(FrameData, sectionPlanes) == 320);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(ObjectData) == 144 && sizeof(Material) == 16);
 #endif

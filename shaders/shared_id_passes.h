@@ -43,6 +43,11 @@ struct ComposePush {
     uint flags;
     float blink; // the hovered part's highlight weight, 0..1 (render/blink.h)
     uint step;   // COMPOSE_WHOLE or COMPOSE_TILES
+    // The compute rasterizer's 64-bit samples (shared_visibility.h), which hold the depth of
+    // what it drew; 0 for the other techniques.
+    uint64_t rasterSamplesAddress;
+    uint samples; // per pixel, of those
+    uint unused;  // pads to 16 bytes
 };
 // The tiles (ID_PASS_TILE pixels square) holding the hovered part and pixel, inclusive:
 // reset to tileMin 0xffffffff and tileMax 0, so an empty box has tileMin > tileMax.
@@ -84,7 +89,7 @@ struct ResolvePush {
 
 #ifdef __cplusplus
 static_assert(sizeof(ResolvePush) == 32);
-static_assert(sizeof(ComposePush) == 112 && offsetof(ComposePush, selectedAddress) == 48);
+static_assert(sizeof(ComposePush) == 128 && offsetof(ComposePush, selectedAddress) == 48);
 static_assert(offsetof(ComposePush, blink) == 104);
 static_assert(sizeof(HoverBox) == 16);
 static_assert(sizeof(PartSetPush) == 32);

@@ -8,6 +8,7 @@
 #extension GL_EXT_samplerless_texture_functions : require
 
 #include "buffers.glsl"
+#include "raster.glsl"
 #include "shading.glsl"
 #include "techniques/packed_ids.glsl"
 
@@ -113,7 +114,7 @@ struct Sample {
     vec4 xray;
 };
 
-Sample sampleAt(ivec2 p, int s) {
+Sample sampleAt(FrameData frame, ivec2 p, int s) {
     Sample x;
 #if IDV_RESOLVE_MSAA
     x.depth = texelFetch(depth, p, s).r;
@@ -124,6 +125,12 @@ Sample sampleAt(ivec2 p, int s) {
     x.payload = x.depth != 0.0 ? imageLoad(ids, p).r : BACKGROUND_ID;
     x.xray = (vis.flags & VIS_XRAY) != 0u ? imageLoad(color, p) : vec4(0, 0, 0, 1);
 #endif
+    // The compute rasterizer's sample, where it drew the nearer surface.
+    if (frame.rasterSamplesAddress != 0ul) {
+        uint index = (uint(p.y) * vis.extent.x + uint(p.x)) * vis.samples + uint(s);
+        nearerSample(RasterSamplesRef(frame.rasterSamplesAddress).values[index], x.depth,
+                     x.payload);
+    }
     return x;
 }
 
@@ -138,7 +145,7 @@ void main() {
     Shaded last = Shaded(BACKGROUND_ID, vis.background.rgb);
     uint lastPayload = BACKGROUND_ID;
     for (int s = 0; s < int(vis.samples); ++s) {
-        const Sample x = sampleAt(p, s);
+        const Sample x = sampleAt(frame, p, s);
         if (x.payload != lastPayload) {
             last = x.payload == BACKGROUND_ID ? Shaded(BACKGROUND_ID, vis.background.rgb)
                                               : shade(frame, x.payload, uvec2(p));

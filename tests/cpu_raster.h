@@ -67,6 +67,14 @@ class CpuRaster {
         return false;
     }
 
+    // Whether the sample lies exactly on an edge's line, where the top-left rule decides.
+    bool onEdge(glm::dvec2 sample) const {
+        const auto [px, py] = onGrid(sample);
+        for (int k = 0; k < 3; ++k)
+            if (edge(k, (k + 1) % 3, px, py) == 0) return true;
+        return false;
+    }
+
   private:
     std::pair<int64_t, int64_t> onGrid(glm::dvec2 sample) const {
         const double scale = double(1u << rules_.subpixelBits);

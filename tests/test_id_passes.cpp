@@ -13,6 +13,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
+#include "raster_explainer.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "scene/raycast.h"
@@ -366,7 +367,8 @@ TEST_P(IdPasses, HiddenPartsVanishAndPicksGoThroughForEveryTechnique) {
                 configs[c].pipeline.technique->stage == render::LookupStage::Geometry ||
                 configs[c].pipeline.technique->usesMeshShader();
             const size_t first = ownPath ? firstOwnPath : 0;
-            EXPECT_TRUE(sameIds(r.ids, hidden[first].ids, W))
+            EXPECT_TRUE(testing_support::sameIdsAs(*configs[c].pipeline.technique, r.ids,
+                                                   hidden[first].ids, scene, f.camera, {W, H}, 1))
                 << name << " against " << nameOf(configs[first]);
         }
         ASSERT_EQ(r.picks.size(), o.picks.size()) << name;

@@ -14,6 +14,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
+#include "raster_explainer.h"
 #include "render/technique.h"
 #include "scene/raycast.h"
 #include "test_support.h"
@@ -240,7 +241,9 @@ TEST_P(PickPerTechnique, AgreesWithIdImageRayCastAndHighlightsExactlyThePart) {
                                  configs[c].pipeline.mode->name + " msaa " + std::to_string(msaa);
         const app::HeadlessResult& r = results[c];
         EXPECT_EQ(r.validationMessages, 0u);
-        ASSERT_TRUE(testing_support::sameIds(r.ids, f.ids, W)) << name;
+        ASSERT_TRUE(testing_support::sameIdsAs(*technique, r.ids, f.ids, f.loaded.scene, f.camera,
+                                               {W, H}, msaa))
+            << name;
         ASSERT_EQ(r.picks.size(), o.picks.size());
         expectHoversArePicks(r, name);
         expectPicksNameTheIdImage(r, name);

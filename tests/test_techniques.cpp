@@ -14,6 +14,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
+#include "raster_explainer.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "shared_vertex_gltf.h"
@@ -117,7 +118,9 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
     app::Options o = renderOptions(*c.technique, *c.mode);
     app::HeadlessResult r = app::renderHeadless(o, ref.loaded.scene, ref.camera);
     EXPECT_EQ(r.validationMessages, 0u);
-    EXPECT_TRUE(testing_support::sameIds(r.ids, ref.image.ids, o.width));
+    EXPECT_TRUE(testing_support::sameIdsAs(*c.technique, r.ids, ref.image.ids, ref.loaded.scene,
+                                           ref.camera, {o.width, o.height},
+                                           o.render.pipeline.msaa));
     EXPECT_EQ(r.stats.draws,
               expectedDraws(*c.technique, ref.loaded.scene, o.render.pipeline.searchBatch));
 }
@@ -215,7 +218,9 @@ TEST(Msaa, EveryTechniqueAndModeResolvesTheSameIdImage) {
     const auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
     EXPECT_EQ(results.front().validationMessages, 0u);
     for (size_t i = 0; i < results.size(); ++i)
-        EXPECT_EQ(results[i].ids, results.front().ids)
+        EXPECT_TRUE(testing_support::sameIdsAs(*configs[i].pipeline.technique, results[i].ids,
+                                               results.front().ids, ref.loaded.scene, ref.camera,
+                                               {o.width, o.height}, 4))
             << configs[i].pipeline.technique->name << " + " << configs[i].pipeline.mode->name;
 
     const auto& ms = results.front().ids;

@@ -79,18 +79,20 @@ bool lodApplied(const render::RenderSettings& settings) {
 
 // Median over the frames of what the culling let through.
 void countDrawn(BenchmarkRow& row, const std::vector<gpu::CullStats>& stats, bool mesh) {
-    std::vector<double> draws, meshlets, triangles;
+    std::vector<double> draws, meshlets, triangles, computed;
     std::array<std::vector<double>, gpu::LOD_MAX_LEVELS> levels;
     for (const gpu::CullStats& s : stats) {
         const render::CullCounts c = render::countsOf(s, mesh);
         draws.push_back(double(c.draws));
         meshlets.push_back(double(c.meshlets));
         triangles.push_back(double(c.triangles));
+        computed.push_back(double(c.computeTriangles));
         for (size_t l = 0; l < levels.size(); ++l) levels[l].push_back(double(c.levelTriangles[l]));
     }
     row.drawsDrawn = percentile(draws, 0.5);
     row.meshletsDrawn = percentile(meshlets, 0.5);
     row.trianglesDrawn = percentile(triangles, 0.5);
+    row.computeTrianglesDrawn = percentile(computed, 0.5);
     for (size_t l = 0; l < levels.size(); ++l)
         row.levelTrianglesDrawn[l] = percentile(levels[l], 0.5);
 }

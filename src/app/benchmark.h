@@ -28,6 +28,7 @@ struct BenchmarkRow {
     // Medians per frame of what was drawn (draws, meshlets, triangles); totals in `draws`,
     // `meshlets` and `triangles`.
     double drawsDrawn = 0, meshletsDrawn = 0, trianglesDrawn = 0;
+    double computeTrianglesDrawn = 0; // of those, by the compute rasterizer (visbuffer-compute)
     std::array<double, gpu::LOD_MAX_LEVELS> levelTrianglesDrawn{}; // of which at each level
     std::vector<double> gpuMsFrames; // with --camera-path: every timed frame, in path order
     double cpuMsMedian = 0;          // recording and submitting one frame

@@ -53,6 +53,7 @@ void rowMembers(util::JsonWriter& json, const BenchmarkRow& row) {
         .member("draws_drawn", count(row.drawsDrawn))
         .member("triangles", row.stats.triangles)
         .member("triangles_drawn", count(row.trianglesDrawn))
+        .member("triangles_drawn_compute", count(row.computeTrianglesDrawn))
         .member("meshlets_drawn", count(row.meshletsDrawn))
         .beginArray("triangles_drawn_by_level");
     for (double triangles : row.levelTrianglesDrawn) json.value(count(triangles));
@@ -109,6 +110,8 @@ void settingsObject(util::JsonWriter& json, const BenchmarkReport& r) {
         .member("ignore_materials", s.shading.ignoreMaterials)
         .member("edges", s.edges.on)
         .member("edge_width", s.edges.width)
+        .member("raster_pixels", s.raster.trianglePixels)
+        .member("raster_all", s.raster.all)
         .member("hidden_parts", r.hiddenParts)
         .member("camera_path", r.cameraPath)
         .endObject();

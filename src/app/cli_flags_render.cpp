@@ -79,6 +79,19 @@ std::vector<Flag> techniqueFlags(const Options& d) {
          "draw only the first ceil(F * objects) objects in scene order, 0 to 1" +
              byDefault(d.render.draws.visible),
          [](Options& o, auto& v) { o.render.draws.visible = parseFraction("--visible", v); }},
+        {"--raster-pixels", "PX",
+         "visbuffer-compute: rasterize in compute the meshlets whose projected rectangle "
+         "holds at most PX pixels per triangle (PX samples with MSAA: PX / 4 pixels at 4x); 0 "
+         "draws every one on the hardware" +
+             byDefault(d.render.raster.trianglePixels),
+         [](Options& o, auto& v) {
+             o.render.raster.trianglePixels = parseNumber("--raster-pixels", v, 1e6f, "pixels");
+         }},
+        {"--raster-all", nullptr,
+         "visbuffer-compute: rasterize in compute every meshlet the compute pass can draw "
+         "(all but those that reach in front of the near plane, across a section plane, or "
+         "over 62 pixels)",
+         [](Options& o, auto&) { o.render.raster.all = true; }},
     };
 }
 

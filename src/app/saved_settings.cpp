@@ -87,6 +87,8 @@ const std::vector<Kept>& keptSettings() {
         kept("--culling", FIELD(render.culling.mode)),
         kept("--lod-levels", FIELD(scene.lodLevels)),
         kept("--lod-error", FIELD(render.lod.errorPixels)),
+        kept("--raster-pixels", FIELD(render.raster.trianglePixels)),
+        kept("--raster-all", FIELD(render.raster.all)),
         kept("--ortho", FIELD(camera.ortho)),
         // The window's geometry at the last close: flags too, so a --size on the command line
         // wins as it does for every kept flag; Reset to defaults leaves them as they are.

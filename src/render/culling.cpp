@@ -59,8 +59,10 @@ CullPlan cullPlan(const Technique& technique, const DrawMode& mode, CullMode cul
     plan.clusterRuns = plan.gpuLists && on && technique.drawsClusterRuns();
     plan.cpuFrustum = !mode.indirect && on;
     // Lists written by cull.comp name each mesh draw in a MeshTaskCommand, which the task
-    // shader reads, culling or not.
-    plan.taskShader = technique.usesMeshShader() && (on || plan.gpuLists);
+    // shader reads, culling or not; the compute rasterizer's task shader chooses each
+    // meshlet's rasterizer, culling or not.
+    plan.taskShader =
+        technique.usesMeshShader() && (on || plan.gpuLists || technique.computeRaster);
     // Push mode draws from the CPU, which does not know what the GPU found occluded; the
     // task shader does, so push mode's mesh draws still get the two phases for meshlets.
     plan.twoPasses = culling == CullMode::Occlusion && (plan.gpuLists || plan.taskShader);
@@ -257,7 +259,8 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
                       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
 }
 
-void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const {
+void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
+                               VkDeviceAddress rasterSamples) const {
     vk::CmdLabel label(device_.debug(), cmd, "depth pyramid");
     const gpu::PyramidHeader& header = targets.pyramidHeader();
     // Earlier readers of the pyramid (the last frame's late pass, in the cull and the task
@@ -275,6 +278,7 @@ void CullPasses::recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets)
     push.pyramidAddress = targets.pyramid().address();
     push.extent = {targets.extent().width, targets.extent().height};
     push.samples = uint32_t(targets.pass().samples());
+    push.rasterSamplesAddress = rasterSamples;
     for (uint32_t level = 0; level < header.levels; level += gpu::PYRAMID_LEVELS_PER_PASS) {
         push.level = level;
         vkCmdPushConstants(cmd, pass.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,

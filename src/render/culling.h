@@ -123,8 +123,10 @@ class CullPasses {
     void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, const CullInputs& inputs,
                     const CullPlan& plan, uint32_t phase) const;
     // The pyramid of `targets` from their depth, left in DEPTH_STENCIL_READ_ONLY_OPTIMAL by
-    // the first half of the pass (its header is the targets').
-    void recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets) const;
+    // the first half of the pass (its header is the targets'), and from the compute
+    // rasterizer's samples at `rasterSamples` where that is not 0 (compute_raster.h).
+    void recordPyramid(VkCommandBuffer cmd, const SceneTargets& targets,
+                       VkDeviceAddress rasterSamples = 0) const;
 
   private:
     vk::Device& device_;

@@ -1,6 +1,8 @@
 // draw_buffers.cpp - uploading a draw list, and recording its draws.
 #include "render/draw_buffers.h"
 
+#include "render/compute_raster.h"
+
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -116,6 +118,14 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
         b->visibilityBlocks = upload.add(list.visibilityBlocks, shaderRead, "visibility blocks");
     }
 
+    if (key.technique->computeRaster) {
+        for (uint32_t count : list.meshletCounts) b->rasterCapacity += count;
+        b->rasterList = vk::Buffer(device, rasterListBytes(b->rasterCapacity),
+                                   shaderRead | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   0, "compute raster lists");
+    }
+
     const bool indirect = key.mode->indirect && !list.data.empty();
     if (indirect) b->draws = upload.add(list.data, shaderRead, "per-draw data");
     // The commands are read by the indirect draws and, with culling, by cull.comp.
@@ -227,9 +237,11 @@ void recordAllDraws(const DrawContext& c) {
         pushDraws(c, nullptr);
         return;
     }
-    // Full detail only: without the cull pass no level is chosen.
+    // Full detail only: without the cull pass no level is chosen. A task shader reads the
+    // draw of each command from the commands themselves.
     const uint32_t total = static_cast<uint32_t>(b.list.fullDetailDraws);
     const uint32_t limit = std::max(1u, c.device.info().maxDrawIndirectCount);
+    if (b.meshlets && b.key.taskCulling) pushPhase(c, b.indirect.address(), gpu::CULL_PHASE_NONE);
     for (uint32_t first = 0; first < total; first += limit) {
         const uint32_t count = std::min(limit, total - first);
         if (b.meshlets) {

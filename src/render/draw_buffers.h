@@ -26,6 +26,11 @@ struct DrawBuffers {
     // The visibility buffer: its draws and the draw of each meshlet slot of payloads
     // (DrawList::visibilityDraws, visibilityBlocks); empty for the other techniques.
     vk::Buffer visibilityDraws, visibilityBlocks;
+    // The compute rasterizer's lists (gpu::RasterEntry per listed meshlet after a dispatch
+    // header per pass, shared_visibility.h), `rasterCapacity` entries a pass: every meshlet
+    // of the list, all levels; empty for the other techniques.
+    vk::Buffer rasterList;
+    uint32_t rasterCapacity = 0;
     // The derived geometry the draws read, if the technique draws one.
     std::shared_ptr<const PartVertexBuffers> partVertices;
     std::shared_ptr<const MeshletBuffers> meshlets;

@@ -34,6 +34,7 @@ CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique) {
     counts.draws = uint64_t(stats.listed) + stats.lateNew;
     counts.meshlets = stats.meshlets;
     counts.triangles = meshTechnique ? stats.meshletTriangles : stats.triangles;
+    counts.computeTriangles = stats.rasterTriangles;
     for (uint32_t l = 0; l < gpu::LOD_MAX_LEVELS; ++l)
         counts.levelTriangles[l] =
             meshTechnique ? stats.levelMeshletTriangles[l] : stats.levelTriangles[l];
@@ -108,6 +109,19 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     }
     frame.visibilityDrawsAddress = draws_->visibilityDraws.address();
     frame.visibilityBlocksAddress = draws_->visibilityBlocks.address();
+    if (draws_->key.technique->computeRaster) {
+        frame.rasterListAddress = draws_->rasterList.address();
+        frame.rasterSamplesAddress = rasterSamplesAddress();
+        frame.rasterCapacity = draws_->rasterCapacity;
+        // X-ray's layers depth-test against the attachment alone: under them, the hardware
+        // draws everything.
+        const bool xray = translucent_ && !translucent_->empty();
+        const uint32_t samples = uint32_t(targets.pass().samples());
+        if (raster_->runsAt(samples) && !xray)
+            frame.rasterTrianglePixels = settings_.raster.all
+                                             ? gpu::RASTER_ALL
+                                             : settings_.raster.trianglePixels / float(samples);
+    }
     frame.selectedAddress = selected_->address();
     frame.hiddenAddress = hidden_->address();
     const CullBuffers& cull = *draws_->cull;
@@ -210,8 +224,9 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, 
     // Only the cull pass chooses levels: everything else is full detail.
     known.levelTriangles[0] = known.triangles;
     known.levelMeshletTriangles[0] = known.meshletTriangles;
-    const VkDeviceSize bytes = culling.plan.on() || !mesh ? offsetof(gpu::CullStats, meshlets)
-                                                          : offsetof(gpu::CullStats, unused);
+    const VkDeviceSize bytes = culling.plan.on() || !mesh
+                                   ? offsetof(gpu::CullStats, meshlets)
+                                   : offsetof(gpu::CullStats, rasterTriangles);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdUpdateBuffer(cmd, stats.handle(), 0, bytes, &known);
@@ -233,6 +248,8 @@ void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneT
     compose.width = std::clamp(e.width, edgeWidthRange.min, edgeWidthRange.max);
     compose.flags = e.on ? gpu::EDGE_LINES | gpu::EDGE_SELECTED | gpu::EDGE_HOVERED : 0u;
     compose.blink = blinkWeight(params.time);
+    compose.rasterSamplesAddress = rasterSamplesAddress();
+    compose.samples = uint32_t(targets.pass().samples());
     slot.hoverPixel = params.pickPixel;
     const uint32_t words = std::max(1u, (partCount_ + 31) / 32);
     if (!params.partSets.empty()) {

@@ -43,7 +43,8 @@ Renderer::Renderer(vk::Device& device, const vk::ShaderCompiler& compiler,
       idPasses_(std::make_shared<IdPasses>(device, compiler, pipelines_.driverCache())),
       culler_(std::make_shared<CullPasses>(device, compiler, pipelines_.driverCache())),
       resolver_(std::make_shared<Resolver>(device, compiler, pipelines_.driverCache())),
-      visibility_(std::make_shared<VisibilityShading>(device, compiler, pipelines_.driverCache())) {
+      visibility_(std::make_shared<VisibilityShading>(device, compiler, pipelines_.driverCache())),
+      raster_(std::make_shared<ComputeRaster>(device, compiler, pipelines_.driverCache())) {
     const gpu::PickData none{gpu::PICK_NONE, gpu::PICK_NONE};
     vk::UploadBatch upload(device);
     pick_ = std::make_shared<vk::Buffer>(upload.add(&none, sizeof none,
@@ -206,6 +207,7 @@ void Renderer::reloadShaders() {
     auto culler = std::make_shared<CullPasses>(device_, compiler_, cache);
     auto resolver = std::make_shared<Resolver>(device_, compiler_, cache);
     auto visibility = std::make_shared<VisibilityShading>(device_, compiler_, cache);
+    auto raster = std::make_shared<ComputeRaster>(device_, compiler_, cache);
     bool cached = false;
     pipeline_ = pipelines_.get(key, pass(key.msaa), cached);
     if (translucentPipeline_)
@@ -216,6 +218,7 @@ void Renderer::reloadShaders() {
     culler_ = std::move(culler);
     resolver_ = std::move(resolver);
     visibility_ = std::move(visibility);
+    raster_ = std::move(raster);
     lastCulledView_.reset(); // the history is of what the old shaders found
 }
 
@@ -286,6 +289,7 @@ bool Renderer::drawsStillRight(const PipelineKey& key, const DrawSettings& draws
            built.technique->primitives == key.technique->primitives &&
            // The visibility buffer's lists number the payloads too.
            built.technique->isVisibilityBuffer() == key.technique->isVisibilityBuffer() &&
+           built.technique->computeRaster == key.technique->computeRaster && // its lists
            built.searchBatch == key.searchBatch && built.mode == key.mode &&
            built.taskCulling == key.taskCulling && draws_->inputs == draws &&
            draws_->levels == levels;
@@ -312,9 +316,19 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     for (const std::shared_ptr<const void>& used :
          std::initializer_list<std::shared_ptr<const void>>{
              pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, resolver_,
-             visibility_, selected_, hidden_, target, translucentPipeline_})
+             visibility_, raster_, selected_, hidden_, target, translucentPipeline_})
         slot.keep(used);
     slot.scenePass = true;
+    if (draws_->key.technique->computeRaster) {
+        const VkDeviceSize bytes = rasterSampleBytes(targets);
+        if (!rasterSamples_ || rasterSamples_->size() != bytes)
+            rasterSamples_ = std::make_shared<vk::Buffer>(
+                device_, bytes,
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                    VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                0, "compute raster samples");
+        slot.keep(rasterSamples_);
+    }
     composed_.reset(); // the images the composition reads are drawn again
     vk::CmdLabel label(device_.debug(), cmd, "scene pass");
 
@@ -340,7 +354,8 @@ void Renderer::recordComposition(FrameSlot& slot, const std::shared_ptr<const Sc
                                  const FrameParams& params) {
     if (!sceneGpu_) throw vk::Error("Renderer::recordComposition before setScene");
     for (const std::shared_ptr<const void>& used :
-         std::initializer_list<std::shared_ptr<const void>>{idPasses_, selected_, target})
+         std::initializer_list<std::shared_ptr<const void>>{idPasses_, selected_, target,
+                                                            rasterSamples_})
         slot.keep(used);
     vk::CmdLabel label(device_.debug(), slot.cmd, "composition");
     recordIdPasses(slot.cmd, slot, *target, params);
@@ -362,6 +377,8 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     };
     stamp(StampStart);
     recordCounters(cmd, culling, true);
+    if (draws_->key.technique->computeRaster)
+        raster_->recordClear(cmd, *rasterSamples_, draws_->rasterList);
     const uint32_t firstPhase = culling.frozen ? gpu::CULL_PHASE_FROZEN : plan.firstPhase;
     const CullPasses::CullInputs inputs{frame, draws_->draws.address(), draws_->indirect.address(),
                                         sceneGpu_->clusterBoxesAddress()};
@@ -378,8 +395,10 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
         drawPhase(cmd, culling, gpu::CULL_PHASE_FROZEN_LATE);
     if (!split) recordTranslucent(cmd);
     vkCmdEndRenderPass(cmd);
+    // A frozen frame's one pass listed meshlets for both.
+    recordComputeRaster(cmd, frame, targets, 0, split ? 0 : 1);
     stamp(StampEarlyDrawn);
-    if (split) culler_->recordPyramid(cmd, targets);
+    if (split) culler_->recordPyramid(cmd, targets, rasterSamplesAddress());
     stamp(StampPyramid);
     if (split && plan.gpuLists) culler_->recordCull(cmd, cull, inputs, plan, gpu::CULL_PHASE_LATE);
     stamp(StampLateCulled);
@@ -388,6 +407,7 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
         drawPhase(cmd, culling, gpu::CULL_PHASE_LATE);
         recordTranslucent(cmd);
         vkCmdEndRenderPass(cmd);
+        recordComputeRaster(cmd, frame, targets, 1, 1);
     }
     if (draws_->key.technique->isVisibilityBuffer())
         visibility_->record(cmd, targets, visibilityPush(frame, clearColor));
@@ -397,6 +417,21 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
                               (draws_->key.technique->isFloor() ? gpu::RESOLVE_NO_IDS : 0u));
     stamp(StampDrawn);
     recordCounters(cmd, culling, false);
+}
+
+void Renderer::recordComputeRaster(VkCommandBuffer cmd, VkDeviceAddress frame,
+                                   const SceneTargets& targets, uint32_t first,
+                                   uint32_t last) const {
+    if (!draws_->key.technique->computeRaster) return;
+    for (uint32_t list = first; list <= last; ++list)
+        raster_->recordPass(cmd, frame, draws_->rasterList, list,
+                            uint32_t(targets.pass().samples()));
+}
+
+VkDeviceAddress Renderer::rasterSamplesAddress() const {
+    return draws_ && draws_->key.technique->computeRaster && rasterSamples_
+               ? rasterSamples_->address()
+               : 0;
 }
 
 } // namespace render

@@ -14,6 +14,7 @@
 
 #include "render/animator.h"
 #include "render/clear_choice.h"
+#include "render/compute_raster.h"
 #include "render/culling.h"
 #include "render/draw_buffers.h"
 #include "render/draw_list.h"
@@ -74,6 +75,7 @@ struct CullCounts {
     uint64_t triangles = 0; // triangles drawn
     // of which at each level of detail (full detail first)
     std::array<uint64_t, gpu::LOD_MAX_LEVELS> levelTriangles{};
+    uint64_t computeTriangles = 0; // of which the compute rasterizer drew (visbuffer-compute)
 };
 CullCounts countsOf(const gpu::CullStats& stats, bool meshTechnique);
 
@@ -215,6 +217,11 @@ class Renderer {
     void recordScene(FrameSlot& slot, const SceneTargets& targets, FrameCulling& culling) const;
     void recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, bool before) const;
     void recordTranslucent(VkCommandBuffer cmd) const;
+    // The compute rasterizer's pass over the lists of `first` to `last` (0: the early or only
+    // pass's, 1: the late one's), where the technique has one.
+    void recordComputeRaster(VkCommandBuffer cmd, VkDeviceAddress frame,
+                             const SceneTargets& targets, uint32_t first, uint32_t last) const;
+    VkDeviceAddress rasterSamplesAddress() const;
     // The visibility buffer's shading pass: the frame's and the draw list's addresses.
     gpu::VisibilityPush visibilityPush(VkDeviceAddress frame, bool xray) const;
     void recordPickReset(VkCommandBuffer cmd) const;
@@ -232,6 +239,10 @@ class Renderer {
     std::shared_ptr<const CullPasses> culler_;
     std::shared_ptr<const Resolver> resolver_;
     std::shared_ptr<const VisibilityShading> visibility_;
+    std::shared_ptr<const ComputeRaster> raster_;
+    // The compute rasterizer's 64-bit samples for the targets last drawn (compute_raster.h);
+    // kept by the frames that write and read them.
+    std::shared_ptr<vk::Buffer> rasterSamples_;
     // gpu::PickData, shared by all frames in flight (ordered by barriers).
     std::shared_ptr<const vk::Buffer> pick_;
 

@@ -139,6 +139,18 @@ struct LodSettings {
     bool operator==(const LodSettings&) const = default;
 };
 
+// The compute rasterizer (the visbuffer-compute technique, render/compute_raster.h): which
+// meshlets its task shader sends to the compute pass instead of the mesh shader.
+struct RasterSettings {
+    // Those whose projected rectangle holds at most this many pixels per triangle at 1x; with
+    // MSAA this many samples (pixels times samples), as the compute pass's work grows with
+    // them. 32: the best of 2, 8, 32 and every meshlet at 1x, and 8 px (32 samples) the best
+    // of 8 and every meshlet at 4x, on the H200 (docs/benchmarks.md).
+    float trianglePixels = 32.0f;
+    bool all = false; // every meshlet the compute pass can draw (tests, the benchmark)
+    bool operator==(const RasterSettings&) const = default;
+};
+
 struct RenderSettings {
     PipelineKey pipeline;
     ClearPath clear = ClearPath::Auto;
@@ -147,6 +159,7 @@ struct RenderSettings {
     EdgeSettings edges;
     CullSettings culling;
     LodSettings lod;
+    RasterSettings raster;
     // Cuts through the scene (scene/section.h). Every technique honours them, and so does
     // everything read from the ID image: picks, box selection, edges, the visible parts.
     scene::Section section;

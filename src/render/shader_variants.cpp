@@ -24,6 +24,7 @@ std::vector<vk::ShaderRequest> shaderVariants(const PipelineKey& key) {
     defines.push_back({"IDV_NO_ID", technique.isFloor() ? "1" : "0"});
     // The visibility buffer: the fragment shader writes the triangle's payload, no colour.
     defines.push_back({"IDV_VISIBILITY", technique.isVisibilityBuffer() ? "1" : "0"});
+    defines.push_back({"IDV_COMPUTE_RASTER", technique.computeRaster ? "1" : "0"});
     // Hidden parts: a mesh shader or an ordinary geometry shader drops their triangles before
     // the rasterizer, so early fragment tests stay; otherwise the fragment shader discards.
     const bool dropEarlier = mesh || (inGeometry && !key.gsPassthrough);

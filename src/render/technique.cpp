@@ -72,6 +72,13 @@ const std::vector<Technique>& techniques() {
          "triangle, shades and resolves",
          "techniques/packed_ids.glsl", Shade, IdBuffer::MeshletTrianglePartIds,
          DrawSplit::PerObject, Primitives::Meshlets},
+        {"visbuffer-compute",
+         "visibility buffer with a compute rasterizer: visbuffer, but the task shader sends "
+         "meshlets whose triangles project small to a compute pass that rasterizes them by "
+         "Vulkan's rules into 64-bit (depth, payload) samples with atomics; the rest stay on "
+         "the hardware",
+         "techniques/packed_ids.glsl", Shade, IdBuffer::MeshletTrianglePartIds,
+         DrawSplit::PerObject, Primitives::Meshlets, false, true},
         {"no-id",
          "reference floor: one draw per object, no part ID in any stage (material colour "
          "only, ID attachment masked)",

@@ -65,6 +65,9 @@ struct Technique {
     DrawSplit split;
     Primitives primitives = Primitives::SceneIndices;
     bool narySearch = false; // reads PipelineKey::nsearch (the IDV_NSEARCH_* defines)
+    // A visibility buffer whose task shader sends meshlets that project small to a compute
+    // rasterizer (render/compute_raster.h) instead of the mesh shader.
+    bool computeRaster = false;
 
     // A benchmark floor: no part ID anywhere, nothing in the ID attachment. Each kind of
     // pipeline (vertex or mesh shader) has one, so a technique is measured against the

@@ -130,6 +130,9 @@ void culling(const render::CullSettings& c, const PanelInfo& info, PanelActions&
                            counted(info.drawn.meshlets, info.totals.meshlets).c_str());
     ImGui::TextWrapped("triangles      %s",
                        counted(info.drawn.triangles, info.totals.triangles).c_str());
+    if (info.drawn.computeTriangles)
+        ImGui::TextWrapped("  in compute   %s",
+                           counted(info.drawn.computeTriangles, info.drawn.triangles).c_str());
 }
 
 // How frames start and resolve (render/settings.h ClearPath): auto shows the path it chose
@@ -193,6 +196,24 @@ void levelsOfDetail(Options& settings, const PanelInfo& info) {
     }
 }
 
+// The compute rasterizer's share: which meshlets its task shader sends to the compute pass.
+void computeRaster(render::RasterSettings& r) {
+    ImGui::Checkbox("all in compute", &r.all);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("every meshlet the compute rasterizer can draw: all but those that "
+                          "reach in front of the near plane, cross a section plane or span "
+                          "over %u pixels (--raster-all)",
+                          gpu::RASTER_MAX_SPAN - 2);
+    ImGui::BeginDisabled(r.all);
+    ImGui::SliderFloat(fitLabel("compute below [samples/tri]").c_str(), &r.trianglePixels, 0.0f,
+                       128.0f, "%.1f");
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("meshlets whose projected rectangle holds at most this many samples "
+                          "per triangle (pixels at 1x) are rasterized in compute, the rest by "
+                          "the hardware; 0: none (--raster-pixels)");
+}
+
 // What draws: the renderer, its mode and the settings it reads, and how frames are sampled,
 // cleared and resolved. The renderer, mode, MSAA and clear path are commands (a script line
 // asks for them too); the rest the panel edits in place.
@@ -207,6 +228,7 @@ void pipeline(render::RenderSettings& s, const PanelInfo& info, PanelActions& ac
     if (key.technique->readsSearchBatch())
         sliderOnRelease("search batch", key.searchBatch, render::searchBatchRange);
     if (key.technique->narySearch) narySearch(key.nsearch);
+    if (key.technique->computeRaster) computeRaster(s.raster);
     sliderOnRelease("visible objects", s.draws.visible, 0.0f, 1.0f);
     ImGui::SliderFloat(fitLabel("part weight").c_str(), &s.shading.partWeight, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("colorize draws", &s.shading.colorizeDraws);
