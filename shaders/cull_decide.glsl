@@ -19,8 +19,9 @@ void levelsStep(uint i) {
 // past its first cluster, so that an object's early clusters are its first ones; mesh draws
 // where one of its meshlets has history.
 bool hasHistory(FrameData frame, DrawData draw, DrawCull c) {
-    if (clusterRuns()) return c.firstPair < cullState().values[historyEndWord(draw.objectIndex)];
-    if (meshDraws()) return anyBitInRange(frame.meshletBitsAddress, c.meshletBit, c.meshletCount);
+    if (clusterRuns()) return c.firstPair < historyEnds().values[draw.objectIndex];
+    if (meshDraws())
+        return anyBitInRange(frame.meshletHistoryAddress, c.meshletBit, c.meshletCount);
     return false; // whole vertex draws are listed only with culling off
 }
 
@@ -51,11 +52,8 @@ uint decideLate(FrameData frame, uint i, uint before) {
     const uint kept =
         CULL_OTHER_LEVEL | CULL_IN_FRUSTUM | CULL_INSIDE_FRUSTUM | CULL_EARLY | CULL_LISTED_EARLY;
     uint bits = before & kept;
-    DrawData draw = listDraw(i);
-    // Runs: this pass finds where each object's history ends anew (runs count).
-    if (clusterRuns()) cullState().values[historyEndWord(draw.objectIndex)] = 0u;
     if ((bits & CULL_IN_FRUSTUM) == 0u) return bits;
-    ObjectData object = ObjectsRef(frame.objectsAddress).objects[draw.objectIndex];
+    ObjectData object = ObjectsRef(frame.objectsAddress).objects[listDraw(i).objectIndex];
     DrawCull c = listDrawCull(i);
     if (occluded(frame, viewBox(frame, object.world, c.boxMin, c.boxMax), CULL_DRAW_SPAN))
         return bits;

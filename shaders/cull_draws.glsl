@@ -8,9 +8,10 @@
 
 // Mesh draws, late: the (draw, meshlet) pairs, 32 to a word of meshlet bits, so each word is
 // one draw's. A meshlet of a draw whose box passed is tested against the frustum and the
-// pyramid, as the task shader would; the word's bits become what passed (the history), and
-// the late bitset (FrameData::lateMeshletWord) what passed and the early pass did not draw,
-// which is all the late task shader draws. A draw whose box did not pass keeps no history.
+// pyramid, as the task shader would; the word's bits become what passed (the meshlet
+// history, which this step alone writes in the pass), and the late bitset
+// (FrameData::lateMeshletsAddress) what passed and the early pass did not draw, which is all
+// the late task shader draws. A draw whose box did not pass keeps no history.
 // Testing here, a thread per meshlet, spares the task stage a workgroup per 32 meshlets of
 // every draw in view, nearly all of which would draw nothing.
 shared uint meshletFound[CULL_GROUP_SIZE / 32u];
@@ -37,19 +38,19 @@ void meshletsStep(uint lane, uint pair) {
     }
     barrier();
     FrameData frame = cullFrame();
-    UintsRef meshletBits = UintsRef(frame.meshletBitsAddress);
+    UintsRef history = UintsRef(frame.meshletHistoryAddress);
     bool inList = pair < cull.pairCount;
     uint d = inList ? drawOfPair(pair) : 0u;
     uint bits = inList ? cullState().values[d] : 0u;
     if ((bits & CULL_RETEST) != 0u && meshletPasses(frame, d, pair)) {
         atomicOr(meshletFound[slot], bit);
-        bool drawnEarly = (bits & CULL_EARLY) != 0u && (meshletBits.values[pair >> 5] & bit) != 0u;
+        bool drawnEarly = (bits & CULL_EARLY) != 0u && (history.values[pair >> 5] & bit) != 0u;
         if (!drawnEarly) atomicOr(meshletNew[slot], bit);
     }
     barrier();
     if (inList && (lane & 31u) == 0u) {
-        meshletBits.values[pair >> 5] = meshletFound[slot];
-        meshletBits.values[frame.lateMeshletWord + (pair >> 5)] = meshletNew[slot];
+        history.values[pair >> 5] = meshletFound[slot];
+        UintsRef(frame.lateMeshletsAddress).values[pair >> 5] = meshletNew[slot];
         if (meshletNew[slot] != 0u) atomicOr(cullState().values[d], CULL_NEW_MESHLETS);
     }
 }
@@ -93,7 +94,7 @@ void compactStep(uint lane, uint i) {
     CullStatsRef stats = CullStatsRef(cull.statsAddress);
     if (triangles != 0u) atomicAdd(stats.stats.triangles, triangles);
     if (lateStep() && lateNew != 0u) atomicAdd(stats.stats.lateNew, lateNew);
-    if (gl_WorkGroupID.x + 1u == cull.groupCount) {
+    if (gl_WorkGroupID.x + 1u == gl_NumWorkGroups.x) {
         if (!lateStep()) stats.stats.listed = base + groupTotal;
         finishList(base + groupTotal);
     }

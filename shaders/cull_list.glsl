@@ -56,13 +56,19 @@ bool clusterRuns() {
     return (cull.flags & CULL_CLUSTER_RUNS) != 0u;
 }
 
-// Runs: the state word of a (draw, cluster) pair, and an object's history end (shared_cull.h).
+// Runs: the state word of a (draw, cluster) pair (CULL_PAIR_*).
 uint pairWord(uint pair) {
     return cull.drawCount + pair;
 }
 
-uint historyEndWord(uint object) {
-    return cull.drawCount + cull.pairCount + object;
+// Runs: whether the cluster of `pair` passed the last test that made history.
+bool hadHistory(uint pair) {
+    return UintsRef(cull.pairHistoryAddress).values[pair] != 0u;
+}
+
+// Runs: the history ends of this pass's slot (shared_cull.h's History), a word per object.
+UintsRef historyEnds() {
+    return UintsRef(cull.historyEndsAddress);
 }
 
 // Sum of counts[0 .. n) over the workgroup, left in counts[0]. n is a power of two.

@@ -25,22 +25,22 @@ bool clusterPasses(FrameData frame, uint d, uint drawBits, uint pair) {
     return !view.outside && (!lateStep() || !occluded(frame, view, CULL_DRAW_SPAN));
 }
 
-// Whether the early pass draws the cluster of `pair` (of `object`, CULL_PAIR_* bits
-// `pairBits`): the clusters before its object's history end, so that the early clusters of an
-// object are always its first ones and no cluster is drawn after a later one (where two tie
-// in depth, the first drawn wins); in a still view each cluster with history by itself
-// (shared_cull.h says why no order changes then).
-bool earlyCluster(uint pair, uint object, uint pairBits) {
-    if ((cullFrame().flags & FRAME_VIEW_UNCHANGED) != 0u)
-        return (pairBits & CULL_PAIR_HISTORY) != 0u;
-    return pair < cullState().values[historyEndWord(object)];
+// Whether the early pass draws the cluster of `pair` (of `object`): the clusters before its
+// object's history end, so that the early clusters of an object are always its first ones and
+// no cluster is drawn after a later one (where two tie in depth, the first drawn wins); in a
+// still view each cluster with history by itself (shared_cull.h says why no order changes
+// then).
+bool earlyCluster(uint pair, uint object) {
+    if ((cullFrame().flags & FRAME_VIEW_UNCHANGED) != 0u) return hadHistory(pair);
+    return pair < historyEnds().values[object];
 }
 
 // One (draw, cluster) pair: whether this pass draws the cluster. Frustum: the draw may lie
 // in view. Early: the draw goes early and so does the cluster (earlyCluster). Late: the
 // draw's box passed the pyramid; every cluster of it is tested, those drawn early too, so
-// that the history (CULL_PAIR_HISTORY) follows the view, and those not drawn early are
-// listed. No atomics here: the draws' words are left to runs count.
+// that the pair history follows the view, and those not drawn early are listed. A pass that
+// makes history writes the pair history, which this step alone writes. No atomics here: the
+// draws' words are left to runs count.
 void runClustersStep(uint pair) {
     if (pair >= cull.pairCount) return;
     uint d = drawOfPair(pair);
@@ -51,15 +51,13 @@ void runClustersStep(uint pair) {
         candidate = (bits & CULL_RETEST) != 0u;
     else
         candidate = (bits & CULL_DRAW_NOW) != 0u &&
-                    (!earlyStep() || earlyCluster(pair, listDraw(d).objectIndex, before));
+                    (!earlyStep() || earlyCluster(pair, listDraw(d).objectIndex));
     bool passed = candidate && clusterPasses(cullFrame(), d, bits, pair);
-    // The history is what passed where the pass makes it, else kept; the late pass lists
-    // only what the early one did not draw.
-    uint history = (passBits() & CULL_PASS_HISTORY) != 0u ? (passed ? CULL_PAIR_HISTORY : 0u)
-                                                          : before & CULL_PAIR_HISTORY;
+    if ((passBits() & CULL_PASS_HISTORY) != 0u && passed != hadHistory(pair))
+        UintsRef(cull.pairHistoryAddress).values[pair] = passed ? 1u : 0u;
+    // The late pass lists only what the early one did not draw.
     bool now = passed && (!lateStep() || (before & CULL_PAIR_EARLY) == 0u);
-    uint after =
-        history | (passed && earlyStep() ? CULL_PAIR_EARLY : 0u) | (now ? CULL_PAIR_NOW : 0u);
+    uint after = (passed && earlyStep() ? CULL_PAIR_EARLY : 0u) | (now ? CULL_PAIR_NOW : 0u);
     if (after != before) cullState().values[pairWord(pair)] = after;
 }
 
@@ -76,15 +74,16 @@ bool runStart(uint pair, uint d) {
            (pairState(pair - 1u) & CULL_PAIR_NOW) == 0u;
 }
 
-// Late: the last pair with history of each stretch of them moves its object's history end.
+// Late: the last pair with history of each stretch of them moves its object's history end,
+// in the slot the frame zeroed before its first pass; this is its only writer.
 void moveHistoryEnd(uint pair, uint d) {
-    if ((pairState(pair) & CULL_PAIR_HISTORY) == 0u) return;
+    if (!hadHistory(pair)) return;
     uint object = listDraw(d).objectIndex;
-    if (pair + 1u < cull.pairCount && (pairState(pair + 1u) & CULL_PAIR_HISTORY) != 0u) {
+    if (pair + 1u < cull.pairCount && hadHistory(pair + 1u)) {
         uint next = drawOfPair(pair + 1u);
         if (next == d || listDraw(next).objectIndex == object) return;
     }
-    atomicMax(cullState().values[historyEndWord(object)], pair + 1u);
+    atomicMax(historyEnds().values[object], pair + 1u);
 }
 
 // Counts each workgroup's runs for runs compact, and the draws listed (late: those the early
@@ -152,8 +151,7 @@ void runsCompactStep(uint lane, uint pair) {
     countLevels(lane, start ? listDraw(d).lodLevel : 0u, triangles);
     if (lane != 0u) return;
     if (total != 0u) atomicAdd(CullStatsRef(cull.statsAddress).stats.triangles, total);
-    if (gl_WorkGroupID.x + 1u == (cull.pairCount + CULL_GROUP_SIZE - 1u) / CULL_GROUP_SIZE)
-        finishList(base + groupTotal);
+    if (gl_WorkGroupID.x + 1u == gl_NumWorkGroups.x) finishList(base + groupTotal);
 }
 
 #endif

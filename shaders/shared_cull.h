@@ -20,13 +20,19 @@
 // Push mode draws from the CPU: it tests each object's box against the frustum, and the task
 // shader of the mesh techniques culls meshlets in every phase.
 //
-// History: what the last frame's late (or frustum) test found may show, per pair: the
-// CULL_PAIR_HISTORY bit of a cluster, the bit of a meshlet (meshletBits). It decides what
-// the early pass draws. For runs, an object's early clusters are its first ones, up to its
-// last cluster with history (its history end, a word per object), so that its clusters
-// keep their order where two tie in depth; a mesh draw goes early where one of its meshlets
-// has history, and the task shader draws those meshlets. Every technique, the floors
-// included, culls by this.
+// History: what the last frame's late (or frustum) test found may show. It decides what the
+// early pass draws, and each history is a buffer of its own that one step writes in a pass
+// (CullBuffers; HistoryTest in tests/test_cull_history.cpp reads them back):
+// - pair history (runs): a word per (draw, cluster) pair, 1 where the cluster passed; written
+//   by the clusters step of the passes that make history (CULL_PASS_HISTORY).
+// - history ends (runs): per object one more than the last of its pairs with history, so that
+//   its early clusters are its first ones and keep their order where two tie in depth.
+//   Two slots: the early pass reads the one the last late pass wrote; the late pass's runs
+//   count step writes the other, which the frame zeroes before its first pass.
+// - meshlet history (mesh draws): a bit per meshlet, written by the late pass's meshlets step
+//   where cull.comp lists the draws, else by the task shader of the passes that make history.
+// A mesh draw goes early where one of its meshlets has history, and the task shader draws
+// those meshlets. Every technique, the floors included, culls by this.
 // A still view (FRAME_VIEW_UNCHANGED: nothing moved since a frame culled in two passes)
 // draws each cluster with history early by itself: one without lay wholly behind that
 // frame's early depth, so behind its final depth, which this frame draws again; drawn late,
@@ -47,7 +53,7 @@ IDV_CONST CULL_PHASE_COUNT = 6;
 // - clusters (runs): each (draw, cluster) pair of a draw in play is tested by its own box;
 // - meshlets (mesh draws, late): each (draw, meshlet) pair of a draw whose box passed is
 //   tested as the task shader would; what passed becomes history, what passed and was not
-//   drawn early is what the late task shader draws (FrameData::lateMeshletWord);
+//   drawn early is what the late task shader draws (FrameData::lateMeshletsAddress);
 // - count (mesh draws, late): each workgroup's draws counted again after the meshlets;
 // - compact: each workgroup adds the counts of the workgroups before its own and writes its
 //   commands there, so the list keeps the draw order;
@@ -79,7 +85,7 @@ IDV_CONST CULL_PASS_TESTS = 1u;   // leaves out draws out of view; without it ev
 IDV_CONST CULL_PASS_EARLY = 2u;   // lists what the history says may show, marked drawn early
 IDV_CONST CULL_PASS_LATE = 4u;    // the second list: what the first found in view, tested against
                                   // the pyramid, and what passed that the first did not draw
-IDV_CONST CULL_PASS_HISTORY = 8u; // what passed becomes the history (clusters', meshlets')
+IDV_CONST CULL_PASS_HISTORY = 8u; // what passed becomes the history (pairs', meshlets')
 
 // What the task shader draws in a phase (CullPhase::task): the meshlets that meet every bit;
 // none: every meshlet.
@@ -133,11 +139,10 @@ IDV_CONST CULL_RETEST = 32u;        // late: its box passed the pyramid; its pai
 IDV_CONST CULL_NEW_MESHLETS = 64u;  // draws, late: a meshlet passed that was not drawn early
 IDV_CONST CULL_LISTED = 128u;       // runs: the current pass lists one of its clusters
 IDV_CONST CULL_LISTED_EARLY = 256u; // runs: the early pass listed one (the counters)
-// Runs: after the draws' words, a word of CULL_PAIR_* bits per (draw, cluster) pair, then
-// the history end of every object: one more than the last of its pairs with history.
-IDV_CONST CULL_PAIR_HISTORY = 1u; // passed the last late (or frustum) test
-IDV_CONST CULL_PAIR_EARLY = 2u;   // drawn by this frame's early pass
-IDV_CONST CULL_PAIR_NOW = 4u;     // listed by the current pass
+// Runs: after the draws' words, a word of CULL_PAIR_* bits per (draw, cluster) pair, written
+// anew by each pass's clusters step.
+IDV_CONST CULL_PAIR_EARLY = 1u; // drawn by this frame's early pass
+IDV_CONST CULL_PAIR_NOW = 2u;   // listed by the current pass
 
 // CullPush::flags: what the list is (see the top).
 IDV_CONST CULL_MESH_DRAWS = 1u;   // draws of the mesh techniques: MeshTaskCommand, meshlet pairs
@@ -230,21 +235,23 @@ struct CullPush {
     uint64_t cullAddress;   // DrawCull[]
     uint64_t sourceAddress; // the whole list's indirect commands (uint words)
     uint64_t targetAddress; // this pass's commands, compacted in list order
-    uint64_t stateAddress;  // uint per draw: CULL_* bits (runs: then pairs, objects)
+    uint64_t stateAddress;  // uint per draw: CULL_* bits (runs: then CULL_PAIR_* per pair)
     uint64_t groupsAddress; // uint per workgroup: draws (runs: runs) it lists
     uint64_t statsAddress;  // CullStats
     // Runs and mesh draws: per pair its draw (uint), and the box of every cluster of the
     // scene (CullBox).
     uint64_t pairsAddress;
     uint64_t clusterBoxesAddress;
+    // Runs: the pair history, and the slot of history ends this pass uses (the early pass
+    // reads it, the late pass writes it; see History above).
+    uint64_t pairHistoryAddress;
+    uint64_t historyEndsAddress;
     uint drawCount;
     uint phase;
     uint step;
     uint commandWords; // 5: VkDrawIndexedIndirectCommand, 4: MeshTaskCommand
     uint flags;        // CULL_MESH_DRAWS or CULL_CLUSTER_RUNS (none: whole vertex draws)
-    uint groupCount;   // workgroups over the draws
     uint pairCount;
-    uint objectCount; // runs: the objects, whose history ends end the state buffer
 };
 
 // depth_pyramid.comp: PYRAMID_LEVELS_PER_PASS levels from `level` on, from the depth
@@ -263,7 +270,7 @@ struct PyramidPush {
 static_assert(sizeof(DrawCull) == 80 && sizeof(CullBox) == 32);
 static_assert(sizeof(CullStats) == 80);
 static_assert(sizeof(PyramidHeader) == 16 + 16 * PYRAMID_MAX_LEVELS);
-static_assert(sizeof(CullPush) == 112 && offsetof(CullPush, drawCount) == 80);
+static_assert(sizeof(CullPush) == 120 && offsetof(CullPush, drawCount) == 96);
 static_assert(sizeof(PyramidPush) == 32);
 #endif
 

@@ -96,14 +96,18 @@ struct FrameData {
     // for its object's; 0 when no part has one (CAD face colours)
     uint64_t partMaterialsAddress;
     // Culling (shared_cull.h), 0 where it is off: the depth pyramid (PyramidHeader, then
-    // floats), each draw's DrawCull, each meshlet's CullBox, the meshlet bits, this frame's
-    // CullStats and, where cull.comp lists the draws, their CULL_* state words.
+    // floats), each draw's DrawCull, each meshlet's CullBox, the meshlet history (uint words,
+    // a bit per meshlet), this frame's CullStats and, where cull.comp lists the draws, their
+    // CULL_* state words.
     uint64_t pyramidAddress;
     uint64_t drawCullAddress;
     uint64_t meshletBoxesAddress;
-    uint64_t meshletBitsAddress;
+    uint64_t meshletHistoryAddress;
     uint64_t cullStatsAddress;
     uint64_t cullStateAddress;
+    // Mesh tasks listed by cull.comp: the meshlets its late pass chose, bits laid out as the
+    // meshlet history's (the task shader draws just those); 0 elsewhere.
+    uint64_t lateMeshletsAddress;
     // The visibility buffer (shared_visibility.h), 0 for the other techniques: VisibilityDraw[]
     // of the draw list, and per meshlet slot of payloads its draw (uint[]).
     uint64_t visibilityDrawsAddress;
@@ -111,9 +115,6 @@ struct FrameData {
     uvec2 pickPixel; // framebuffer pixel whose nearest part is picked; x NO_PICK: none
     vec2 sampleZero; // where sample 0 lies in a pixel (0.5, 0.5 without MSAA)
     float time;      // seconds since the start (no shader reads it today)
-    // Mesh tasks listed by cull.comp: the word of meshletBits where the bits of the meshlets
-    // its late pass chose start (the task shader draws just those); 0 elsewhere.
-    uint lateMeshletWord;
     // Levels of detail: above 0, cull.comp's levels step runs and keeps each object's level
     // whose error spans under this many pixels (cull.glsl's lodChosen); 0: it does not run.
     float lodErrorPixels;
@@ -121,13 +122,13 @@ struct FrameData {
     // The compute rasterizer (shared_visibility.h), 0 for the other techniques: the task
     // shader's lists of meshlets for raster.comp (RasterEntry[], rasterCapacity a pass), and
     // the 64-bit visibility sample per framebuffer sample it writes.
+    uint rasterCapacity;
     uint64_t rasterListAddress;
     uint64_t rasterSamplesAddress;
-    uint rasterCapacity;
     // A meshlet goes to the compute path where its projected rectangle holds at most this
     // many pixels per triangle (RASTER_ALL: every meshlet it can draw); 0: none does.
     float rasterTrianglePixels;
-    uint unusedRaster[2]; // pads to 16 bytes
+    uint unusedRaster; // pads to 16 bytes
     // IDV_SECTION (scene/section.h): cut away where dot(plane, (p, 1)) > 0; unused (0,0,0,-1)
     vec4 sectionPlanes[SECTION_PLANES_MAX];
 };
@@ -174,8 +175,8 @@ struct Material {
 
 #ifdef __cplusplus
 static_assert(sizeof(Vertex) == 24);
-static_assert(sizeof(FrameData) == 368 && offsetof(FrameData, pickPixel) == 256);
-static_assert(offsetof(FrameData, rasterListAddress) == 288);
+static_assert(sizeof(FrameData) == 368 && offsetof(FrameData, pickPixel) == 264);
+static_assert(offsetof(FrameData, rasterListAddress) == 296);
 static_assert(offsetof(FrameData, sectionPlanes) == 320);
 static_assert(sizeof(PickData) == 16);
 static_assert(sizeof(ObjectData) == 144 && sizeof(Material) == 16);

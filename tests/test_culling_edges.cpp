@@ -175,9 +175,8 @@ TEST(CullingOrder, PartsOfOneObjectThatTieInDepthKeepTheirOrder) {
     // the last late test. Choosing them by their own history instead draws part 1's cluster
     // early and part 0's late, and the tie goes to part 1.
     const fs::path history = shaderCopy("cluster-history");
-    replaceInFile(history / "cull_runs.glsl",
-                  "return pair < cullState().values[historyEndWord(object)];",
-                  "return (pairBits & CULL_PAIR_HISTORY) != 0u;");
+    replaceInFile(history / "cull_runs.glsl", "return pair < historyEnds().values[object];",
+                  "return hadHistory(pair);");
     size_t lostByRuns = 0;
     for (const render::RenderSettings& settings : pyramidConfigs()) {
         const auto wrong = twoFrameImage(s, settings, history.string(), 0, messages);

@@ -143,13 +143,14 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
       objectCount(clusterRuns ? objects : 0) {
     const VkBufferUsageFlags shader =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-    draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, shader, "cull boxes");
-    pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, shader,
+    // What tests read back (tests/test_cull_history.cpp): the state, the histories and what
+    // they are indexed by.
+    const VkBufferUsageFlags readable = shader | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    draws = upload.add(cull.empty() ? std::vector<gpu::DrawCull>(1) : cull, readable, "cull boxes");
+    pairs = upload.add(drawOfPair.empty() ? std::vector<uint32_t>(1) : drawOfPair, readable,
                        "cull pairs' draws");
-    // Zeros: no history yet, so the first early pass draws nothing and the late pass the rest.
-    const size_t stateWords =
-        std::max<size_t>(drawCount, 1) + (clusterRuns ? size_t(pairCount) + objectCount : 0);
-    state = upload.add(std::vector<uint32_t>(stateWords, 0u), shader, "cull state");
+    const size_t stateWords = std::max<size_t>(drawCount, 1) + (clusterRuns ? pairCount : 0);
+    state = upload.add(std::vector<uint32_t>(stateWords, 0u), readable, "cull state");
     groups = vk::Buffer(device, std::max<VkDeviceSize>(std::max(groupCount, pairGroupCount), 1) * 4,
                         shader, 0, "cull workgroup counts");
     const uint32_t largestCommand = std::max(listCommandBytes(clusterRuns), commandBytes);
@@ -162,12 +163,20 @@ CullBuffers::CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                        shader | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                        0, "cull counters");
-    // Zeros: no meshlet has history yet. The first half is the history, the second what the
-    // late pass chose to draw (FrameData::lateMeshletWord).
+    // Zeros: no history yet, so the first early pass draws nothing and the late pass the
+    // rest.
+    if (clusterRuns) {
+        pairHistory = upload.add(std::vector<uint32_t>(pairCount, 0u), readable, "pair history");
+        historyEnds = upload.add(std::vector<uint32_t>(2 * std::max(objectCount, 1u), 0u), readable,
+                                 "history ends"); // TRANSFER_DST: the frame's reset
+    }
     meshletWords = (meshletBitCount + 31) / 32;
-    if (meshletBitCount)
-        meshletBits =
-            upload.add(std::vector<uint32_t>(2 * meshletWords, 0u), shader, "meshlet history bits");
+    if (meshletBitCount) {
+        meshletHistory =
+            upload.add(std::vector<uint32_t>(meshletWords, 0u), readable, "meshlet history");
+        lateMeshlets = vk::Buffer(device, VkDeviceSize(meshletWords) * 4, readable, 0,
+                                  "meshlets chosen by the late pass");
+    }
 }
 
 CullPasses::CullPasses(vk::Device& device, const vk::ShaderCompiler& compiler,
@@ -205,8 +214,16 @@ bool overPairs(uint32_t step) {
 
 } // namespace
 
+void CullPasses::recordHistoryReset(VkCommandBuffer cmd, const CullBuffers& buffers,
+                                    HistorySlot slot) {
+    if (!buffers.clusterRuns || buffers.objectCount == 0) return;
+    const VkDeviceSize bytes = VkDeviceSize(buffers.objectCount) * 4;
+    vkCmdFillBuffer(cmd, buffers.historyEnds.handle(), slot.late() * bytes, bytes, 0);
+}
+
 void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
-                            const CullInputs& inputs, const CullPlan& plan, uint32_t phase) const {
+                            const CullInputs& inputs, const CullPlan& plan, uint32_t phase,
+                            HistorySlot slot) const {
     const bool late = (gpu::CULL_PHASES[phase].pass & gpu::CULL_PASS_LATE) != 0;
     vk::CmdLabel label(device_.debug(), cmd, late ? "cull draws (late)" : "cull draws");
     // Earlier reads of what this pass writes (the last frame's draws of these lists, the
@@ -228,7 +245,10 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     push.pairsAddress = buffers.pairs.address();
     push.clusterBoxesAddress = inputs.clusterBoxes;
     push.pairCount = buffers.pairCount;
-    push.objectCount = buffers.objectCount;
+    if (runs) {
+        push.pairHistoryAddress = buffers.pairHistory.address();
+        push.historyEndsAddress = buffers.historyEndsAddress(late ? slot.late() : slot.early);
+    }
     push.targetAddress = buffers.lists[late ? 1 : 0].address();
     push.stateAddress = buffers.state.address();
     push.groupsAddress = buffers.groups.address();
@@ -237,7 +257,6 @@ void CullPasses::recordCull(VkCommandBuffer cmd, const CullBuffers& buffers,
     push.phase = phase;
     push.commandWords = buffers.commandBytes / 4;
     push.flags = (mesh ? gpu::CULL_MESH_DRAWS : 0u) | (runs ? gpu::CULL_CLUSTER_RUNS : 0u);
-    push.groupCount = buffers.groupCount;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, cull_.pipeline.get());
     const std::vector<uint32_t> steps = cullSteps(plan, phase, mesh, runs);
     for (uint32_t step : steps) {

@@ -76,8 +76,9 @@ bool outsideFrustum(const glm::mat4& viewProj, const glm::mat4& world, glm::vec3
 
 // The culling state of one draw list on the GPU, shared by the frames in flight (the queue
 // orders them, barriers keep their accesses apart): the boxes, per-draw state and counts,
-// the two passes' compacted commands, the counters, and the meshlet bits. Made with the draw
-// list; nothing in it changes on the CPU afterwards.
+// the two passes' compacted commands, the counters, and the histories, each in a buffer of
+// its own with one writer per pass (shared_cull.h's History). Made with the draw list; nothing
+// in it changes on the CPU afterwards.
 struct CullBuffers {
     CullBuffers(vk::Device& device, vk::UploadBatch& upload,
                 const std::vector<gpu::DrawCull>& draws, const std::vector<uint32_t>& pairs,
@@ -92,19 +93,33 @@ struct CullBuffers {
     uint32_t listCapacity = 0; // commands a list can hold
     vk::Buffer draws;          // gpu::DrawCull[]
     vk::Buffer pairs;          // uint per pair: its draw
-    // uint per draw: CULL_* bits; for runs then per pair CULL_PAIR_* bits and per object its
-    // history end (shared_cull.h)
+    // uint per draw: CULL_* bits; for runs then per pair CULL_PAIR_* bits. A frame's own.
     vk::Buffer state;
-    vk::Buffer groups;      // uint per cull.comp workgroup
-    vk::Buffer lists[2];    // the early (or only) and the late pass's commands
-    vk::Buffer stats;       // gpu::CullStats; draws[] are the indirect draw counts
-    vk::Buffer meshletBits; // uint words, empty without meshlets: the history, then late's
-    uint32_t meshletWords = 0;
-    uint32_t objectCount = 0; // runs: the objects the state buffer has a word for
+    vk::Buffer groups;   // uint per cull.comp workgroup
+    vk::Buffer lists[2]; // the early (or only) and the late pass's commands
+    vk::Buffer stats;    // gpu::CullStats; draws[] are the indirect draw counts
+    // The histories. Runs: a uint per pair (1: it has history), and the two slots of history
+    // ends, a uint per object each. Mesh draws: a bit per meshlet; next to it, not a history,
+    // the bits of the meshlets the late pass chose (FrameData::lateMeshletsAddress).
+    vk::Buffer pairHistory, historyEnds;
+    vk::Buffer meshletHistory, lateMeshlets;
+    uint32_t meshletWords = 0; // of either meshlet bitset; 0 without meshlets
+    uint32_t objectCount = 0;  // runs: the objects, a history end each per slot
+    VkDeviceAddress historyEndsAddress(uint32_t slot) const {
+        return historyEnds.address() + VkDeviceSize(slot) * objectCount * 4;
+    }
     // The bytes of one command of a list: RunCommand for runs, else the draw list's own.
     uint32_t listCommandBytes(bool runs) const {
         return runs ? uint32_t(sizeof(gpu::RunCommand)) : commandBytes;
     }
+};
+
+// Which slot of the history ends the early pass reads; the late pass writes the other, and
+// the frame zeroes that one before its first pass (Renderer flips the slot after a frame with
+// a late pass).
+struct HistorySlot {
+    uint32_t early = 0;
+    uint32_t late() const { return 1 - early; }
 };
 
 // The compute pipelines: the cull and the depth pyramid.
@@ -121,7 +136,11 @@ class CullPasses {
         VkDeviceAddress frame, draws, source, clusterBoxes;
     };
     void recordCull(VkCommandBuffer cmd, const CullBuffers& buffers, const CullInputs& inputs,
-                    const CullPlan& plan, uint32_t phase) const;
+                    const CullPlan& plan, uint32_t phase, HistorySlot slot) const;
+    // Before the frame's first pass, with the counters' reset: zeroes the slot of history
+    // ends the late pass will write, where one runs.
+    static void recordHistoryReset(VkCommandBuffer cmd, const CullBuffers& buffers,
+                                   HistorySlot slot);
     // The pyramid of `targets` from their depth, left in DEPTH_STENCIL_READ_ONLY_OPTIMAL by
     // the first half of the pass (its header is the targets'), and from the compute
     // rasterizer's samples at `rasterSamples` where that is not 0 (compute_raster.h).

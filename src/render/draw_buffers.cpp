@@ -127,7 +127,10 @@ std::shared_ptr<DrawBuffers> buildDrawBuffers(vk::Device& device, const scene::S
     }
 
     const bool indirect = key.mode->indirect && !list.data.empty();
-    if (indirect) b->draws = upload.add(list.data, shaderRead, "per-draw data");
+    // TRANSFER_SRC: tests read the draws' objects back (test_cull_history.cpp).
+    if (indirect)
+        b->draws =
+            upload.add(list.data, shaderRead | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "per-draw data");
     // The commands are read by the indirect draws and, with culling, by cull.comp.
     const VkBufferUsageFlags commandUse = VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | shaderRead;
     if (indirect && b->meshlets && key.taskCulling) {

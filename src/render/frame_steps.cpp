@@ -61,6 +61,9 @@ Renderer::FrameCulling Renderer::planFrame(const FrameParams& params, const Scen
                           settings_.section};
     c.viewUnchanged = view && culledBefore && view == lastCulledView_;
     lastCulledView_ = view;
+    // A late pass writes the slot the early pass does not read; the next frame reads it.
+    c.history = historySlot_;
+    if (c.plan.twoPasses && !c.frozen) historySlot_.early = c.history.late();
     if (!c.plan.cpuFrustum) return c;
     if (c.frozen) {
         c.objectShown = frozenObjects_;
@@ -127,12 +130,13 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     const CullBuffers& cull = *draws_->cull;
     frame.pyramidAddress = targets.pyramid().address();
     frame.drawCullAddress = cull.draws.address();
-    frame.meshletBitsAddress = cull.meshletBits.address();
+    frame.meshletHistoryAddress = cull.meshletHistory.address();
     frame.cullStatsAddress = cull.stats.address();
     if (culling.plan.gpuLists) frame.cullStateAddress = cull.state.address();
     // Where cull.comp lists mesh draws it tests the late pass's meshlets; in push mode the
     // task shader does.
-    if (culling.plan.gpuLists && draws_->meshlets) frame.lateMeshletWord = cull.meshletWords;
+    if (culling.plan.gpuLists && draws_->meshlets)
+        frame.lateMeshletsAddress = cull.lateMeshlets.address();
     if (culling.plan.levels) frame.lodErrorPixels = settings_.lod.errorPixels;
     for (uint32_t p = 0; p < gpu::SECTION_PLANES_MAX; ++p)
         frame.sectionPlanes[p] = glm::vec4(settings_.section.planes[p].equation(params.origin));
@@ -203,6 +207,8 @@ void Renderer::recordCounters(VkCommandBuffer cmd, const FrameCulling& culling, 
         const bool all = culling.plan.gpuLists && !culling.frozen;
         const VkDeviceSize from = all ? 0 : offsetof(gpu::CullStats, meshlets);
         vkCmdFillBuffer(cmd, stats.handle(), from, sizeof(gpu::CullStats) - from, 0);
+        if (all && culling.plan.twoPasses)
+            CullPasses::recordHistoryReset(cmd, *draws_->cull, culling.history);
         vk::memoryBarrier(
             cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
             VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT,

@@ -382,7 +382,7 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     const uint32_t firstPhase = culling.frozen ? gpu::CULL_PHASE_FROZEN : plan.firstPhase;
     const CullPasses::CullInputs inputs{frame, draws_->draws.address(), draws_->indirect.address(),
                                         sceneGpu_->clusterBoxesAddress()};
-    if (listOnGpu) culler_->recordCull(cmd, cull, inputs, plan, firstPhase);
+    if (listOnGpu) culler_->recordCull(cmd, cull, inputs, plan, firstPhase, culling.history);
     stamp(StampEarlyCulled);
     // The compute path clears colour in the pass only under X-ray, which blends over it.
     const bool compute = clearPath_ == ClearPath::Compute;
@@ -400,7 +400,8 @@ void Renderer::recordScene(FrameSlot& slot, const SceneTargets& targets,
     stamp(StampEarlyDrawn);
     if (split) culler_->recordPyramid(cmd, targets, rasterSamplesAddress());
     stamp(StampPyramid);
-    if (split && plan.gpuLists) culler_->recordCull(cmd, cull, inputs, plan, gpu::CULL_PHASE_LATE);
+    if (split && plan.gpuLists)
+        culler_->recordCull(cmd, cull, inputs, plan, gpu::CULL_PHASE_LATE, culling.history);
     stamp(StampLateCulled);
     if (split) {
         beginPass(cmd, targets, PassPart::Second, frame, clearColor);

@@ -185,6 +185,10 @@ class Renderer {
     CullPlan cullingPlan() const;
     // The totals the culling counters are measured against: draws, meshlets, triangles.
     CullCounts cullTotals() const;
+    // The drawn list on the GPU, and the slot of history ends the last late pass wrote: for
+    // tests that read the culling state back (tests/test_cull_history.cpp).
+    const DrawBuffers* drawBuffers() const { return draws_.get(); }
+    HistorySlot historySlot() const { return historySlot_; }
 
   private:
     // One frame's culling as recorded (frame_steps.cpp's steps read it).
@@ -192,6 +196,7 @@ class Renderer {
         CullPlan plan;
         bool frozen = false;              // drawing the lists of the last culled frame
         bool viewUnchanged = false;       // FRAME_VIEW_UNCHANGED
+        HistorySlot history;              // the history ends the passes use
         std::vector<uint8_t> objectShown; // push mode: the CPU's frustum test per object
         Issued issued;                    // push mode: the first pass's draws
     };
@@ -278,6 +283,8 @@ class Renderer {
         bool operator==(const CulledView&) const = default;
     };
     std::optional<CulledView> lastCulledView_;
+    // The slot of history ends the next early pass reads: the last late pass's.
+    HistorySlot historySlot_;
     uint64_t hiddenVersion_ = 0; // counts setHidden() calls
     uint64_t changes_ = 0;
     // What the composed image of `targets` was made from, blink aside, while nothing else
