@@ -29,7 +29,7 @@
 # switch, as the JSON of the runs before recorded them for the same or the nearest
 # configuration, plus 5 s a process (8 s at 16 copies) for the device, the scene and its
 # levels: part 1 about 5.5 minutes, part 2 about 5, part 3 about 2, part 4 about 4.5 (17 in
-# all; 21 at 10 s a process); part 5 took 3.7 minutes on the H200 (runs-part5.txt of
+# all; 21 at 10 s a process); part 5 took 3.4 minutes on the H200 (runs-part5.txt of
 # docs/benchmarks/h200-2026-11-29-raster). Parts 1 and 2 are the tables culling and levels of
 # detail change, part 1 first.
 set -euo pipefail
@@ -145,7 +145,7 @@ for copies in 1 2 4 8; do
     run 3 copies$copies --msaa 4 --copies $copies --frames 100 --renderer per-draw,tri-fs \
         --mode push,mdi-baseinstance --culling off
 done
-# Part 5 (about 3.7 min on the H200): the visibility buffer and its compute rasterizer against
+# Part 5 (about 3.4 min on the H200): the visibility buffer and its compute rasterizer against
 # vertex-fs, mesh-fs and the floors, each row in the same run: the benchmark view, 16 copies,
 # the dolly path and Motor-c, culling off and occlusion, levels of detail off and at 1 px;
 # then the compute rasterizer with every meshlet it can draw (--raster-all), and with fewer
