@@ -57,7 +57,8 @@ void runClustersStep(uint pair) {
         UintsRef(cull.pairHistoryAddress).values[pair] = passed ? 1u : 0u;
     // The late pass lists only what the early one did not draw.
     bool now = passed && (!lateStep() || (before & CULL_PAIR_EARLY) == 0u);
-    uint after = (passed && earlyStep() ? CULL_PAIR_EARLY : 0u) | (now ? CULL_PAIR_NOW : 0u);
+    uint after = (passed && earlyStep() ? CULL_PAIR_EARLY : 0u) | (now ? CULL_PAIR_NOW : 0u) |
+                 (passed ? CULL_PAIR_PASSED : 0u);
     if (after != before) cullState().values[pairWord(pair)] = after;
 }
 
@@ -74,12 +75,13 @@ bool runStart(uint pair, uint d) {
            (pairState(pair - 1u) & CULL_PAIR_NOW) == 0u;
 }
 
-// Late: the last pair with history of each stretch of them moves its object's history end,
-// in the slot the frame zeroed before its first pass; this is its only writer.
+// Late: the last pair of each stretch of those that passed (the new pair history, read from
+// the state words runs count reads anyway) moves its object's history end, in the slot the
+// frame zeroed before its first pass; this is its only writer.
 void moveHistoryEnd(uint pair, uint d) {
-    if (!hadHistory(pair)) return;
+    if ((pairState(pair) & CULL_PAIR_PASSED) == 0u) return;
     uint object = listDraw(d).objectIndex;
-    if (pair + 1u < cull.pairCount && hadHistory(pair + 1u)) {
+    if (pair + 1u < cull.pairCount && (pairState(pair + 1u) & CULL_PAIR_PASSED) != 0u) {
         uint next = drawOfPair(pair + 1u);
         if (next == d || listDraw(next).objectIndex == object) return;
     }

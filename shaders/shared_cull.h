@@ -141,8 +141,9 @@ IDV_CONST CULL_LISTED = 128u;       // runs: the current pass lists one of its c
 IDV_CONST CULL_LISTED_EARLY = 256u; // runs: the early pass listed one (the counters)
 // Runs: after the draws' words, a word of CULL_PAIR_* bits per (draw, cluster) pair, written
 // anew by each pass's clusters step.
-IDV_CONST CULL_PAIR_EARLY = 1u; // drawn by this frame's early pass
-IDV_CONST CULL_PAIR_NOW = 2u;   // listed by the current pass
+IDV_CONST CULL_PAIR_EARLY = 1u;  // drawn by this frame's early pass
+IDV_CONST CULL_PAIR_NOW = 2u;    // listed by the current pass
+IDV_CONST CULL_PAIR_PASSED = 4u; // passed the current pass's test (late: its new history)
 
 // CullPush::flags: what the list is (see the top).
 IDV_CONST CULL_MESH_DRAWS = 1u;   // draws of the mesh techniques: MeshTaskCommand, meshlet pairs
