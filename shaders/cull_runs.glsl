@@ -53,7 +53,9 @@ void runClustersStep(uint pair) {
         candidate = (bits & CULL_DRAW_NOW) != 0u &&
                     (!earlyStep() || earlyCluster(pair, listDraw(d).objectIndex));
     bool passed = candidate && clusterPasses(cullFrame(), d, bits, pair);
-    if ((passBits() & CULL_PASS_HISTORY) != 0u && passed != hadHistory(pair))
+    // Written whether it changed or not: reading it first would put one more load on the
+    // path of every pair (measured on the H200: the runs' cull 3 % slower).
+    if ((passBits() & CULL_PASS_HISTORY) != 0u)
         UintsRef(cull.pairHistoryAddress).values[pair] = passed ? 1u : 0u;
     // The late pass lists only what the early one did not draw.
     bool now = passed && (!lateStep() || (before & CULL_PAIR_EARLY) == 0u);
