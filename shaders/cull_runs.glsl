@@ -29,9 +29,9 @@ bool clusterPasses(FrameData frame, uint d, uint drawBits, uint pair) {
 // object's history end, so that the early clusters of an object are always its first ones and
 // no cluster is drawn after a later one (where two tie in depth, the first drawn wins); in a
 // still view each cluster with history by itself (shared_cull.h says why no order changes
-// then).
-bool earlyCluster(uint pair, uint object) {
-    if ((cullFrame().flags & FRAME_VIEW_UNCHANGED) != 0u) return hadHistory(pair);
+// then). `had`: whether it has history.
+bool earlyCluster(uint pair, uint object, bool had) {
+    if ((cullFrame().flags & FRAME_VIEW_UNCHANGED) != 0u) return had;
     return pair < historyEnds().values[object];
 }
 
@@ -46,15 +46,17 @@ void runClustersStep(uint pair) {
     uint d = drawOfPair(pair);
     uint bits = cullState().values[d];
     uint before = pairState(pair);
+    // Loaded beside the pair's other words, not once they are in: a load that waits on
+    // another costs every pair its latency (the H200's runs' cull, 16 copies: 2 %). For the
+    // same reason the history is written below without reading whether it changed.
+    bool had = earlyStep() && hadHistory(pair);
     bool candidate;
     if (lateStep())
         candidate = (bits & CULL_RETEST) != 0u;
     else
         candidate = (bits & CULL_DRAW_NOW) != 0u &&
-                    (!earlyStep() || earlyCluster(pair, listDraw(d).objectIndex));
+                    (!earlyStep() || earlyCluster(pair, listDraw(d).objectIndex, had));
     bool passed = candidate && clusterPasses(cullFrame(), d, bits, pair);
-    // Written whether it changed or not: reading it first would put one more load on the
-    // path of every pair (measured on the H200: the runs' cull 3 % slower).
     if ((passBits() & CULL_PASS_HISTORY) != 0u)
         UintsRef(cull.pairHistoryAddress).values[pair] = passed ? 1u : 0u;
     // The late pass lists only what the early one did not draw.
