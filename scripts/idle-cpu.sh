@@ -1,24 +1,28 @@
 #!/usr/bin/env bash
 # idle-cpu.sh [MODEL [X Y]] - how much CPU the viewer takes at rest: the viewer under Xvfb on
-# lavapipe (build/lavapipe-25) at 1280x720, the real pointer (xdotool) moved to X,Y (default
-# 824,360: the middle of the area beside the panel, where the model opens fitted; a model
-# with nothing there needs another point), and once it hovers a part and
-# has settled, the process's CPU time (user + system, all threads, from /proc) over 10
-# seconds as a share of one core; then the same with the pointer over the background.
-# MODEL defaults to the default model; any file idview opens will do. Prints two lines.
+# lavapipe (build/lavapipe-25) at 1280x720 (IDLE_SIZE=1400x850 for another size), the real
+# pointer (xdotool) moved to X,Y (default 824,360: the middle of the area beside the panel,
+# where the model opens fitted; a model with nothing there needs another point), and once it
+# hovers a part and has settled, the process's CPU time (user + system, all threads, from
+# /proc) over 10 seconds as a share of one core; then the same with the pointer over the
+# background, and with the pointer moved out of the window (the hover must end).
+# MODEL defaults to the default model; any file idview opens will do.
 # Needs the Release build in build/, Xvfb and xdotool; settings and caches go to a temporary
-# folder (IDLE_KEEP=1 keeps it).
+# folder (IDLE_KEEP=1 keeps it). Prints three lines.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 model=${1:-assets/default.glb}
 x=${2:-824}
 y=${3:-360}
+size=${IDLE_SIZE:-1280x720}
+width=${size%x*}
+height=${size#*x}
 icd=$PWD/build/lavapipe-25/lvp_icd.json
 export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd LD_LIBRARY_PATH=$PWD/build/lavapipe-25/lib
 work=$(mktemp -d)
 export XDG_CONFIG_HOME=$work/config XDG_CACHE_HOME=$work/cache
 display=:$((90 + RANDOM % 500))
-Xvfb "$display" -screen 0 1280x800x24 >/dev/null 2>&1 &
+Xvfb "$display" -screen 0 $((width + 200))x$((height + 200))x24 >/dev/null 2>&1 &
 xvfb=$!
 viewer=
 cleanup() {
@@ -29,7 +33,7 @@ cleanup() {
 trap cleanup EXIT
 export DISPLAY=$display
 for _ in $(seq 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
-build/idview --size 1280x720 --window-pos 0,0 --model "$model" --print-events \
+build/idview --size "$size" --window-pos 0,0 --model "$model" --print-events \
     >"$work/out.txt" 2>"$work/err.txt" &
 viewer=$!
 seen=0 # event lines before the last action: wait_for looks after them
@@ -58,8 +62,16 @@ wait_for '^idview: rest:'
 seen=$(wc -l <"$work/out.txt")
 xdotool mousemove "$x" "$y"
 wait_for '^idview: hovered: part'
-measure "$(grep '^idview: hovered:' "$work/out.txt" | tail -1 | cut -d' ' -f2-)"
+measure "$(grep '^idview: hovered:' "$work/out.txt" | tail -1 | cut -d' ' -f2-)$(
+    grep '^idview: edge hovered:' "$work/out.txt" | tail -1 | sed 's/^idview: /, /')"
 seen=$(wc -l <"$work/out.txt")
-xdotool mousemove 1275 715
+xdotool mousemove $((width - 5)) $((height - 5))
 wait_for '^idview: hovered: none'
 measure "nothing hovered"
+seen=$(wc -l <"$work/out.txt")
+xdotool mousemove "$x" "$y"
+wait_for '^idview: hovered: part'
+seen=$(wc -l <"$work/out.txt")
+xdotool mousemove $((width + 100)) $((height + 100))
+wait_for '^idview: hovered: none'
+measure "the pointer out of the window"

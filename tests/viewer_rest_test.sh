@@ -5,7 +5,9 @@
 # and again, over the hovered part's tiles alone and with the panel kept as drawn, and those
 # pictures are the ones a frame that draws everything shows; vsync off draws a scene pass
 # every frame; a drag that turns the camera draws scene passes; the explode slider changes
-# the picture and the viewer rests again after it. Exit 77: skipped (viewer_lib.sh).
+# the picture and the viewer rests again after it. On Motor-c.brep with a B-rep edge hovered
+# the same holds (the edge is drawn again over the tiles, the panel kept); the hover ends when
+# the pointer leaves or the window loses focus. Exit 77: skipped (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 cat >"$work/rest.txt" <<'SCRIPT'
@@ -78,51 +80,98 @@ grep -c '^idview: rest: ' "$out" | xargs echo "     rest lines:"
 # (`redraw` and the screenshot at the same time, so in the same frame), and composed over
 # the hovered part's tiles with the panel kept, after the other step was drawn. A rest after
 # each screenshot puts a rest line after it however slow the frames are (commands 0.1 s
-# apart leave no time to sleep on a slow machine).
+# apart leave no time to sleep on a slow machine). blink_pictures NAME X Y [FLAGS...]: the
+# cursor at X,Y; FLAGS go to the session.
+blink_pictures() {
+    local name=$1 x=$2 y=$3
+    shift 3
+    t=0.5
+    {
+        at frames 3
+        at move "$x" "$y"
+        at frames 5
+        at blink strong
+        at frames 3
+        echo "$t redraw"
+        at screenshot "$work/$name-strong-drawn.png"
+        at rest 0.3
+        at frames 3
+        at blink weak
+        at frames 3
+        at screenshot "$work/$name-weak-kept.png"
+        at rest 0.3
+        echo "$t redraw"
+        at screenshot "$work/$name-weak-drawn.png"
+        at rest 0.3
+        at frames 3
+        at blink strong
+        at frames 3
+        at screenshot "$work/$name-strong-kept.png"
+        at rest 0.3
+        at quit
+    } >"$work/$name.txt"
+    session "$name" "$@"
+    # Screenshots come from the same encoder, so equal files are equal pictures.
+    same() { cmp -s "$work/$name-$1.png" "$work/$name-$2.png"; }
+    local pictures
+    pictures=$(grep -c '^idview: screenshot: ' "$work/$name.out")
+    # The frames keeping the panel by each screenshot (the first rest line after it).
+    kept_at() { sed -n "/^idview: screenshot: .*$name-$1.png/,\$p" "$work/$name.out" | kept | head -1; }
+    if [[ $pictures -ne 4 ]]; then
+        fail "$name: $pictures screenshots of 4"
+    elif same strong-drawn weak-drawn; then
+        fail "$name: the two steps of the blink show the same picture"
+    elif same strong-drawn strong-kept && same weak-drawn weak-kept; then
+        echo "ok   $name: both steps of the blink composed over its tiles with the panel kept equal them drawn anew"
+    else
+        fail "$name: a step of the blink composed at rest differs from the same step drawn anew"
+    fi
+    [[ $(kept_at weak-kept) -gt $(kept_at strong-drawn) && $(kept_at strong-kept) -gt $(kept_at weak-drawn) ]] &&
+        echo "ok   $name: the frames of those steps kept the panel" ||
+        fail "$name: no frame kept the panel: $(kept_at strong-drawn) $(kept_at weak-kept) $(kept_at weak-drawn) $(kept_at strong-kept)"
+    grep -q 'validation' "$work/$name.err" && fail "validation: $(grep -m3 validation "$work/$name.err")"
+}
+blink_pictures blink 480 230
+# On a B-rep the pointer also hovers an edge, drawn over the scene apart from the panel
+# (ImGui's foreground list): a step of the blink draws it again over the part's tiles alone.
+motor=/usr/share/opencascade/data/occ/Motor-c.brep
+blink_pictures edge 480 230 --model "$motor"
+grep -q '^idview: edge hovered: part ' "$work/edge.out" &&
+    echo "ok   edge: $(grep -m1 '^idview: edge hovered: part ' "$work/edge.out" | cut -d' ' -f2-)" ||
+    fail "edge: no B-rep edge hovered at 480,230 on $motor"
+
+# The hover ends when the pointer leaves the window and when the window loses the keyboard:
+# nothing blinks then (the compositions stop), and moving over the part hovers it again.
 t=0.5
 {
     at frames 3
     at move 480 230
     at frames 5
-    at blink strong
-    at frames 3
-    echo "$t redraw"
-    at screenshot "$work/strong-drawn.png"
-    at rest 0.3
-    at frames 3
-    at blink weak
-    at frames 3
-    at screenshot "$work/weak-kept.png"
-    at rest 0.3
-    echo "$t redraw"
-    at screenshot "$work/weak-drawn.png"
-    at rest 0.3
-    at frames 3
-    at blink strong
-    at frames 3
-    at screenshot "$work/strong-kept.png"
-    at rest 0.3
+    at leave
+    at rest 3
+    at move 480 230
+    at frames 5
+    at unfocus
+    at rest 3
     at quit
-} >"$work/blink.txt"
-session blink
-# Screenshots come from the same encoder, so equal files are equal pictures.
-same() { cmp -s "$work/$1.png" "$work/$2.png"; }
-pictures=$(grep -c '^idview: screenshot: ' "$work/blink.out")
-# The frames keeping the panel by each screenshot (the first rest line after it).
-kept_at() { sed -n "/^idview: screenshot: .*$1.png/,\$p" "$work/blink.out" | kept | head -1; }
-if [[ $pictures -ne 4 ]]; then
-    fail "$pictures screenshots of 4"
-elif same strong-drawn weak-drawn; then
-    fail "the two steps of the blink show the same picture"
-elif same strong-drawn strong-kept && same weak-drawn weak-kept; then
-    echo "ok   both steps of the blink composed over its tiles with the panel kept equal them drawn anew"
-else
-    fail "a step of the blink composed at rest differs from the same step drawn anew"
-fi
-[[ $(kept_at weak-kept) -gt $(kept_at strong-drawn) && $(kept_at strong-kept) -gt $(kept_at weak-drawn) ]] &&
-    echo "ok   the frames of those steps kept the panel" ||
-    fail "no frame kept the panel: $(kept_at strong-drawn) $(kept_at weak-kept) $(kept_at weak-drawn) $(kept_at strong-kept)"
-grep -q 'validation' "$work/blink.err" && fail "validation: $(grep -m3 validation "$work/blink.err")"
+} >"$work/leave.txt"
+session leave
+out=$work/leave.out
+# After each "hovered: none", three seconds of rest: a blink would compose six frames or more
+# in them however slow the machine (a step every third of a second, each woken by the clock);
+# without it only the frames that follow an event (three, pacer.h) and the hover's own.
+n=0
+while read -r at; do
+    n=$((n + 1))
+    c=$(sed -n "$at,\$p" "$out" | awk '/^idview: hovered: part/ {exit} {print}' | comps)
+    first=$(echo "$c" | head -1)
+    last=$(echo "$c" | tail -1)
+    [[ -n $first && $((last - first)) -le 4 ]] &&
+        echo "ok   hover $n ended: compositions $first to $last while the pointer is away" ||
+        fail "hover $n ended but the compositions went on: '$first' to '$last'"
+done < <(grep -n '^idview: hovered: none' "$out" | cut -d: -f1)
+[[ $n -eq 2 && $(grep -c '^idview: hovered: part' "$out") -eq 2 ]] ||
+    fail "leave, then unfocus: $n hovers ended of 2, $(grep -c '^idview: hovered: part' "$out") began"
 
 # The explode slider, as a script's `explode` sets it: the picture changes, and afterwards
 # the viewer rests again, frames composed with no scene pass while nothing moves.

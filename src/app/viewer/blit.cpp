@@ -29,7 +29,7 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImag
 } // namespace
 
 void recordSceneToPicture(VkCommandBuffer cmd, const vk::Image& scene, const vk::Image& picture,
-                          const std::optional<VkRect2D>& only) {
+                          const std::optional<VkRect2D>& only, bool drawnOver) {
     if (only && (only->extent.width == 0 || only->extent.height == 0)) return; // nothing changed
     // After the last frame's copy of the picture to the window (and to a screenshot).
     imageBarrier(cmd, picture.handle(),
@@ -51,7 +51,7 @@ void recordSceneToPicture(VkCommandBuffer cmd, const vk::Image& scene, const vk:
     corners(to, region.dstOffsets);
     vkCmdBlitImage(cmd, scene.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, picture.handle(),
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
-    if (only)
+    if (only && !drawnOver)
         imageBarrier(cmd, picture.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,

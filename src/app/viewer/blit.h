@@ -20,9 +20,10 @@ namespace app {
 // window changed size since the scene targets were made, and it is left in
 // COLOR_ATTACHMENT_OPTIMAL for the panel pass. `only` a rectangle (the same size images):
 // the rest of the picture stays as the last frame left it (TRANSFER_SRC_OPTIMAL), and so
-// does the layout.
+// does the layout, unless `drawnOver` (the overlay is drawn again there: left in
+// COLOR_ATTACHMENT_OPTIMAL).
 void recordSceneToPicture(VkCommandBuffer cmd, const vk::Image& scene, const vk::Image& picture,
-                          const std::optional<VkRect2D>& only);
+                          const std::optional<VkRect2D>& only, bool drawnOver = false);
 
 // Copies the picture (TRANSFER_SRC_OPTIMAL) onto the acquired swapchain image, left in
 // PRESENT_SRC_KHR. The frame's submit must wait for the acquire at the transfer stage.

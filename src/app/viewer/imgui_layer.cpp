@@ -1,8 +1,10 @@
 // imgui_layer.cpp - Dear ImGui backend set-up, font upload, panel pass and shutdown.
 #include "app/viewer/imgui_layer.h"
 
+#include <algorithm>
 #include <array>
 #include <cfloat>
+#include <cstring>
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
@@ -17,6 +19,33 @@ namespace {
 void checkImGuiResult(VkResult result) {
     vk::check(result, "Dear ImGui's Vulkan backend");
 }
+
+// The foreground list: what the viewer draws over the scene rather than in the panel's
+// windows (edge_hover.cpp, measure.cpp, the selection box).
+const ImDrawList* overlayList(const ImDrawData& data) {
+    for (int l = 0; l < data.CmdListsCount; ++l)
+        if (data.CmdLists[l]->_OwnerName &&
+            std::strcmp(data.CmdLists[l]->_OwnerName, "##Foreground") == 0)
+            return data.CmdLists[l];
+    return nullptr;
+}
+
+// The box a draw list's vertices span, as the whole pixels its triangles may touch.
+struct Span {
+    glm::vec2 lo{FLT_MAX}, hi{-FLT_MAX};
+    void add(ImVec2 p) {
+        lo = glm::min(lo, glm::vec2(p.x, p.y));
+        hi = glm::max(hi, glm::vec2(p.x, p.y));
+    }
+    std::optional<VkRect2D> pixels() const {
+        if (lo.x > hi.x) return std::nullopt;
+        // One more pixel each side for the rounding.
+        const glm::ivec2 first = glm::ivec2(glm::floor(lo)) - 1,
+                         last = glm::ivec2(glm::ceil(hi)) + 1;
+        return VkRect2D{{first.x, first.y},
+                        {uint32_t(last.x - first.x), uint32_t(last.y - first.y)}};
+    }
+};
 
 vk::Handle<VkRenderPass> createPanelPass(vk::Device& device, VkFormat format) {
     VkAttachmentDescription color{};
@@ -141,13 +170,47 @@ void ImGuiLayer::newFrame(std::optional<glm::vec2> cursor) {
 }
 
 void ImGuiLayer::record(VkCommandBuffer cmd) const {
+    recordPass(cmd, ImGui::GetDrawData());
+}
+
+void ImGuiLayer::recordPass(VkCommandBuffer cmd, ImDrawData* data) const {
     auto begin = vk::init<VkRenderPassBeginInfo>(VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO);
     begin.renderPass = pass_.get();
     begin.framebuffer = framebuffer_.get();
     begin.renderArea = {{0, 0}, extent_};
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
+    ImGui_ImplVulkan_RenderDrawData(data, cmd);
     vkCmdEndRenderPass(cmd);
+}
+
+void ImGuiLayer::recordOverlay(VkCommandBuffer cmd, const VkRect2D& only) const {
+    ImDrawData* whole = ImGui::GetDrawData();
+    const ImDrawList* overlay = whole ? overlayList(*whole) : nullptr;
+    ImDrawList* clipped = overlay ? overlay->CloneOutput() : nullptr;
+    if (clipped) {
+        // The backend scissors each command to its clip rectangle (ImGui's coordinates): the
+        // overlay's pixels outside `only` are in the picture already and must not blend twice.
+        const ImVec2 scale = whole->FramebufferScale, origin = whole->DisplayPos;
+        const ImVec4 keep(origin.x + float(only.offset.x) / scale.x,
+                          origin.y + float(only.offset.y) / scale.y,
+                          origin.x + float(only.offset.x + int32_t(only.extent.width)) / scale.x,
+                          origin.y + float(only.offset.y + int32_t(only.extent.height)) / scale.y);
+        for (ImDrawCmd& c : clipped->CmdBuffer)
+            c.ClipRect = ImVec4(std::max(c.ClipRect.x, keep.x), std::max(c.ClipRect.y, keep.y),
+                                std::min(c.ClipRect.z, keep.z), std::min(c.ClipRect.w, keep.w));
+    }
+    ImDrawData data;
+    data.Valid = true;
+    data.CmdLists = &clipped;
+    data.CmdListsCount = clipped ? 1 : 0;
+    data.TotalVtxCount = clipped ? clipped->VtxBuffer.Size : 0;
+    data.TotalIdxCount = clipped ? clipped->IdxBuffer.Size : 0;
+    data.DisplayPos = whole ? whole->DisplayPos : ImVec2(0, 0);
+    data.DisplaySize =
+        whole ? whole->DisplaySize : ImVec2(float(extent_.width), float(extent_.height));
+    data.FramebufferScale = whole ? whole->FramebufferScale : ImVec2(1, 1);
+    recordPass(cmd, &data); // with nothing to draw, the pass still ends the layout's way
+    IM_DELETE(clipped);
 }
 
 // FNV-1a over the bytes ImGui hands the backend, and the box its vertices span.
@@ -162,9 +225,10 @@ ImGuiLayer::Drawn ImGuiLayer::drawn() {
             hash *= 0x100000001b3ull;
         }
     };
-    glm::vec2 lo(FLT_MAX), hi(-FLT_MAX);
+    Span panel, overlay;
     for (int l = 0; l < data->CmdListsCount; ++l) {
         const ImDrawList& list = *data->CmdLists[l];
+        Span& span = &list == overlayList(*data) ? overlay : panel;
         add(list.VtxBuffer.Data, size_t(list.VtxBuffer.Size) * sizeof(ImDrawVert));
         add(list.IdxBuffer.Data, size_t(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
         for (const ImDrawCmd& c : list.CmdBuffer) {
@@ -174,19 +238,11 @@ ImGuiLayer::Drawn ImGuiLayer::drawn() {
             add(&c.IdxOffset, sizeof c.IdxOffset);
             add(&c.ElemCount, sizeof c.ElemCount);
         }
-        for (const ImDrawVert& v : list.VtxBuffer) {
-            lo = glm::min(lo, glm::vec2(v.pos.x, v.pos.y));
-            hi = glm::max(hi, glm::vec2(v.pos.x, v.pos.y));
-        }
+        for (const ImDrawVert& v : list.VtxBuffer) span.add(v.pos);
     }
     drawn.hash = hash;
-    if (lo.x <= hi.x) {
-        // Whole pixels that any triangle may touch, one more each side for the rounding.
-        const glm::ivec2 first = glm::ivec2(glm::floor(lo)) - 1,
-                         last = glm::ivec2(glm::ceil(hi)) + 1;
-        drawn.bounds =
-            VkRect2D{{first.x, first.y}, {uint32_t(last.x - first.x), uint32_t(last.y - first.y)}};
-    }
+    drawn.bounds = panel.pixels();
+    drawn.overlay = overlay.pixels();
     return drawn;
 }
 

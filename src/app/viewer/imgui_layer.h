@@ -14,6 +14,7 @@
 #include "vk/resources.h"
 
 struct GLFWwindow;
+struct ImDrawData;
 
 namespace app {
 
@@ -36,15 +37,24 @@ class ImGuiLayer {
     // TRANSFER_SRC_OPTIMAL). ImGui::Render() must have run this frame.
     void record(VkCommandBuffer cmd) const;
 
+    // Records the overlay alone (ImGui's foreground list: hovered and selected edges, the
+    // measure marks, a selection box) clipped to `only`, over a picture whose `only` was just
+    // blitted from the scene (in COLOR_ATTACHMENT_OPTIMAL; left in TRANSFER_SRC_OPTIMAL).
+    // Those pixels then equal what record() draws there, when the panel does not reach them.
+    void recordOverlay(VkCommandBuffer cmd, const VkRect2D& only) const;
+
     // What ImGui::Render() made this frame: a hash of everything the backend would draw (equal
-    // hashes draw equal pixels) and the pixels its triangles may touch (none: nothing drawn).
+    // hashes draw equal pixels), the pixels the panel's triangles may touch and those the
+    // overlay's may (none: nothing drawn).
     struct Drawn {
         uint64_t hash = 0;
-        std::optional<VkRect2D> bounds;
+        std::optional<VkRect2D> bounds, overlay;
     };
     static Drawn drawn();
 
   private:
+    void recordPass(VkCommandBuffer cmd, ImDrawData* data) const;
+
     // Dear ImGui's context and backends, shut down in reverse order of their start.
     struct Backends {
         bool context = false, glfw = false, vulkan = false;

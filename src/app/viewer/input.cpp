@@ -43,6 +43,7 @@ void Input::onCursor(double x, double y) {
     const glm::dvec2 position(x, y);
     const glm::dvec2 delta = position - cursor_;
     cursor_ = position;
+    pointing_ = true; // X delivers motion only over the window (or to the drag holding it)
     if (!drag_) return;
     drag_->moved = std::max(drag_->moved, glm::length(position - drag_->start));
     int width = 0, height = 0;
@@ -51,6 +52,15 @@ void Input::onCursor(double x, double y) {
         viewer_.camera().pan(glm::vec2(delta), float(height));
     else if (drag_->kind == DragKind::Orbit)
         viewer_.camera().orbit(glm::vec2(delta)); // a box leaves the view as it is
+}
+
+void Input::onCursorEnter(bool entered) {
+    // A drag goes on outside the window (the window system holds the pointer for it).
+    if (!entered && !drag_) pointing_ = false;
+}
+
+void Input::onFocus(bool focused) {
+    if (!focused && !drag_) pointing_ = false;
 }
 
 void Input::onButton(int button, int action, int mods) {
@@ -112,6 +122,7 @@ std::vector<std::string> Input::takeDrops() {
 }
 
 std::optional<glm::vec2> Input::cursorInWindow() const {
+    if (!pointing_) return std::nullopt;
     int width = 0, height = 0;
     glfwGetWindowSize(window_, &width, &height);
     if (cursor_.x < 0 || cursor_.y < 0 || cursor_.x >= width || cursor_.y >= height)

@@ -36,6 +36,11 @@ class Input {
     void onCursor(double x, double y);
     void onButton(int button, int action, int mods);
     void onScroll(double dx, double dy);
+    // The pointer left (or entered) the window, the window lost (or gained) the keyboard: the
+    // hover ends until the pointer moves over the window again, so nothing blinks while the
+    // person works elsewhere.
+    void onCursorEnter(bool entered);
+    void onFocus(bool focused);
     void onDrop(const std::string& path); // opened between frames (takeDrops)
     // Before the panel's frame starts: this frame's share of the key events for ImGui.
     void feedPanelKeys();
@@ -131,6 +136,7 @@ class Input {
     Viewer& viewer_;
     GLFWwindow* window_;
     glm::dvec2 cursor_{-1.0, -1.0};
+    bool pointing_ = false; // the cursor is over the window and the person is with it
     std::optional<Drag> drag_;
     std::optional<Box> box_;
     uint64_t partSetsFrom_ = 0; // the first frame whose part sets are still to be read

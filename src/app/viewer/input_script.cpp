@@ -97,6 +97,12 @@ void Input::queue(const ScriptLine& line) {
     case ScriptOp::Drop:
         step([this, path = line.text] { onDrop(path); }, true);
         break;
+    case ScriptOp::Leave:
+        step([this] { onCursorEnter(false); }, true);
+        break;
+    case ScriptOp::Unfocus:
+        step([this] { onFocus(false); }, true);
+        break;
     case ScriptOp::Move:
     case ScriptOp::Click:
     case ScriptOp::DoubleClick:

@@ -78,13 +78,17 @@ void Presenter::record(VkCommandBuffer cmd, const Image& image, const vk::Image&
     std::optional<ImGuiLayer::Drawn> panel;
     if (sceneChanged) panel = ImGuiLayer::drawn();
     // The picture keeps the panel when the panel drew the same as when it was drawn in, and
-    // the scene changed only where the panel does not reach.
+    // the scene changed only where the panel's windows do not reach. The overlay over the
+    // scene (a hovered edge lies in the hovered part's tiles) is drawn again there alone.
     const bool keep = panel && drawnPanel_ == panel->hash && shownScene_ == scene.handle() &&
                       scene.extent().width == size.width && scene.extent().height == size.height &&
                       !(panel->bounds && overlap(*panel->bounds, *sceneChanged));
     shownScene_ = scene.handle();
     if (keep) {
-        recordSceneToPicture(cmd, scene, picture_, sceneChanged);
+        const bool overlay = panel->overlay && overlap(*panel->overlay, *sceneChanged) &&
+                             sceneChanged->extent.width > 0 && sceneChanged->extent.height > 0;
+        recordSceneToPicture(cmd, scene, picture_, sceneChanged, overlay);
+        if (overlay) panel_->recordOverlay(cmd, *sceneChanged);
         ++keptPanels_;
     } else {
         recordSceneToPicture(cmd, scene, picture_, std::nullopt);

@@ -36,6 +36,8 @@ const InputSpec inputSpecs[] = {
     {"drag", ScriptOp::Drag, 4, "drag X0 Y0 X1 Y1", true},
     {"box", ScriptOp::Box, 4, "box X0 Y0 X1 Y1 [add|remove]", true},
     {"scroll", ScriptOp::Scroll, 1, "scroll DY", false},
+    {"leave", ScriptOp::Leave, 0, "leave", false},
+    {"unfocus", ScriptOp::Unfocus, 0, "unfocus", false},
     {"resize", ScriptOp::Resize, 2, "resize WIDTH HEIGHT", false},
     {"drop", ScriptOp::Drop, 0, "drop FILE", false},
     {"loaded", ScriptOp::Loaded, 0, "loaded", false},

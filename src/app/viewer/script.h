@@ -14,6 +14,8 @@
 //   0.6 type /tmp/a b.glb   characters typed into the panel's focused field (the rest of the
 //                           line, ASCII), as GLFW hands them over
 //   1   move 320 200        cursor to window coordinates (top-left origin)
+//   1.1 leave               the pointer leaves the window (GLFW's cursor-leave event)
+//   1.1 unfocus             the window loses the keyboard focus (another window took it)
 //   1.2 click 320 200       move there, press and release the left button; `click ... ctrl`
 //                           holds Ctrl (thing B of the Inspect panel, things.h)
 //   1.3 dblclick 320 200    move there and click twice at once (a double-click)
@@ -104,6 +106,8 @@ enum class ScriptOp {
     Drag,
     Box,
     Scroll,
+    Leave,
+    Unfocus,
     Resize,
     Drop,
     Loaded,

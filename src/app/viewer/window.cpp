@@ -138,10 +138,12 @@ void Window::listen(Input& input) {
     glfwSetWindowFocusCallback(w, [](GLFWwindow* w, int focused) {
         ++windowEvents;
         ImGui_ImplGlfw_WindowFocusCallback(w, focused);
+        guarded(w, [&](Input& in) { in.onFocus(focused == GLFW_TRUE); });
     });
     glfwSetCursorEnterCallback(w, [](GLFWwindow* w, int entered) {
         ++windowEvents;
         ImGui_ImplGlfw_CursorEnterCallback(w, entered);
+        guarded(w, [&](Input& in) { in.onCursorEnter(entered == GLFW_TRUE); });
     });
     glfwSetWindowRefreshCallback(w, [](GLFWwindow*) { ++windowEvents; });
     glfwSetFramebufferSizeCallback(w, [](GLFWwindow*, int, int) { ++windowEvents; });
