@@ -256,7 +256,7 @@ if [[ -f $screw ]]; then
         bash -c '"$1" --model "$2" --export "$3" && "$1" --model "$3" --stats' _ "$idview" "$screw" "$work/screw.glb"
 fi
 head -c 4000 /dev/urandom >"$work/junk.STEP"
-expect cad-junk 1 "^idview: error: $work/junk.STEP: not a readable STEP file" -- "$idview" --model "$work/junk.STEP" --stats
+expect cad-junk 1 "^idview: error: $work/junk.STEP: not a STEP file \\(no 'ISO-10303-21' header\\)$" -- "$idview" --model "$work/junk.STEP" --stats
 : >"$work/empty.igs"
 expect cad-empty 1 "^idview: error: $work/empty.igs: the file is empty" -- "$idview" --model "$work/empty.igs" --stats
 expect distance-one-id 2 "--distance expects A,B \\(two unique part IDs\\), not '4'" -- "$idview" --distance 4

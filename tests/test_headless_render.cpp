@@ -290,3 +290,17 @@ TEST(HeadlessRenderScenes, OrthoLightsEveryPointFromTheViewsDirection) {
     EXPECT_EQ(colours(true), 1u);
     EXPECT_GT(colours(false), 5u);
 }
+
+// An STL file's solids are objects of one part each: the ID image holds exactly both
+// triangles' IDs (and the background), and a real model agrees with the ray cast.
+TEST(HeadlessRenderScenes, StlSolidsDrawTheirPartsAndAgreeWithRaycast) {
+    app::SceneSettings source;
+    source.model = "/usr/share/assimp/models/STL/triangle_with_two_solids.stl";
+    const app::LoadedScene two = app::loadScene(source);
+    const scene::Camera camera = app::initialCamera(two, 160.0f / 100.0f);
+    const HeadlessResult r = renderChecked(testOptions(160, 100), two.scene, camera);
+    const std::set<uint32_t> seen(r.ids.begin(), r.ids.end());
+    EXPECT_EQ(seen, (std::set<uint32_t>{0, 1, gpu::BACKGROUND_ID}));
+    source.model = "/usr/share/opencascade/data/stl/bearing.stl";
+    expectIdsMatchRaycast(app::loadScene(source), 160, 100, 1);
+}

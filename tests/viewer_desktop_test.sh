@@ -64,7 +64,7 @@ grep -qx "idview: file chooser: $work/chosen model.glb (zenity)" "$work/chooser.
     grep -q "^idview: opened: $work/chosen model.glb" "$work/chooser.out" &&
     echo "ok   Ctrl+O: zenity chose a model, which opened" ||
     fail "Open... through zenity: $(grep -e chooser -e opened "$work/chooser.out" | head -5)"
-grep -qx -- "--file-filter=glTF and CAD models | \*.gltf \*.glb \*.step \*.stp \*.iges \*.igs \*.brep.*" \
+grep -qx -- "--file-filter=Models | \*.gltf \*.GLTF \*.glb \*.GLB \*.step .*\*.brep \*.BREP \*.stl \*.STL" \
     "$work/zenity-args.txt" && grep -qx -- "--file-filter=All files | \*" "$work/zenity-args.txt" &&
     echo "ok   zenity was given the formats idview reads, and All files" ||
     fail "zenity's arguments: $(head -c 600 "$work/zenity-args.txt" 2>/dev/null)"

@@ -9,6 +9,7 @@
 #include "app/scene_source.h"
 #include "scene/camera_path.h"
 #include "scene/copies.h"
+#include "scene/formats.h"
 #include "scene/lod.h"
 
 namespace app::flag_tables {
@@ -16,8 +17,9 @@ namespace app::flag_tables {
 std::vector<Flag> sceneFlags(const Options& d) {
     return {
         {"--model", "FILE",
-         "open a glTF model (.gltf, .glb) or a CAD file (.step, .stp, .iges, .igs, .brep; "
-         "one part per B-rep face); default: assets/default.glb",
+         "open a model: " + scene::formatList() +
+             "; a part is a glTF primitive, a B-rep face, an STL solid; default: "
+             "assets/default.glb",
          [](Options& o, auto& v) { o.scene.model = v; }},
         {"--scene", "SPEC",
          "built-in scene instead of a model: assembly, tiles (the test layout) or "

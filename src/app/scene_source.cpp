@@ -15,10 +15,12 @@
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
+#include "scene/formats.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/lod.h"
 #include "scene/procedural/generator.h"
 #include "scene/procedural/procedural.h"
+#include "scene/stl/stl_loader.h"
 
 namespace app {
 
@@ -125,13 +127,21 @@ void loadSource(LoadedScene& loaded, const SceneSettings& settings, LoadProgress
                 const std::atomic<bool>* cancel, const scene::CadPartialSink& partial) {
     loaded.source = sourceOf(settings);
     if (!settings.model.empty() || settings.builtin.empty()) {
+        // Every file, whatever its format, is refused here in one line when its content is
+        // not what its name says, before a reader can answer in its own words.
+        const scene::Reader reader = scene::checkModelFile(loaded.source).reader;
         refuseOutOfMemory(loaded.source, loadingWhat(loaded.source), [&] {
-            if (scene::isCadPath(loaded.source))
+            if (scene::isBrepReader(reader))
                 return loadCadFile(loaded, settings, progress, cancel, partial);
-            scene::LoadResult result = scene::loadGltf(loaded.source, {settings.parts});
+            const bool stl = reader == scene::Reader::Stl;
+            scene::LoadResult result = stl ? scene::loadStl(loaded.source)
+                                           : scene::loadGltf(loaded.source, {settings.parts});
             loaded.scene = std::move(result.scene);
             loaded.warnings = std::move(result.warnings);
-            loaded.scene.unit = scene::gltfUnit();
+            loaded.scene.unit = stl ? scene::stlUnit() : scene::gltfUnit();
+            if (stl && settings.parts != scene::PartMode::Primitives)
+                loaded.warnings.insert(loaded.warnings.begin(),
+                                       "--parts is ignored for STL files: a part is a solid");
         });
         return;
     }
@@ -194,7 +204,8 @@ scene::Camera initialCamera(const LoadedScene& loaded, float aspect, const Camer
     } else {
         // A three-quarter view from the front, above: how CAD viewers open an assembly. glTF
         // is y-up, the built-in scenes z-up.
-        const bool yUp = loaded.source.ends_with(".glb") || loaded.source.ends_with(".gltf");
+        const scene::ModelFormat* format = scene::formatOfName(loaded.source);
+        const bool yUp = format && format->reader == scene::Reader::Gltf;
         const glm::vec3 up = yUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
         const glm::vec3 direction =
             yUp ? glm::vec3(0.9f, 1.2f, 1.6f) : glm::vec3(0.9f, -1.6f, 1.2f);

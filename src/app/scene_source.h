@@ -1,6 +1,6 @@
-// scene_source.h - where the scene comes from: a glTF or CAD file (--model), a built-in or
-// procedural scene (--scene), or the default model in assets/; then model copies. Shared by
-// the headless path, the viewer and --stats.
+// scene_source.h - where the scene comes from: a model file (--model, in a format that
+// scene/formats.h lists), a built-in or procedural scene (--scene), or the default model in
+// assets/; then model copies. Shared by the headless path, the viewer and --stats.
 #pragma once
 
 #include <atomic>

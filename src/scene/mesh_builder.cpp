@@ -7,6 +7,22 @@
 
 namespace scene {
 
+std::vector<glm::vec3> areaWeightedNormals(std::span<const glm::vec3> positions,
+                                           std::span<const uint32_t> corners) {
+    std::vector<glm::vec3> sum(positions.size(), glm::vec3(0.0f));
+    for (size_t i = 0; i + 2 < corners.size(); i += 3) {
+        const glm::vec3& a = positions[corners[i]];
+        const glm::vec3 n =
+            glm::cross(positions[corners[i + 1]] - a, positions[corners[i + 2]] - a);
+        for (size_t k = 0; k < 3; ++k) sum[corners[i + k]] += n;
+    }
+    for (auto& n : sum) {
+        const float len = glm::length(n);
+        n = (std::isfinite(len) && len > 0.0f) ? n / len : glm::vec3(0, 0, 1);
+    }
+    return sum;
+}
+
 void MeshBuilder::beginPart() {
     uint32_t triangles = static_cast<uint32_t>(indices_.size() / 3);
     if (!parts_.empty() && parts_.back().firstTriangle == triangles)

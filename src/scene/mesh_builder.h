@@ -1,13 +1,21 @@
 // mesh_builder.h - builds one geometry of a Scene face by face. Every part (CAD face) gets
-// vertices of its own, so shading edges between faces stay hard, as in CAD tessellations.
+// vertices of its own, so shading edges between faces stay hard, as in CAD tessellations;
+// vertex normals for meshes that come without them.
 #pragma once
 
 #include <span>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
 namespace scene {
+
+// Area-weighted vertex normals of a triangle list (3 `corners` a triangle, indexing
+// `positions`): a large face dominates the small slivers around a vertex. A vertex no triangle
+// with an area touches gets +z.
+std::vector<glm::vec3> areaWeightedNormals(std::span<const glm::vec3> positions,
+                                           std::span<const uint32_t> corners);
 
 class MeshBuilder {
   public:

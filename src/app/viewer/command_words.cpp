@@ -12,6 +12,7 @@
 #include "app/viewer/script.h" // parseNumber
 #include "render/culling.h"
 #include "render/technique.h"
+#include "scene/formats.h"
 #include "scene/standard_view.h"
 
 namespace app {
@@ -204,7 +205,7 @@ std::string chordsText(const std::vector<Chord>& chords) {
 
 // The mouse: handled by Input::onButton, onCursor and onScroll, and by the window's drop;
 // listed for the help.
-const std::pair<const char*, const char*> gestures[] = {
+const std::pair<std::string, std::string> gestures[] = {
     {"Left drag", "orbit around the target"},
     {"Right or middle drag", "pan"},
     {"Wheel", "zoom toward the point under the cursor"},
@@ -214,7 +215,7 @@ const std::pair<const char*, const char*> gestures[] = {
      "add a second thing (B) to the clicked one (A): the Inspect panel gives their distance"},
     {"Shift / Ctrl / Alt + left drag",
      "box selection: replace / add to / remove from the selection"},
-    {"Drop a file", "open it (.gltf .glb .step .stp .iges .igs .brep)"},
+    {"Drop a file", std::string("open it (").append(scene::extensionList()).append(")")},
 };
 
 } // namespace

@@ -18,15 +18,10 @@
 #include "render/xray.h"
 #include "scene/explode.h"
 #include "scene/face_info.h"
+#include "scene/formats.h"
 
 namespace app {
 namespace {
-
-bool isGltf(std::string path) {
-    std::transform(path.begin(), path.end(), path.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return path.ends_with(".gltf") || path.ends_with(".glb");
-}
 
 // The mean of the last `last` values (a vector of GPU times or the deque of CPU times).
 template <typename Values>
@@ -140,18 +135,17 @@ void Viewer::explode() {
 void Viewer::openDrops() {
     if (const auto result = chooser_.poll()) chosen(*result); // Open...'s file opens as a drop
     for (const std::string& path : input_.takeDrops()) {
-        if (isGltf(path) || scene::isCadPath(path))
+        if (scene::formatOfName(path))
             scene_.startOpen(path, settings_.scene); // follow() once it has loaded
         else
-            scene_.fail("'" + path +
-                        "' is neither a glTF model (.gltf, .glb) nor a CAD file (.step, .stp, "
-                        ".iges, .igs, .brep)");
+            scene_.fail("'" + path + "' is no model file idview reads; it reads " +
+                        scene::formatList());
     }
 }
 
 // A model file that opened joins the recent files, and the open field empties for the next.
 void Viewer::remember(const std::string& source) {
-    if (!isGltf(source) && !scene::isCadPath(source)) return; // a generated scene
+    if (!scene::formatOfName(source)) return; // a generated scene
     auto& recent = view_.recentFiles;
     std::erase(recent, source);
     recent.insert(recent.begin(), source);
@@ -260,7 +254,8 @@ PanelInfo Viewer::panelInfo() const {
     for (const render::Technique& t : render::techniques())
         info.unavailable.push_back(render::unavailableReason(t, device_.info()));
     info.source = scene_.loaded().source;
-    info.gltf = isGltf(info.source);
+    const scene::ModelFormat* format = scene::formatOfName(info.source);
+    info.gltf = format && format->reader == scene::Reader::Gltf;
     info.error = scene_.error();
     if (const auto loading = scene_.loading())
         info.loading = PanelInfo::Loading{loading->path,     loading->seconds, loading->stage,

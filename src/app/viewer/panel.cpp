@@ -22,6 +22,7 @@
 #include "app/viewer/panel_selection.h"
 #include "app/viewer/panel_tree.h"
 #include "app/viewer/panel_widgets.h"
+#include "scene/formats.h"
 
 namespace app {
 namespace {
@@ -97,8 +98,8 @@ void openField(ViewSettings& view, const PanelInfo& info, PanelActions& actions)
     if (std::exchange(view.focusOpen, false)) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - recentWidth - chooseWidth -
                             2.0f * spacing);
-    if (ImGui::InputTextWithHint("##open", "open .gltf .glb .step .iges .brep",
-                                 view.openPath.data(), view.openPath.size(),
+    static const std::string hint = std::string("open ").append(scene::extensionList());
+    if (ImGui::InputTextWithHint("##open", hint.c_str(), view.openPath.data(), view.openPath.size(),
                                  ImGuiInputTextFlags_EnterReturnsTrue |
                                      ImGuiInputTextFlags_AutoSelectAll) &&
         view.openPath[0])

@@ -2,6 +2,7 @@
 // asks of the viewer as a whole.
 #include "app/viewer/viewer.h"
 
+#include <cctype>
 #include <cstdio>
 
 #include <imgui.h>
@@ -11,6 +12,7 @@
 #include "app/viewer/commands.h"
 #include "app/viewer/kept_view.h"
 #include "scene/bounds.h"
+#include "scene/formats.h"
 #include "scene/part_data.h"
 #include "vk/check.h"
 
@@ -386,19 +388,28 @@ void Viewer::resetSettings() {
     events_.say("settings: defaults");
 }
 
+// A format's extensions as chooser globs, in either case: the choosers' globs are
+// case-sensitive.
+static std::vector<std::string> globsOf(const scene::ModelFormat& format) {
+    std::vector<std::string> globs;
+    for (std::string_view ext : format.extensions) {
+        std::string upper(ext);
+        for (char& c : upper) c = char(std::toupper(static_cast<unsigned char>(c)));
+        globs.push_back(std::string("*").append(ext));
+        globs.push_back(std::string("*").append(upper));
+    }
+    return globs;
+}
+
 void Viewer::chooseFile() {
-    // The formats openDrops takes (frame.cpp's isGltf, scene::isCadPath), in either case:
-    // the choosers' globs are case-sensitive.
-    const std::vector<FileFilter> filters = {
-        {"glTF and CAD models",
-         {"*.gltf", "*.glb", "*.step", "*.stp", "*.iges", "*.igs", "*.brep", "*.GLTF", "*.GLB",
-          "*.STEP", "*.STP", "*.IGES", "*.IGS", "*.BREP"}},
-        {"glTF models", {"*.gltf", "*.glb", "*.GLTF", "*.GLB"}},
-        {"CAD files (STEP, IGES, BREP)",
-         {"*.step", "*.stp", "*.iges", "*.igs", "*.brep", "*.STEP", "*.STP", "*.IGES", "*.IGS",
-          "*.BREP"}},
-        {"All files", {"*"}},
-    };
+    // The formats openDrops takes (scene/formats.h): all of them, then each, then any file.
+    std::vector<FileFilter> filters = {{"Models", {}}};
+    for (const scene::ModelFormat& format : scene::modelFormats()) {
+        filters.push_back({std::string(format.name) + " files", globsOf(format)});
+        filters[0].patterns.insert(filters[0].patterns.end(), filters.back().patterns.begin(),
+                                   filters.back().patterns.end());
+    }
+    filters.push_back({"All files", {"*"}});
     // The answer wakes the loop, which may be resting in its event wait.
     if (chooser_.start("Open a model - idview", filters, [] { glfwPostEmptyEvent(); }))
         events_.say("file chooser: open");

@@ -125,7 +125,8 @@ struct OcctLeaksIgnored {
     OcctLeaksIgnored& operator=(const OcctLeaksIgnored&) = delete;
 };
 
-// True for .step/.stp/.iges/.igs/.brep in any case.
+// True for the names of the formats Open CASCADE reads as B-reps (scene/formats.h: STEP,
+// IGES, BREP), in any case.
 bool isCadPath(const std::string& path);
 
 // The unit a CAD file's coordinates come out in: STEP and IGES in the one Open CASCADE's

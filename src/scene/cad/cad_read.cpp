@@ -29,6 +29,7 @@
 #include <XCAFDoc_ShapeTool.hxx>
 
 #include "scene/cad/brep_counts.h"
+#include "scene/formats.h"
 
 namespace scene::cad {
 namespace {
@@ -36,12 +37,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMaxAssemblyDepth = 64;
-
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
-}
 
 std::string statusReason(IFSelect_ReturnStatus status, const char* format) {
     switch (status) {
@@ -276,11 +271,17 @@ std::vector<Leaf> splitSolids(std::vector<Leaf> leaves, const std::string& stem)
 }
 
 Format formatOf(const std::string& path) {
-    const std::string ext = lowercase(fs::path(path).extension().string());
-    if (ext == ".step" || ext == ".stp") return Format::Step;
-    if (ext == ".iges" || ext == ".igs") return Format::Iges;
-    if (ext == ".brep") return Format::Brep;
-    return Format::None;
+    const ModelFormat* format = formatOfName(path);
+    switch (format ? format->reader : Reader::Gltf) {
+    case Reader::Step:
+        return Format::Step;
+    case Reader::Iges:
+        return Format::Iges;
+    case Reader::Brep:
+        return Format::Brep;
+    default:
+        return Format::None;
+    }
 }
 
 std::vector<Leaf> readXde(const XdeSource& source, Format format, const CadProgress& progress,

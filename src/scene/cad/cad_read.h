@@ -34,7 +34,8 @@ struct OverBudget : Bad {
 };
 enum class Format { Step, Iges, Brep, None };
 
-// By the file name's extension, in any case.
+// By the file name's extension, in any case (scene/formats.h's table); None for the formats
+// of other readers and unknown names.
 Format formatOf(const std::string& path);
 
 // Some OCCT readers write their complaints straight to std::cout; while one runs they go here

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "scene/gltf/gltf_detail.h"
+#include "scene/mesh_builder.h"
 
 namespace scene::gltf {
 namespace {
@@ -42,26 +43,10 @@ std::vector<uint32_t> toTriangleList(int mode, const std::vector<uint32_t>& v) {
     return out;
 }
 
-// Area-weighted vertex normals: a large face dominates the small slivers around a vertex.
-std::vector<glm::vec3> computeNormals(const Triangles& t) {
-    std::vector<glm::vec3> sum(t.positions.size(), glm::vec3(0.0f));
-    for (size_t i = 0; i + 2 < t.corners.size(); i += 3) {
-        const glm::vec3& a = t.positions[t.corners[i]];
-        glm::vec3 n =
-            glm::cross(t.positions[t.corners[i + 1]] - a, t.positions[t.corners[i + 2]] - a);
-        for (size_t k = 0; k < 3; ++k) sum[t.corners[i + k]] += n;
-    }
-    for (auto& n : sum) {
-        float len = glm::length(n);
-        n = (std::isfinite(len) && len > 0.0f) ? n / len : glm::vec3(0, 0, 1);
-    }
-    return sum;
-}
-
 // Uses the file's normals where they are usable (finite, non-zero), computed ones elsewhere.
 void fillNormals(const tinygltf::Model& model, int normalAccessor, Triangles& t,
                  const std::string& name) {
-    std::vector<glm::vec3> computed = computeNormals(t);
+    std::vector<glm::vec3> computed = areaWeightedNormals(t.positions, t.corners);
     if (normalAccessor < 0) {
         t.normals = std::move(computed);
         return;

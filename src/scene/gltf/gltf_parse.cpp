@@ -143,6 +143,19 @@ std::string expandInsideFolder(const std::string& path, void* user) {
     // What is opened is what was checked: "sub/../a.bin" is "a.bin" even if sub is a link.
     return (fs::path(folder.dir) / uri).lexically_normal().string();
 }
+// nlohmann::json's parse errors (through tinygltf) read "[json.exception.parse_error.101]
+// parse error at line 2, column 1: syntax error while parsing value - ...": said in words,
+// with the place; other messages pass unchanged.
+std::string jsonReason(const std::string& message) {
+    if (message.find("json.exception") == std::string::npos) return message;
+    const size_t at = message.find(" at line ");
+    const size_t colon = message.find(':', at);
+    const std::string where = at == std::string::npos || colon == std::string::npos
+                                  ? std::string()
+                                  : message.substr(at, colon - at);
+    return "not valid JSON text: it breaks off or is malformed" + where;
+}
+
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                    void*) {
     try {
@@ -268,7 +281,7 @@ tinygltf::Model parse(std::span<const unsigned char> bytes, const std::string& n
         std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
         if (binary) json = json.substr(20, readLe32(bytes.data() + 12));
         checkRequiredExtensions(requiredExtensionsInText(json));
-        throw Bad(oneLine(err.empty() ? "tinygltf could not parse the file" : err));
+        throw Bad(err.empty() ? "tinygltf could not parse the file" : jsonReason(oneLine(err)));
     }
     if (!warn.empty()) warnings.push_back("tinygltf: " + oneLine(warn));
     return model;
