@@ -57,10 +57,20 @@ float pickDepth(FrameData frame) {
 }
 
 #if IDV_SECTION
-// Whether any section plane cuts the point away (shared.h, FrameData::sectionPlanes).
-bool cutAway(FrameData frame, vec3 worldPos) {
-    [[unroll]] for (uint p = 0u; p < SECTION_PLANES_MAX; ++p)
-        if (dot(frame.sectionPlanes[p], vec4(worldPos, 1.0)) > 0.0) return true;
+// Whether any section plane cuts the point away (shared.h, FrameData::sectionPlanes), by the
+// in-plane rule where the surface lies in a plane: kept where its outward normal (the vertex
+// normals') faces the side cut away, cut otherwise, the same for every fragment of it and
+// for every technique, so a face a plane was put in never mixes with what lies behind it.
+// scene::SectionPlane::keeps is the same rule on the CPU.
+bool cutAway(FrameData frame, vec3 worldPos, vec3 normal) {
+    [[unroll]] for (uint p = 0u; p < SECTION_PLANES_MAX; ++p) {
+        vec4 plane = frame.sectionPlanes[p];
+        float distance = dot(plane, vec4(worldPos, 1.0));
+        float along = dot(plane.xyz, normal);
+        bool inPlane = abs(distance) <= frame.sectionTolerance &&
+                       abs(along) > SECTION_PARALLEL_COS * length(normal);
+        if (inPlane ? along < 0.0 : distance > 0.0) return true;
+    }
     return false;
 }
 
@@ -82,7 +92,7 @@ bool backFacing(FrameData frame) {
 // writes no depth.
 void main() {
 #if IDV_SECTION
-    if (cutAway(loadFrame(), inWorldPos)) discard;
+    if (cutAway(loadFrame(), inWorldPos, inWorldNormal)) discard;
 #endif
     outPartId = inPartIndex;
 }
@@ -100,7 +110,7 @@ void main() {
 #if IDV_NO_ID
     // The benchmark's floor: no lookup, no ID, no pick, no part colour.
 #if IDV_SECTION
-    if (cutAway(frame, inWorldPos)) discard;
+    if (cutAway(frame, inWorldPos, inWorldNormal)) discard;
 #endif
     // The X-ray pass draws the floor's shading translucent, blended over the picture.
     outColor = vec4(cap ? capColor(base, gl_FragCoord.xy)
@@ -123,7 +133,7 @@ void main() {
     if (partInSet(frame.hiddenAddress, uniquePartId)) discard;
 #endif
 #if IDV_SECTION
-    if (cutAway(frame, inWorldPos)) discard;
+    if (cutAway(frame, inWorldPos, inWorldNormal)) discard;
 #endif
     outPartId = uniquePartId;
 

@@ -55,6 +55,10 @@ const vec3 LEVEL_TINTS[LOD_MAX_LEVELS] = vec3[](IDV_LEVEL_TINTS);
 
 // Section planes (scene/section.h, whose maxSectionPlanes is this).
 IDV_CONST SECTION_PLANES_MAX = 3u;
+// The in-plane rule's "parallel": the cosine of the largest angle (2.6 degrees) between a
+// surface's normal and a plane's. A planar CAD face's normals are exact; tessellated curves
+// pass only where they touch the plane, where either answer draws the same.
+IDV_FLOAT SECTION_PARALLEL_COS = 0.999;
 
 // The one material of FRAME_IGNORE_MATERIALS (linear RGB): a mid grey, so that only part
 // colours (--part-weight) tint the image.
@@ -128,8 +132,11 @@ struct FrameData {
     // A meshlet goes to the compute path where its projected rectangle holds at most this
     // many pixels per triangle (RASTER_ALL: every meshlet it can draw); 0: none does.
     float rasterTrianglePixels;
-    uint unusedRaster; // pads to 16 bytes
-    // IDV_SECTION (scene/section.h): cut away where dot(plane, (p, 1)) > 0; unused (0,0,0,-1)
+    // IDV_SECTION (scene/section.h): cut away where dot(plane, (p, 1)) > 0; unused (0,0,0,-1).
+    // A surface parallel to a plane and within sectionTolerance of it lies in it, and is kept
+    // or cut whole by the side its outward normal faces (SectionPlane::keeps, the in-plane
+    // rule): float rounding at the scene's scale (scene::inPlaneTolerance) stays inside it.
+    float sectionTolerance;
     vec4 sectionPlanes[SECTION_PLANES_MAX];
 };
 

@@ -88,6 +88,34 @@ TEST(Section, KeepsTheSideAtMostTheValueOrTheOtherWhenFlipped) {
     EXPECT_FALSE(section.keeps({-1, 5, 0}));
 }
 
+// The in-plane rule: a surface parallel to the plane and within the tolerance of it is kept
+// where its outward normal faces the side cut away, on either side of the plane by rounding;
+// flip turns the answer over. Elsewhere, or not parallel, the point's side decides.
+TEST(Section, KeepsASurfaceInThePlaneWholeByItsOutwardNormal) {
+    const double tolerance = inPlaneTolerance(10.0);
+    EXPECT_GT(tolerance, 1e-5);
+    EXPECT_LT(tolerance, 1e-3);
+    const glm::dvec3 up(0, 1, 0), slanted(0, 1, 0.1); // 5.7 degrees off: not parallel
+    for (bool flip : {false, true}) {
+        const SectionPlane y = axisPlane(1, 2.0, flip);
+        const glm::dvec3 away = flip ? -up : up; // towards the side cut away
+        for (double off : {-0.5 * tolerance, 0.0, 0.5 * tolerance}) {
+            const glm::dvec3 p(3, 2.0 + off, -1);
+            EXPECT_TRUE(y.keeps(p, 7.0 * away, tolerance)) << flip << " " << off;
+            EXPECT_FALSE(y.keeps(p, -away, tolerance)) << flip << " " << off;
+            if (off != 0.0) {
+                EXPECT_EQ(y.keeps(p, slanted, tolerance), y.keeps(p)) << off;
+            }
+            EXPECT_EQ(y.keeps(p, glm::dvec3(0.0), tolerance), y.keeps(p)) << off;
+        }
+        for (double off : {-2.0 * tolerance, 2.0 * tolerance})
+            EXPECT_EQ(y.keeps({3, 2.0 + off, -1}, -away, tolerance), y.keeps({3, 2.0 + off, -1}));
+    }
+    SectionPlane off = axisPlane(1, 2.0);
+    off.on = false;
+    EXPECT_TRUE(off.keeps({0, 2.0, 0}, {0, -1, 0}, 10.0)); // an off plane has no surface in it
+}
+
 // The ray goes through what a plane cuts away, and meeting a surface from behind (its
 // normals face away) is a cap: the tiles face the +z camera, so from -z they are caps.
 TEST(Raycast, SectionsCutAwayAndBackFacesAreCaps) {

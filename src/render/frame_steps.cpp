@@ -140,6 +140,8 @@ gpu::FrameData Renderer::frameData(const SceneTargets& targets, const FrameParam
     if (culling.plan.levels) frame.lodErrorPixels = settings_.lod.errorPixels;
     for (uint32_t p = 0; p < gpu::SECTION_PLANES_MAX; ++p)
         frame.sectionPlanes[p] = glm::vec4(settings_.section.planes[p].equation(params.origin));
+    if (settings_.section.any())
+        frame.sectionTolerance = float(sceneGpu_->sectionTolerance(params.origin));
     frame.pickPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));
     frame.time = params.time;
     return frame;

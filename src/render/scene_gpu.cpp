@@ -7,6 +7,7 @@
 
 #include "scene/bounds.h"
 #include "scene/explode.h"
+#include "scene/section.h"
 #include "shared.h"
 #include "vk/check.h"
 
@@ -48,6 +49,7 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
     offsets_ = upload.add(explodeOffsets_, shaderRead, "animation offsets");
     restWorld_ = std::move(rest);
     partBounds_ = scene::partBounds(scene);
+    measureReach(scene);
     scene::Clusters clusters = scene::partClusters(scene, gpu::CLUSTER_MAX_TRIANGLES);
     std::vector<gpu::CullBox> boxes;
     boxes.reserve(clusters.boxes.size());
@@ -77,6 +79,40 @@ SceneGpu::SceneGpu(const scene::Scene& scene, vk::UploadBatch& upload)
                 partMaterials[g.firstPart + p] = g.partMaterials[p];
         partMaterials_ = upload.add(partMaterials, shaderRead, "part materials");
     }
+}
+
+void SceneGpu::measureReach(const scene::Scene& scene) {
+    std::vector<double> radius(scene.geometries.size(), 0.0);
+    for (size_t g = 0; g < scene.geometries.size(); ++g) {
+        const scene::Geometry& geo = scene.geometries[g];
+        const scene::Bounds box =
+            scene::partRangeBounds(scene, partBounds_, uint32_t(g), 0, geo.partCount);
+        if (!scene::isEmpty(box))
+            radius[g] = glm::length(glm::max(glm::abs(box.min), glm::abs(box.max)));
+    }
+    reachBox_ = scene::emptyBounds();
+    double offset = 0.0;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const glm::dmat4& world = scene.objects[o].world;
+        const double scale =
+            std::max({glm::length(glm::dvec3(world[0])), glm::length(glm::dvec3(world[1])),
+                      glm::length(glm::dvec3(world[2]))});
+        const double r = scale * radius[scene.objects[o].geometry];
+        localReach_ = std::max(localReach_, r);
+        const glm::dvec3 at(world[3]);
+        reachBox_ = scene::unite(reachBox_, {at - r, at + r});
+        offset = std::max(offset, double(glm::length(glm::vec3(explodeOffsets_[o]))));
+    }
+    reachBox_ = {reachBox_.min - offset, reachBox_.max + offset};
+}
+
+double SceneGpu::sectionTolerance(const glm::dvec3& origin) const {
+    // A vertex placed relative to origin: its local coordinates through the matrix, plus the
+    // translation (at most localReach_ from a point of the box), then compared with a plane
+    // whose offset is at most the box's farthest corner.
+    const glm::dvec3 far =
+        glm::max(glm::abs(reachBox_.min - origin), glm::abs(reachBox_.max - origin));
+    return scene::inPlaneTolerance(2.0 * localReach_ + 2.0 * glm::length(far));
 }
 
 glm::mat4 relativeWorld(const glm::dmat4& world, const glm::dvec3& origin) {

@@ -40,6 +40,9 @@ class SceneGpu {
     // objects' world matrices at an explode value relative to `origin`, as animate.comp
     // writes them.
     const std::vector<scene::Bounds>& partBounds() const { return partBounds_; }
+    // FrameData::sectionTolerance for coordinates relative to `origin` (scene::inPlaneTolerance
+    // of the largest magnitude the GPU meets placing a vertex there, exploded or not).
+    double sectionTolerance(const glm::dvec3& origin) const;
     glm::mat4 worldAt(uint32_t object, float explode, const glm::dvec3& origin) const;
     // The parts' clusters (scene::partClusters): per entry of Scene::parts, and one more, the
     // first cluster; their boxes on the GPU (gpu::CullBox[], `part` the cluster's part in
@@ -48,7 +51,13 @@ class SceneGpu {
     VkDeviceAddress clusterBoxesAddress() const { return clusterBoxes_.address(); }
 
   private:
+    void measureReach(const scene::Scene& scene);
+
     std::vector<scene::Bounds> partBounds_;
+    // sectionTolerance's: the largest placed geometry's reach from its own origin, and the
+    // world box of the scene, grown by the longest explode offset.
+    double localReach_ = 0.0;
+    scene::Bounds reachBox_;
     std::vector<uint32_t> clusterStart_;
     std::vector<glm::dmat4> restWorld_;
     std::vector<glm::vec4> explodeOffsets_;

@@ -56,6 +56,11 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene) {
             local[g].max = glm::max(local[g].max, position);
         }
     }
+    // The in-plane tolerance: float vertices are rounded at their magnitude, the rest is double.
+    double reach = 0.0;
+    for (const Bounds& b : local)
+        if (!isEmpty(b)) reach = std::max(reach, glm::length(glm::max(-b.min, b.max)));
+    inPlane_ = inPlaneTolerance(reach);
     for (const Object& object : scene.objects) {
         const Bounds& b = local[object.geometry];
         if (isEmpty(b)) { // no triangles: no ray meets it
@@ -76,6 +81,16 @@ RayCaster::RayCaster(const Scene& scene) : scene_(scene) {
     }
 }
 
+// The vertex normals of triangle `idx` of the object interpolated at `uv`, in world space.
+static glm::dvec3 normalAt(const Scene& scene, const Object& object, const uint32_t* idx,
+                           glm::dvec2 uv) {
+    const Vertex* v = &scene.vertices[scene.geometries[object.geometry].firstVertex];
+    const glm::dvec3 local = (1.0 - uv.x - uv.y) * glm::dvec3(v[idx[0]].normal) +
+                             uv.x * glm::dvec3(v[idx[1]].normal) +
+                             uv.y * glm::dvec3(v[idx[2]].normal);
+    return glm::transpose(glm::inverse(glm::dmat3(object.world))) * local;
+}
+
 // Whether the ray meets triangle `idx` of the object from behind, decided as the fragment
 // shader decides it (shaders/scene.frag, backFacing): in world space, the triangle's normal
 // turned towards the normal interpolated at the hit.
@@ -85,11 +100,7 @@ static bool fromBehind(const Scene& scene, const Object& object, const uint32_t*
     glm::dvec3 p[3];
     for (int i = 0; i < 3; ++i) p[i] = placed(object.world, v[idx[i]].position);
     glm::dvec3 faceNormal = glm::cross(p[1] - p[0], p[2] - p[0]);
-    const glm::dvec3 local = (1.0 - uv.x - uv.y) * glm::dvec3(v[idx[0]].normal) +
-                             uv.x * glm::dvec3(v[idx[1]].normal) +
-                             uv.y * glm::dvec3(v[idx[2]].normal);
-    const glm::dvec3 normal = glm::transpose(glm::inverse(glm::dmat3(object.world))) * local;
-    if (glm::dot(faceNormal, normal) < 0.0) faceNormal = -faceNormal;
+    if (glm::dot(faceNormal, normalAt(scene, object, idx, uv)) < 0.0) faceNormal = -faceNormal;
     return glm::dot(faceNormal, ray.direction) > 0.0;
 }
 
@@ -120,7 +131,9 @@ std::optional<Hit> RayCaster::cast(const Ray& ray, const PartSet* hidden,
                     continue;
                 if (t > ray.end || (best && t >= best->t))
                     continue; // beyond the far plane, or behind
-                if (section && !section->keeps(ray.origin + t * ray.direction)) continue;
+                if (section && !section->keeps(ray.origin + t * ray.direction,
+                                               normalAt(scene_, object, idx, uv), inPlane_))
+                    continue;
                 best = Hit{object.uniquePartOffset + p, oi, p, t};
                 bestTriangle = idx;
                 bestUv = uv;

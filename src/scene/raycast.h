@@ -29,7 +29,8 @@ class RayCaster {
   public:
     explicit RayCaster(const Scene& scene);
     // The nearest hit of a part not in `hidden` (rays go through hidden parts) at a point
-    // `section` keeps (rays go through what its planes cut away).
+    // `section` keeps (rays go through what its planes cut away), by the in-plane rule as the
+    // renderer applies it (Section::keeps with the hit's normal).
     std::optional<Hit> cast(const Ray& ray, const PartSet* hidden = nullptr,
                             const Section* section = nullptr) const;
 
@@ -40,6 +41,7 @@ class RayCaster {
     };
     const Scene& scene_;
     std::vector<Prepared> objects_;
+    double inPlane_ = 0.0; // the in-plane rule's tolerance at this scene's scale
 };
 
 // One ray; for many rays over the same scene use RayCaster.

@@ -12,6 +12,16 @@ glm::dvec4 SectionPlane::equation(const glm::dvec3& origin) const {
     return side * glm::dvec4(normal, glm::dot(normal, origin) - offset);
 }
 
+bool SectionPlane::keeps(const glm::dvec3& p, const glm::dvec3& normal, double tolerance) const {
+    const glm::dvec4 e = equation();
+    const double distance = glm::dot(e, glm::dvec4(p, 1.0));
+    const double along = glm::dot(glm::dvec3(e), normal);
+    // Strictly above: a plane that is off, or a normal of 0, is never parallel.
+    const bool inPlane = std::abs(distance) <= tolerance &&
+                         std::abs(along) > gpu::SECTION_PARALLEL_COS * glm::length(normal);
+    return inPlane ? along > 0.0 : distance <= 0.0;
+}
+
 bool Section::any() const {
     for (const SectionPlane& p : planes)
         if (p.on) return true;
@@ -22,6 +32,17 @@ bool Section::keeps(const glm::dvec3& p) const {
     for (const SectionPlane& plane : planes)
         if (!plane.keeps(p)) return false;
     return true;
+}
+
+bool Section::keeps(const glm::dvec3& p, const glm::dvec3& normal, double tolerance) const {
+    for (const SectionPlane& plane : planes)
+        if (!plane.keeps(p, normal, tolerance)) return false;
+    return true;
+}
+
+double inPlaneTolerance(double reach) {
+    // 64 float roundings (2^-17): a vertex placed and compared with a plane takes a few.
+    return std::ldexp(reach, -17);
 }
 
 bool Section::add(const SectionPlane& plane) {
@@ -39,6 +60,15 @@ SectionPlane axisPlane(int axis, double value, bool flip) {
     plane.normal = glm::dvec3(0.0);
     plane.normal[axis] = 1.0;
     plane.offset = value;
+    plane.flip = flip;
+    return plane;
+}
+
+SectionPlane planeAtFace(const SurfaceInfo& face, bool flip) {
+    SectionPlane plane;
+    plane.on = true;
+    plane.normal = face.normal;
+    plane.offset = face.d;
     plane.flip = flip;
     return plane;
 }

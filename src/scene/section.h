@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/surface_info.h"
 #include "shared.h"
 
 namespace scene {
@@ -29,6 +30,13 @@ struct SectionPlane {
     bool keeps(const glm::dvec3& p) const {
         return glm::dot(equation(), glm::dvec4(p, 1.0)) <= 0.0;
     }
+    // The same for a point of a surface whose outward normal there is `normal` (any length),
+    // by the in-plane rule: a surface parallel to the plane (gpu::SECTION_PARALLEL_COS) and
+    // within `tolerance` of it lies in it, and is kept where its outward normal faces the
+    // side cut away (it bounds what the plane keeps), cut otherwise, whatever its rounding.
+    // A face the plane was put in (planeAtFace) is thus whole, and cut whole with flip. The
+    // renderer's rule too (shaders/scene.frag, cutAway).
+    bool keeps(const glm::dvec3& p, const glm::dvec3& normal, double tolerance) const;
     bool operator==(const SectionPlane&) const = default;
 };
 
@@ -39,6 +47,7 @@ struct Section {
     std::array<SectionPlane, maxSectionPlanes> planes{};
     bool any() const;
     bool keeps(const glm::dvec3& p) const;
+    bool keeps(const glm::dvec3& p, const glm::dvec3& normal, double tolerance) const;
     // Puts the plane in the first slot that is off; false when all are on.
     bool add(const SectionPlane& plane);
     bool operator==(const Section&) const = default;
@@ -46,6 +55,15 @@ struct Section {
 
 // The plane of axis 0, 1 or 2 (x, y, z) at `value`.
 SectionPlane axisPlane(int axis, double value, bool flip = false);
+
+// The in-plane rule's tolerance where the largest magnitude float arithmetic meets (the
+// coordinates, the placements' translations, the planes' offsets) is `reach`: far above the
+// rounding of a point in a plane, far below anything a user sees apart from it.
+double inPlaneTolerance(double reach);
+
+// The plane of a planar face (SurfaceKind::Plane), flush with it, keeping the side its
+// outward normal leaves: the solid it bounds. The viewer's "section at the selected face".
+SectionPlane planeAtFace(const SurfaceInfo& face, bool flip = false);
 
 // "x,1.5" or "z,-20,flip": the flag's and the script's form. Throws std::invalid_argument
 // with a message for people.

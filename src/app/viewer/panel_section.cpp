@@ -62,9 +62,7 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
     sameLineIfFits(checkboxWidth("face"));
     ImGui::BeginDisabled(!selectedPlane);
     if (ImGui::RadioButton("face", axis < 0) && selectedPlane) {
-        // Flush with the selected face, keeping what lies behind it: the solid it bounds.
-        plane.normal = selectedPlane->normal;
-        plane.offset = selectedPlane->d;
+        plane = scene::planeAtFace(*selectedPlane, plane.flip);
     }
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(selectedPlane ? "on the plane of the selected face"
