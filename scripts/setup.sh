@@ -28,9 +28,10 @@ packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-
     libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev libtbb-dev
     libportal-dev) # Open...: the desktop portal's file chooser (optional to the build)
 if [[ $what == test ]]; then
-    # occt-misc: the STEP, IGES and BREP samples the CAD loader tests read.
+    # occt-misc: the STEP, IGES and BREP samples the CAD loader tests read; xdotool: the viewer
+    # tests' real input.
     packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang
-        libclang-rt-14-dev python3-matplotlib occt-misc)
+        libclang-rt-14-dev python3-matplotlib occt-misc xdotool)
 fi
 
 missing=()

@@ -48,7 +48,7 @@ cmp -s "$work/before.png" "$work/held-switch.png" && cmp -s "$work/before.png" "
     echo "ok   once built, the cut shows" || fail "after the builds the image is unchanged"
 
 # Titles name what is drawn: the technique before until the build is done, tri-fs after.
-titles=$(sed -n 's/^idview: title: idview - \([^ ]*\) + .*/\1/p' "$out" | uniq | paste -sd'|' -)
+titles=$(sed -n 's/^idview: title: .*idview - \([^ ]*\) + .*/\1/p' "$out" | uniq | paste -sd'|' -)
 [[ $titles == "vertex-fs|tri-fs" ]] && echo "ok   the switch landed: $titles" ||
     fail "titles: '$titles', expected vertex-fs|tri-fs"
 grep -q 'validation' "$work/builds.err" && fail "validation: $(grep -m3 validation "$work/builds.err")"
@@ -69,7 +69,7 @@ t=0.5
     at quit
 } >"$work/newest.txt"
 session newest --no-saved-settings
-titles=$(sed -n 's/^idview: title: idview - \([^ ]*\) + .*/\1/p' "$work/newest.out" | uniq |
+titles=$(sed -n 's/^idview: title: .*idview - \([^ ]*\) + .*/\1/p' "$work/newest.out" | uniq |
     paste -sd'|' -)
 ready=$(sed -n 's/^idview: pipeline: ready \([^ ]*\) .*/\1/p' "$work/newest.out" | paste -sd'|' -)
 [[ $titles == "vertex-fs|tri-gs" && $ready == tri-gs ]] &&

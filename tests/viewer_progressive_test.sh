@@ -145,7 +145,7 @@ t=0.5
 start stop --model "$model"
 finish
 said "command: " | grep -qx stop && [[ $(said "loading: stopped: ") == "7 of 8 solids shown, 1 missing" ]] &&
-    grep -q '^idview: title: idview - .* - incomplete: 1 of 8 solids missing - ' "$work/stop.out" &&
+    grep -q '^idview: title: .*idview - .* - incomplete: 1 of 8 solids missing - ' "$work/stop.out" &&
     ! grep -q '^idview: loading: complete' "$work/stop.out" &&
     ok "Esc stopped the first model: 7 of 8 solids shown, marked incomplete" ||
     fail "stop: $(grep -E '^idview: (command|loading|title):' "$work/stop.out" | tail -4 | paste -sd'|')"

@@ -36,7 +36,7 @@ t=0.5
     at quit
 } >"$work/kept2.txt"
 session kept2
-titles=$(sed -n 's/^idview: title: idview - \([^ ]* + [^ ]*\) - .*/\1/p' "$work/kept2.out" | uniq |
+titles=$(sed -n 's/^idview: title: .*idview - \([^ ]* + [^ ]*\) - .*/\1/p' "$work/kept2.out" | uniq |
     paste -sd'|' -)
 [[ $titles == "tri-fs + mdi-baseinstance|vertex-fs + mdi-baseinstance" ]] &&
     echo "ok   opened on the kept renderer, then the defaults: $titles" ||

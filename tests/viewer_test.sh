@@ -109,10 +109,10 @@ else
     head -20 "$work/out.txt"
 fi
 for r in $renderers; do
-    grep -q "^idview: title: idview - $r + " "$work/out.txt" || fail "title never named renderer $r"
+    grep -q "^idview: title: .*idview - $r + " "$work/out.txt" || fail "title never named renderer $r"
 done
 first=$(grep -m1 '^idview: title:' "$work/out.txt")
-[[ $first == "idview: title: idview - $floor + "* ]] || fail "--renderer $floor opened as: $first"
+[[ $first == "idview: title: "*"idview - $floor + "* ]] || fail "--renderer $floor opened as: $first"
 
 grep -q '^idview: shaders reloaded' "$work/out.txt" || fail "R did not reload the shaders"
 grep -q '^idview: 1000000 copies make .* objects' "$work/err.txt" ||

@@ -409,6 +409,10 @@ std::optional<std::string> cancelOne(Viewer& viewer, Input& input) {
         return "help";
     }
     if (input.cancelBox()) return "box";
+    if (viewer.view().browser) { // the panel's file browser (its filter takes Esc itself)
+        viewer.view().browser.reset();
+        return "file browser";
+    }
     // A model loading: back to the model before it, or where there was none, what it shows
     // kept (a first model cancelled would leave nothing open).
     if (const auto load = viewer.modelLoading(); load && !load->stopping) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <numeric>
 
 #include <imgui.h>
@@ -336,21 +337,26 @@ void Viewer::updateTitle(double seconds, bool now) {
                              " - vsync " + presenter_.vsyncState() +
                              (continuous ? ", continuous" : ", draws on change") +
                              (incomplete.empty() ? "" : " - incomplete: " + incomplete);
-    now = now || title_.find("idview - " + what + " - ") != 0;
+    // The model's file name first, as desktop applications name their document.
+    const std::string& source = scene_.loaded().source;
+    const std::string name =
+        source.empty() ? "" : std::filesystem::path(source).filename().string();
+    const std::string head = (name.empty() ? "" : name + " - ") + "idview - " + what;
+    now = now || title_.find(head + " - ") != 0;
     if (!now && seconds - titleTime_ < 0.25) return;
     if (seconds > titleTime_) fps_ = double(frameNumber_ - titleFrame_) / (seconds - titleTime_);
     titleTime_ = seconds;
     titleFrame_ = frameNumber_;
-    char text[256];
+    char text[1024];
     // A CPU device's timestamps time the CPU rendering (lavapipe).
     const bool cpu = device_.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU;
     const char* timed = cpu ? "render (CPU device)" : "GPU";
     const double ms = mean(slots_.gpuMilliseconds(), 30);
     if (continuous)
-        std::snprintf(text, sizeof text, "idview - %s - %.0f fps - %s %.2f ms", what.c_str(), fps_,
-                      timed, ms);
+        std::snprintf(text, sizeof text, "%s - %.0f fps - %s %.2f ms", head.c_str(), fps_, timed,
+                      ms);
     else
-        std::snprintf(text, sizeof text, "idview - %s - %s %.2f ms", what.c_str(), timed, ms);
+        std::snprintf(text, sizeof text, "%s - %s %.2f ms", head.c_str(), timed, ms);
     if (title_ == text) return;
     title_ = text;
     window_.setTitle(title_);

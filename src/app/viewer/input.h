@@ -56,8 +56,11 @@ class Input {
     // Script steps run so far: scripted input counts as input for the frames it needs.
     uint64_t stepsRun() const { return stepsRun_; }
     // Whether something waits for frames: script steps, a click for its pick, a box for its
-    // parts.
-    bool waiting() const { return (!steps_.empty() && !resting()) || pendingClick_ || box_; }
+    // parts, key events not yet handed to the panel (a typed path's Enter waits behind its
+    // repeated letters, a change per key a frame: the loop must not rest before it is in).
+    bool waiting() const {
+        return (!steps_.empty() && !resting()) || pendingClick_ || box_ || !panelKeys_.empty();
+    }
     std::exception_ptr failure() const { return failure_; }
 
     // The cursor in window coordinates, nullopt outside the window.

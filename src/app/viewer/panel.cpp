@@ -2,6 +2,8 @@
 // timing and help; its layout, the part a newcomer needs first at the top.
 #include "app/viewer/panel.h"
 
+#include "app/viewer/panel_browser.h"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -251,6 +253,8 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     status(info, actions);
     layout.mark("open");
     openField(view, info, actions);
+    layout.mark("browser");
+    drawFileBrowser(view.browser, actions, info.events);
     layout.mark("source");
     source(info);
     layout.mark("view");

@@ -16,6 +16,7 @@
 #include "app/cli.h"
 #include "app/viewer/command.h"
 #include "app/viewer/events.h"
+#include "app/viewer/file_browser.h"
 #include "app/viewer/panel_layout.h"
 #include "app/viewer/selection.h"
 #include "render/draw_list.h"
@@ -52,7 +53,9 @@ struct ViewSettings {
     // double-click selects at least the object.
     uint32_t selectLevel = 0;
     std::array<char, 512> openPath{}; // the panel's "open" field, emptied when a model opens
-    bool focusOpen = false;           // Ctrl+L, or no chooser: the open field takes the keys
+    bool focusOpen = false;           // Ctrl+L: the open field takes the keys
+    // The panel's own file browser, open when Open... found no desktop chooser.
+    std::optional<FileBrowser> browser;
     // Models opened, newest first, at most 10; kept between runs (kept_view.h).
     std::vector<std::string> recentFiles;
     // Where the panel lay in the last frame, window x coordinates (both 0 while hidden): F

@@ -4,6 +4,8 @@
 
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 
 #include <imgui.h>
 
@@ -410,6 +412,11 @@ void Viewer::chooseFile() {
                                    filters.back().patterns.end());
     }
     filters.push_back({"All files", {"*"}});
+    if (noChooser_) {
+        openBrowser();
+        events_.say("file chooser: none");
+        return;
+    }
     // The answer wakes the loop, which may be resting in its event wait.
     if (chooser_.start("Open a model - idview", filters, [] { glfwPostEmptyEvent(); }))
         events_.say("file chooser: open");
@@ -418,6 +425,22 @@ void Viewer::chooseFile() {
 void Viewer::focusOpenField() {
     view_.panelVisible = true;
     view_.focusOpen = true;
+}
+
+void Viewer::openBrowser() {
+    view_.panelVisible = true;
+    const std::string& source = scene_.loaded().source;
+    std::error_code error;
+    std::string folder;
+    if (!source.empty() && std::filesystem::is_regular_file(source, error))
+        folder = std::filesystem::path(source).parent_path().string();
+    else if (!view_.recentFiles.empty())
+        folder = std::filesystem::path(view_.recentFiles.front()).parent_path().string();
+    else if (const char* home = std::getenv("HOME"))
+        folder = home;
+    else
+        folder = std::filesystem::current_path(error).string();
+    view_.browser.emplace(folder, view_.recentFiles);
 }
 
 void Viewer::chosen(const ChooserResult& result) {
@@ -430,8 +453,13 @@ void Viewer::chosen(const ChooserResult& result) {
         events_.say("file chooser: cancelled");
         break;
     case ChooserResult::Kind::Unavailable:
-        focusOpenField(); // the panel's open field instead
-        scene_.fail("no file chooser: " + result.via + "; type the model's path here");
+        // The panel's own browser instead, where the model shown lies (else a recent folder,
+        // else home); the keys go to its filter.
+        // Said once: the next Open... goes to the browser at once.
+        openBrowser();
+        noChooser_ = true;
+        std::fprintf(stderr, "idview: no desktop file chooser: %s; browsing in the panel\n",
+                     result.via.c_str());
         events_.say("file chooser: none");
         break;
     }

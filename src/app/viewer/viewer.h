@@ -61,10 +61,11 @@ class Viewer {
     // the cursor is still on its pixel), else toward the orbit target.
     void zoomAtCursor(float steps);
     // Ctrl+O and the panel's Open...: the desktop's file chooser (file_chooser.h), its choice
-    // opened as a dropped file; without one, the panel's open field and a message.
+    // opened as a dropped file; without one, the panel's file browser (said once).
     void chooseFile();
     // Ctrl+L (a location, as GTK's chooser takes one): the panel's open field, ready to type.
     void focusOpenField();
+    void openBrowser(); // the panel's file browser, where the model shown lies
     // F: frames the selected parts when there are some, else those not hidden, else the
     // whole scene, in the area beside the panel.
     void fitView();
@@ -182,9 +183,10 @@ class Viewer {
     Input input_;
     OrbitCamera camera_;
     Measure measure_;
-    EdgeHover edgeHover_; // the B-rep edges hovered and selected
-    Inspector inspect_;   // the Inspect section's report, worked out when the selection changes
-    FileChooser chooser_; // Open...: its answer is taken between frames (openDrops)
+    EdgeHover edgeHover_;    // the B-rep edges hovered and selected
+    Inspector inspect_;      // the Inspect section's report, worked out when the selection changes
+    FileChooser chooser_;    // Open...: its answer is taken between frames (openDrops)
+    bool noChooser_ = false; // neither the portal nor zenity answered: the panel's browser
     void chosen(const ChooserResult& result);
     std::vector<scene::TreeRow> tree_; // the scene's assembly tree, for the panel
     scene::PartSet namedSelection_;    // the selection selectedRow_ was found for
