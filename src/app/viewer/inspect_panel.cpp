@@ -22,7 +22,7 @@ void inspectSection(const InspectReport& report) {
             textDisabledWrapped(row.component.c_str());
         }
         ImGui::Indent();
-        ImGui::TextWrapped("%s", row.text.c_str());
+        wrappedLine(row.text);
         ImGui::Unindent();
     }
     if (report.a && !report.b)

@@ -2,8 +2,6 @@
 // timing and help; its layout, the part a newcomer needs first at the top.
 #include "app/viewer/panel.h"
 
-#include "app/viewer/panel_browser.h"
-
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -16,12 +14,13 @@
 #include <imgui.h>
 
 #include "app/viewer/commands.h"
-#include "app/viewer/inspect_panel.h"
+#include "app/viewer/panel_browser.h"
 #include "app/viewer/panel_commands.h"
 #include "app/viewer/panel_layout.h"
 #include "app/viewer/panel_rendering.h"
 #include "app/viewer/panel_section.h"
 #include "app/viewer/panel_selection.h"
+#include "app/viewer/panel_tools.h"
 #include "app/viewer/panel_tree.h"
 #include "app/viewer/panel_widgets.h"
 #include "scene/formats.h"
@@ -117,24 +116,6 @@ void openField(ViewSettings& view, const PanelInfo& info, PanelActions& actions)
     recentFiles(view, info, actions);
 }
 
-// What a newcomer reaches for first, always in view: edges, projection, vsync, the views.
-void viewRow(const Options& settings, const ViewSettings& view, PanelActions& actions) {
-    switchCheckbox("edges", CommandId::Edges, settings.render.edges.on, actions);
-    switchCheckbox("ortho", CommandId::Ortho, settings.camera.ortho, actions, true);
-    switchCheckbox("vsync", CommandId::Vsync, view.vsync, actions, true);
-    // The standard views, as their keys turn to them (1, 3, 7, Ctrl, 0), wrapped to the
-    // panel's width.
-    const ImGuiStyle& style = ImGui::GetStyle();
-    for (const scene::StandardView& standard : scene::standardViews()) {
-        const float width = ImGui::CalcTextSize(standard.name).x + 2.0f * style.FramePadding.x;
-        if (&standard != scene::standardViews().data()) {
-            ImGui::SameLine();
-            if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
-        }
-        if (ImGui::SmallButton(standard.name)) actions.ask({CommandId::View, &standard});
-    }
-}
-
 // A model loading: its stage and bar; a big CAD file shown as it loads says what is shown
 // and what is left, and offers Stop here beside Cancel.
 void loadingLines(const PanelInfo::Loading& loading, PanelActions& actions) {
@@ -170,7 +151,8 @@ void loadingLines(const PanelInfo::Loading& loading, PanelActions& actions) {
                                     : "stop loading: nothing stays open");
 }
 
-void status(const PanelInfo& info, PanelActions& actions) {
+// The device and how the frames are drawn: in Rendering, with the GPU's other settings.
+void device(const PanelInfo& info) {
     // The frame rate on the device's line where the widest rate would fit there too, else on
     // a line of its own: a rate gaining a digit never wraps the line and moves what follows.
     // Drawing on change, a frame rate would count changes: the panel says so instead.
@@ -186,6 +168,10 @@ void status(const PanelInfo& info, PanelActions& actions) {
         textDisabledWrapped(info.device.c_str());
         textDisabledWrapped(fps);
     }
+}
+
+// What needs the person now: the last error, a pipeline being built, a model loading.
+void status(const PanelInfo& info, PanelActions& actions) {
     if (!info.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", info.error.c_str());
@@ -257,35 +243,30 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     drawFileBrowser(view.browser, actions, info.events);
     layout.mark("source");
     source(info);
-    layout.mark("view");
-    viewRow(settings, view, actions);
-    layout.mark("Measure");
-    if (info.measuring &&
-        ImGui::CollapsingHeader("Measure (M to leave)", ImGuiTreeNodeFlags_DefaultOpen)) {
-        if (info.measureLines.empty())
-            ImGui::TextWrapped("Click a part for its face; two clicks for their distance.");
-        for (const std::string& line : info.measureLines) ImGui::TextWrapped("%s", line.c_str());
-    }
-    // The parts first, open; the rarely used sections closed, so the details stay in view.
-    layout.mark("Selection");
-    if (ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen))
-        selectionSection(view, info, actions, layout);
+    // Laid out for inspecting (FreeCAD's model tree and property view, Mayo's tree beside
+    // the view): the tree, the tools, then what is selected and hovered with its measures;
+    // the GPU's settings closed below. Every area above the closed headers keeps its
+    // height, so a row stays under the pointer from one click to the next.
     layout.mark("Assembly tree");
     if (ImGui::CollapsingHeader("Assembly tree", ImGuiTreeNodeFlags_DefaultOpen))
         assemblyTree(view, info, actions, layout);
-    // Below the tree: its rows grow and shrink with the selection, and the tree's rows, which
-    // a click selects from, stay where they are.
-    layout.mark("Inspect");
-    if (info.inspect && ImGui::CollapsingHeader("Inspect", ImGuiTreeNodeFlags_DefaultOpen))
-        inspectSection(*info.inspect);
-    layout.mark("Rendering");
-    if (ImGui::CollapsingHeader("Rendering")) rendering(settings, info, actions);
-    layout.mark("Scene");
-    if (ImGui::CollapsingHeader("Scene")) sceneSection(settings.scene, info, actions);
+    layout.mark("Tools");
+    if (ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen))
+        toolsSection(settings, view, info, actions, layout);
+    layout.mark("Properties");
+    if (ImGui::CollapsingHeader("Properties", ImGuiTreeNodeFlags_DefaultOpen))
+        propertiesSection(info, layout);
     layout.mark("Section");
     if (ImGui::CollapsingHeader("Section"))
         sectionPlanes(settings.render.section, info.bounds, info.selectedPlane,
                       info.scene ? info.scene->unit : scene::generatedUnit(), layout);
+    layout.mark("Rendering");
+    if (ImGui::CollapsingHeader("Rendering")) {
+        device(info);
+        rendering(settings, info, actions);
+    }
+    layout.mark("Scene");
+    if (ImGui::CollapsingHeader("Scene")) sceneSection(settings.scene, info, actions);
     layout.mark("Timing");
     if (ImGui::CollapsingHeader("Timing")) timing(info);
     layout.mark("Controls");

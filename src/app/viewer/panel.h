@@ -48,6 +48,7 @@ struct ViewSettings {
     // filter keeps, worked out again only when the filter text changes.
     std::vector<uint8_t> treeOpen, treeShown;
     std::string treeFilterFor;
+    float treeRows = 8.0f; // the tree pane's height in rows, dragged by the bar under it
     // What a click selects around the part under the cursor (scene::partsAround's level): 0
     // the part (a CAD face), 1 its object (a CAD solid), 2 the assembly node above that. A
     // double-click selects at least the object.
@@ -67,6 +68,8 @@ struct ViewSettings {
 // The panel's narrowest width (every label fits, panel_widgets.h) and widest share of the
 // window.
 inline constexpr float minPanelWidth = 320.0f, maxPanelShare = 0.6f;
+// The tree pane's height, in rows.
+inline constexpr float minTreeRows = 3.0f, maxTreeRows = 40.0f;
 
 // What the user asked for through the panel's buttons and widgets: the commands a key or a
 // script line would give (commands.h), for the viewer to run once the panel is drawn.

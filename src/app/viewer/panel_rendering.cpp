@@ -272,15 +272,6 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     edgeSettings(settings.render.edges);
     culling(settings.render.culling, info, actions);
     levelsOfDetail(settings, info);
-    // The exploded view, by assembly level (scene/explode.h); --animate's loop, for the
-    // benchmark, has no place here.
-    float explode = settings.animation.explode;
-    ImGui::SliderFloat(fitLabel("explode").c_str(), &explode, 0.0f, 1.0f, "%.2f",
-                       ImGuiSliderFlags_AlwaysClamp);
-    if (explode != settings.animation.explode) actions.ask({CommandId::Explode, explode});
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("move the parts apart, assembly level by level: sub-assemblies from "
-                          "their assembly's centre, their parts within them (--explode F)");
     // What the last switch cost: a cached pipeline makes it a lookup.
     const render::SwitchReport& last = info.lastSwitch;
     ImGui::TextWrapped("last switch %.2f ms, pipeline %s%s", last.ms,

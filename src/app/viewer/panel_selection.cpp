@@ -1,11 +1,12 @@
-// panel_selection.cpp - hovered and selected part details, wrapped to the panel's width.
+// panel_selection.cpp - the Properties section: the selected and hovered parts' details, then
+// the measure points and the Inspect report, each box of fixed height (panel_selection.h).
 #include "app/viewer/panel_selection.h"
 
 #include <string>
 
 #include <imgui.h>
 
-#include "app/viewer/panel_commands.h"
+#include "app/viewer/inspect_panel.h"
 #include "app/viewer/panel_widgets.h"
 
 namespace app {
@@ -15,15 +16,9 @@ namespace {
 // and triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
 // the hover changes (it scrolls where a narrow panel wraps more).
 constexpr float detailLines = 8.0f;
-
-// A face's or an edge's line, wrapped a space short of the edge: where a word ends just at the
-// edge ImGui 1.86 counts the blank after it in the line's width, past the edge (seen at the
-// narrowest panel with "cylinder Ø 10 mm (r 5 mm), axis (0, 0, -1)").
-void wrappedLine(const std::string& text) {
-    ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(" ").x);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
-}
+// Lines of the measure and Inspect box: a solid's volume, area and centre, a sum, A and B and
+// their distance; more scroll inside it.
+constexpr float inspectLines = 10.0f;
 
 void partLine(const char* what, const PartLine& line) {
     if (!line.part) {
@@ -83,38 +78,37 @@ void detailsBox(const char* id, PanelLayout& layout, auto&& draw) {
     ImGui::EndChild();
 }
 
+// The measure mode's points and the Inspect report, in one box of fixed height: what they say
+// grows and shrinks with the clicks, inside the box, never moving the rows below.
+void inspectBox(const PanelInfo& info, PanelLayout& layout) {
+    const float height = inspectLines * ImGui::GetTextLineHeightWithSpacing();
+    if (ImGui::BeginChild("##inspect", ImVec2(-1, height), true)) {
+        if (info.measuring) {
+            ImGui::TextUnformatted("Measure (M to leave)");
+            if (info.measureLines.empty())
+                ImGui::TextWrapped("Click a part for its face; two clicks for their distance.");
+            for (const std::string& line : info.measureLines) wrappedLine(line);
+            ImGui::Spacing();
+        }
+        if (info.inspect) inspectSection(*info.inspect);
+    }
+    layout.checkChild();
+    ImGui::EndChild();
+}
+
 } // namespace
 
-void selectionSection(const ViewSettings& view, const PanelInfo& info, PanelActions& actions,
-                      PanelLayout& layout) {
+void propertiesSection(const PanelInfo& info, PanelLayout& layout) {
     if (info.hiddenCount)
         ImGui::TextWrapped("visible parts %u, hidden %u", info.visibleParts, info.hiddenCount);
     else
         ImGui::TextWrapped("visible parts %u", info.visibleParts);
-    ImGui::TextUnformatted("click selects");
-    const char* levels[] = {"face", "solid", "assembly"};
-    for (uint32_t level = 0; level < 3; ++level) {
-        sameLineIfFits(checkboxWidth(levels[level]));
-        if (ImGui::RadioButton(levels[level], view.selectLevel == level))
-            actions.ask({CommandId::Level, level});
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("face: the part (a CAD face); solid: its object; assembly: the "
-                          "node above it. A double-click selects the solid at least.");
     layout.mark("selected part");
     detailsBox("##selected", layout, [&] { selectionLine(info); });
     layout.mark("hovered part");
     detailsBox("##hovered", layout, [&] { partLine("hovered", info.hovered); });
-    layout.mark("hide buttons");
-    commandButton("hide", CommandId::Hide, info, actions);
-    commandButton("isolate", CommandId::Isolate, info, actions, true);
-    commandButton("show all", CommandId::ShowAll, info, actions, true);
-    switchCheckbox("X-ray", CommandId::Xray, info.xray, actions);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("the parts outside the selection drawn translucent: not in the ID "
-                          "image, not picked, not hiding the selection, so selected parts "
-                          "inside show and can be picked and measured in place. With nothing "
-                          "selected it changes nothing.");
+    layout.mark("Inspect");
+    inspectBox(info, layout);
 }
 
 } // namespace app

@@ -1,13 +1,13 @@
-// panel_selection.h - the panel's Selection section: what a click selects, the hovered and
-// selected parts in fixed-height boxes (so the section keeps its height while the cursor
-// moves), the selection named by its tree node, and hide, isolate and show all.
+// panel_selection.h - the panel's Properties section: the visible parts, the selected and
+// hovered parts (the selection named by its tree node), and the measure points and Inspect
+// report, each in a box of fixed height, so the section keeps its height whatever the
+// pointer, the selection and the clicks do.
 #pragma once
 
 #include "app/viewer/panel.h"
 
 namespace app {
 
-void selectionSection(const ViewSettings& view, const PanelInfo& info, PanelActions& actions,
-                      PanelLayout& layout);
+void propertiesSection(const PanelInfo& info, PanelLayout& layout);
 
 } // namespace app

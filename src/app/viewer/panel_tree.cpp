@@ -116,6 +116,22 @@ void treeRow(ViewSettings& view, const PanelInfo& info, uint32_t i, bool filteri
     ImGui::PopID();
 }
 
+// A bar the pointer drags up and down to resize the tree's pane, in rows.
+void splitter(float& rows, float rowHeight) {
+    const float thickness = ImGui::GetStyle().ItemSpacing.y + 4.0f;
+    ImGui::InvisibleButton("##tree height", ImVec2(-1, thickness));
+    const bool hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+    if (hot) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeNS);
+    if (ImGui::IsItemActive())
+        rows = std::clamp(rows + ImGui::GetIO().MouseDelta.y / rowHeight, minTreeRows, maxTreeRows);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag to make the tree taller or shorter");
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    const float y = 0.5f * (a.y + b.y);
+    ImGui::GetWindowDrawList()->AddLine(
+        ImVec2(a.x, y), ImVec2(b.x, y),
+        ImGui::GetColorU32(hot ? ImGuiCol_SeparatorActive : ImGuiCol_Separator), hot ? 3.0f : 1.0f);
+}
+
 } // namespace
 
 void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actions,
@@ -143,21 +159,21 @@ void assemblyTree(ViewSettings& view, const PanelInfo& info, PanelActions& actio
     }
     ImGui::TextWrapped("%zu rows of %zu nodes", shown.size(), rows.size());
     layout.mark("tree rows");
-    // As tall as its rows, up to ten: a small tree leaves the room below it to the rest.
-    const float rowsHeight =
-        float(std::clamp<size_t>(shown.size(), 2, 10)) * ImGui::GetFrameHeightWithSpacing();
-    const float height = rowsHeight + 2.0f * ImGui::GetStyle().WindowPadding.y;
-    if (!ImGui::BeginChild("##tree", ImVec2(-1, height), true)) {
-        ImGui::EndChild();
-        return;
+    // A pane of its own height, whatever the filter keeps: the rows below never move with it.
+    // The bar under it drags that height.
+    view.treeRows = std::clamp(view.treeRows, minTreeRows, maxTreeRows);
+    const float rowHeight = ImGui::GetFrameHeightWithSpacing();
+    const float height = view.treeRows * rowHeight + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    if (ImGui::BeginChild("##tree", ImVec2(-1, height), true)) {
+        ImGuiListClipper clipper;
+        clipper.Begin(int(shown.size()));
+        while (clipper.Step())
+            for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line)
+                treeRow(view, info, shown[size_t(line)], filtering, actions);
     }
-    ImGuiListClipper clipper;
-    clipper.Begin(int(shown.size()));
-    while (clipper.Step())
-        for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line)
-            treeRow(view, info, shown[size_t(line)], filtering, actions);
     layout.checkChild();
     ImGui::EndChild();
+    splitter(view.treeRows, rowHeight);
 }
 
 } // namespace app

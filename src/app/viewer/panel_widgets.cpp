@@ -57,8 +57,14 @@ std::string elided(const std::string& text, float width) {
 
 void textDisabledWrapped(const char* text) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%s", text);
+    wrappedLine(text);
     ImGui::PopStyleColor();
+}
+
+void wrappedLine(const std::string& text) {
+    ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(" ").x);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
 }
 
 } // namespace app

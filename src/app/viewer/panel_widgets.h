@@ -22,6 +22,11 @@ float checkboxWidth(const char* label);
 // `text` in at most `width` pixels: cut with "..." where it is longer.
 std::string elided(const std::string& text, float width);
 
+// A line wrapped a space short of the edge: where a word ends just at the edge ImGui 1.86
+// counts the blank after it in the line's width, past the edge (seen at the narrowest panel
+// with "cylinder Ø 10 mm (r 5 mm), axis (0, 0, -1)").
+void wrappedLine(const std::string& text);
+
 // Wrapped text in the disabled colour.
 void textDisabledWrapped(const char* text);
 
