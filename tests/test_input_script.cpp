@@ -241,6 +241,18 @@ TEST(InputScript, PipelineHoldsReleasesAndWaits) {
     EXPECT_EQ(errorOf("1 pipeline\n"), "s.txt:1: 'pipeline' takes: pipeline hold|release|ready");
 }
 
+TEST(InputScript, InspectHoldsReleasesAndWaits) {
+    const auto commands =
+        app::parseScript("1 inspect hold\n2 inspect release\n3 inspect ready\n", "s.txt");
+    ASSERT_EQ(commands.size(), 3u);
+    EXPECT_EQ(commands[0].op, app::ScriptOp::Inspect);
+    EXPECT_EQ(commands[0].text, "hold");
+    EXPECT_EQ(commands[1].text, "release");
+    EXPECT_EQ(commands[2].text, "ready");
+    EXPECT_EQ(errorOf("1 inspect now\n"),
+              "s.txt:1: 'inspect' takes hold, release or ready, not 'now'");
+}
+
 TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
     for (const scene::StandardView& view : scene::standardViews()) {
         const auto commands = app::parseScript("1 view " + std::string(view.name) + "\n", "s.txt");

@@ -216,12 +216,15 @@ both=$(node_parts "gearbox module" "gearbox module/base plate")
     at dblclick 470 260
     at frames 6
     # The Inspect panel's things: a face of the base plate (A), Ctrl+click a bolt's (B), a
-    # third Ctrl+click a gear's (B again), then Esc.
+    # third Ctrl+click a gear's (B again), then Esc. Each distance is worked out on the
+    # Inspect worker: `inspect ready` waits for it, so the next click does not supersede it.
     at click 520 240
     at frames 6
     at click 350 180 ctrl
+    at inspect ready
     at frames 6
     at click 350 240 ctrl
+    at inspect ready
     at frames 6
     at key ESC
     at frames 2

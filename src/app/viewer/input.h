@@ -135,6 +135,7 @@ class Input {
     void waitForSolids(uint32_t solids);
     // The same while a pipeline is being built or awaited (`pipeline ready`).
     void waitForPipelines();
+    void waitForInspect();
 
     Viewer& viewer_;
     GLFWwindow* window_;

@@ -64,6 +64,10 @@ void Input::waitForPipelines() {
     if (viewer_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
 }
 
+void Input::waitForInspect() {
+    if (viewer_.inspecting()) steps_.push_front({[this] { waitForInspect(); }, true});
+}
+
 void Input::queue(const ScriptLine& line) {
     switch (line.op) {
     case ScriptOp::Command:
@@ -118,6 +122,7 @@ void Input::queue(const ScriptLine& line) {
     case ScriptOp::Blink:
     case ScriptOp::Rest:
     case ScriptOp::Pipeline:
+    case ScriptOp::Inspect:
         queueWait(line);
         break;
     }
@@ -212,6 +217,12 @@ void Input::queueWait(const ScriptLine& line) {
             step([this] { waitForPipelines(); }, true);
         else
             step([this, hold = line.text == "hold"] { viewer_.holdPipelineBuilds(hold); }, true);
+        break;
+    case ScriptOp::Inspect:
+        if (line.text == "ready")
+            step([this] { waitForInspect(); }, true);
+        else
+            step([this, hold = line.text == "hold"] { viewer_.holdInspect(hold); }, true);
         break;
     default:
         break;

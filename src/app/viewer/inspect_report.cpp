@@ -1,10 +1,11 @@
 // inspect_report.cpp - the Inspect panel's report and rows, worked out on change
-// (inspect_report.h).
+// (inspect_report.h), the slow part on the Inspector's worker (inspect_query.h).
 #include "app/viewer/inspect_report.h"
 
 #include <cstdio>
+#include <memory>
 
-#include "scene/bounds.h"
+#include "app/viewer/inspect_query.h"
 
 namespace app {
 namespace {
@@ -18,22 +19,6 @@ std::string number(const char* pattern, double value) {
 std::string objectPath(const scene::Scene& scene, uint32_t object) {
     const scene::Object& o = scene.objects[object];
     return !o.path.empty() ? o.path : !o.name.empty() ? o.name : "object " + std::to_string(object);
-}
-
-// Every object with a part in `selected`, in scene order.
-std::vector<uint32_t> touchedObjects(const scene::Scene& scene, const scene::PartSet& selected,
-                                     bool& allWhole) {
-    std::vector<uint32_t> objects;
-    allWhole = true;
-    for (uint32_t i = 0; i < scene.objects.size(); ++i) {
-        const scene::Object& o = scene.objects[i];
-        const uint32_t count = scene.geometries[o.geometry].partCount;
-        const uint32_t in = selected.countIn(o.uniquePartOffset, count);
-        if (in == 0) continue;
-        objects.push_back(i);
-        allWhole = allWhole && in == count;
-    }
-    return objects;
 }
 
 // The event lines' numbers: enough digits to compare with the headless JSON.
@@ -55,11 +40,21 @@ std::string selectionName(const std::vector<scene::TreeRow>& tree, const scene::
     return "selection of " + std::to_string(n) + (n == 1 ? " part" : " parts");
 }
 
+std::string bothName(const InspectReport& report) {
+    return "A (" + report.a->label + ") to B (" + report.b->label + ")";
+}
+
+// The rows an answer will fill, while the worker works it out: the panel keeps its height.
+void addComputingRows(const std::string& component, std::initializer_list<const char*> what,
+                      std::vector<InspectRow>& rows) {
+    for (const char* row : what) rows.push_back({component, std::string(row) + " computing..."});
+}
+
 void addDistanceRows(const scene::Scene& scene, const InspectReport& report,
                      std::vector<InspectRow>& rows) {
     const scene::DistanceReport& d = *report.distance;
     const scene::LengthUnit& unit = scene.unit;
-    const std::string both = "A (" + report.a->label + ") to B (" + report.b->label + ")";
+    const std::string both = bothName(report);
     rows.push_back({both, "minimum distance " + scene::formatLength(d.distance, unit) +
                               (d.fromBrep ? " (B-rep)" : " (triangles)")});
     rows.push_back({both, "closest point on A " + scene::formatPoint(d.p0, unit)});
@@ -79,6 +74,8 @@ void addDistanceRows(const scene::Scene& scene, const InspectReport& report,
 std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectReport& report) {
     std::vector<InspectRow> rows;
     const scene::LengthUnit& unit = scene.unit;
+    if (report.computingSelection)
+        addComputingRows(report.selectionName, {"size dX dY dZ", "box min", "box max"}, rows);
     if (report.bounds) {
         const scene::Bounds& b = *report.bounds;
         const std::string from = report.exactBounds ? " (B-rep)" : " (triangles)";
@@ -110,79 +107,111 @@ std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectRepo
     }
     if (report.a) rows.push_back({"A", report.a->label});
     if (report.b) rows.push_back({"B", report.b->label});
+    if (report.computingDistance)
+        addComputingRows(bothName(report),
+                         {"minimum distance", "closest point on A", "closest point on B"}, rows);
     if (report.distance) addDistanceRows(scene, report, rows);
     return rows;
+}
+
+Inspector::Inspector(std::function<void()> landed) : worker_(std::move(landed)) {}
+
+Inspector::~Inspector() = default;
+
+void Inspector::forget() {
+    valid_ = false;
+    worker_.cancel(); // its answer is of the scene before
 }
 
 std::vector<std::string> Inspector::update(const scene::Scene& scene,
                                            const std::vector<scene::TreeRow>& tree,
                                            const scene::PartSet& selected, const Things& things) {
-    if (!stale(selected, things)) return {};
+    std::vector<std::string> said;
+    const bool changed = !valid_ || selected != selection_ || things.version() != version_;
+    if (changed) ask(scene, selected, things, said);
+    // Only the newest question's answer lands: an older one's never shows.
+    std::optional<InspectAnswer> answer = worker_.take();
+    if (answer) takeIn(scene, std::move(*answer), said);
+    if (!changed && !answer) return said;
+    if (report_.selectedParts) report_.selectionName = selectionName(tree, selected, things);
+    report_.rows = inspectRows(scene, report_);
+    return said;
+}
+
+// What changed loses its answer at once (it no longer holds); what is still owed, the
+// selection's part, A's and B's distance or both, is asked anew, superseding the question
+// before, whose answer would not be taken.
+void Inspector::ask(const scene::Scene& scene, const scene::PartSet& selected, const Things& things,
+                    std::vector<std::string>& said) {
     const bool selectionChanged = !valid_ || selected != selection_;
     const bool thingsChanged = !valid_ || things.version() != version_;
     valid_ = true;
     selection_ = selected;
     version_ = things.version();
-    std::vector<std::string> said;
-    const std::string unit = unitWord(scene.unit);
-
     if (selectionChanged) {
         InspectReport next;
         next.selectedParts = selected.size();
-        if (next.selectedParts > 0) {
-            bool allWhole = false;
-            const std::vector<uint32_t> objects = touchedObjects(scene, selected, allWhole);
-            // Solids: CAD scenes alone, whose B-rep gives volumes that mean something.
-            for (uint32_t object : objects) {
-                if (!scene.brep) break;
-                if (next.solids.size() == maxSolids) {
-                    ++next.solidsLeftOut;
-                    continue;
-                }
-                if (auto p = scene::objectProperties(scene, object)) next.solids.push_back(*p);
-            }
-            if (next.solids.size() >= 2) next.sum = scene::sumProperties(next.solids);
-            // Whole solids: the union of their exact boxes; else the triangles' box.
-            if (allWhole && !next.solids.empty() && !next.solidsLeftOut &&
-                next.solids.size() == objects.size()) {
-                next.bounds = next.sum ? next.sum->bbox : next.solids.front().bbox;
-                next.exactBounds = true;
-            } else if (const scene::Bounds b = scene::partsWorldBounds(scene, selected);
-                       !scene::isEmpty(b)) {
-                next.bounds = b;
-            }
-            if (next.bounds) {
-                const glm::dvec3 size = next.bounds->max - next.bounds->min;
-                said.push_back("inspect size " + precise(size.x) + " " + precise(size.y) + " " +
-                               precise(size.z) + " " + unit);
-            }
-            if (!next.solids.empty()) {
-                const scene::SolidProperties sum =
-                    next.sum ? *next.sum : scene::sumProperties(next.solids);
-                said.push_back("inspect solids " + std::to_string(sum.object) + " volume " +
-                               precise(sum.volume) + " area " + precise(sum.area) + " " + unit);
-            }
-        }
+        next.computingSelection = next.selectedParts > 0;
         next.a = report_.a;
         next.b = report_.b;
         next.distance = report_.distance;
+        next.computingDistance = report_.computingDistance;
         report_ = std::move(next);
     }
     if (thingsChanged) {
         report_.a = things.a();
         report_.b = things.b();
         report_.distance.reset();
-        if (report_.a && report_.b)
-            report_.distance = scene::measureDistance(scene, *report_.a, *report_.b);
+        report_.computingDistance = report_.a && report_.b;
         const std::string line = thingsLine(things);
         if (line != saidThings_) said.push_back("inspect things " + line);
         saidThings_ = line;
+    }
+    if (!computing()) return worker_.cancel();
+    InspectQuery query;
+    // The worker reads a copy: the viewer's scene changes and is replaced meanwhile.
+    query.scene = std::make_shared<const scene::Scene>(scene);
+    query.selection = report_.computingSelection;
+    query.selected = selected;
+    query.distance = report_.computingDistance;
+    query.a = report_.a;
+    query.b = report_.b;
+    worker_.submit([query = std::move(query)](const std::atomic<bool>& cancelled) {
+        return answerInspect(query, cancelled);
+    });
+    said.push_back("inspect: computing");
+}
+
+void Inspector::takeIn(const scene::Scene& scene, InspectAnswer answer,
+                       std::vector<std::string>& said) {
+    const std::string unit = unitWord(scene.unit);
+    if (answer.selection) {
+        InspectReport& got = answer.report;
+        report_.selectedParts = got.selectedParts;
+        report_.bounds = got.bounds;
+        report_.exactBounds = got.exactBounds;
+        report_.solids = std::move(got.solids);
+        report_.solidsLeftOut = got.solidsLeftOut;
+        report_.sum = got.sum;
+        report_.computingSelection = false;
+        if (report_.bounds) {
+            const glm::dvec3 size = report_.bounds->max - report_.bounds->min;
+            said.push_back("inspect size " + precise(size.x) + " " + precise(size.y) + " " +
+                           precise(size.z) + " " + unit);
+        }
+        if (!report_.solids.empty()) {
+            const scene::SolidProperties sum =
+                report_.sum ? *report_.sum : scene::sumProperties(report_.solids);
+            said.push_back("inspect solids " + std::to_string(sum.object) + " volume " +
+                           precise(sum.volume) + " area " + precise(sum.area) + " " + unit);
+        }
+    }
+    if (answer.distance) {
+        report_.distance = answer.measured;
+        report_.computingDistance = false;
         if (report_.distance)
             said.push_back("inspect distance " + precise(report_.distance->distance) + " " + unit);
     }
-    if (report_.selectedParts) report_.selectionName = selectionName(tree, selected, things);
-    report_.rows = inspectRows(scene, report_);
-    return said;
 }
 
 } // namespace app

@@ -47,6 +47,7 @@ const InputSpec inputSpecs[] = {
     {"blink", ScriptOp::Blink, 0, "blink strong|weak|clock", false},
     {"rest", ScriptOp::Rest, 1, "rest SECONDS", false},
     {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready", false},
+    {"inspect", ScriptOp::Inspect, 0, "inspect hold|release|ready", false},
 };
 
 [[noreturn]] void fail(const std::string& message) {
@@ -64,7 +65,7 @@ std::string trimmed(const std::string& text) {
     return text.substr(first, text.find_last_not_of(" \t\r") + 1 - first);
 }
 
-const char* const pipelineWords[] = {"hold", "release", "ready"};
+const char* const holdWords[] = {"hold", "release", "ready"}; // pipeline, inspect
 const char* const blinkWords[] = {"strong", "weak", "clock"};
 
 bool whole(double value, double low, double high) {
@@ -76,7 +77,7 @@ void readInputWords(const InputSpec& spec, const std::vector<std::string>& args,
                     const std::string& rest, ScriptLine& line) {
     const ScriptOp op = spec.op;
     const bool oneWord = op == ScriptOp::Key || op == ScriptOp::Drop || op == ScriptOp::Blink ||
-                         op == ScriptOp::Pipeline;
+                         op == ScriptOp::Pipeline || op == ScriptOp::Inspect;
     const bool fits = op == ScriptOp::Type    ? !rest.empty()
                       : op == ScriptOp::Box   ? args.size() == 4 || args.size() == 5
                       : op == ScriptOp::Click ? args.size() == 2 || args.size() == 3
@@ -129,7 +130,8 @@ void checkInput(const InputSpec& spec, ScriptLine& line) {
         if (v[0] <= 0.0 || v[0] > 60.0) fail("rest takes seconds, more than 0 and at most 60");
         break;
     case ScriptOp::Pipeline:
-        oneOfWords(spec.name, line.text, pipelineWords);
+    case ScriptOp::Inspect:
+        oneOfWords(spec.name, line.text, holdWords);
         break;
     case ScriptOp::Blink:
         oneOfWords(spec.name, line.text, blinkWords);

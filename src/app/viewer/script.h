@@ -42,6 +42,9 @@
 //                           a test holds "a build is pending" as long as it likes; `pipeline
 //                           ready` waits until none is being built or awaited (never while
 //                           held)
+//   4.95 inspect hold       the Inspect panel's questions wait on their worker until `inspect
+//                           release` (the panel says "computing..." meanwhile); `inspect
+//                           ready` waits until the answer is in (never while held)
 //
 // Commands, each by its row's name with the argument it takes (F1 in the viewer lists them
 // all with their keys); a switch takes on or off, and without either toggles as its key does:
@@ -117,6 +120,7 @@ enum class ScriptOp {
     Blink,
     Rest,
     Pipeline,
+    Inspect,
     Command,
 };
 
@@ -124,7 +128,7 @@ struct ScriptLine {
     double seconds = 0.0;
     ScriptOp op = ScriptOp::Frames;
     std::string text;               // Key: its name; Type: the text; Drop: the file; Blink,
-                                    // Pipeline: the word
+                                    // Pipeline, Inspect: the word
     int key = 0;                    // Key: the GLFW key code
     int mods = 0;                   // Key, Box, Click: GLFW modifier bits held
     std::array<double, 4> values{}; // coordinates, wheel steps, window size, frames, seconds,

@@ -318,9 +318,10 @@ FrameWants Viewer::frameWants() const {
     wants.now = elapsed();
     wants.events = window_.events() + input_.stepsRun(); // scripted input counts as input
     wants.continuous = !view_.vsync;
-    // A selection the Inspect section has not worked out yet: a frame to show it.
+    // A selection the Inspect section has not asked about yet, or its answer landed: a frame
+    // for it. While the worker works the answer out, the loop may rest: the answer wakes it.
     wants.busy = input_.waiting() || !screenshotPath_.empty() || pendingZoom_ != 0.0f ||
-                 inspect_.stale(input_.selection().selected(), input_.things());
+                 inspect_.due(input_.selection().selected(), input_.things());
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = input_.selection().hovered().has_value();
     if (scriptStart_) wants.scriptWake = input_.wakeIn(scriptSeconds());

@@ -119,6 +119,9 @@ class Viewer {
     bool pipelinePending() const { return scene_.pipelinePending(); }
     // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
     void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
+    // The Inspect panel's answer being worked out, and the script's `inspect hold|release`.
+    bool inspecting() const { return inspect_.computing(); }
+    void holdInspect(bool hold) { inspect_.hold(hold); }
 
     // The command table's (commands.h; viewer_commands.cpp).
     void say(const std::string& line) const { events_.say(line); } // an event line
@@ -183,8 +186,10 @@ class Viewer {
     Input input_;
     OrbitCamera camera_;
     Measure measure_;
-    EdgeHover edgeHover_;    // the B-rep edges hovered and selected
-    Inspector inspect_;      // the Inspect section's report, worked out when the selection changes
+    EdgeHover edgeHover_; // the B-rep edges hovered and selected
+    // The Inspect section's report, worked out on its worker when the selection changes; an
+    // answer wakes the loop (glfwPostEmptyEvent may be called from any thread).
+    Inspector inspect_{&Window::wake};
     FileChooser chooser_;    // Open...: its answer is taken between frames (openDrops)
     bool noChooser_ = false; // neither the portal nor zenity answered: the panel's browser
     void chosen(const ChooserResult& result);
