@@ -16,6 +16,7 @@
 #include <map>
 #include <set>
 
+#include "app/camera_frame.h"
 #include "app/headless.h"
 #include "app/image_io.h"
 #include "app/offscreen.h"

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "app/camera_frame.h"
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"

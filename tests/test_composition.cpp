@@ -7,6 +7,7 @@
 // 1x and 4x MSAA, with edges on and off.
 #include <gtest/gtest.h>
 
+#include "app/camera_frame.h"
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"

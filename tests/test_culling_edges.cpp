@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <set>
 
+#include "app/camera_frame.h"
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"

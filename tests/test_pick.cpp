@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "app/headless.h"
+#include "app/measure_json.h"
 #include "app/scene_source.h"
 #include "image_compare.h"
 #include "raster_explainer.h"

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/headless.h"
+#include "app/measure_json.h"
 #include "app/scene_source.h"
 #include "scene/face_info.h"
 #include "scene/mesh_builder.h"

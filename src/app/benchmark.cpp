@@ -10,6 +10,8 @@
 
 #include <unistd.h>
 
+#include "app/camera_frame.h"
+#include "app/exit_code.h"
 #include "app/frame_loop.h"
 #include "app/headless.h"
 #include "app/offscreen.h"

@@ -1,5 +1,6 @@
 // frame_loop.cpp - one loop over the frame slots for headless runs and the benchmark.
 #include "app/frame_loop.h"
+#include "app/camera_frame.h"
 
 #include <algorithm>
 #include <chrono>

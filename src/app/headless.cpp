@@ -2,6 +2,9 @@
 // each with its selection, picks and measurements, then its timed frames (frame_loop.h);
 // and `idview --headless`, which prints what they found.
 #include "app/headless.h"
+#include "app/camera_frame.h"
+#include "app/exit_code.h"
+#include "app/pipeline_cache_file.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -34,33 +37,6 @@ double median(std::vector<double> values) {
 }
 
 } // namespace
-
-std::filesystem::path pipelineCacheFolder(const Options& options) {
-    return options.scene.cadCache ? util::cacheFolder() : std::filesystem::path{};
-}
-
-void savePipelineCache(const render::Renderer& renderer) {
-    if (const std::string error = renderer.driverCache().save(); !error.empty())
-        std::fprintf(stderr, "idview: warning: pipeline cache not saved: %s\n", error.c_str());
-}
-
-render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent) {
-    render::FrameParams params;
-    const double aspect = double(extent.width) / double(extent.height);
-    // The GPU works relative to the eye: the view from there has no translation, so the
-    // float matrix it gets is as exact wherever the model sits (docs/models.md).
-    params.origin = camera.eye;
-    params.worldViewProj = camera.viewProjection(aspect);
-    params.viewProj = glm::mat4(camera.projection(aspect) * camera.viewFromEye());
-    params.eye = glm::vec3(0.0f);
-    if (camera.ortho) params.orthoToViewer = glm::normalize(camera.eye - camera.target);
-    return params;
-}
-
-float explodeAt(const Animation& animation, uint64_t frame) {
-    return animation.animate ? scene::explodeLoop(animation.time.value_or(float(frame) / 60))
-                             : animation.explode;
-}
 
 namespace {
 
@@ -356,13 +332,6 @@ scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene) {
     }
     if (isolate) hidden.invert();
     return hidden;
-}
-
-int exitCode(uint32_t validationMessages) {
-    if (validationMessages == 0) return 0;
-    std::fprintf(stderr, "idview: the validation layer reported %u messages (see above)\n",
-                 validationMessages);
-    return 3;
 }
 
 } // namespace app

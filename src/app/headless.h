@@ -75,10 +75,6 @@ std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& p
 // "unit":"mm"}, null where a point shows no part (and the distance and delta then); the
 // points and lengths are in `unit` (the scene's).
 std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& unit);
-// The same line for any two points (the viewer's measure mode prints it too).
-std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
-                        const std::array<std::optional<uint32_t>, 2>& parts,
-                        const scene::LengthUnit& unit);
 
 // Renders options.frames frames of `scene` seen by `camera` and reads back the last one, and
 // saves the pipeline cache (pipelineCacheFolder) at the end.
@@ -99,18 +95,6 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
                        const scene::Camera& camera,
                        const std::vector<render::RenderSettings>& settings);
 
-// Where the driver's pipeline cache is kept between runs: scene::cacheFolder(), nothing
-// (memory only) with --no-cache.
-std::filesystem::path pipelineCacheFolder(const Options& options);
-// At exit (headless and the viewer), so that the next start finds what this run compiled: a
-// file that cannot be written is a warning on stderr, as it costs only the next start time.
-void savePipelineCache(const render::Renderer& renderer);
-
-// The frame of `camera` for `extent`, as headless, the benchmark and the viewer draw it.
-render::FrameParams cameraFrame(const scene::Camera& camera, VkExtent2D extent);
-// --animate: the exploded view at --time, else at frame / 60 s; otherwise it stays put.
-float explodeAt(const Animation& animation, uint64_t frame);
-
 // The hidden parts Options::hide or isolate ask for in `scene`. Throws std::invalid_argument
 // naming an ID that is not in the scene.
 scene::PartSet hiddenParts(const Options& options, const scene::Scene& scene);
@@ -122,9 +106,6 @@ std::vector<std::string> inspectionJson(const Options& options, const scene::Sce
 // The JSON lines of --select-rect and --visible-parts.
 std::string partSetJson(const scene::PartSet& parts, uint32_t count,
                         const std::optional<render::PartSetQuery>& rect);
-
-// 0, or 3 with a line on stderr when validation reported anything (the CLI's exit codes).
-int exitCode(uint32_t validationMessages);
 
 // `idview --headless`: renders, writes the requested files, prints a summary line and returns
 // the exit code (3 when validation reported anything).

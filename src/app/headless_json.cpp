@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "app/headless.h"
+#include "app/measure_json.h"
 #include "scene/edge_info.h"
 #include "scene/face_info.h"
 #include "scene/inspect.h"
@@ -55,31 +56,6 @@ std::string edgeInfoJson(const scene::Scene& scene, const render::PickReading& p
         scene::edgeReportMembers(json, *report);
     else
         json.member("part", pick.part).key("edge").null();
-    return json.endObject().text();
-}
-
-std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
-                        const std::array<std::optional<uint32_t>, 2>& parts,
-                        const scene::LengthUnit& unit) {
-    const auto& [p0, p1] = points;
-    std::optional<glm::dvec3> delta;
-    std::optional<double> distance;
-    if (p0 && p1) {
-        delta = *p1 - *p0;
-        distance = glm::length(*delta);
-    }
-    // Every digit of a double: points far from the origin read back exactly.
-    util::JsonWriter json;
-    json.beginObject()
-        .member("p0", p0)
-        .member("p1", p1)
-        .member("distance", distance)
-        .member("delta", delta)
-        .beginArray("parts")
-        .value(parts[0])
-        .value(parts[1])
-        .endArray();
-    scene::unitMember(json, unit);
     return json.endObject().text();
 }
 

@@ -12,6 +12,7 @@
 
 #include "app/cli.h"
 #include "app/headless.h"
+#include "app/pipeline_cache_file.h"
 #include "render/frame_slots.h"
 #include "render/renderer.h"
 #include "render/targets.h"

@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "app/headless.h" // cameraFrame
+#include "app/camera_frame.h"
 #include "app/image_io.h"
 #include "app/viewer/commands.h"
 #include "app/viewer/inspect_panel.h"

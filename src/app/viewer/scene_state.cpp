@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "app/headless.h" // pipelineCacheFolder
+#include "app/pipeline_cache_file.h"
 #include "scene/explode.h"
 #include "vk/check.h"
 

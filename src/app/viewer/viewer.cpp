@@ -7,7 +7,10 @@
 
 #include <imgui.h>
 
-#include "app/headless.h" // cameraFrame, exitCode, savePipelineCache
+#include "app/camera_frame.h"
+#include "app/exit_code.h"
+#include "app/measure_json.h"
+#include "app/pipeline_cache_file.h"
 #include "app/saved_settings.h"
 #include "app/viewer/commands.h"
 #include "app/viewer/kept_view.h"
