@@ -209,9 +209,7 @@ void source(const PanelInfo& info) {
     }
     if (!info.scene || info.source.empty()) return; // nothing open: no unit either
     const scene::LengthUnit& unit = info.scene->unit;
-    const std::string line = unit.symbol.empty() ? "lengths: no unit (" + unit.source + ")"
-                                                 : "lengths in " + unit.symbol;
-    textDisabledWrapped(line.c_str());
+    textDisabledWrapped(scene::unitHeading(unit).c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", unit.source.c_str());
 }
 
@@ -264,7 +262,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         ImGui::CollapsingHeader("Measure (M to leave)", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (info.measureLines.empty())
             ImGui::TextWrapped("Click a part for its face; two clicks for their distance.");
-        for (const std::string& line : info.measureLines) ImGui::TextWrapped("%s", line.c_str());
+        for (const std::string& line : info.measureLines) textWrappedAtSpaces(line);
     }
     // The parts first, open; the rarely used sections closed, so the details stay in view.
     layout.mark("Selection");

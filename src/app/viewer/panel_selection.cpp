@@ -7,6 +7,7 @@
 
 #include "app/viewer/panel_commands.h"
 #include "app/viewer/panel_widgets.h"
+#include "scene/precision.h"
 
 namespace app {
 namespace {
@@ -15,15 +16,6 @@ namespace {
 // and triangles, with room for a long name to wrap once. Fixed, so what lies below never jumps as
 // the hover changes (it scrolls where a narrow panel wraps more).
 constexpr float detailLines = 8.0f;
-
-// A face's or an edge's line, wrapped a space short of the edge: where a word ends just at the
-// edge ImGui 1.86 counts the blank after it in the line's width, past the edge (seen at the
-// narrowest panel with "cylinder Ø 10 mm (r 5 mm), axis (0, 0, -1)").
-void wrappedLine(const std::string& text) {
-    ImGui::PushTextWrapPos(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(" ").x);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
-}
 
 void partLine(const char* what, const PartLine& line) {
     if (!line.part) {
@@ -37,19 +29,21 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::PopStyleColor();
     if (p.face) {
         const std::string surface = line.face ? ": " + scene::describeSurface(*line.face) : "";
-        wrappedLine("face " + std::to_string(*p.face) + surface);
+        textWrappedAtSpaces("face " + std::to_string(*p.face) + surface);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep face's number in its shape (0-based, as --face-info "
                               "gives it); its exact area from Open CASCADE");
     }
     if (!line.edge.empty()) {
-        wrappedLine(line.edge);
+        textWrappedAtSpaces(line.edge);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep edge's number in its shape (0-based, as --edge-info "
                               "gives it); its exact length, radius and axis from Open CASCADE");
     }
     ImGui::TextWrapped("object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
-    ImGui::TextWrapped("%u triangles, depth %.6f", p.triangleCount, double(line.depth));
+    // The depth buffer's value (0 near, 1 far): a float, shown to a millionth.
+    textWrappedAtSpaces(std::to_string(p.triangleCount) + " triangles, depth " +
+                        scene::rounded(line.depth, 1e-6));
 }
 
 // More than one part: the tree node they make up, if they are exactly one node's parts.

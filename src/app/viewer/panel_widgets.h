@@ -4,7 +4,10 @@
 // whole text in a tooltip. Free functions over ImGui.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace app {
 
@@ -21,6 +24,14 @@ float checkboxWidth(const char* label);
 
 // `text` in at most `width` pixels: cut with "..." where it is longer.
 std::string elided(const std::string& text, float width);
+
+// Text wrapped only at its blanks, never inside a word: ImGui's TextWrapped also breaks after
+// '.' and ',', which cuts "-49.99" into "-49." and "99". A word wider than the panel keeps its
+// line (clipped) whole; the first line keeps its leading blanks (an indent).
+void textWrappedAtSpaces(const std::string& text);
+// Its lines for `width`, each word measured by `widthOf` (the text's pixels).
+std::vector<std::string_view> wrapAtSpaces(std::string_view text, float width,
+                                           const std::function<float(std::string_view)>& widthOf);
 
 // Wrapped text in the disabled colour.
 void textDisabledWrapped(const char* text);
