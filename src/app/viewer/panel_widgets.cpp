@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdarg>
+#include <cstdio>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -83,6 +85,15 @@ void textWrappedAtSpaces(const std::string& text) {
     };
     for (std::string_view line : wrapAtSpaces(text, ImGui::GetContentRegionAvail().x, widthOf))
         ImGui::TextUnformatted(line.data(), line.data() + line.size());
+}
+
+void textWrappedAtSpacesf(const char* format, ...) {
+    char text[512];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(text, sizeof text, format, args);
+    va_end(args);
+    textWrappedAtSpaces(text);
 }
 
 void textDisabledWrapped(const char* text) {

@@ -29,6 +29,8 @@ std::string elided(const std::string& text, float width);
 // '.' and ',', which cuts "-49.99" into "-49." and "99". A word wider than the panel keeps its
 // line (clipped) whole; the first line keeps its leading blanks (an indent).
 void textWrappedAtSpaces(const std::string& text);
+// The same, printf-style: lines of numbers ("Render GPU [ms]  0.123").
+void textWrappedAtSpacesf(const char* format, ...) __attribute__((format(printf, 1, 2)));
 // Its lines for `width`, each word measured by `widthOf` (the text's pixels).
 std::vector<std::string_view> wrapAtSpaces(std::string_view text, float width,
                                            const std::function<float(std::string_view)>& widthOf);
