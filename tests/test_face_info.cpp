@@ -31,6 +31,7 @@
 #include "scene/cad/cad_loader.h"
 #include "scene/copies.h"
 #include "scene/face_info.h"
+#include "scene/inspect.h"
 #include "scene/procedural/procedural.h"
 
 namespace {
@@ -81,9 +82,7 @@ TEST(FaceInfo, ABoxWithAHoleHasItsKnownPlanesAndCylinder) {
             EXPECT_NE(faceReportJson(*r).find("\"diameter\":10,"), std::string::npos)
                 << faceReportJson(*r);
             const std::string line = describeSurface(*r);
-            EXPECT_EQ(line.rfind("cylinder \u00d8 10 (no unit) (r 5 (no unit)), axis (0, 0, ", 0),
-                      0u)
-                << line;
+            EXPECT_EQ(line.rfind("cylinder \u00d8 10 (r 5), axis (0, 0, ", 0), 0u) << line;
             cylinderArea += r->surface.area;
             continue;
         }
@@ -272,11 +271,13 @@ TEST(FaceInfo, AMeshPartHasTheAreaOfItsTriangles) {
 
 // What the panel and the selection's event line say of each face of screw.step (one shape,
 // so its faces are numbered as TopExp::MapShapes orders them): the area, read back from the
-// text, is Open CASCADE's own for that face, in mm².
+// text, is Open CASCADE's own for that face rounded to the model's precision, in mm².
 TEST(FaceInfo, EachFaceLineGivesOpenCascadesAreaInMillimetres) {
     const char* path = "/usr/share/opencascade/data/step/screw.step";
     Scene s = loadCad(path, {}).scene;
-    s.unit = cadUnit(path); // as app::loadScene sets it (test_units.cpp checks that)
+    s.unit = cadUnit(path);          // as app::loadScene sets it (test_units.cpp checks that)
+    s.precision = scenePrecision(s); // and this (test_precision.cpp)
+    ASSERT_GT(s.precision.length, 0.0);
     TopTools_IndexedMapOfShape faces;
     {
         // This process's first STEP reader (the load read in a worker): its setup is never
@@ -294,12 +295,9 @@ TEST(FaceInfo, EachFaceLineGivesOpenCascadesAreaInMillimetres) {
         const std::string line = describeSurface(*report);
         const size_t at = line.find(", area ");
         ASSERT_NE(at, std::string::npos) << line;
-        char* end = nullptr;
-        const double area = std::strtod(line.c_str() + at + 7, &end);
-        EXPECT_EQ(std::string(end), " mm\u00b2") << line;
         GProp_GProps props;
         BRepGProp::SurfaceProperties(faces(int(*report->face) + 1), props);
-        EXPECT_NEAR(area, props.Mass(), 1e-5 * props.Mass()) << line;
+        EXPECT_EQ(line.substr(at + 7), areaText(props.Mass(), s.precision) + " mm\u00b2") << line;
         EXPECT_EQ(line.rfind(surfaceName(report->surface.kind), 0), 0u) << line;
     }
 }

@@ -112,11 +112,13 @@ TEST(InspectSum, RowsSumVolumesAndAreasCentreWeighsByVolume) {
     app::InspectReport report;
     report.sum = scene::sumProperties({solid(1000, 600, {0, 0, 0}), solid(3000, 1400, {40, 0, 8})});
     const auto rows = app::inspectRows(s, report);
-    ASSERT_EQ(rows.size(), 3u);
-    for (const auto& row : rows) EXPECT_EQ(row.component, "sum of 2 solids");
-    EXPECT_EQ(rows[0].text, "volume 4000 mm\u00b3");
-    EXPECT_EQ(rows[1].text, "surface area 2000 mm\u00b2");
-    EXPECT_EQ(rows[2].text, "centre of mass (30, 0, 6) mm");
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_EQ(rows[0].component, ""); // the unit's heading
+    EXPECT_EQ(rows[0].text, "lengths in mm");
+    for (size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i].component, "sum of 2 solids");
+    EXPECT_EQ(rows[1].text, "volume 4000 mm\u00b3");
+    EXPECT_EQ(rows[2].text, "surface area 2000 mm\u00b2");
+    EXPECT_EQ(rows[3].text, "centre of mass (30, 0, 6)");
 }
 
 // Open shells have no volume to weigh by: the centre is the surfaces', and says so.
@@ -127,12 +129,13 @@ TEST(InspectSum, OpenShellsWeighByArea) {
     report.sum =
         scene::sumProperties({solid(0, 100, {0, 0, 0}, false), solid(0, 300, {4, 0, 0}, false)});
     const auto rows = app::inspectRows(s, report);
-    ASSERT_EQ(rows.size(), 3u);
-    EXPECT_EQ(rows[0].text, "volume 0 mm\u00b3 (some are open shells)");
-    EXPECT_EQ(rows[2].text, "centre of the surfaces (3, 0, 0) mm");
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_EQ(rows[1].text, "volume 0 mm\u00b3 (some are open shells)");
+    EXPECT_EQ(rows[3].text, "centre of the surfaces (3, 0, 0)");
 }
 
-// The panel's rows: each names its component and carries the unit.
+// The panel's rows: the unit once, as their heading; then each names its component, lengths
+// and points bare, areas and volumes with their unit.
 TEST(InspectRows, EveryRowNamesItsComponentAndUnit) {
     scene::Scene s;
     s.unit = {"mm", "test"};
@@ -157,15 +160,22 @@ TEST(InspectRows, EveryRowNamesItsComponentAndUnit) {
             if (row.component == component && row.text == text) return true;
         return false;
     };
-    EXPECT_TRUE(has("box/nut", "size dX dY dZ (2, 3, 4) mm (triangles)"));
+    ASSERT_FALSE(rows.empty());
+    EXPECT_TRUE(rows[0].component.empty());
+    EXPECT_EQ(rows[0].text, "lengths in mm");
+    EXPECT_TRUE(has("box/nut", "size dX dY dZ (2, 3, 4) (triangles)"));
     EXPECT_TRUE(has("box/nut", "volume 24 mm\u00b3"));
     EXPECT_TRUE(has("box/nut", "surface area 52 mm\u00b2"));
-    EXPECT_TRUE(has("box/nut", "centre of mass (1, 1.5, 2) mm"));
+    EXPECT_TRUE(has("box/nut", "centre of mass (1, 1.5, 2)"));
     const std::string both = "A (box/nut \u00b7 face 1) to B (box/nut \u00b7 face 3)";
-    EXPECT_TRUE(has(both, "minimum distance 2.5 mm (triangles)"));
-    EXPECT_TRUE(has(both, "closest point on B (0, 0, 2.5) mm"));
-    EXPECT_TRUE(has(both, "centre to centre 7 mm"));
-    for (const auto& row : rows) EXPECT_FALSE(row.component.empty()) << row.text;
+    EXPECT_TRUE(has(both, "minimum distance 2.5 (triangles)"));
+    EXPECT_TRUE(has(both, "closest point on B (0, 0, 2.5)"));
+    EXPECT_TRUE(has(both, "centre to centre 7"));
+    for (size_t i = 1; i < rows.size(); ++i) {
+        EXPECT_FALSE(rows[i].component.empty()) << rows[i].text;
+        // One unit per line at most: the heading says the length's.
+        EXPECT_EQ(rows[i].text.find(" mm "), std::string::npos) << rows[i].text;
+    }
 }
 
 } // namespace

@@ -22,19 +22,24 @@ using scene::LengthUnit;
 const LengthUnit mm{"mm", "test"};
 
 TEST(Units, LengthsAreasAndPointsCarryTheirUnit) {
-    EXPECT_EQ(scene::formatLength(12.5, mm), "12.5 mm");
-    EXPECT_EQ(scene::formatLength(1.0 / 3.0, mm), "0.333333 mm");
-    EXPECT_EQ(scene::formatLength(2.0, scene::gltfUnit()), "2 m");
-    EXPECT_EQ(scene::formatArea(628.3185307, mm), "628.319 mm\u00b2");
-    EXPECT_EQ(scene::formatVolume(1570.796327, mm), "1570.8 mm\u00b3");
-    EXPECT_EQ(scene::formatPoint({1, -2.5, 0}, mm), "(1, -2.5, 0) mm");
-    // A point at map coordinates keeps its centimetres (issue 35).
-    EXPECT_EQ(scene::formatPoint({458002.4259, 5439009.5708, 121.9374771}, scene::gltfUnit()),
-              "(458002.426, 5439009.57, 121.937477) m");
-    // No unit is said, not left out.
-    EXPECT_EQ(scene::formatLength(3.0, scene::generatedUnit()), "3 (no unit)");
-    EXPECT_EQ(scene::formatArea(3.0, scene::generatedUnit()), "3 (no unit)");
-    EXPECT_EQ(scene::formatVolume(3.0, scene::generatedUnit()), "3 (no unit)");
+    const scene::Precision p{1e-4}; // a CAD part of about 100 mm
+    EXPECT_EQ(scene::formatLength(12.5, mm, p), "12.5 mm");
+    EXPECT_EQ(scene::formatLength(1.0 / 3.0, mm, p), "0.3333 mm");
+    EXPECT_EQ(scene::formatLength(2.0, scene::gltfUnit(), p), "2 m");
+    EXPECT_EQ(scene::formatArea(628.3185307, mm, p), "628.32 mm\u00b2");
+    EXPECT_EQ(scene::formatVolume(1570.796327, mm, p), "1570.8 mm\u00b3");
+    EXPECT_EQ(scene::formatPoint({1, -2.5, 0}, mm, p), "(1, -2.5, 0) mm");
+    // A point at map coordinates keeps its centimetres (issue 35): a float there resolves
+    // 0.5 m, but a double scene at 0.01 keeps them.
+    EXPECT_EQ(
+        scene::formatPoint({458002.4259, 5439009.5708, 121.9374771}, scene::gltfUnit(), {0.01}),
+        "(458002.43, 5439009.57, 121.94) m");
+    // No unit: bare numbers, the panel's heading says "lengths: no unit" once.
+    EXPECT_EQ(scene::formatLength(3.0, scene::generatedUnit(), p), "3");
+    EXPECT_EQ(scene::formatArea(3.0, scene::generatedUnit(), p), "3");
+    EXPECT_EQ(scene::formatVolume(3.0, scene::generatedUnit(), p), "3");
+    EXPECT_EQ(scene::unitHeading(mm), "lengths in mm");
+    EXPECT_EQ(scene::unitHeading(scene::generatedUnit()), "lengths: no unit");
     auto unitObject = [](const scene::LengthUnit& unit) {
         util::JsonWriter json;
         json.beginObject();
@@ -81,6 +86,7 @@ TEST(Units, FaceDescriptionsAndJsonCarryTheUnit) {
     EXPECT_EQ(face->unit, mm);
     const std::string line = scene::describeSurface(*face);
     EXPECT_NE(line.find(" mm\u00b2"), std::string::npos) << line;
+    EXPECT_EQ(line.find("no unit"), std::string::npos) << line;
     EXPECT_NE(scene::faceReportJson(*face).find("\"unit\":\"mm\""), std::string::npos);
     const std::array<std::optional<glm::dvec3>, 2> points = {glm::dvec3(0), glm::dvec3(3, 4, 0)};
     const std::string measure = app::measureJson(points, {0u, 1u}, mm);

@@ -181,9 +181,11 @@ opened=$(row "$work/clip.out" -1 Controls)
 [[ -n $opened && $opened -gt $(row "$work/probe.out" -1 Controls) ]] ||
     fail "the sections did not open (Controls at ${opened:-?})"
 
-# The selected face: its name in the assembly, its surface and its area with the unit.
+# The selected face: its name in the assembly, its surface and its area with the unit, its
+# numbers rounded (no "e-15" noise).
 selected=$(grep -m1 '^idview: selected: part' "$work/clip.out")
-if [[ $selected =~ :\ .*the\ product\ name.*,\ face\ [0-9]+:\ [a-z]+.*,\ area\ [0-9.e+-]+\ mm² ]]; then
+if [[ $selected =~ :\ .*the\ product\ name.*,\ face\ [0-9]+:\ [a-z]+.*,\ area\ [0-9.e+-]+\ mm² &&
+    $selected != *"e-"* ]]; then
     echo "ok   $selected"
 else
     fail "the selected face's line lacks name, surface or area in mm²: ${selected:-none}"
@@ -195,7 +197,9 @@ measured=$(grep '^idview: measure: {' "$work/clip.out" | tail -1)
 # selected after the click away from it that follows (the face's selection above).
 hovered=$(sed -n 's/^idview: edge hovered: \(part [0-9]* edge [0-9]*\)$/\1/p' "$work/clip.out" | head -1)
 edge=$(grep -m1 '^idview: edge selected: part' "$work/clip.out")
-if [[ -n $hovered && $edge =~ ^idview:\ edge\ selected:\ $hovered:\ [a-z]+.*,\ length\ [0-9.e+-]+\ mm ]]; then
+# The unit once, on the line's first length (a circle's diameter, else the length).
+if [[ -n $hovered && $edge =~ ^idview:\ edge\ selected:\ $hovered:\ [a-z]+.*,\ length\ [0-9.e+-]+ &&
+    $edge == *[0-9]" mm"* && $edge != *"mm"*"mm"* ]]; then
     echo "ok   $edge"
 else
     fail "no edge hovered then selected: hovered '${hovered:-none}', ${edge:-no edge selected}"

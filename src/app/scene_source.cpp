@@ -17,6 +17,7 @@
 #include "scene/copies.h"
 #include "scene/formats.h"
 #include "scene/gltf/gltf_loader.h"
+#include "scene/inspect.h"
 #include "scene/lod.h"
 #include "scene/procedural/generator.h"
 #include "scene/procedural/procedural.h"
@@ -176,6 +177,7 @@ LoadedScene loadScene(const SceneSettings& settings, LoadProgress* progress,
     if (settings.copies > 1)
         loaded.scene = makeCopies(loaded.source, loaded.scene, settings.copies, settings.copyAxes);
     if (settings.lodLevel > 0) scene::retargetToLevel(loaded.scene, settings.lodLevel);
+    loaded.scene.precision = scene::scenePrecision(loaded.scene);
     loaded.loadMs = msSince(start);
     return loaded;
 }

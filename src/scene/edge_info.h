@@ -36,6 +36,7 @@ struct EdgeReport {
     glm::dvec3 center{0.0}, axis{0.0};
     std::vector<glm::dvec3> points; // along the edge, for drawing and screen distance
     LengthUnit unit;
+    Precision precision; // the scene's, for describeEdge
 };
 
 // The edges bounding the part's face (EdgeRefs of that part); empty without a B-rep.
@@ -62,7 +63,8 @@ std::string edgeReportJson(const EdgeReport& report);
 // The same members, written into the object `json` has open (--edge-info puts the pixel
 // first).
 void edgeReportMembers(util::JsonWriter& json, const EdgeReport& report);
-// "circle Ø 10 mm (r 5 mm), length 31.4159 mm", "line, length 20 mm, direction (1, 0, 0)".
+// Rounded to the scene's precision, the unit once: "circle Ø 10 mm (r 5), length 31.4159",
+// "line, length 20 mm, direction (1, 0, 0)".
 std::string describeEdge(const EdgeReport& report);
 
 } // namespace scene

@@ -2,7 +2,6 @@
 #include "scene/face_info.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "scene/bounds.h"
 #include "util/json_writer.h"
@@ -26,6 +25,7 @@ std::optional<FaceReport> faceReport(const Scene& scene, uint32_t uniquePartId) 
     report.part = uniquePartId;
     report.object = ref->object;
     report.unit = scene.unit;
+    report.precision = scene.precision;
     if (ref->localPart < g.partFaces.size()) report.face = g.partFaces[ref->localPart];
     const glm::dmat4 world(object.world);
     const glm::dmat3 linear(world);
@@ -94,27 +94,17 @@ std::string faceReportJson(const FaceReport& r) {
 
 std::string describeSurface(const FaceReport& r) {
     const SurfaceInfo& s = r.surface;
+    const Precision& p = r.precision;
     std::string line = surfaceName(s.kind);
     // A hole or a boss is sized by its diameter; the radius follows for fillets.
-    if (s.kind == SurfaceKind::Cylinder) {
-        char axis[96];
-        // Rounding's leftovers (-2.22e-16) read as the 0 they are.
-        const glm::dvec3 d = glm::mix(s.axisDirection, glm::dvec3(0.0),
-                                      glm::lessThan(glm::abs(s.axisDirection), glm::dvec3(1e-12)));
-        std::snprintf(axis, sizeof axis, ", axis (%.4g, %.4g, %.4g)", d.x, d.y, d.z);
-        line += " Ø " + formatLength(2.0 * s.radius, r.unit) + " (r " +
-                formatLength(s.radius, r.unit) + ")" + axis;
-    }
-    if (s.kind == SurfaceKind::Sphere) line += " r " + formatLength(s.radius, r.unit);
-    if (s.kind == SurfaceKind::Plane) {
-        char normal[96];
-        std::snprintf(normal, sizeof normal, " n (%.4g, %.4g, %.4g)", s.normal.x, s.normal.y,
-                      s.normal.z);
-        line += normal;
-    }
+    if (s.kind == SurfaceKind::Cylinder)
+        line += " Ø " + formatLength(2.0 * s.radius, r.unit, p) + " (r " + lengthText(s.radius, p) +
+                "), axis " + directionText(s.axisDirection);
+    if (s.kind == SurfaceKind::Sphere) line += " r " + formatLength(s.radius, r.unit, p);
+    if (s.kind == SurfaceKind::Plane) line += " n " + directionText(s.normal);
     // Without a B-rep face the area is its triangles' (mesh parts).
     return line + (s.kind == SurfaceKind::Mesh ? ", triangle area " : ", area ") +
-           formatArea(s.area, r.unit);
+           formatArea(s.area, r.unit, p);
 }
 
 std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b) {

@@ -18,6 +18,7 @@ struct FaceReport {
     SurfaceInfo surface;          // world coordinates
     Bounds bbox;                  // world, of the part's triangles
     LengthUnit unit;              // the scene's: of the coordinates, radius and area
+    Precision precision;          // the scene's, for describeSurface
 };
 
 // Objects place geometry rigidly, or scaled alike on every axis: areas and radii scale by the
@@ -39,9 +40,9 @@ std::optional<PlanePair> comparePlanes(const FaceReport& a, const FaceReport& b)
 // lengths and coordinates in "unit", the area in it squared; "bbox" null for an empty part.
 std::string faceReportJson(const FaceReport& report);
 
-// What the panel and the event lines say of a face, with units: "cylinder r 5 mm, area
-// 628.319 mm²", "plane n (0, 0, 1), area 200 mm²"; a mesh part (no B-rep face) gives "mesh,
-// triangle area 0.5 m²".
+// What the panel and the event lines say of a face, rounded to the scene's precision, the
+// length unit once: "cylinder Ø 10 mm (r 5), axis (0, 0, 1), area 628.32 mm²", "plane n (0, 0,
+// 1), area 200 mm²"; a mesh part (no B-rep face) gives "mesh, triangle area 0.5 m²".
 std::string describeSurface(const FaceReport& report);
 
 } // namespace scene

@@ -2,6 +2,8 @@
 // (cad/brep_inspect.h), from triangles otherwise (mesh_inspect.h); and their JSON lines.
 #include "scene/inspect.h"
 
+#include <algorithm>
+
 #include "scene/bounds.h"
 #include "scene/cad/brep_inspect.h"
 #include "scene/mesh_inspect.h"
@@ -18,6 +20,12 @@ std::optional<SolidProperties> objectProperties(const Scene& scene, uint32_t obj
     if (object >= scene.objects.size()) return std::nullopt;
     if (auto exact = brepProperties(scene, object)) return exact;
     return meshProperties(scene, object);
+}
+
+Precision scenePrecision(const Scene& scene) {
+    const Bounds b = scene.bounds();
+    const glm::dvec3 reach = glm::max(glm::abs(b.min), glm::abs(b.max));
+    return modelPrecision(std::max({reach.x, reach.y, reach.z}), brepTolerance(scene));
 }
 
 SolidProperties sumProperties(const std::vector<SolidProperties>& each) {

@@ -63,6 +63,10 @@ struct SolidProperties {
     LengthUnit unit;
 };
 
+// How finely the scene's lengths are known (precision.h): its B-rep's tolerance
+// (brepTolerance) against a float's resolution at its largest coordinate.
+Precision scenePrecision(const Scene& scene);
+
 // An object's properties (a CAD solid, placed); mesh objects give area, bbox and, when their
 // triangles close, the enclosed volume and its centre. nullopt for an object out of range.
 std::optional<SolidProperties> objectProperties(const Scene& scene, uint32_t object);

@@ -125,6 +125,9 @@ struct Scene {
     // What the coordinates are in: set where the scene is loaded (app::loadScene), for every
     // length the viewer and the JSON show.
     LengthUnit unit = generatedUnit();
+    // How finely its lengths are known, for the numbers the viewer shows: set where the scene
+    // is loaded (app::loadScene, scenePrecision) like `unit`.
+    Precision precision;
     // CAD files: the exact shapes behind the geometries (scene/cad/brep_shapes.h), shared by
     // copies of the scene; null for glTF and generated scenes.
     std::shared_ptr<const BrepShapes> brep;

@@ -1,8 +1,6 @@
 // units.cpp - lengths, areas and points with their unit (units.h).
 #include "scene/units.h"
 
-#include <cstdio>
-
 #include "util/json_writer.h"
 
 namespace scene {
@@ -17,44 +15,31 @@ LengthUnit generatedUnit() {
 
 namespace {
 
-std::string number(double value, int digits = 6) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.*g", digits, value);
-    return text;
-}
-
-// A coordinate gets more digits than a length: a point kilometres from the origin (a building
-// at its map position) still shows its centimetres, 458002.426 rather than 458002.
-constexpr int coordinateDigits = 9;
-
 std::string withUnit(const std::string& number, const LengthUnit& unit, const char* power) {
-    if (unit.symbol.empty()) return number + " (no unit)";
+    if (unit.symbol.empty()) return number;
     return number + " " + unit.symbol + power;
 }
 
 } // namespace
 
-std::string formatLength(double value, const LengthUnit& unit) {
-    return withUnit(number(value), unit, "");
+std::string unitHeading(const LengthUnit& unit) {
+    return unit.symbol.empty() ? "lengths: no unit" : "lengths in " + unit.symbol;
 }
 
-std::string formatArea(double value, const LengthUnit& unit) {
-    return withUnit(number(value), unit, "\u00b2");
+std::string formatLength(double value, const LengthUnit& unit, const Precision& precision) {
+    return withUnit(lengthText(value, precision), unit, "");
 }
 
-std::string formatVolume(double value, const LengthUnit& unit) {
-    return withUnit(number(value), unit, "\u00b3");
+std::string formatArea(double value, const LengthUnit& unit, const Precision& precision) {
+    return withUnit(areaText(value, precision), unit, "\u00b2");
 }
 
-std::string formatPoint(glm::dvec3 p, const LengthUnit& unit) {
-    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "(" + std::string.
-    std::string text = "(";
-    text.append(number(p.x, coordinateDigits))
-        .append(", ")
-        .append(number(p.y, coordinateDigits))
-        .append(", ")
-        .append(number(p.z, coordinateDigits));
-    return withUnit(text + ")", unit, "");
+std::string formatVolume(double value, const LengthUnit& unit, const Precision& precision) {
+    return withUnit(volumeText(value, precision), unit, "\u00b3");
+}
+
+std::string formatPoint(glm::dvec3 p, const LengthUnit& unit, const Precision& precision) {
+    return withUnit(pointText(p, precision), unit, "");
 }
 
 void unitMember(util::JsonWriter& json, const LengthUnit& unit) {

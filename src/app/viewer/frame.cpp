@@ -95,9 +95,11 @@ void Viewer::drawPanel() {
                                                 ImVec2(box->second.x, box->second.y),
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
+    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit,
+                scene_.scene().precision);
     edgeHover_.draw(viewProj_, glm::vec2(display.x, display.y));
-    drawInspect(inspect_.report(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit);
+    drawInspect(inspect_.report(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit,
+                scene_.scene().precision);
     if (const scene::CadPartial* partial = scene_.partial())
         drawWaitingBoxes(scene_.scene(), *partial, input_.selection().hidden(), viewProj_,
                          glm::vec2(display.x, display.y));

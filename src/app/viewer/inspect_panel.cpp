@@ -17,12 +17,16 @@ void inspectSection(const InspectReport& report) {
     // Each component's name once, above its rows: the rows name it through it.
     const std::string* component = nullptr;
     for (const InspectRow& row : report.rows) {
+        if (row.component.empty()) { // the unit's heading (inspectRows)
+            textDisabledWrapped(row.text.c_str());
+            continue;
+        }
         if (!component || *component != row.component) {
             component = &row.component;
             textDisabledWrapped(row.component.c_str());
         }
         ImGui::Indent();
-        wrappedLine(row.text);
+        textWrappedAtSpaces(row.text);
         ImGui::Unindent();
     }
     if (report.a && !report.b)
@@ -30,11 +34,11 @@ void inspectSection(const InspectReport& report) {
 }
 
 void drawInspect(const InspectReport& report, const glm::dmat4& viewProj, glm::vec2 size,
-                 const scene::LengthUnit& unit) {
+                 const scene::LengthUnit& unit, const scene::Precision& precision) {
     if (!report.distance) return;
     const scene::DistanceReport& d = *report.distance;
     // The parts are not drawn from: a MeasurePoint's part names nothing here.
-    drawMeasure({{d.p0, 0}, {d.p1, 0}}, viewProj, size, unit, inspectColour);
+    drawMeasure({{d.p0, 0}, {d.p1, 0}}, viewProj, size, unit, precision, inspectColour);
 }
 
 } // namespace app

@@ -14,6 +14,6 @@ void inspectSection(const InspectReport& report);
 // Over the window of `size` seen through `viewProj` (world to clip); nothing without a
 // distance.
 void drawInspect(const InspectReport& report, const glm::dmat4& viewProj, glm::vec2 size,
-                 const scene::LengthUnit& unit);
+                 const scene::LengthUnit& unit, const scene::Precision& precision);
 
 } // namespace app

@@ -53,43 +53,46 @@ void addComputingRows(const std::string& component, std::initializer_list<const 
 void addDistanceRows(const scene::Scene& scene, const InspectReport& report,
                      std::vector<InspectRow>& rows) {
     const scene::DistanceReport& d = *report.distance;
-    const scene::LengthUnit& unit = scene.unit;
+    const scene::Precision& p = scene.precision;
     const std::string both = bothName(report);
-    rows.push_back({both, "minimum distance " + scene::formatLength(d.distance, unit) +
+    rows.push_back({both, "minimum distance " + scene::lengthText(d.distance, p) +
                               (d.fromBrep ? " (B-rep)" : " (triangles)")});
-    rows.push_back({both, "closest point on A " + scene::formatPoint(d.p0, unit)});
-    rows.push_back({both, "closest point on B " + scene::formatPoint(d.p1, unit)});
+    rows.push_back({both, "closest point on A " + scene::pointText(d.p0, p)});
+    rows.push_back({both, "closest point on B " + scene::pointText(d.p1, p)});
     if (d.centreDistance)
-        rows.push_back({both, "centre to centre " + scene::formatLength(*d.centreDistance, unit)});
+        rows.push_back({both, "centre to centre " + scene::lengthText(*d.centreDistance, p)});
     if (d.axisAngleDegrees)
-        rows.push_back({both, "axes at " + number("%.6g", *d.axisAngleDegrees) + " degrees"});
+        rows.push_back({both, "axes at " + scene::angleText(*d.axisAngleDegrees) + " degrees"});
     if (d.axisDistance)
-        rows.push_back({both, "axis to axis " + scene::formatLength(*d.axisDistance, unit)});
+        rows.push_back({both, "axis to axis " + scene::lengthText(*d.axisDistance, p)});
     if (d.pointToPlane)
-        rows.push_back({both, "point to plane " + scene::formatLength(*d.pointToPlane, unit)});
+        rows.push_back({both, "point to plane " + scene::lengthText(*d.pointToPlane, p)});
 }
 
 } // namespace
 
+// Lengths and points bare under the unit's heading (the first row, no component); areas and
+// volumes with their unit, which the heading does not name.
 std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectReport& report) {
     std::vector<InspectRow> rows;
     const scene::LengthUnit& unit = scene.unit;
+    const scene::Precision& p = scene.precision;
     if (report.computingSelection)
         addComputingRows(report.selectionName, {"size dX dY dZ", "box min", "box max"}, rows);
     if (report.bounds) {
         const scene::Bounds& b = *report.bounds;
         const std::string from = report.exactBounds ? " (B-rep)" : " (triangles)";
-        rows.push_back({report.selectionName,
-                        "size dX dY dZ " + scene::formatPoint(b.max - b.min, unit) + from});
-        rows.push_back({report.selectionName, "box min " + scene::formatPoint(b.min, unit)});
-        rows.push_back({report.selectionName, "box max " + scene::formatPoint(b.max, unit)});
+        rows.push_back(
+            {report.selectionName, "size dX dY dZ " + scene::pointText(b.max - b.min, p) + from});
+        rows.push_back({report.selectionName, "box min " + scene::pointText(b.min, p)});
+        rows.push_back({report.selectionName, "box max " + scene::pointText(b.max, p)});
     }
     for (const scene::SolidProperties& s : report.solids) {
         const std::string name = objectPath(scene, s.object);
-        rows.push_back({name, s.closed ? "volume " + scene::formatVolume(s.volume, unit)
+        rows.push_back({name, s.closed ? "volume " + scene::formatVolume(s.volume, unit, p)
                                        : "open shell: no volume"});
-        rows.push_back({name, "surface area " + scene::formatArea(s.area, unit)});
-        rows.push_back({name, "centre of mass " + scene::formatPoint(s.center, unit)});
+        rows.push_back({name, "surface area " + scene::formatArea(s.area, unit, p)});
+        rows.push_back({name, "centre of mass " + scene::pointText(s.center, p)});
     }
     if (report.solidsLeftOut)
         rows.push_back(
@@ -99,11 +102,11 @@ std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectRepo
         const std::string name = "sum of " + std::to_string(sum->object) + " solids";
         // An open shell's volume means nothing: the centre is then the surfaces' (inspect.h).
         const bool byVolume = sum->closed && sum->volume > 0.0;
-        rows.push_back({name, "volume " + scene::formatVolume(sum->volume, unit) +
+        rows.push_back({name, "volume " + scene::formatVolume(sum->volume, unit, p) +
                                   (sum->closed ? "" : " (some are open shells)")});
-        rows.push_back({name, "surface area " + scene::formatArea(sum->area, unit)});
+        rows.push_back({name, "surface area " + scene::formatArea(sum->area, unit, p)});
         rows.push_back({name, (byVolume ? "centre of mass " : "centre of the surfaces ") +
-                                  scene::formatPoint(sum->center, unit)});
+                                  scene::pointText(sum->center, p)});
     }
     if (report.a) rows.push_back({"A", report.a->label});
     if (report.b) rows.push_back({"B", report.b->label});
@@ -111,6 +114,7 @@ std::vector<InspectRow> inspectRows(const scene::Scene& scene, const InspectRepo
         addComputingRows(bothName(report),
                          {"minimum distance", "closest point on A", "closest point on B"}, rows);
     if (report.distance) addDistanceRows(scene, report, rows);
+    if (!rows.empty()) rows.insert(rows.begin(), {"", scene::unitHeading(unit)});
     return rows;
 }
 

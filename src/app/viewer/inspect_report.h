@@ -23,7 +23,7 @@ namespace app {
 // One line of the panel: the component it is about (the selection's node, a solid's path,
 // A, B, or A and B) and what is said of it, every value with its unit.
 struct InspectRow {
-    std::string component;
+    std::string component; // empty: the unit's heading, above every row (inspectRows)
     std::string text;
 };
 

@@ -1,8 +1,6 @@
 // measure.cpp - the measure mode's text and overlay.
 #include "app/viewer/measure.h"
 
-#include <cstdio>
-
 #include <imgui.h>
 
 #include "scene/face_info.h"
@@ -10,12 +8,6 @@
 namespace app {
 
 namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char text[160];
-    std::snprintf(text, sizeof text, pattern, a, b, c);
-    return text;
-}
 
 // "part 3 (bracket), face 2: cylinder r 5 mm, area 628.319 mm²": what the panel says of a
 // face, named as the assembly names its object.
@@ -31,32 +23,37 @@ std::string faceLine(const scene::Scene& scene, const scene::FaceReport& face) {
 
 std::vector<std::string> measureLines(const scene::Scene& scene,
                                       const std::vector<MeasurePoint>& points) {
+    // The unit once, above bare lengths and points (units.h); the face lines name theirs.
     std::vector<std::string> lines;
+    if (points.empty()) return lines;
+    const scene::Precision& p = scene.precision;
+    lines.push_back(scene::unitHeading(scene.unit));
     std::vector<scene::FaceReport> faces;
-    for (const MeasurePoint& p : points) {
-        const auto face = scene::faceReport(scene, p.part);
+    for (const MeasurePoint& point : points) {
+        const auto face = scene::faceReport(scene, point.part);
         if (!face) continue;
         faces.push_back(*face);
         lines.push_back(faceLine(scene, *face));
-        lines.push_back("  at " + scene::formatPoint(glm::dvec3(p.world), scene.unit));
+        lines.push_back("  at " + scene::pointText(glm::dvec3(point.world), p));
     }
     if (points.size() == 2) {
-        const glm::vec3 d = points[1].world - points[0].world;
-        lines.push_back("distance " + scene::formatLength(glm::length(d), scene.unit));
-        lines.push_back("dX dY dZ " + scene::formatPoint(glm::dvec3(d), scene.unit));
+        const glm::dvec3 d = glm::dvec3(points[1].world) - glm::dvec3(points[0].world);
+        lines.push_back("distance " + scene::lengthText(glm::length(d), p));
+        lines.push_back("dX dY dZ " + scene::pointText(d, p));
     }
     if (faces.size() == 2)
         if (const auto planes = scene::comparePlanes(faces[0], faces[1])) {
-            lines.push_back(format("faces' normals at %.4g degrees", planes->angleDegrees));
+            lines.push_back("faces' normals at " + scene::angleText(planes->angleDegrees) +
+                            " degrees");
             if (planes->distance)
-                lines.push_back("planes " + scene::formatLength(*planes->distance, scene.unit) +
-                                " apart");
+                lines.push_back("planes " + scene::lengthText(*planes->distance, p) + " apart");
         }
     return lines;
 }
 
 void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& viewProj,
-                 glm::vec2 size, const scene::LengthUnit& unit, uint32_t colour) {
+                 glm::vec2 size, const scene::LengthUnit& unit, const scene::Precision& precision,
+                 uint32_t colour) {
     ImDrawList* draw = ImGui::GetForegroundDrawList();
     std::vector<ImVec2> screen;
     for (const MeasurePoint& p : points) {
@@ -70,7 +67,7 @@ void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& view
         draw->AddLine(screen[0], screen[1], shadow, 4.0f);
         draw->AddLine(screen[0], screen[1], colour, 2.0f);
         const std::string label =
-            scene::formatLength(glm::length(points[1].world - points[0].world), unit);
+            scene::formatLength(glm::length(points[1].world - points[0].world), unit, precision);
         const ImVec2 middle((screen[0].x + screen[1].x) * 0.5f + 8.0f,
                             (screen[0].y + screen[1].y) * 0.5f - 8.0f);
         const ImVec2 extent = ImGui::CalcTextSize(label.c_str());

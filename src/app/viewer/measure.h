@@ -39,8 +39,9 @@ class Measure {
     std::vector<MeasurePoint> points_;
 };
 
-// The panel's lines: each point's part, face and position, then the distance and dX/dY/dZ,
-// then the planes' angle (and distance where parallel); every length in the scene's unit.
+// The panel's lines: the unit's heading, each point's part, face and position, then the
+// distance and dX/dY/dZ, then the planes' angle (and distance where parallel); every length
+// rounded to the scene's precision, bare under the heading.
 std::vector<std::string> measureLines(const scene::Scene& scene,
                                       const std::vector<MeasurePoint>& points);
 
@@ -49,8 +50,10 @@ std::vector<std::string> measureLines(const scene::Scene& scene,
 inline constexpr uint32_t measureColour = 0xFF3BEBFFu, inspectColour = 0xFFFFDC40u;
 
 // The overlay: the points, and with two the line between them labelled with the distance,
-// over the window of `size` seen through `viewProj`, the distance in `unit` (the scene's).
+// over the window of `size` seen through `viewProj`, the distance in `unit` rounded to
+// `precision` (the scene's).
 void drawMeasure(const std::vector<MeasurePoint>& points, const glm::dmat4& viewProj,
-                 glm::vec2 size, const scene::LengthUnit& unit, uint32_t colour = measureColour);
+                 glm::vec2 size, const scene::LengthUnit& unit, const scene::Precision& precision,
+                 uint32_t colour = measureColour);
 
 } // namespace app

@@ -44,19 +44,19 @@ const char* const techniqueHelp =
 // On a CPU device (lavapipe) the timestamps measure the CPU rendering, not a GPU.
 void timing(const PanelInfo& info) {
     if (info.cpuDevice)
-        ImGui::TextWrapped("Render [ms]  %.3f (CPU device: %s renders on the CPU)", info.gpuMs,
-                           info.device.c_str());
+        textWrappedAtSpacesf("Render [ms]  %.3f (CPU device: %s renders on the CPU)", info.gpuMs,
+                             info.device.c_str());
     else
-        ImGui::TextWrapped("Render GPU [ms]  %.3f", info.gpuMs);
-    ImGui::TextWrapped("ID passes  [ms]  %.3f", info.idPassMs);
+        textWrappedAtSpacesf("Render GPU [ms]  %.3f", info.gpuMs);
+    textWrappedAtSpacesf("ID passes  [ms]  %.3f", info.idPassMs);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("edges and outlines, the visible part count and box selection: "
                           "compute passes over the ID image after the scene pass");
-    ImGui::TextWrapped("cull, pyramid [ms] %.3f, %.3f", info.cullMs, info.pyramidMs);
+    textWrappedAtSpacesf("cull, pyramid [ms] %.3f, %.3f", info.cullMs, info.pyramidMs);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("time of the cull passes and of the depth pyramid; included in "
                           "Render");
-    ImGui::TextWrapped("CPU record [ms]  %.3f", info.cpuRecordMs);
+    textWrappedAtSpacesf("CPU record [ms]  %.3f", info.cpuRecordMs);
     if (!info.gpuHistory.empty())
         ImGui::PlotLines("##gpu", info.gpuHistory.data(), int(info.gpuHistory.size()), 0,
                          "scene pass ms", 0.0f, FLT_MAX, ImVec2(-FLT_MIN, 60));
@@ -178,9 +178,9 @@ void status(const PanelInfo& info, PanelActions& actions) {
         ImGui::PopStyleColor();
     }
     if (const auto& building = info.building)
-        ImGui::TextWrapped("building pipeline %s, %.1f s: what is drawn stays until it is "
-                           "ready, then %s",
-                           building->pipeline.c_str(), building->seconds, building->then.c_str());
+        textWrappedAtSpacesf("building pipeline %s, %.1f s: what is drawn stays until it is "
+                             "ready, then %s",
+                             building->pipeline.c_str(), building->seconds, building->then.c_str());
     if (const auto& loading = info.loading) loadingLines(*loading, actions);
 }
 
@@ -195,9 +195,7 @@ void source(const PanelInfo& info) {
     }
     if (!info.scene || info.source.empty()) return; // nothing open: no unit either
     const scene::LengthUnit& unit = info.scene->unit;
-    const std::string line = unit.symbol.empty() ? "lengths: no unit (" + unit.source + ")"
-                                                 : "lengths in " + unit.symbol;
-    textDisabledWrapped(line.c_str());
+    textDisabledWrapped(scene::unitHeading(unit).c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", unit.source.c_str());
 }
 

@@ -274,9 +274,9 @@ void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) 
     levelsOfDetail(settings, info);
     // What the last switch cost: a cached pipeline makes it a lookup.
     const render::SwitchReport& last = info.lastSwitch;
-    ImGui::TextWrapped("last switch %.2f ms, pipeline %s%s", last.ms,
-                       last.pipelineCached ? "cached" : "built",
-                       last.drawsKept ? ", draws kept" : "");
+    textWrappedAtSpacesf("last switch %.2f ms, pipeline %s%s", last.ms,
+                         last.pipelineCached ? "cached" : "built",
+                         last.drawsKept ? ", draws kept" : "");
     ImGui::TextWrapped("pipelines cached %zu (R clears)", info.cachedPipelines);
     commandButton("Reset to defaults", CommandId::Defaults, info, actions);
     if (ImGui::IsItemHovered())
@@ -315,15 +315,15 @@ void sceneSection(SceneSettings& s, const PanelInfo& info, PanelActions& actions
                        static_cast<unsigned long long>(info.stats.triangles));
     ImGui::TextWrapped("parts          %u", scene.uniquePartCount());
     ImGui::TextWrapped("objects        %zu", scene.objects.size());
-    ImGui::TextWrapped("triangle IDs   %s", bytes(info.idBytes.trianglePartIds).c_str());
-    ImGui::TextWrapped("part counts    %s", bytes(info.idBytes.partTriangleCounts).c_str());
-    ImGui::TextWrapped("part offsets   %s", bytes(info.idBytes.partTriangleOffsets).c_str());
+    textWrappedAtSpacesf("triangle IDs   %s", bytes(info.idBytes.trianglePartIds).c_str());
+    textWrappedAtSpacesf("part counts    %s", bytes(info.idBytes.partTriangleCounts).c_str());
+    textWrappedAtSpacesf("part offsets   %s", bytes(info.idBytes.partTriangleOffsets).c_str());
     // What the current renderer and mode uploaded.
-    ImGui::TextWrapped("renderer IDs   %s", bytes(info.stats.idBufferBytes).c_str());
+    textWrappedAtSpacesf("renderer IDs   %s", bytes(info.stats.idBufferBytes).c_str());
     ImGui::TextWrapped("per-draw data  %s + %s indirect", bytes(info.stats.perDrawBytes).c_str(),
                        bytes(info.stats.indirectBytes).c_str());
     if (info.stats.geometryBytes)
-        ImGui::TextWrapped("own geometry   %s", bytes(info.stats.geometryBytes).c_str());
+        textWrappedAtSpacesf("own geometry   %s", bytes(info.stats.geometryBytes).c_str());
     if (info.stats.geometryBytes) // every derived geometry is cut from part vertices
         ImGui::TextWrapped("added vertices %llu (%s)",
                            static_cast<unsigned long long>(info.stats.addedVertices),

@@ -74,18 +74,16 @@ void onePlane(int index, scene::SectionPlane& plane, const scene::Bounds& bounds
     // A little past the bounds, so a plane can leave the scene whole on either side.
     const double margin = 0.02 * (range.y - range.x) + 1e-6;
     const double low = range.x - margin, high = range.y + margin;
-    // The slider shows the offset with its unit.
-    std::string format =
-        "%.3f" + (unit.symbol.empty() ? std::string(" (no unit)") : " " + unit.symbol);
+    // The slider shows the offset with its unit (none where the model has none).
+    std::string format = "%.3f" + (unit.symbol.empty() ? std::string() : " " + unit.symbol);
     const std::string offsetLabel = fitLabel("offset");
     // Double: a plane through a building at its map position keeps its millimetres.
     ImGui::SliderScalar(offsetLabel.c_str(), ImGuiDataType_Double, &plane.offset, &low, &high,
                         format.c_str());
     if (axis < 0) {
-        char normal[96];
-        std::snprintf(normal, sizeof normal, "normal %.3f %.3f %.3f", plane.normal.x,
-                      plane.normal.y, plane.normal.z);
-        textDisabledWrapped(normal);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        textWrappedAtSpaces("normal " + scene::directionText(plane.normal));
+        ImGui::PopStyleColor();
     }
     ImGui::PopID();
 }

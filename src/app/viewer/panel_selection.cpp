@@ -8,6 +8,7 @@
 
 #include "app/viewer/inspect_panel.h"
 #include "app/viewer/panel_widgets.h"
+#include "scene/precision.h"
 
 namespace app {
 namespace {
@@ -32,19 +33,21 @@ void partLine(const char* what, const PartLine& line) {
     ImGui::PopStyleColor();
     if (p.face) {
         const std::string surface = line.face ? ": " + scene::describeSurface(*line.face) : "";
-        wrappedLine("face " + std::to_string(*p.face) + surface);
+        textWrappedAtSpaces("face " + std::to_string(*p.face) + surface);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep face's number in its shape (0-based, as --face-info "
                               "gives it); its exact area from Open CASCADE");
     }
     if (!line.edge.empty()) {
-        wrappedLine(line.edge);
+        textWrappedAtSpaces(line.edge);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("the B-rep edge's number in its shape (0-based, as --edge-info "
                               "gives it); its exact length, radius and axis from Open CASCADE");
     }
     ImGui::TextWrapped("object %u, local part %u, geometry %u", p.object, p.localPart, p.geometry);
-    ImGui::TextWrapped("%u triangles, depth %.6f", p.triangleCount, double(line.depth));
+    // The depth buffer's value (0 near, 1 far): a float, shown to a millionth.
+    textWrappedAtSpaces(std::to_string(p.triangleCount) + " triangles, depth " +
+                        scene::rounded(line.depth, 1e-6));
 }
 
 // More than one part: the tree node they make up, if they are exactly one node's parts.
@@ -87,7 +90,7 @@ void inspectBox(const PanelInfo& info, PanelLayout& layout) {
             ImGui::TextUnformatted("Measure (M to leave)");
             if (info.measureLines.empty())
                 ImGui::TextWrapped("Click a part for its face; two clicks for their distance.");
-            for (const std::string& line : info.measureLines) wrappedLine(line);
+            for (const std::string& line : info.measureLines) textWrappedAtSpaces(line);
             ImGui::Spacing();
         }
         if (info.inspect) inspectSection(*info.inspect);

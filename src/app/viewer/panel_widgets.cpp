@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdarg>
+#include <cstdio>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -53,6 +55,45 @@ std::string elided(const std::string& text, float width) {
         if (ImGui::CalcTextSize(text.c_str(), text.c_str() + keep).x + dots <= width) break;
     }
     return text.substr(0, keep) + "...";
+}
+
+std::vector<std::string_view> wrapAtSpaces(std::string_view text, float width,
+                                           const std::function<float(std::string_view)>& widthOf) {
+    std::vector<std::string_view> lines;
+    size_t line = 0;
+    do {
+        size_t fits = std::string_view::npos; // the end of the last word that fits
+        size_t scan = text.find_first_not_of(' ', line);
+        while (scan != std::string_view::npos) {
+            const size_t wordEnd = std::min(text.find(' ', scan), text.size());
+            if (fits != std::string_view::npos &&
+                widthOf(text.substr(line, wordEnd - line)) > width)
+                break;
+            fits = wordEnd;
+            scan = text.find_first_not_of(' ', wordEnd);
+        }
+        const size_t end = fits == std::string_view::npos ? text.size() : fits;
+        lines.push_back(text.substr(line, end - line));
+        line = std::min(text.find_first_not_of(' ', end), text.size());
+    } while (line < text.size());
+    return lines;
+}
+
+void textWrappedAtSpaces(const std::string& text) {
+    const auto widthOf = [](std::string_view s) {
+        return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x;
+    };
+    for (std::string_view line : wrapAtSpaces(text, ImGui::GetContentRegionAvail().x, widthOf))
+        ImGui::TextUnformatted(line.data(), line.data() + line.size());
+}
+
+void textWrappedAtSpacesf(const char* format, ...) {
+    char text[512];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(text, sizeof text, format, args);
+    va_end(args);
+    textWrappedAtSpaces(text);
 }
 
 void textDisabledWrapped(const char* text) {

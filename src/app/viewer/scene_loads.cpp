@@ -5,6 +5,7 @@
 
 #include "app/viewer/scene_state.h"
 #include "scene/bounds.h"
+#include "scene/inspect.h"
 
 namespace app {
 namespace {
@@ -78,6 +79,7 @@ SceneState::Change SceneState::showPartial(scene::CadPartial partial, SceneSetti
     loaded.scene = *partial.scene;
     partial.scene.reset(); // base_ holds the scene drawn
     loaded.scene.unit = scene::cadUnit(open.settings.model);
+    loaded.scene.precision = scene::scenePrecision(loaded.scene); // as loadScene sets it
     loaded.source = open.settings.model;
     loaded.cad = true;
     loaded.settings = open.settings;

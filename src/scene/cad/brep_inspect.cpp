@@ -2,6 +2,7 @@
 // (brep_inspect.h): each side becomes its located faces (or edge) and Open CASCADE answers.
 #include "scene/cad/brep_inspect.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <BRepAdaptor_Curve.hxx>
@@ -206,6 +207,22 @@ std::optional<SolidProperties> brepProperties(const Scene& scene, uint32_t objec
     } catch (const Standard_Failure&) {
         return std::nullopt;
     }
+}
+
+double brepTolerance(const Scene& scene, uint32_t shapes) {
+    double tolerance = 0.0;
+    if (!scene.brep) return tolerance;
+    for (uint32_t g = 0; g < scene.brep->geometryCount() && shapes > 0; ++g) {
+        if (!scene.brep->has(g)) continue;
+        --shapes;
+        try {
+            for (TopExp_Explorer v(scene.brep->shape(g).shape, TopAbs_VERTEX); v.More(); v.Next())
+                tolerance = std::max(tolerance, BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())));
+        } catch (const std::exception&) { // bytes that cannot be read back: the others say it
+        } catch (const Standard_Failure&) {
+        }
+    }
+    return tolerance;
 }
 
 } // namespace scene

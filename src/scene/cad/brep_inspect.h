@@ -15,4 +15,9 @@ std::optional<DistanceReport> brepDistance(const Scene& scene, const Thing& a, c
 // nullopt where the object's geometry has no shape (the caller answers from triangles).
 std::optional<SolidProperties> brepProperties(const Scene& scene, uint32_t object);
 
+// The largest vertex tolerance (BRep_Tool::Tolerance: how far Open CASCADE lets a vertex
+// stray from its edges' ends) among the first `shapes` solids with a shape, decoding only
+// those; 0 without a B-rep.
+double brepTolerance(const Scene& scene, uint32_t shapes = 8);
+
 } // namespace scene

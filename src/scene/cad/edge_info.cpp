@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -170,7 +169,9 @@ std::optional<EdgeReport> edgeReport(const Scene& scene, EdgeRef ref) {
 
     // A broken curve makes Open CASCADE throw: that edge has no report, and the app goes on.
     try {
-        return measured(edge, ref, located->object, scene.unit);
+        EdgeReport report = measured(edge, ref, located->object, scene.unit);
+        report.precision = scene.precision;
+        return report;
     } catch (const Standard_Failure&) {
         return std::nullopt;
     }
@@ -244,19 +245,15 @@ std::string edgeReportJson(const EdgeReport& r) {
 }
 
 std::string describeEdge(const EdgeReport& r) {
+    // The unit once, on the line's first length (units.h).
+    const LengthUnit none{};
     std::string line = curveName(r.kind);
     if (r.kind == CurveKind::Circle)
-        line += " Ø " + formatLength(2.0 * r.radius, r.unit) + " (r " +
-                formatLength(r.radius, r.unit) + ")";
-    line += ", length " + formatLength(r.length, r.unit);
-    if (r.kind == CurveKind::Line) {
-        char text[96];
-        // Rounding's leftovers (-2.22e-16) read as the 0 they are.
-        const glm::dvec3 d = glm::mix(r.direction, glm::dvec3(0.0),
-                                      glm::lessThan(glm::abs(r.direction), glm::dvec3(1e-12)));
-        std::snprintf(text, sizeof text, ", direction (%.4g, %.4g, %.4g)", d.x, d.y, d.z);
-        line += text;
-    }
+        line += " Ø " + formatLength(2.0 * r.radius, r.unit, r.precision) + " (r " +
+                lengthText(r.radius, r.precision) + ")";
+    line += ", length " +
+            formatLength(r.length, r.kind == CurveKind::Circle ? none : r.unit, r.precision);
+    if (r.kind == CurveKind::Line) line += ", direction " + directionText(r.direction);
     return line;
 }
 
