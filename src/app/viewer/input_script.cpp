@@ -212,18 +212,19 @@ void Input::queueWait(const ScriptLine& line) {
     case ScriptOp::Rest: // the steps after it wait, and the loop with them
         step([this, s = line.values[0]] { restUntil_ = scriptNow_ + s; }, false);
         break;
-    case ScriptOp::Pipeline:
+    case ScriptOp::Pipeline: // the pipeline builds' worker, or Inspect's: held or awaited
+    case ScriptOp::Inspect: {
+        const bool builds = line.op == ScriptOp::Pipeline;
         if (line.text == "ready")
-            step([this] { waitForPipelines(); }, true);
+            step([this, builds] { builds ? waitForPipelines() : waitForInspect(); }, true);
         else
-            step([this, hold = line.text == "hold"] { viewer_.holdPipelineBuilds(hold); }, true);
+            step(
+                [this, builds, hold = line.text == "hold"] {
+                    builds ? viewer_.holdPipelineBuilds(hold) : viewer_.holdInspect(hold);
+                },
+                true);
         break;
-    case ScriptOp::Inspect:
-        if (line.text == "ready")
-            step([this] { waitForInspect(); }, true);
-        else
-            step([this, hold = line.text == "hold"] { viewer_.holdInspect(hold); }, true);
-        break;
+    }
     default:
         break;
     }
