@@ -11,6 +11,7 @@
 #include "app/viewer/inspect_report.h"
 #include "app/viewer/things.h"
 #include "scene/cad/cad_loader.h"
+#include "scene/units.h"
 
 namespace {
 
@@ -60,9 +61,10 @@ TEST(Inspector, NewerSelectionSupersedesTheOneBeingWorkedOut) {
               std::vector<std::string>{"inspect: computing"});
     EXPECT_TRUE(inspector.computing());
     const auto& rows = inspector.report().rows;
-    ASSERT_EQ(rows.size(), 3u); // the box's three rows, each waiting
-    for (const app::InspectRow& row : rows)
-        EXPECT_NE(row.text.find("computing..."), std::string::npos) << row.text;
+    ASSERT_EQ(rows.size(), 4u); // the unit's heading, then the box's three rows, each waiting
+    EXPECT_EQ(rows[0].text, scene::unitHeading(s.unit));
+    for (size_t i = 1; i < rows.size(); ++i)
+        EXPECT_NE(rows[i].text.find("computing..."), std::string::npos) << rows[i].text;
     EXPECT_FALSE(inspector.due(partsOf(s, first), things)); // asked: nothing to do per frame
     EXPECT_TRUE(inspector.update(s, {}, partsOf(s, first), things).empty());
 
