@@ -1,17 +1,7 @@
 #!/usr/bin/env bash
 # cli_test.sh IDVIEW LAVAPIPE_ICD - idview as a user runs it: exit codes, one-line errors,
 # and the files the headless path writes. Every check names itself when it fails.
-set -uo pipefail
-idview=$1
-icd=$2
-# ctest passes the ICD of build/lavapipe-25 (Mesa 25) and sets LD_LIBRARY_PATH to its lib
-# folder, for the newer libdrm (tests/CMakeLists.txt).
-export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
-work=$(mktemp -d)
-# CAD tessellations are cached here, never in the cache of the user running the test.
-export XDG_CACHE_HOME=$work/xdg-cache-home
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/cli_lib.sh"
 
 # expect NAME CODE PATTERN -- COMMAND...: runs COMMAND, checks its exit code and that its
 # stdout+stderr match the extended regex PATTERN.

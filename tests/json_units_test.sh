@@ -4,14 +4,7 @@
 # file (millimetres, as Open CASCADE converts it), a BREP file (no unit), the default glTF
 # model (metres) and a procedural scene (no unit). Each JSON line that holds a length key
 # must hold "unit" with the source's unit.
-set -uo pipefail
-idview=$1
-icd=$2
-export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
-work=$(mktemp -d)
-export XDG_CACHE_HOME=$work/xdg-cache-home
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/cli_lib.sh"
 data=/usr/share/opencascade/data
 
 # check NAME UNIT [FLAGS...]: one headless run at 160x120 with picks across the middle row.

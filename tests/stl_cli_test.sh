@@ -2,15 +2,7 @@
 # stl_cli_test.sh IDVIEW LAVAPIPE_ICD - STL files as a user opens them, and files that are not
 # what their name says: each refused in exactly one line naming the file, exit 1, none of a
 # reader library's own words (tinygltf's JSON errors, Open CASCADE's messages).
-set -uo pipefail
-idview=$1
-icd=$2
-export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
-work=$(mktemp -d)
-export XDG_CACHE_HOME=$work/xdg-cache-home
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+source "$(dirname "$0")/cli_lib.sh"
 
 spider=/usr/share/assimp/models/STL/Spider_binary.stl
 two=/usr/share/assimp/models/STL/triangle_with_two_solids.stl

@@ -228,29 +228,22 @@ TEST(InputScript, SortAndDefaults) {
     EXPECT_THROW(app::parseScript("1 defaults now\n", "s.txt"), app::ScriptError);
 }
 
-TEST(InputScript, PipelineHoldsReleasesAndWaits) {
-    const auto commands =
-        app::parseScript("1 pipeline hold\n2 pipeline release\n3 pipeline ready\n", "s.txt");
-    ASSERT_EQ(commands.size(), 3u);
-    EXPECT_EQ(commands[0].op, app::ScriptOp::Pipeline);
-    EXPECT_EQ(commands[0].text, "hold");
-    EXPECT_EQ(commands[1].text, "release");
-    EXPECT_EQ(commands[2].text, "ready");
-    EXPECT_EQ(errorOf("1 pipeline now\n"),
-              "s.txt:1: 'pipeline' takes hold, release or ready, not 'now'");
-    EXPECT_EQ(errorOf("1 pipeline\n"), "s.txt:1: 'pipeline' takes: pipeline hold|release|ready");
-}
-
-TEST(InputScript, InspectHoldsReleasesAndWaits) {
-    const auto commands =
-        app::parseScript("1 inspect hold\n2 inspect release\n3 inspect ready\n", "s.txt");
-    ASSERT_EQ(commands.size(), 3u);
-    EXPECT_EQ(commands[0].op, app::ScriptOp::Inspect);
-    EXPECT_EQ(commands[0].text, "hold");
-    EXPECT_EQ(commands[1].text, "release");
-    EXPECT_EQ(commands[2].text, "ready");
-    EXPECT_EQ(errorOf("1 inspect now\n"),
-              "s.txt:1: 'inspect' takes hold, release or ready, not 'now'");
+// The two workers a script holds, releases and waits for: pipeline builds and Inspect's.
+TEST(InputScript, PipelineAndInspectHoldReleaseAndWait) {
+    for (const auto& [word, op] : {std::pair{std::string("pipeline"), app::ScriptOp::Pipeline},
+                                   std::pair{std::string("inspect"), app::ScriptOp::Inspect}}) {
+        const auto commands = app::parseScript(
+            "1 " + word + " hold\n2 " + word + " release\n3 " + word + " ready\n", "s.txt");
+        ASSERT_EQ(commands.size(), 3u);
+        EXPECT_EQ(commands[0].op, op);
+        EXPECT_EQ(commands[0].text, "hold");
+        EXPECT_EQ(commands[1].text, "release");
+        EXPECT_EQ(commands[2].text, "ready");
+        EXPECT_EQ(errorOf("1 " + word + " now\n"),
+                  "s.txt:1: '" + word + "' takes hold, release or ready, not 'now'");
+        EXPECT_EQ(errorOf("1 " + word + "\n"),
+                  "s.txt:1: '" + word + "' takes: " + word + " hold|release|ready");
+    }
 }
 
 TEST(InputScript, ViewAndOrthoTakeTheRegistrysNames) {
