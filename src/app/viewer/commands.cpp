@@ -2,12 +2,13 @@
 // executor: what keys, the panel and the script ask for runs here.
 #include "app/viewer/commands.h"
 
+#include "app/viewer/command_target.h"
+
 #include <stdexcept>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "app/viewer/viewer.h"
 #include "scene/assembly_tree.h"
 #include "scene/standard_view.h"
 
@@ -41,51 +42,51 @@ const T& arg(const Argument& argument) {
     return std::get<T>(argument);
 }
 
-void hide(Viewer& viewer, Input& input, const Argument&) {
-    input.selection().hideSelected();
+void hide(CommandTarget& viewer, const Argument&) {
+    viewer.document().hideSelected();
     viewer.selectionChanged(); // hidden parts are not selected
     viewer.partsChanged();
 }
 
-void isolate(Viewer& viewer, Input& input, const Argument&) {
-    input.selection().isolateSelected();
+void isolate(CommandTarget& viewer, const Argument&) {
+    viewer.document().isolateSelected();
     viewer.partsChanged();
 }
 
-void showAll(Viewer& viewer, Input& input, const Argument&) {
-    input.selection().showAll();
+void showAll(CommandTarget& viewer, const Argument&) {
+    viewer.document().showAll();
     viewer.partsChanged();
 }
 
-bool anySelected(const Viewer&, const Input& input) {
-    return !input.selection().selected().empty();
+bool anySelected(const CommandTarget& viewer) {
+    return !viewer.document().selection().selected().empty();
 }
 
 // A file to open (the panel's open field, a recent file) opens as a dropped one does; none:
 // the desktop's file chooser.
-void open(Viewer& viewer, Input& input, const Argument& argument) {
+void open(CommandTarget& viewer, const Argument& argument) {
     if (const auto* path = std::get_if<std::string>(&argument))
-        input.onDrop(*path);
+        viewer.open(*path);
     else
         viewer.chooseFile();
 }
 
 // A script's file is written as it is, without a notice over the view (tests compare what
 // the window shows); F12's goes to the Pictures folder and says where.
-void screenshot(Viewer& viewer, Input&, const Argument& argument) {
+void screenshot(CommandTarget& viewer, const Argument& argument) {
     if (const auto* path = std::get_if<std::string>(&argument))
         viewer.screenshot(*path);
     else
         viewer.screenshotToPictures();
 }
 
-void panel(Viewer& viewer, Input&, const Argument& argument) {
+void panel(CommandTarget& viewer, const Argument& argument) {
     viewer.view().panelVisible = on(argument);
     viewer.say(on(argument) ? "panel: shown" : "panel: hidden");
 }
 
-void escape(Viewer& viewer, Input& input, const Argument&) {
-    if (const auto what = cancelOne(viewer, input)) viewer.say("cancel: " + *what);
+void escape(CommandTarget& viewer, const Argument&) {
+    if (const auto what = cancelOne(viewer)) viewer.say("cancel: " + *what);
 }
 
 std::vector<CommandDef> windowCommands() {
@@ -93,69 +94,69 @@ std::vector<CommandDef> windowCommands() {
         {CommandId::Help, "help", Kind::Switch,
          "show or hide this list of keys, mouse actions and commands",
          toggles({{GLFW_KEY_F1, 0}, {GLFW_KEY_SLASH, shift}}),
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              if (on(a) != v.helpOpen()) v.toggleHelp();
          },
-         [](const Viewer& v, const Input&) { return v.helpOpen(); }},
+         [](const CommandTarget& v) { return v.helpOpen(); }},
         {CommandId::Escape, "escape", Kind::None,
          "cancel: the help, a box drag, a model loading (cancel where a model was shown "
          "before it, else stop), measure mode, then the selection and things A and B (never "
          "quits)",
          keys({{GLFW_KEY_ESCAPE, 0}}), escape},
         {CommandId::Quit, "quit", Kind::None, "quit idview (or close the window)",
-         keys({{GLFW_KEY_Q, ctrl}}), [](Viewer& v, Input&, const Argument&) { v.quit(); }},
+         keys({{GLFW_KEY_Q, ctrl}}), [](CommandTarget& v, const Argument&) { v.quit(); }},
         {CommandId::Open, "open", Kind::OptionalText,
          "Open...: choose a model file in the desktop's file chooser; with a FILE (the panel's "
          "open field, a recent file), open that one",
          keys({{GLFW_KEY_O, ctrl}}), open},
         {CommandId::TypePath, "type-path", Kind::None,
          "type a model's path in the panel's open field", keys({{GLFW_KEY_L, ctrl}}),
-         [](Viewer& v, Input&, const Argument&) { v.focusOpenField(); }},
+         [](CommandTarget& v, const Argument&) { v.focusOpenField(); }},
         {CommandId::Screenshot, "screenshot", Kind::OptionalText,
          "save a PNG of the window in the Pictures folder (idview-DATE-TIME.png), or as FILE",
          keys({{GLFW_KEY_F12, 0}}), screenshot},
         {CommandId::Panel, "panel", Kind::Switch, "show or hide the panel",
          toggles({{GLFW_KEY_F9, 0}}), panel,
-         [](const Viewer& v, const Input&) { return v.view().panelVisible; }},
+         [](const CommandTarget& v) { return v.view().panelVisible; }},
         {CommandId::Vsync, "vsync", Kind::Switch,
          "vsync on or off (off: frames as fast as they go)", toggles({{GLFW_KEY_V, 0}}),
-         [](Viewer& v, Input&, const Argument& a) { v.view().vsync = on(a); },
-         [](const Viewer& v, const Input&) { return v.view().vsync; }},
+         [](CommandTarget& v, const Argument& a) { v.view().vsync = on(a); },
+         [](const CommandTarget& v) { return v.view().vsync; }},
         {CommandId::ReloadShaders, "reload-shaders", Kind::None,
          "reload the shaders from their folder", keys({{GLFW_KEY_R, 0}}),
-         [](Viewer& v, Input&, const Argument&) { v.reloadShaders(); }},
+         [](CommandTarget& v, const Argument&) { v.reloadShaders(); }},
         {CommandId::Cancel,
          "cancel",
          Kind::None,
          "stop the model loading and forget those queued; the model shown before it comes "
          "back (the panel's Cancel)",
          {},
-         [](Viewer& v, Input&, const Argument&) { v.cancelLoads(); },
+         [](CommandTarget& v, const Argument&) { v.cancelLoads(); },
          nullptr,
-         [](const Viewer& v, const Input&) { return v.loading(); }},
+         [](const CommandTarget& v) { return v.loading(); }},
         {CommandId::Stop,
          "stop",
          Kind::None,
          "stop the model loading here: what it shows stays, marked incomplete, and those "
          "queued are forgotten (the panel's Stop here)",
          {},
-         [](Viewer& v, Input&, const Argument&) { v.stopLoads(); },
+         [](CommandTarget& v, const Argument&) { v.stopLoads(); },
          nullptr,
-         [](const Viewer& v, const Input&) { return v.loading(); }},
+         [](const CommandTarget& v) { return v.loading(); }},
         {CommandId::ClearRecent,
          "clear-recent",
          Kind::None,
          "empty the list of recent files",
          {},
-         [](Viewer& v, Input&, const Argument&) { v.view().recentFiles.clear(); },
+         [](CommandTarget& v, const Argument&) { v.view().recentFiles.clear(); },
          nullptr,
-         [](const Viewer& v, const Input&) { return !v.view().recentFiles.empty(); }},
+         [](const CommandTarget& v) { return !v.view().recentFiles.empty(); }},
         {CommandId::Defaults,
          "defaults",
          Kind::None,
          "the settings kept between runs back to the defaults (the panel's Reset to defaults)",
          {},
-         [](Viewer& v, Input&, const Argument&) { v.resetSettings(); }},
+         [](CommandTarget& v, const Argument&) { v.resetSettings(); }},
     };
 }
 
@@ -177,16 +178,15 @@ std::vector<KeyBinding> viewKeys() {
 std::vector<CommandDef> cameraCommands() {
     return {
         {CommandId::Fit, "fit", Kind::None, "fit the selection, else the shown parts, in view",
-         keys({{GLFW_KEY_F, 0}}), [](Viewer& v, Input&, const Argument&) { v.fitView(); }},
+         keys({{GLFW_KEY_F, 0}}), [](CommandTarget& v, const Argument&) { v.fitView(); }},
         {CommandId::ResetView, "reset-view", Kind::None, "back to the model's opening view",
          keys({{GLFW_KEY_HOME, 0}}),
-         [](Viewer& v, Input&, const Argument&) { v.camera().resetView(); }},
+         [](CommandTarget& v, const Argument&) { v.camera().resetView(); }},
         {CommandId::Ortho, "ortho", Kind::Switch, "orthographic projection (off: perspective)",
-         toggles({{GLFW_KEY_O, 0}}),
-         [](Viewer& v, Input&, const Argument& a) { v.setOrtho(on(a)); },
-         [](const Viewer& v, const Input&) { return v.settings().camera.ortho; }},
+         toggles({{GLFW_KEY_O, 0}}), [](CommandTarget& v, const Argument& a) { v.setOrtho(on(a)); },
+         [](const CommandTarget& v) { return v.settings().camera.ortho; }},
         {CommandId::View, "view", Kind::View, "a standard view, at the same distance", viewKeys(),
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.turnTo(*arg<const scene::StandardView*>(a));
          }},
         {CommandId::Explode,
@@ -194,9 +194,7 @@ std::vector<CommandDef> cameraCommands() {
          Kind::Explode,
          "move the parts apart by assembly level, from 0 (at rest) to 1",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
-             v.settings().animation.explode = arg<float>(a);
-         }},
+         [](CommandTarget& v, const Argument& a) { v.document().setExplode(arg<float>(a)); }},
     };
 }
 
@@ -206,38 +204,38 @@ std::vector<CommandDef> partCommands() {
          hide, nullptr, anySelected},
         {CommandId::ShowAll, "show-all", Kind::None, "show every hidden part",
          keys({{GLFW_KEY_H, shift}}), showAll, nullptr,
-         [](const Viewer&, const Input& i) { return !i.selection().hidden().empty(); }},
+         [](const CommandTarget& v) { return !v.document().selection().hidden().empty(); }},
         {CommandId::Isolate, "isolate", Kind::None, "show only the selected parts",
          keys({{GLFW_KEY_I, 0}}), isolate, nullptr, anySelected},
         {CommandId::Undo, "undo", Kind::None, "undo a hide, show or section change",
-         keys({{GLFW_KEY_Z, ctrl}}), [](Viewer& v, Input&, const Argument&) { v.undo(); }},
+         keys({{GLFW_KEY_Z, ctrl}}), [](CommandTarget& v, const Argument&) { v.undo(); }},
         {CommandId::Redo, "redo", Kind::None, "redo what undo took back",
          keys({{GLFW_KEY_Z, ctrl | shift}, {GLFW_KEY_Y, ctrl}}),
-         [](Viewer& v, Input&, const Argument&) { v.redo(); }},
+         [](CommandTarget& v, const Argument&) { v.redo(); }},
         {CommandId::Xray, "xray", Kind::Switch,
          "X-ray: the parts outside the selection translucent, not picked (nothing selected: "
          "no change)",
-         toggles({{GLFW_KEY_X, 0}}), [](Viewer& v, Input&, const Argument& a) { v.setXray(on(a)); },
-         [](const Viewer& v, const Input&) { return v.settings().xray; }},
+         toggles({{GLFW_KEY_X, 0}}), [](CommandTarget& v, const Argument& a) { v.setXray(on(a)); },
+         [](const CommandTarget& v) { return v.document().xray(); }},
         {CommandId::Measure, "measure", Kind::Switch,
          "measure mode: clicks place points (distance, angle) instead of selecting",
          toggles({{GLFW_KEY_M, 0}}),
-         [](Viewer& v, Input&, const Argument& a) {
-             if (on(a) != v.measuring()) v.toggleMeasure();
+         [](CommandTarget& v, const Argument& a) {
+             if (on(a) != v.document().measure().on()) v.toggleMeasure();
          },
-         [](const Viewer& v, const Input&) { return v.measuring(); }},
+         [](const CommandTarget& v) { return v.document().measure().on(); }},
         {CommandId::Level,
          "level",
          Kind::Level,
          "what a click selects: the face (a part), its solid (object) or the assembly above",
          {},
-         [](Viewer& v, Input&, const Argument& a) { v.view().selectLevel = arg<uint32_t>(a); }},
+         [](CommandTarget& v, const Argument& a) { v.view().selectLevel = arg<uint32_t>(a); }},
         {CommandId::Object,
          "object",
          Kind::Text,
          "select the parts of the objects of this name",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.selectObjects(arg<std::string>(a), SelectMode::Replace);
          }},
         {CommandId::Node,
@@ -246,7 +244,7 @@ std::vector<CommandDef> partCommands() {
          "a node of the assembly tree, as its row does: select (a click), add (Ctrl+click), "
          "hide or show (its checkbox)",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              const NodeTarget& node = arg<NodeTarget>(a);
              if (!v.actOnNode(node))
                  throw CommandError("no node of the assembly tree has the path '" + node.path +
@@ -258,13 +256,14 @@ std::vector<CommandDef> partCommands() {
          "a section plane in the first free slot of the panel's three (a fourth replaces the "
          "third); off: every plane off",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
-             scene::Section& section = v.settings().render.section;
+         [](CommandTarget& v, const Argument& a) {
+             scene::Section section = v.document().section();
              const auto& plane = arg<std::optional<scene::SectionPlane>>(a);
              if (!plane)
                  section = {};
              else if (!section.add(*plane))
                  section.planes.back() = *plane;
+             v.document().setSection(section, false);
          }},
     };
 }
@@ -272,14 +271,14 @@ std::vector<CommandDef> partCommands() {
 std::vector<CommandDef> renderCommands() {
     return {
         {CommandId::Edges, "edges", Kind::Switch, "edges on or off", toggles({{GLFW_KEY_E, 0}}),
-         [](Viewer& v, Input&, const Argument& a) { v.settings().render.edges.on = on(a); },
-         [](const Viewer& v, const Input&) { return v.settings().render.edges.on; }},
+         [](CommandTarget& v, const Argument& a) { v.settings().render.edges.on = on(a); },
+         [](const CommandTarget& v) { return v.settings().render.edges.on; }},
         {CommandId::Renderer,
          "renderer",
          Kind::Technique,
          "switch the technique that draws (no-id too)",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.settings().render.pipeline.technique = arg<const render::Technique*>(a);
          }},
         {CommandId::Mode,
@@ -287,7 +286,7 @@ std::vector<CommandDef> renderCommands() {
          Kind::DrawMode,
          "switch the per-draw mode",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.settings().render.pipeline.mode = arg<const render::DrawMode*>(a);
          }},
         {CommandId::Culling,
@@ -295,7 +294,7 @@ std::vector<CommandDef> renderCommands() {
          Kind::CullMode,
          "culling off, by the frustum, or occlusion",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.settings().render.culling.mode = arg<render::CullMode>(a);
          }},
         {CommandId::Freeze,
@@ -303,9 +302,9 @@ std::vector<CommandDef> renderCommands() {
          Kind::Switch,
          "keep drawing what the last culled frame chose while the camera moves",
          {},
-         [](Viewer& v, Input&, const Argument& a) { v.settings().render.culling.freeze = on(a); },
-         [](const Viewer& v, const Input&) { return v.settings().render.culling.freeze; },
-         [](const Viewer& v, const Input&) {
+         [](CommandTarget& v, const Argument& a) { v.settings().render.culling.freeze = on(a); },
+         [](const CommandTarget& v) { return v.settings().render.culling.freeze; },
+         [](const CommandTarget& v) {
              return v.settings().render.culling.mode != render::CullMode::Off;
          }},
         {CommandId::Sort,
@@ -313,14 +312,14 @@ std::vector<CommandDef> renderCommands() {
          Kind::Switch,
          "sort the draw list once, by geometry then material (off: scene order)",
          {},
-         [](Viewer& v, Input&, const Argument& a) { v.settings().render.draws.sortDraws = on(a); },
-         [](const Viewer& v, const Input&) { return v.settings().render.draws.sortDraws; }},
+         [](CommandTarget& v, const Argument& a) { v.settings().render.draws.sortDraws = on(a); },
+         [](const CommandTarget& v) { return v.settings().render.draws.sortDraws; }},
         {CommandId::Msaa,
          "msaa",
          Kind::Msaa,
          "samples per pixel",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.settings().render.pipeline.msaa = arg<uint32_t>(a);
          }},
         {CommandId::Clear,
@@ -328,7 +327,7 @@ std::vector<CommandDef> renderCommands() {
          Kind::ClearPath,
          "how frames clear and resolve: the scene pass, a compute pass, or the faster",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
+         [](CommandTarget& v, const Argument& a) {
              v.settings().render.clear = arg<render::ClearPath>(a);
          }},
         {CommandId::Copies,
@@ -336,9 +335,7 @@ std::vector<CommandDef> renderCommands() {
          Kind::Copies,
          "model copies",
          {},
-         [](Viewer& v, Input&, const Argument& a) {
-             v.settings().scene.copies = arg<uint32_t>(a);
-         }},
+         [](CommandTarget& v, const Argument& a) { v.settings().scene.copies = arg<uint32_t>(a); }},
     };
 }
 
@@ -377,12 +374,12 @@ std::optional<Command> commandOfKey(int key, int mods) {
     return std::nullopt;
 }
 
-void execute(Command command, Viewer& viewer, Input& input) {
+void execute(Command command, CommandTarget& viewer) {
     const CommandDef& row = definition(command.id);
     if (auto* s = std::get_if<Switch>(&command.argument); s && *s == Switch::Toggle)
-        *s = row.isOn(viewer, input) ? Switch::Off : Switch::On;
+        *s = row.isOn(viewer) ? Switch::Off : Switch::On;
     viewer.say("command: " + commandWords(command));
-    row.run(viewer, input, command.argument);
+    row.run(viewer, command.argument);
 }
 
 NodeTarget nodeOfRow(const std::vector<scene::TreeRow>& rows, size_t i, NodeAction action) {
@@ -398,17 +395,17 @@ std::optional<size_t> rowOfNode(const std::vector<scene::TreeRow>& rows, const N
     return std::nullopt;
 }
 
-bool enabled(CommandId id, const Viewer& viewer, const Input& input) {
+bool enabled(CommandId id, const CommandTarget& viewer) {
     const CommandDef& row = definition(id);
-    return !row.enabled || row.enabled(viewer, input);
+    return !row.enabled || row.enabled(viewer);
 }
 
-std::optional<std::string> cancelOne(Viewer& viewer, Input& input) {
+std::optional<std::string> cancelOne(CommandTarget& viewer) {
     if (viewer.helpOpen()) {
         viewer.toggleHelp();
         return "help";
     }
-    if (input.cancelBox()) return "box";
+    if (viewer.cancelBox()) return "box";
     if (viewer.view().browser) { // the panel's file browser (its filter takes Esc itself)
         viewer.view().browser.reset();
         return "file browser";
@@ -416,16 +413,15 @@ std::optional<std::string> cancelOne(Viewer& viewer, Input& input) {
     // A model loading: back to the model before it, or where there was none, what it shows
     // kept (a first model cancelled would leave nothing open).
     if (const auto load = viewer.modelLoading(); load && !load->stopping) {
-        execute({load->modelBefore ? CommandId::Cancel : CommandId::Stop}, viewer, input);
+        execute({load->modelBefore ? CommandId::Cancel : CommandId::Stop}, viewer);
         return "load";
     }
-    if (viewer.measuring()) {
+    if (viewer.document().measure().on()) {
         viewer.toggleMeasure();
         return "measure";
     }
     // The selection and things A and B (things.h) go together: A's and B's parts are selected.
-    const bool hadThings = input.things().forget();
-    if (input.selection().escape() || hadThings) {
+    if (viewer.document().escape()) {
         viewer.selectionChanged();
         return "selection";
     }

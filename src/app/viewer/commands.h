@@ -23,8 +23,7 @@ struct TreeRow;
 
 namespace app {
 
-class Viewer;
-class Input;
+class CommandTarget; // command_target.h
 
 // A key with the modifiers held (GLFW key code and GLFW_MOD_* bits of Shift, Ctrl, Alt).
 struct Chord {
@@ -68,11 +67,11 @@ struct CommandDef {
     std::vector<KeyBinding> keys;
     // Carries the command out; the argument is of the kind above, a switch settled to on
     // or off.
-    void (*run)(Viewer&, Input&, const Argument&);
+    void (*run)(CommandTarget&, const Argument&);
     // A switch: whether it is on now (what a toggle turns round). Others: nullptr.
-    bool (*isOn)(const Viewer&, const Input&) = nullptr;
+    bool (*isOn)(const CommandTarget&) = nullptr;
     // Whether it can do anything now (the panel greys its widget); nullptr: always.
-    bool (*enabled)(const Viewer&, const Input&) = nullptr;
+    bool (*enabled)(const CommandTarget&) = nullptr;
 };
 
 // The table, in the order the help lists it: one row per CommandId.
@@ -93,8 +92,8 @@ struct CommandError : std::runtime_error {
 // The one place a command runs, whatever asked for it: a toggle is settled against the
 // state, the event line "command: WORDS" is told (--print-events), then the row runs it.
 // Throws CommandError.
-void execute(Command command, Viewer& viewer, Input& input);
-bool enabled(CommandId id, const Viewer& viewer, const Input& input);
+void execute(Command command, CommandTarget& target);
+bool enabled(CommandId id, const CommandTarget& target);
 
 // The node of tree row `i` for a node command, as the panel's row asks for it (two objects of
 // one path are two rows, told apart by which of them it is), and the row a node names
@@ -133,6 +132,6 @@ size_t bindingCount();
 // (Cancel where a model was shown before it, else Stop), measure mode and the selection (typing in
 // a panel field never gets here: ImGui takes the Esc and leaves the field). Says what it cancelled;
 // nullopt when there was nothing, and nothing happens then.
-std::optional<std::string> cancelOne(Viewer& viewer, Input& input);
+std::optional<std::string> cancelOne(CommandTarget& target);
 
 } // namespace app

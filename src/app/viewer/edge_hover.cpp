@@ -45,15 +45,15 @@ void polyline(const scene::EdgeReport& edge, const glm::dmat4& viewProj, glm::ve
 
 } // namespace
 
-void EdgeHover::update(const scene::Scene& scene, Selection& selection,
+void EdgeHover::update(const scene::Scene& scene, Document& document,
                        std::optional<glm::dvec2> cursor, const glm::dmat4& viewProj,
                        glm::dvec2 size) {
-    const auto part = selection.hovered();
+    const auto part = document.selection().hovered();
     if (!part || !cursor || !scene.brep) {
-        selection.hoverEdge(std::nullopt);
+        document.hoverEdge(std::nullopt);
         return;
     }
-    selection.hoverEdge(
+    document.hoverEdge(
         scene::nearestEdge(scene, *part, viewProj, size, *cursor, scene::edgePickPixels));
 }
 

@@ -10,8 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "app/viewer/document.h"
 #include "app/viewer/events.h"
-#include "app/viewer/selection.h"
 #include "scene/edge_info.h"
 
 namespace app {
@@ -20,7 +20,7 @@ class EdgeHover {
   public:
     // After the frame's pick: the edge of the hovered part nearest `cursor` (scene image
     // pixels, nullopt off the scene), under the newest frame's `viewProj` (world to clip).
-    void update(const scene::Scene& scene, Selection& selection, std::optional<glm::dvec2> cursor,
+    void update(const scene::Scene& scene, Document& document, std::optional<glm::dvec2> cursor,
                 const glm::dmat4& viewProj, glm::dvec2 size);
     // Tells the event lines what changed (hover and selection) and keeps their reports.
     void tell(const scene::Scene& scene, const Selection& selection, const Events& events);

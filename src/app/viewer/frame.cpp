@@ -39,23 +39,24 @@ void Viewer::drawFrame(const FrameWants& wants) {
     applySettings();
     render::FrameSlot& slot = slots_.begin(frameNumber_);
     // The hovered part comes from the ID image of each frame, scene pass or not.
-    if (input_.readPick(slots_.latestHover())) selectionChanged();
+    if (const auto click = picking_.readPick(slots_.latestHover(), document_))
+        clickAnswered(*click);
     zoomWhenReady();
-    if (const auto hovered = input_.selection().hovered(); hovered != saidHovered_) {
+    if (const auto hovered = document_.selection().hovered(); hovered != saidHovered_) {
         saidHovered_ = hovered;
         events_.say(hovered ? "hovered: part " + std::to_string(*hovered) : "hovered: none");
     }
     // The cursor at its pixel's centre, as --edge-info takes it.
     const VkExtent2D extent = scene_.targets()->extent();
     const auto cursor = input_.cursorPixel(extent);
-    edgeHover_.update(scene_.scene(), input_.selection(),
+    edgeHover_.update(scene_.scene(), document_,
                       cursor ? std::optional(glm::dvec2(*cursor) + 0.5) : std::nullopt, viewProj_,
                       glm::dvec2(extent.width, extent.height));
-    edgeHover_.tell(scene_.scene(), input_.selection(), events_);
-    if (input_.readPartSets(slots_.latestPartSets(), scene_.targets()->extent()))
+    edgeHover_.tell(scene_.scene(), document_.selection(), events_);
+    if (picking_.readPartSets(slots_.latestPartSets(), scene_.targets()->extent(), document_))
         selectionChanged();
-    if (input_.visibleParts() != saidVisible_) {
-        saidVisible_ = input_.visibleParts();
+    if (picking_.visibleParts() != saidVisible_) {
+        saidVisible_ = picking_.visibleParts();
         events_.say("visible parts: " + std::to_string(saidVisible_));
     }
     const auto image = presenter_.acquire(frameNumber_);
@@ -80,13 +81,13 @@ void Viewer::drawPanel() {
     input_.feedPanelKeys(); // before ImGui's frame starts: its share of the key events
     presenter_.beginPanel(input_.cursorInWindow());
     // The tree row the selection makes up, found again only when the selection changes.
-    if (input_.selection().selected() != namedSelection_) {
-        namedSelection_ = input_.selection().selected();
+    if (document_.selection().selected() != namedSelection_) {
+        namedSelection_ = document_.selection().selected();
         selectedRow_ = scene::rowOfParts(tree_, namedSelection_);
     }
     // Sizes, properties and distances: worked out when the selection or A and B changed.
-    for (const std::string& line :
-         inspect_.update(scene_.scene(), tree_, input_.selection().selected(), input_.things()))
+    for (const std::string& line : inspect_.update(
+             scene_.scene(), tree_, document_.selection().selected(), document_.things()))
         events_.say(line);
     if (view_.panelVisible) act(app::drawPanel(settings_, view_, panelInfo()));
     // The box being dragged, over everything.
@@ -95,13 +96,13 @@ void Viewer::drawPanel() {
                                                 ImVec2(box->second.x, box->second.y),
                                                 IM_COL32(255, 184, 26, 255), 0.0f, 0, 1.5f);
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    drawMeasure(measure_.points(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit,
-                scene_.scene().precision);
+    drawMeasure(document_.measure().points(), viewProj_, glm::vec2(display.x, display.y),
+                scene_.scene().unit, scene_.scene().precision);
     edgeHover_.draw(viewProj_, glm::vec2(display.x, display.y));
     drawInspect(inspect_.report(), viewProj_, glm::vec2(display.x, display.y), scene_.scene().unit,
                 scene_.scene().precision);
     if (const scene::CadPartial* partial = scene_.partial())
-        drawWaitingBoxes(scene_.scene(), *partial, input_.selection().hidden(), viewProj_,
+        drawWaitingBoxes(scene_.scene(), *partial, document_.selection().hidden(), viewProj_,
                          glm::vec2(display.x, display.y));
     drawOverlays();
     ImGui::Render();
@@ -109,13 +110,16 @@ void Viewer::drawPanel() {
 
 // The panel's buttons and widgets ask for commands as keys and script lines do (commands.h).
 void Viewer::act(const PanelActions& actions) {
-    for (const Command& command : actions.commands) execute(command, *this, input_);
+    for (const Command& command : actions.commands) execute(command, *this);
+    if (actions.section) document_.setSection(actions.section->section, actions.section->held);
 }
 
 void Viewer::applySettings() {
     follow(scene_.poll(settings_.scene));
     if (!scene_.loading()) before_.reset(); // only Cancel during a load brings it back
-    follow(scene_.apply(settings_.scene, settings_.render));
+    render::RenderSettings render = settings_.render;
+    render.section = document_.section(); // the planes are the document's
+    follow(scene_.apply(settings_.scene, render));
     explode();
     scene_.resize(presenter_.extent());
 }
@@ -125,10 +129,10 @@ void Viewer::applySettings() {
 // camera's planes take in the exploded scene; measure points placed before no longer lie on
 // their parts. The animation (--animate) is drawn by the GPU alone, the CPU's scene at rest.
 void Viewer::explode() {
-    const float at = settings_.animation.animate ? 0.0f : settings_.animation.explode;
+    const float at = settings_.animation.animate ? 0.0f : document_.explode();
     if (!scene_.explode(at)) return;
     camera_.setBounds(scene_.scene().bounds());
-    measure_.forget();
+    document_.forgetMeasurePoints();
     partDetails_ = PartDetailsCache{}; // the same arrays hold other placements now
     char text[48];
     std::snprintf(text, sizeof text, "explode: %.3g", double(at));
@@ -169,45 +173,40 @@ render::FrameParams Viewer::frameParams(double seconds) {
     params.time = blinkHeld_ ? float(*blinkHeld_ ? 0.25 * period : 0.75 * period) : float(seconds);
     viewProj_ = params.worldViewProj;
     keepViewProj(frameNumber_, params.worldViewProj);
-    params.pickPixel = input_.pickPixel(extent, frameNumber_);
+    params.pickPixel = picking_.pickPixel(input_.cursorPixel(extent), frameNumber_);
     params.hoveredTiles = slots_.latestHoveredTiles();
     // A released box asks for its parts (recordScene adds the visible parts' count).
-    if (const auto box = input_.boxQuery(extent)) params.partSets.push_back(*box);
+    if (const auto box = picking_.boxQuery()) params.partSets.push_back(*box);
     showParts();
-    params.explode = animate ? scene::explodeLoop(float(seconds)) : settings_.animation.explode;
+    params.explode = animate ? scene::explodeLoop(float(seconds)) : document_.explode();
     return params;
 }
 
-// Hands the selection and the hidden parts to the renderer when they changed, with X-ray's
-// parts (render/xray.h): under X-ray a new selection hides and shows other parts. Hiding the
-// first part needs the hiding pipeline variant: until its worker has built it, the parts
-// stay drawn (asked again each frame); if it fails, nothing is hidden and X-ray goes off.
+// Hands the selection and the hidden parts to the renderer once per change of the document,
+// with X-ray's parts (render/xray.h): under X-ray a new selection hides and shows other parts.
+// Hiding the first part needs the hiding pipeline variant: until its worker has built it, the
+// parts stay drawn (asked again each frame); if it fails, nothing is hidden and X-ray goes off.
 void Viewer::showParts() {
+    if (drawnVersion_ == document_.version() && !scene_.pipelinePending()) return;
     render::Renderer& renderer = scene_.renderer();
-    Selection& selection = input_.selection();
-    const bool newSelection = selection.selected() != shownSelected_;
-    if (newSelection) {
+    const Selection& selection = document_.selection();
+    if (!drawnVersion_ || drawnSelection_ != document_.selectionVersion()) {
         renderer.setSelection(selection.selected());
-        shownSelected_ = selection.selected();
+        drawnSelection_ = document_.selectionVersion();
     }
-    const bool xrayChanged = settings_.xray != shownXray_ || (settings_.xray && newSelection);
-    if (selection.hidden() == shownHidden_ && !xrayChanged && !scene_.pipelinePending()) return;
     try {
         const render::XrayParts parts =
-            render::xrayParts(settings_.xray, selection.selected(), selection.hidden());
+            render::xrayParts(document_.xray(), selection.selected(), selection.hidden());
         if (!scene_.showHidden(parts.hidden)) return;
         renderer.setTranslucent(scene_.scene(), parts.translucent);
-        shownHidden_ = selection.hidden();
-        shownXray_ = settings_.xray;
     } catch (const std::exception& e) {
         scene_.fail(std::string("hiding parts: ") + e.what());
-        selection.showAll();
-        settings_.xray = false;
+        document_.showAll();
+        document_.setXray(false);
         renderer.setHidden(selection.hidden());
         renderer.setTranslucent(scene_.scene(), scene::PartSet(scene_.scene().uniquePartCount()));
-        shownHidden_ = selection.hidden();
-        shownXray_ = false;
     }
+    drawnVersion_ = document_.version();
 }
 
 // The scene pass, or the picture composed again over the images the last one left. Only a
@@ -270,7 +269,7 @@ PanelInfo Viewer::panelInfo() const {
         info.building = PanelInfo::Building{building->pipeline, building->seconds, building->then};
     info.scene = &scene_.scene();
     info.tree = &tree_;
-    info.hidden = &input_.selection().hidden();
+    info.hidden = &document_.selection().hidden();
     info.stats = scene_.renderer().stats();
     info.lastSwitch = scene_.renderer().lastSwitch();
     info.cachedPipelines = scene_.renderer().cachedPipelines();
@@ -289,14 +288,14 @@ PanelInfo Viewer::panelInfo() const {
         const PartDetails& details = partDetails_.get(scene_.scene(), part);
         return PartLine{details.part, depth, details.face, {}};
     };
-    info.hovered = describe(input_.selection().hovered(), input_.hoveredDepth());
-    const Selection& selection = input_.selection();
-    info.selected = describe(selection.primary(), input_.selectedDepth());
+    info.hovered = describe(document_.selection().hovered(), picking_.hoveredDepth());
+    const Selection& selection = document_.selection();
+    info.selected = describe(selection.primary(), selectedDepth_);
     info.hovered.edge = edgeHover_.hoveredLine();
     info.selected.edge = edgeHover_.selectedLine();
     info.bounds = camera_.bounds();
-    info.measuring = measure_.on();
-    info.measureLines = measureLines(scene_.scene(), measure_.points());
+    info.measuring = document_.measure().on();
+    info.measureLines = measureLines(scene_.scene(), document_.measure().points());
     info.inspect = &inspect_.report();
     if (const auto& face = info.selected.face;
         face && face->surface.kind == scene::SurfaceKind::Plane)
@@ -305,10 +304,11 @@ PanelInfo Viewer::panelInfo() const {
     info.selectedParts = &selection.selected();
     info.selectedRow = selectedRow_;
     info.hiddenCount = selection.hidden().size();
-    info.xray = settings_.xray;
-    for (size_t id = 0; id < commandCount; ++id)
-        info.enabled[id] = enabled(CommandId(id), *this, input_);
-    info.visibleParts = input_.visibleParts();
+    info.xray = document_.xray();
+    info.section = document_.section();
+    info.explode = document_.explode();
+    for (size_t id = 0; id < commandCount; ++id) info.enabled[id] = enabled(CommandId(id), *this);
+    info.visibleParts = picking_.visibleParts();
     info.idPassMs = mean(slots_.idPassMilliseconds(), 30);
     const render::Renderer& renderer = scene_.renderer();
     const render::PipelineKey& key = renderer.settings().pipeline;

@@ -1,4 +1,4 @@
-// input.cpp - keys, mouse, dropped files and picking (scripted input: input_script.cpp).
+// input.cpp - keys, mouse and dropped files (scripted input: input_script.cpp).
 #include "app/viewer/input.h"
 
 #include <algorithm>
@@ -10,8 +10,6 @@
 #include <imgui.h>
 
 #include "app/viewer/commands.h"
-#include "app/viewer/viewer.h"
-#include "render/culling.h"
 
 namespace app {
 namespace {
@@ -21,8 +19,8 @@ constexpr double clickSlop = 4.0;
 
 } // namespace
 
-Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
-    : viewer_(viewer), window_(window), script_(std::move(script)) {}
+Input::Input(InputTarget& target, GLFWwindow* window, ScriptPlayer script)
+    : target_(target), window_(window), script_(std::move(script)) {}
 
 // Every key command is a row of the command table (commands.h). Keys typed into a panel
 // field are ImGui's alone (WantCaptureKeyboard): typing "h" in a path hides nothing, and Esc
@@ -30,7 +28,7 @@ Input::Input(Viewer& viewer, GLFWwindow* window, ScriptPlayer script)
 void Input::onKey(int key, int scancode, int action, int mods) {
     if (action != GLFW_REPEAT) panelKeys_.push({key, scancode, action == GLFW_PRESS, mods});
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
-    if (const auto command = commandOfKey(key, mods)) execute(*command, viewer_, *this);
+    if (const auto command = commandOfKey(key, mods)) execute(*command, target_);
 }
 
 void Input::feedPanelKeys() {
@@ -49,9 +47,9 @@ void Input::onCursor(double x, double y) {
     int width = 0, height = 0;
     glfwGetWindowSize(window_, &width, &height);
     if (drag_->kind == DragKind::Pan)
-        viewer_.camera().pan(glm::vec2(delta), float(height));
+        target_.pan(glm::vec2(delta), float(height));
     else if (drag_->kind == DragKind::Orbit)
-        viewer_.camera().orbit(glm::vec2(delta)); // a box leaves the view as it is
+        target_.orbit(glm::vec2(delta)); // a box leaves the view as it is
 }
 
 void Input::onCursorEnter(bool entered) {
@@ -80,32 +78,24 @@ void Input::onButton(int button, int action, int mods) {
         const Drag done = *drag_;
         drag_.reset();
         if (done.kind == DragKind::Box && done.mode == SelectMode::Add && done.moved < clickSlop) {
-            // Ctrl+click, not a box of one pixel: thing B of the Inspect panel (things.h).
-            pendingClick_ = viewer_.nextFrame();
-            pendingLevel_ = viewer_.view().selectLevel;
-            pendingAdd_ = true;
+            target_.clicked(true, false); // Ctrl+click, not a box of one pixel: thing B
         } else if (done.kind == DragKind::Box) {
-            // The parts come from the ID image of a frame after the release.
-            box_ = Box{done.start, cursor_, done.mode, viewer_.nextFrame()};
+            target_.boxed(done.start, cursor_, done.mode);
         } else if (done.kind == DragKind::Orbit && done.moved < clickSlop) {
-            // The pick of the next frame (at this cursor position) decides what it hits. A
-            // second click soon at the same place selects the object (a CAD solid) at least.
+            // A second click soon at the same place selects the object (a CAD solid) at least.
             const double now = glfwGetTime();
             const bool twice = now - lastClickTime_ < doubleClickSeconds &&
                                glm::length(cursor_ - lastClickAt_) < clickSlop;
             lastClickTime_ = now;
             lastClickAt_ = cursor_;
-            pendingClick_ = viewer_.nextFrame();
-            pendingLevel_ =
-                twice ? std::max(1u, viewer_.view().selectLevel) : viewer_.view().selectLevel;
-            pendingAdd_ = false;
+            target_.clicked(false, twice);
         }
     }
 }
 
 void Input::onScroll(double dx, double dy) {
     ImGui_ImplGlfw_ScrollCallback(window_, dx, dy);
-    if (!ImGui::GetIO().WantCaptureMouse) viewer_.zoomAtCursor(float(dy));
+    if (!ImGui::GetIO().WantCaptureMouse) target_.zoomAtCursor(float(dy));
 }
 
 void Input::onDrop(const std::string& path) {
@@ -114,7 +104,7 @@ void Input::onDrop(const std::string& path) {
 
 void Input::fail(std::exception_ptr error) {
     if (!failure_) failure_ = error;
-    viewer_.quit();
+    target_.quit();
 }
 
 std::vector<std::string> Input::takeDrops() {
@@ -142,118 +132,18 @@ std::optional<glm::uvec2> Input::cursorPixel(VkExtent2D extent) const {
     return std::nullopt;
 }
 
-std::optional<glm::uvec2> Input::pickPixel(VkExtent2D extent, uint64_t frame) {
-    const std::optional<glm::uvec2> pixel = cursorPixel(extent);
-    if (!pixel)
-        pickingSince_.reset();
-    else if (!pickingSince_)
-        pickingSince_ = frame;
-    return pixel;
-}
-
-bool Input::readPick(const std::optional<render::PickReading>& pick) {
-    // Picks arrive a frame or two late; only those since the cursor came over the scene
-    // count, so an old pick never shows as the hover after leaving the panel.
-    if (!pickingSince_) {
-        selection_.hover(std::nullopt);
-        hoverPick_.reset();
-        pendingClick_.reset();
-        return false;
-    }
-    if (pick && pick->frame >= *pickingSince_) {
-        selection_.hover(pick->part);
-        hoveredDepth_ = pick->depth;
-        hoverPick_ = pick;
-    }
-    // A click selects what was under the cursor in the frame after the click.
-    if (pendingClick_ && pick && pick->frame >= *pendingClick_ && viewer_.measuring()) {
-        viewer_.measured(*pick); // measure mode: the click places a point, selects nothing
-        pendingClick_.reset();
-        return false;
-    }
-    if (pendingClick_ && pick && pick->frame >= *pendingClick_) {
-        pendingClick_.reset();
-        if (pendingAdd_ && !selection_.hovered()) return false; // Ctrl+click on empty space
-        clicked();
-        selectedDepth_ = hoveredDepth_;
-        return true;
-    }
-    return false;
-}
-
-void Input::clicked() {
-    const uint32_t partCount = selection_.selected().partCount();
-    const auto hovered = selection_.hovered();
-    std::optional<scene::Thing> thing;
-    if (hovered) {
-        // At the face level an edge under the cursor (edge_hover.h) is the thing, not its face.
-        const std::optional<scene::EdgeRef> edge =
-            pendingLevel_ == 0 ? selection_.hoveredEdge() : std::nullopt;
-        thing = viewer_.thingOf(viewer_.partsAround(*hovered, pendingLevel_), *hovered, edge);
-    }
-    if (pendingAdd_)
-        things_.add(std::move(*thing));
-    else
-        things_.click(std::move(thing));
-    // A plain click at the face level selects the part alone (and what Selection::click
-    // takes with it); at coarser levels, and with Ctrl, A's and B's parts. The clicked part
-    // is the primary one (the panel details its face).
-    if (!pendingAdd_ && pendingLevel_ == 0)
-        selection_.click();
-    else
-        selection_.clickAround(things_.parts(partCount));
-}
-
 std::optional<std::pair<glm::vec2, glm::vec2>> Input::boxInWindow() const {
     if (!drag_ || drag_->kind != DragKind::Box) return std::nullopt;
     return std::pair{glm::vec2(drag_->start), glm::vec2(cursor_)};
 }
 
-std::optional<render::PartSetQuery> Input::boxQuery(VkExtent2D extent) const {
-    if (!box_ || extent.width == 0 || extent.height == 0) return std::nullopt;
+glm::uvec2 Input::imagePixel(glm::dvec2 window, VkExtent2D extent) const {
     int width = 0, height = 0;
     glfwGetWindowSize(window_, &width, &height);
-    if (width <= 0 || height <= 0) return std::nullopt;
-    // Window coordinates to scene image pixels, clamped to the image.
-    auto pixel = [&](glm::dvec2 p) {
-        const glm::dvec2 scaled =
-            p * glm::dvec2(extent.width, extent.height) / glm::dvec2(width, height);
-        return glm::uvec2(
-            glm::clamp(scaled, glm::dvec2(0.0), glm::dvec2(extent.width - 1, extent.height - 1)));
-    };
-    return render::spanning(pixel(box_->a), pixel(box_->b));
-}
-
-bool Input::readPartSets(const std::optional<render::PartSetReading>& reading, VkExtent2D extent) {
-    if (!reading || reading->frame < partSetsFrom_) return false;
-    partSetsFrom_ = reading->frame + 1;
-    const render::PartSetQuery whole{{0, 0}, {extent.width - 1, extent.height - 1}};
-    const auto box = boxQuery(extent);
-    bool changed = false;
-    for (size_t i = 0; i < reading->queries.size(); ++i) {
-        if (reading->queries[i] == whole) {
-            visibleParts_ = reading->counts[i];
-            visibleFrame_ = reading->frame;
-        }
-        if (box && box_ && reading->frame >= box_->since && reading->queries[i] == *box) {
-            selection_.select(reading->sets[i], box_->mode);
-            box_.reset();
-            changed = true;
-        }
-    }
-    return changed;
-}
-
-void Input::forgetParts(uint32_t partCount) {
-    selection_.reset(partCount);
-    things_.forget();
-    pendingClick_.reset();
-    pickingSince_.reset();
-    hoverPick_.reset();
-    box_.reset();
-    partSetsFrom_ = viewer_.nextFrame(); // earlier frames counted the old scene's parts
-    visibleParts_ = 0;
-    visibleFrame_ = 0;
+    const glm::dvec2 scaled = window * glm::dvec2(extent.width, extent.height) /
+                              glm::dvec2(std::max(width, 1), std::max(height, 1));
+    return glm::uvec2(
+        glm::clamp(scaled, glm::dvec2(0.0), glm::dvec2(extent.width - 1, extent.height - 1)));
 }
 
 } // namespace app

@@ -10,7 +10,6 @@
 
 #include "app/viewer/commands.h"
 #include "app/viewer/input.h"
-#include "app/viewer/viewer.h"
 
 namespace app {
 namespace {
@@ -52,20 +51,20 @@ std::optional<double> Input::wakeIn(double seconds) const {
 }
 
 void Input::waitForLoads() {
-    if (viewer_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
+    if (target_.loading()) steps_.push_front({[this] { waitForLoads(); }, true});
 }
 
 void Input::waitForSolids(uint32_t solids) {
-    if (viewer_.loading() && viewer_.solidsShown() < solids)
+    if (target_.loading() && target_.solidsShown() < solids)
         steps_.push_front({[this, solids] { waitForSolids(solids); }, true});
 }
 
 void Input::waitForPipelines() {
-    if (viewer_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
+    if (target_.pipelinePending()) steps_.push_front({[this] { waitForPipelines(); }, true});
 }
 
 void Input::waitForInspect() {
-    if (viewer_.inspecting()) steps_.push_front({[this] { waitForInspect(); }, true});
+    if (target_.inspecting()) steps_.push_front({[this] { waitForInspect(); }, true});
 }
 
 void Input::queue(const ScriptLine& line) {
@@ -74,7 +73,7 @@ void Input::queue(const ScriptLine& line) {
         step(
             [this, command = *line.command, where = line.where] {
                 try {
-                    execute(command, viewer_, *this);
+                    execute(command, target_);
                 } catch (const CommandError& e) {
                     throw ScriptError(where + ": " + e.what());
                 }
@@ -199,12 +198,12 @@ void Input::queueWait(const ScriptLine& line) {
         for (int i = 0; i < int(line.values[0]); ++i) step([] {}, true);
         break;
     case ScriptOp::Redraw: // with what follows at the same time, in the same frame
-        step([this] { viewer_.redraw(); }, false);
+        step([this] { target_.redraw(); }, false);
         break;
     case ScriptOp::Blink:
         step(
             [this, weight = line.text] {
-                viewer_.holdBlink(weight == "clock" ? std::nullopt
+                target_.holdBlink(weight == "clock" ? std::nullopt
                                                     : std::optional(weight == "strong"));
             },
             true);
@@ -220,7 +219,7 @@ void Input::queueWait(const ScriptLine& line) {
         else
             step(
                 [this, builds, hold = line.text == "hold"] {
-                    builds ? viewer_.holdPipelineBuilds(hold) : viewer_.holdInspect(hold);
+                    builds ? target_.holdPipelineBuilds(hold) : target_.holdInspect(hold);
                 },
                 true);
         break;

@@ -1,26 +1,25 @@
 // overlays.h - what the viewer draws over the view besides the panel: the help overlay (the
 // command table, F1 or ?), a quiet line in the middle of the free area saying why nothing is
 // drawn, a short notice (the screenshot's file) and the boxes of solids still loading. The state
-// they keep, with the undo history they watch, is the Viewer's Shell.
+// they keep is the Viewer's Shell.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
-#include "app/viewer/history.h"
 #include "app/viewer/orbit_camera.h"
 #include "scene/cad/cad_loader.h"
+#include "scene/section.h"
 
 namespace app {
 
 struct Shell {
     bool help = false;      // the help overlay is open
     bool firstModel = true; // the command line's model: its --section stays
-    History history;
-    ShownState seen;               // the hidden parts and section of the newest frame
-    bool pending = false;          // seen changed and is no undo step yet (a drag in progress)
-    uint64_t changedAt = 0;        // the frame seen last changed in: older part counts are stale
+    // The frame the hidden parts or planes last changed in (Document::shownVersion): older
+    // visible counts are stale.
+    uint64_t changedAt = 0, shownVersion = 0;
     std::string empty;             // the reason the event lines last told ("" : something drawn)
     scene::Section countedSection; // the section of the newest fresh visible count
     std::string notice;            // shown until noticeUntil (seconds since the first frame)

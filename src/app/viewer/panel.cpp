@@ -255,9 +255,14 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     if (ImGui::CollapsingHeader("Properties", ImGuiTreeNodeFlags_DefaultOpen))
         propertiesSection(info, layout);
     layout.mark("Section");
-    if (ImGui::CollapsingHeader("Section"))
-        sectionPlanes(settings.render.section, info.bounds, info.selectedPlane,
+    if (ImGui::CollapsingHeader("Section")) {
+        // The document's planes, edited as a copy: a change goes back as the actions' section,
+        // held while a widget is (a slider's drag makes one undo step, Document::setSection).
+        scene::Section section = info.section;
+        sectionPlanes(section, info.bounds, info.selectedPlane,
                       info.scene ? info.scene->unit : scene::generatedUnit(), layout);
+        if (section != info.section) actions.section = {section, ImGui::IsAnyItemActive()};
+    }
     layout.mark("Rendering");
     if (ImGui::CollapsingHeader("Rendering")) {
         device(info);

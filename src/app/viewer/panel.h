@@ -16,9 +16,9 @@
 #include "app/cli.h"
 #include "app/viewer/command.h"
 #include "app/viewer/events.h"
-#include "app/viewer/file_browser.h"
 #include "app/viewer/panel_layout.h"
 #include "app/viewer/selection.h"
+#include "app/viewer/view_settings.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"
 #include "scene/assembly_tree.h"
@@ -35,36 +35,6 @@ struct InspectReport; // inspect_report.h
 // The panel's distance from the window's top left corner, where it opens.
 constexpr float panelMargin = 8.0f;
 
-// What only the window has.
-struct ViewSettings {
-    bool vsync = true;
-    // The panel's layout, kept between runs (kept_view.h): whether it shows (F9) and its
-    // width in pixels, dragged by its right edge and kept between minPanelWidth and
-    // maxPanelShare of the window's width.
-    bool panelVisible = true;
-    float panelWidth = 360.0f;
-    std::array<char, 96> objectFilter{}; // the assembly tree's filter text
-    // The assembly tree's state, per row of PanelInfo::tree: open nodes; and the rows the
-    // filter keeps, worked out again only when the filter text changes.
-    std::vector<uint8_t> treeOpen, treeShown;
-    std::string treeFilterFor;
-    float treeRows = 8.0f; // the tree pane's height in rows, dragged by the bar under it
-    // What a click selects around the part under the cursor (scene::partsAround's level): 0
-    // the part (a CAD face), 1 its object (a CAD solid), 2 the assembly node above that. A
-    // double-click selects at least the object.
-    uint32_t selectLevel = 0;
-    std::array<char, 512> openPath{}; // the panel's "open" field, emptied when a model opens
-    bool focusOpen = false;           // Ctrl+L: the open field takes the keys
-    // The panel's own file browser, open when Open... found no desktop chooser.
-    std::optional<FileBrowser> browser;
-    // Models opened, newest first, at most 10; kept between runs (kept_view.h).
-    std::vector<std::string> recentFiles;
-    // Where the panel lay in the last frame, window x coordinates (both 0 while hidden): F
-    // fits the scene in the area beside it.
-    float panelLeft = 0.0f, panelRight = 0.0f;
-    PanelLayoutState layout; // the row under the pointer, the clipping report
-};
-
 // The panel's narrowest width (every label fits, panel_widgets.h) and widest share of the
 // window.
 inline constexpr float minPanelWidth = 320.0f, maxPanelShare = 0.6f;
@@ -75,6 +45,12 @@ inline constexpr float minTreeRows = 3.0f, maxTreeRows = 40.0f;
 // script line would give (commands.h), for the viewer to run once the panel is drawn.
 struct PanelActions {
     std::vector<Command> commands;
+    // The section planes as the panel's widgets left them, and whether one is still held.
+    struct SectionEdit {
+        scene::Section section;
+        bool held = false;
+    };
+    std::optional<SectionEdit> section;
     void ask(Command command) { commands.push_back(std::move(command)); }
 };
 
@@ -119,7 +95,9 @@ struct PanelInfo {
     const scene::Scene* scene = nullptr;
     const std::vector<scene::TreeRow>* tree = nullptr; // the scene's assembly tree
     const scene::PartSet* hidden = nullptr;
-    scene::Bounds bounds; // the scene's, for the section planes' sliders
+    scene::Bounds bounds;   // the scene's, for the section planes' sliders
+    scene::Section section; // the document's planes
+    float explode = 0.0f;   // the document's explode fraction
     // The selected part's surface when it is a planar B-rep face (world), for a section plane.
     std::optional<scene::SurfaceInfo> selectedPlane;
     bool measuring = false;                // measure mode (M)
@@ -136,7 +114,7 @@ struct PanelInfo {
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
     uint32_t selectedCount = 0, hiddenCount = 0;
-    bool xray = false;                 // Options::xray
+    bool xray = false;                 // the document's X-ray
     std::bitset<commandCount> enabled; // by CommandId: what can do anything now (commands.h)
     bool can(CommandId id) const { return enabled[size_t(id)]; }
     const scene::PartSet* selectedParts = nullptr; // the tree highlights rows all selected

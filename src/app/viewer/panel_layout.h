@@ -11,17 +11,9 @@
 #include <vector>
 
 #include "app/viewer/events.h"
+#include "app/viewer/view_settings.h"
 
 namespace app {
-
-// What the layout keeps between frames (in ViewSettings).
-struct PanelLayoutState {
-    std::string anchor;   // the mark just above the pointer in the last frame, "" when none
-    float anchorY = 0.0f; // its place then: content y, the blank room above not counted
-    float roomAbove = 0.0f, roomBelow = 0.0f; // blank room, while the pointer stays
-    // The event lines last told (each comes on a change only).
-    std::string told, toldRows, toldPointer;
-};
 
 class PanelLayout {
   public:

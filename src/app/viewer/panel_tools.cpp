@@ -59,11 +59,11 @@ void hideRow(const PanelInfo& info, PanelActions& actions) {
 
 // The exploded view, by assembly level (scene/explode.h); --animate's loop, for the
 // benchmark, has no place here.
-void explodeSlider(const Options& settings, PanelActions& actions) {
-    float explode = settings.animation.explode;
+void explodeSlider(const PanelInfo& info, PanelActions& actions) {
+    float explode = info.explode;
     ImGui::SliderFloat(fitLabel("explode").c_str(), &explode, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
-    if (explode != settings.animation.explode) actions.ask({CommandId::Explode, explode});
+    if (explode != info.explode) actions.ask({CommandId::Explode, explode});
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("move the parts apart, assembly level by level: sub-assemblies from "
                           "their assembly's centre, their parts within them (--explode F)");
@@ -80,7 +80,7 @@ void toolsSection(const Options& settings, const ViewSettings& view, const Panel
     layout.mark("hide buttons");
     hideRow(info, actions);
     layout.mark("explode");
-    explodeSlider(settings, actions);
+    explodeSlider(info, actions);
 }
 
 } // namespace app

@@ -15,25 +15,21 @@ void Viewer::follow(SceneState::Change change) {
     if (change == Change::None) return;
     // The new scene exploded as the slider stands, before the camera frames it; its copy may
     // lie where the last one did, so the part details start over.
-    scene_.explode(settings_.animation.animate ? 0.0f : settings_.animation.explode);
+    scene_.explode(settings_.animation.animate ? 0.0f : document_.explode());
     partDetails_ = PartDetailsCache{};
     if (change == Change::Grown) return grown();
     // A model's first partial scene replaces the model drawn: what Cancel brings back.
     const auto loading = scene_.loading();
     if (change == Change::Model && scene_.partial() && loading && loading->modelBefore)
-        before_ = Before{camera_, input_.selection(), settings_.render.section};
+        before_ = Before{camera_, document_.selection(), document_.section()};
     const scene::Scene& scene = scene_.scene();
-    input_.forgetParts(scene.uniquePartCount());
-    measure_.forget();
+    picking_.forget(frameNumber_);
     edgeHover_.forget();
     inspect_.forget();
     std::optional<Before> back =
         change == Change::Restored ? std::exchange(before_, {}) : std::nullopt;
-    if (back) {
-        input_.selection() = back->selection; // before startClean: no undo step of them
-        settings_.render.section = back->section;
-    }
-    startClean(change); // section, history: what belonged to the model before
+    startClean(change); // selection, section, history: what belonged to the model before
+    if (back) document_.bringBack(back->selection, back->section); // no undo step of them
     rebuildTree(false);
     if (change == Change::Model && scene_.partial()) // the tree is whole before the solids
         events_.say("loading: tree of " + std::to_string(tree_.size()) + " nodes, " +
@@ -69,8 +65,7 @@ void Viewer::follow(SceneState::Change change) {
 // triangles before is worked out again, and the renderer, which takes a new scene with
 // nothing selected or hidden, is handed them again (showParts).
 void Viewer::grown() {
-    shownSelected_ = shownHidden_ = scene::PartSet();
-    shownXray_ = false;
+    drawnVersion_.reset();
     shell_.changedAt = frameNumber_; // the visible counts of earlier frames are stale
     edgeHover_.forget();
     inspect_.forget();

@@ -55,8 +55,14 @@ Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, S
                 std::to_string(position[0]) + "," + std::to_string(position[1]) + ", " +
                 std::to_string(view_.recentFiles.size()) + " recent files");
     // Nothing is open until the model given at start shows (follow, from the frames' poll).
-    input_.forgetParts(scene_.scene().uniquePartCount());
-    startClean(SceneState::Change::None); // no undo step of the empty start's parts
+    // The command line's planes, explode and X-ray are the document's from here on; the
+    // frames hand them to the renderer (applySettings, showParts).
+    document_.newScene(scene_.scene().uniquePartCount(), settings_.render.section);
+    document_.setExplode(settings_.animation.explode);
+    document_.setXray(settings_.xray);
+    settings_.render.section = {};
+    settings_.animation.explode = 0.0f;
+    settings_.xray = false;
     window.listen(input_);
     // A pipeline built on a worker wakes the resting loop, which then switches to it.
     scene_.renderer().onPipelineBuilt(&Window::wake);
@@ -81,7 +87,7 @@ void Viewer::reloadShaders() {
 }
 
 void Viewer::selectionChanged() const {
-    const Selection& selection = input_.selection();
+    const Selection& selection = document_.selection();
     const auto part = selection.primary();
     const PartDetails& details = partDetails_.get(scene_.scene(), part);
     const auto& info = details.part;
@@ -107,7 +113,7 @@ void Viewer::keepViewProj(uint64_t frame, const glm::dmat4& viewProj) {
 }
 
 std::optional<glm::dvec3> Viewer::pointUnderCursor() const {
-    const auto& pick = input_.hoverPick();
+    const auto& pick = picking_.hoverPick();
     if (!pick || !pick->part || !scene_.targets()) return std::nullopt; // background
     const VkExtent2D extent = scene_.targets()->extent();
     if (input_.cursorPixel(extent) != pick->pixel) return std::nullopt; // stale: moved since
@@ -130,7 +136,7 @@ void Viewer::zoomAtCursor(float steps) {
 }
 
 bool Viewer::hoverIsCurrent() const {
-    const auto& pick = input_.hoverPick();
+    const auto& pick = picking_.hoverPick();
     return pick && scene_.targets() &&
            input_.cursorPixel(scene_.targets()->extent()) == pick->pixel;
 }
@@ -158,17 +164,17 @@ void Viewer::zoomNow(float steps) {
     const glm::vec2 at = glm::vec2((glm::dvec2(clip) / clip.w * 0.5 + 0.5) *
                                    glm::dvec2(extent.width, extent.height)) -
                          scene_.targets()->pass().sampleZero();
-    const glm::uvec2 pixel = input_.hoverPick()->pixel;
+    const glm::uvec2 pixel = picking_.hoverPick()->pixel;
     char text[160];
     std::snprintf(text, sizeof text, "zoom: toward part %u at %u,%u, now at %.2f,%.2f",
-                  *input_.hoverPick()->part, pixel.x, pixel.y, at.x, at.y);
+                  *picking_.hoverPick()->part, pixel.x, pixel.y, at.x, at.y);
     events_.say(text);
 }
 
 void Viewer::fitView() {
     // The selection; else the parts not hidden (isolated ones); else the whole scene; framed
     // in the area the panel leaves free.
-    const Selection& selection = input_.selection();
+    const Selection& selection = document_.selection();
     const scene::Scene& scene = scene_.scene();
     const FreeSpan span = panelSpan();
     scene::Bounds bounds = scene::partsWorldBounds(scene, selection.selected());
@@ -234,12 +240,12 @@ void Viewer::setOrtho(bool ortho) {
 }
 
 void Viewer::setXray(bool on) {
-    settings_.xray = on; // shown by the next frame's showParts
+    document_.setXray(on); // shown by the next frame's showParts
     events_.say(on ? "xray: on" : "xray: off");
 }
 
 void Viewer::partsChanged() const {
-    events_.say("hidden: " + std::to_string(input_.selection().hidden().size()) + " parts");
+    events_.say("hidden: " + std::to_string(document_.selection().hidden().size()) + " parts");
 }
 
 void Viewer::selectObjects(const std::string& name, SelectMode mode) {
@@ -250,7 +256,36 @@ void Viewer::selectObjects(const std::string& name, SelectMode mode) {
             const uint32_t count = scene.geometries[object.geometry].partCount;
             for (uint32_t p = 0; p < count; ++p) parts.insert(object.uniquePartOffset + p);
         }
-    input_.selection().select(parts, mode);
+    document_.select(parts, mode);
+    selectionChanged();
+}
+
+// The pick of the next frame (at this cursor position) decides what a click hits; a
+// double-click selects the object (a CAD solid) at least.
+void Viewer::clicked(bool add, bool twice) {
+    const uint32_t level = twice ? std::max(1u, view_.selectLevel) : view_.selectLevel;
+    picking_.click(frameNumber_, level, add);
+}
+
+// The parts come from the ID image of a frame after the release.
+void Viewer::boxed(glm::dvec2 a, glm::dvec2 b, SelectMode mode) {
+    if (!scene_.targets()) return;
+    const VkExtent2D extent = scene_.targets()->extent();
+    picking_.box(render::spanning(input_.imagePixel(a, extent), input_.imagePixel(b, extent)), mode,
+                 frameNumber_);
+}
+
+void Viewer::clickAnswered(const Picking::Click& click) {
+    if (document_.measure().on()) return measured(click.pick); // a point, nothing selected
+    ClickedThing clickedThing{std::nullopt, {}, click.add, click.level == 0};
+    if (const auto part = click.pick.part) {
+        // At the face level an edge under the cursor (edge_hover.h) is the thing, not its face.
+        const auto edge = click.level == 0 ? document_.selection().hoveredEdge() : std::nullopt;
+        clickedThing.around = partsAround(*part, click.level);
+        clickedThing.thing = makeThing(scene_.scene(), tree_, clickedThing.around, *part, edge);
+    }
+    document_.click(std::move(clickedThing));
+    selectedDepth_ = click.pick.depth;
     selectionChanged();
 }
 
@@ -264,15 +299,14 @@ bool Viewer::actOnNode(const NodeTarget& node) {
     if (!row) return false;
     const scene::PartSet parts =
         scene::partSetOf(tree_[*row].parts, scene_.scene().uniquePartCount());
-    Selection& selection = input_.selection();
-    const scene::PartSet before = selection.selected();
+    const scene::PartSet before = document_.selection().selected();
     const bool select = node.action == NodeAction::Select || node.action == NodeAction::Add;
     if (select)
-        selection.select(parts,
+        document_.select(parts,
                          node.action == NodeAction::Add ? SelectMode::Add : SelectMode::Replace);
-    if (node.action == NodeAction::Hide) selection.hide(parts);
-    if (node.action == NodeAction::Show) selection.show(parts);
-    if (select || selection.selected() != before) selectionChanged();
+    if (node.action == NodeAction::Hide) document_.hide(parts);
+    if (node.action == NodeAction::Show) document_.show(parts);
+    if (select || document_.selection().selected() != before) selectionChanged();
     if (!select) partsChanged();
     return true;
 }
@@ -323,10 +357,11 @@ FrameWants Viewer::frameWants() const {
     wants.continuous = !view_.vsync;
     // A selection the Inspect section has not asked about yet, or its answer landed: a frame
     // for it. While the worker works the answer out, the loop may rest: the answer wakes it.
-    wants.busy = input_.waiting() || !screenshotPath_.empty() || pendingZoom_ != 0.0f ||
-                 inspect_.due(input_.selection().selected(), input_.things());
+    wants.busy = input_.waiting() || picking_.waiting() || !screenshotPath_.empty() ||
+                 pendingZoom_ != 0.0f ||
+                 inspect_.due(document_.selection().selected(), document_.things());
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
-    wants.hovering = input_.selection().hovered().has_value();
+    wants.hovering = document_.selection().hovered().has_value();
     if (scriptStart_) wants.scriptWake = input_.wakeIn(scriptSeconds());
     if (!shell_.notice.empty()) wants.changeAt = shell_.noticeUntil; // the notice goes then
     return wants;
@@ -392,8 +427,8 @@ void Viewer::resetSettings() {
 }
 
 void Viewer::toggleMeasure() {
-    measure_.toggle();
-    events_.say(std::string("measure: ") + (measure_.on() ? "on" : "off"));
+    document_.toggleMeasure();
+    events_.say(std::string("measure: ") + (document_.measure().on() ? "on" : "off"));
 }
 
 // The point is where the pick's depth puts the surface, in the view of the newest frame: a
@@ -404,8 +439,8 @@ void Viewer::measured(const render::PickReading& pick) {
     const glm::dvec3 world = scene::unprojectPixel(
         viewProj_, glm::dvec2(extent.width, extent.height),
         glm::dvec2(pick.pixel) + glm::dvec2(scene_.targets()->pass().sampleZero()), pick.depth);
-    measure_.add({world, *pick.part});
-    const auto& points = measure_.points();
+    document_.addMeasurePoint({world, *pick.part});
+    const auto& points = document_.measure().points();
     std::array<std::optional<glm::dvec3>, 2> at;
     std::array<std::optional<uint32_t>, 2> parts;
     for (size_t i = 0; i < points.size(); ++i) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/cli.h"
+#include "app/viewer/document.h"
 #include "app/viewer/edge_hover.h"
 #include "app/viewer/events.h"
 #include "app/viewer/file_chooser.h"
@@ -22,6 +23,7 @@
 #include "app/viewer/pacer.h"
 #include "app/viewer/panel.h"
 #include "app/viewer/part_details.h"
+#include "app/viewer/picking.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/scene_state.h"
 #include "app/viewer/window.h"
@@ -39,99 +41,97 @@ namespace app {
 // (no display, no device that can present, a model that cannot be loaded at start).
 int runViewer(const Options& options);
 
-class Viewer {
+// The InputTarget and CommandTarget functions (input.h, command_target.h) are what input and
+// the command table ask of it.
+class Viewer final : public InputTarget {
   public:
     Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script);
-    ~Viewer();
+    ~Viewer() override;
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
 
     void run();
 
-    // What input acts on.
-    Options& settings() { return settings_; } // applied at the start of the next frame
-    const Options& settings() const { return settings_; }
-    ViewSettings& view() { return view_; }
-    const ViewSettings& view() const { return view_; }
-    OrbitCamera& camera() { return camera_; }
-    float aspect() const;
-    uint64_t nextFrame() const { return frameNumber_; }
-    void reloadShaders(); // R
-    // The wheel: `steps` toward the surface point under the cursor (the hover's pick, while
-    // the cursor is still on its pixel), else toward the orbit target.
-    void zoomAtCursor(float steps);
+    // CommandTarget.
+    Document& document() override { return document_; }
+    const Document& document() const override { return document_; }
+    Options& settings() override { return settings_; } // applied at the start of the next frame
+    const Options& settings() const override { return settings_; }
+    ViewSettings& view() override { return view_; }
+    const ViewSettings& view() const override { return view_; }
+    OrbitCamera& camera() override { return camera_; }
+    void say(const std::string& line) const override { events_.say(line); }
+    void selectionChanged() const override;
+    void partsChanged() const override;
+    void toggleHelp() override; // F1, ?: the help overlay
+    bool helpOpen() const override { return shell_.help; }
+    void quit() override { window_.close(); }
+    void open(const std::string& path) override { input_.onDrop(path); }
     // Ctrl+O and the panel's Open...: the desktop's file chooser (file_chooser.h), its choice
     // opened as a dropped file; without one, the panel's file browser (said once).
-    void chooseFile();
+    void chooseFile() override;
     // Ctrl+L (a location, as GTK's chooser takes one): the panel's open field, ready to type.
-    void focusOpenField();
-    void openBrowser(); // the panel's file browser, where the model shown lies
-    // F: frames the selected parts when there are some, else those not hidden, else the
-    // whole scene, in the area beside the panel.
-    void fitView();
-    // The view command (1, 3, 7, 0): a standard view, at the same distance. The ortho command
-    // (O): the projection, a setting (Options::camera).
-    void turnTo(const scene::StandardView& view);
-    void setOrtho(bool ortho);
-    // The xray command (X): X-ray on or off (Options::xray).
-    void setXray(bool on);
-    void screenshot(const std::string& path) { screenshotPath_ = path; }
-    // The next frame draws everything anew, as after a change: the scene pass, the whole
-    // composition and the panel (tests compare what frames at rest show with it).
-    void redraw() { redrawNext_ = true; }
-    // The hovered part's blink held at its strong or weak step (tests: a step of the blink
-    // they choose), or back on the clock.
-    void holdBlink(std::optional<bool> strong) { blinkHeld_ = strong; }
-    void selectionChanged() const; // tells the event lines
-    void partsChanged() const;     // hidden parts changed: tells the event lines
-    // The parts of every object named `name` join the selection as `mode` says.
-    void selectObjects(const std::string& name, SelectMode mode);
-    // The tree node `node` names: its parts selected (or added), hidden or shown, as the
-    // panel's tree row does. False when no node has that path.
-    bool actOnNode(const NodeTarget& node);
-    // The parts a click at `level` selects around `part` (scene::partsAround).
-    scene::PartSet partsAround(uint32_t part, uint32_t level) const;
-    // What a click on `part` that selects `parts` (or the edge `edge`) compares in the Inspect
-    // panel, named by the assembly tree (things.h).
-    scene::Thing thingOf(const scene::PartSet& parts, uint32_t part,
-                         std::optional<scene::EdgeRef> edge) const {
-        return makeThing(scene_.scene(), tree_, parts, part, edge);
-    }
-    void quit() { window_.close(); }
-    // Measure mode (M): clicks place points instead of selecting.
-    void toggleMeasure();
-    bool measuring() const { return measure_.on(); }
-    void measured(const render::PickReading& pick); // a click's pick in measure mode
+    void focusOpenField() override;
+    void screenshot(const std::string& path) override { screenshotPath_ = path; }
+    void screenshotToPictures() override; // F12: a PNG in the Pictures folder
+    void reloadShaders() override;        // R
     // The panel's Reset to defaults: the settings kept between runs back to the viewer's
     // defaults, in the viewer and in the file (saved_settings.h).
-    void resetSettings();
-    void cancelLoads() { scene_.cancelOpen(); } // the panel's Cancel
-    void stopLoads() { scene_.stopOpen(); }     // the panel's Stop here
+    void resetSettings() override;
+    bool cancelBox() override { return input_.cancelBox(); }
+    void cancelLoads() override { scene_.cancelOpen(); } // the panel's Cancel
+    void stopLoads() override { scene_.stopOpen(); }     // the panel's Stop here
     // A dropped model loading, or a file chooser open (what it chooses loads next).
-    bool loading() const { return scene_.loading().has_value() || chooser_.open(); }
+    bool loading() const override { return scene_.loading().has_value() || chooser_.open(); }
     // The model loading, if one is (Esc stops or cancels it: commands.h).
-    std::optional<SceneState::Loading> modelLoading() const { return scene_.loading(); }
+    std::optional<SceneState::Loading> modelLoading() const override { return scene_.loading(); }
+    // F: frames the selected parts when there are some, else those not hidden, else the
+    // whole scene, in the area beside the panel.
+    void fitView() override;
+    // The view command (1, 3, 7, 0): a standard view, at the same distance. The ortho command
+    // (O): the projection, a setting (Options::camera).
+    void turnTo(const scene::StandardView& view) override;
+    void setOrtho(bool ortho) override;
+    void setXray(bool on) override; // X
+    // Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y: the hidden parts and section planes of a step before
+    // or after.
+    void undo() override;
+    void redo() override;
+    void toggleMeasure() override; // M: clicks place points instead of selecting
+    // The parts of every object named `name` join the selection as `mode` says.
+    void selectObjects(const std::string& name, SelectMode mode) override;
+    // The tree node `node` names: its parts selected (or added), hidden or shown, as the
+    // panel's tree row does. False when no node has that path.
+    bool actOnNode(const NodeTarget& node) override;
+
+    // InputTarget.
+    void orbit(glm::vec2 delta) override { camera_.orbit(delta); }
+    void pan(glm::vec2 delta, float height) override { camera_.pan(delta, height); }
+    // The wheel: `steps` toward the surface point under the cursor (the hover's pick, while
+    // the cursor is still on its pixel), else toward the orbit target.
+    void zoomAtCursor(float steps) override;
+    void clicked(bool add, bool twice) override;
+    void boxed(glm::dvec2 a, glm::dvec2 b, SelectMode mode) override;
     // The solids a model loading shows so far (the script's `solids N` waits for them).
-    uint32_t solidsShown() const {
+    uint32_t solidsShown() const override {
         const auto loading = scene_.loading();
         return loading ? loading->solidsShown : 0;
     }
-    bool pipelinePending() const { return scene_.pipelinePending(); }
-    // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds).
-    void holdPipelineBuilds(bool hold) { scene_.renderer().holdPipelineBuilds(hold); }
-    // The Inspect panel's answer being worked out, and the script's `inspect hold|release`.
-    bool inspecting() const { return inspect_.computing(); }
-    void holdInspect(bool hold) { inspect_.hold(hold); }
+    bool pipelinePending() const override { return scene_.pipelinePending(); }
+    // The Inspect panel's answer being worked out (`inspect ready`).
+    bool inspecting() const override { return inspect_.computing(); }
+    // The next frame draws everything anew, as after a change: the scene pass, the whole
+    // composition and the panel (tests compare what frames at rest show with it).
+    void redraw() override { redrawNext_ = true; }
+    // The hovered part's blink held at its strong or weak step (tests: a step of the blink
+    // they choose), or back on the clock.
+    void holdBlink(std::optional<bool> strong) override { blinkHeld_ = strong; }
+    // The script's `pipeline hold|release` (Renderer::holdPipelineBuilds) and `inspect`'s.
+    void holdPipelineBuilds(bool hold) override { scene_.renderer().holdPipelineBuilds(hold); }
+    void holdInspect(bool hold) override { inspect_.hold(hold); }
 
-    // The command table's (commands.h; viewer_commands.cpp).
-    void say(const std::string& line) const { events_.say(line); } // an event line
-    void toggleHelp();                                             // F1, ?: the help overlay
-    bool helpOpen() const { return shell_.help; }
-    // Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y: the hidden parts and section planes of a step before
-    // or after.
-    void undo();
-    void redo();
-    void screenshotToPictures(); // F12: a PNG in the Pictures folder (screenshot_path.h)
+    float aspect() const;
+    void openBrowser(); // the panel's file browser, where the model shown lies
 
   private:
     using Clock = std::chrono::steady_clock;
@@ -155,7 +155,9 @@ class Viewer {
     void drawOverlays();                        // help, empty view, notice; undo steps
     std::optional<EmptyReason> emptyView(uint32_t partCount, uint32_t hidden, bool sectionOn,
                                          std::optional<uint32_t> visible) const;
-    void restore(const ShownState& state, const char* what); // undo, redo
+    void restored(const ShownState& state, const char* what); // undo, redo: the event lines
+    // The parts a click at `level` selects around `part` (scene::partsAround).
+    scene::PartSet partsAround(uint32_t part, uint32_t level) const;
     void remember(const std::string& source); // a model that opened: the recent files
     render::FrameParams frameParams(double seconds);
     void explode(); // the CPU's scene and the camera follow the explode setting
@@ -183,9 +185,10 @@ class Viewer {
     Presenter presenter_;
     SceneState scene_;
     render::FrameSlots slots_; // after what the frames use: destroyed (and waited for) first
+    Document document_;        // what the person has done to the model (document.h)
+    Picking picking_;          // the GPU's answers to the hover, clicks and boxes
     Input input_;
     OrbitCamera camera_;
-    Measure measure_;
     EdgeHover edgeHover_; // the B-rep edges hovered and selected
     // The Inspect section's report, worked out on its worker when the selection changes; an
     // answer wakes the loop (glfwPostEmptyEvent may be called from any thread).
@@ -224,9 +227,14 @@ class Viewer {
     double titleTime_ = 0.0, fps_ = 0.0;
     uint64_t titleFrame_ = 0;
     std::string title_, screenshotPath_;
-    // The selection and hidden parts last handed to the renderer.
-    scene::PartSet shownSelected_, shownHidden_;
-    bool shownXray_ = false; // Options::xray as the renderer's hidden and translucent parts show it
+    // The document's version (Document::version) the renderer last drew from; nullopt: a
+    // new scene, which has nothing selected or hidden yet.
+    std::optional<uint64_t> drawnVersion_;
+    uint64_t drawnSelection_ = 0; // Document::selectionVersion, as the renderer highlights it
+    float selectedDepth_ = 0.0f;  // the depth of the click that selected (reversed)
+    // A click's pick came: measure mode places a point, else its thing goes into the document.
+    void clickAnswered(const Picking::Click& click);
+    void measured(const render::PickReading& pick);
     uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
     std::optional<uint32_t> saidHovered_; // the hovered part last told
     Shell shell_;                         // the help, undo history and overlays (overlays.h)

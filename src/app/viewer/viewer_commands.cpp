@@ -1,6 +1,6 @@
 // viewer_commands.cpp - what the command table asks of the viewer as a whole: the help, undo
-// and redo, the screenshot key, and each frame's overlays (help, the empty view's reason, a
-// notice) with the watch on hidden parts and section that makes undo steps.
+// and redo's event lines, the screenshot key, and each frame's overlays (help, the empty
+// view's reason, a notice).
 #include <ctime>
 
 #include <imgui.h>
@@ -21,29 +21,22 @@ void Viewer::toggleHelp() {
 }
 
 void Viewer::undo() {
-    if (const auto state = shell_.history.undo())
-        restore(*state, "undo");
+    if (const auto state = document_.undo())
+        restored(*state, "undo");
     else
         events_.say("undo: nothing to undo");
 }
 
 void Viewer::redo() {
-    if (const auto state = shell_.history.redo())
-        restore(*state, "redo");
+    if (const auto state = document_.redo())
+        restored(*state, "redo");
     else
         events_.say("redo: nothing to redo");
 }
 
-void Viewer::restore(const ShownState& state, const char* what) {
-    Selection& selection = input_.selection();
-    const scene::PartSet before = selection.selected();
-    selection.showAll();
-    selection.hide(state.hidden); // hidden parts leave the selection
-    settings_.render.section = state.section;
-    shell_.seen = state; // the history holds it already: no new step
-    shell_.pending = false;
-    shell_.changedAt = frameNumber_;
-    if (selection.selected() != before) selectionChanged();
+// The document has come back to `state`; the selection loses what it hides.
+void Viewer::restored(const ShownState& state, const char* what) {
+    selectionChanged();
     partsChanged();
     events_.say(std::string(what) + ": " + describe(state));
 }
@@ -58,21 +51,19 @@ void Viewer::screenshotToPictures() {
     shell_.noticeUntil = elapsed() + 4.0;
 }
 
-// A new model starts clean: its hidden parts (Input::forgetParts), measurements, section
-// planes and undo history belong to the model they were made on. New copies keep the section:
-// its planes are in world space and cut the copies as they cut the model; hidden parts and
+// A new model starts clean: its selection, hidden parts, measurements, section planes and
+// undo history (Document::newScene) belong to the model they were made on. New copies keep the
+// section: its planes are in world space and cut the copies as they cut the model; hidden parts and
 // measurements go (copies renumber the parts they name), and with them the history.
 void Viewer::startClean(SceneState::Change change) {
     const bool newModel = change == SceneState::Change::Model;
-    if (newModel && !shell_.firstModel && settings_.render.section.any()) {
-        settings_.render.section = {};
+    scene::Section section = document_.section();
+    if (newModel && !shell_.firstModel && section.any()) {
+        section = {};
         events_.say("section: off");
     }
     if (newModel) shell_.firstModel = false; // the command line's --section is for its model
-    shell_.seen = {input_.selection().hidden(), settings_.render.section};
-    shell_.history.reset(shell_.seen);
-    shell_.pending = false;
-    shell_.changedAt = frameNumber_;
+    document_.newScene(scene_.scene().uniquePartCount(), section);
 }
 
 // Why nothing shows (overlays.h's whyEmpty), or that a model is loading and none of its solids
@@ -90,21 +81,17 @@ std::optional<EmptyReason> Viewer::emptyView(uint32_t partCount, uint32_t hidden
     return whyEmpty(partCount, hidden, sectionOn, visible);
 }
 
-// After the panel, inside the ImGui frame. The hidden parts and section are compared with the
-// last frame's, not copied, so a frame at rest costs two comparisons; a change becomes an undo
-// step once no widget is held (a slider drag is one step).
+// After the panel, inside the ImGui frame: the undo steps the document recorded are told,
+// and a held widget let go settles its change into one.
 void Viewer::drawOverlays() {
-    const Selection& selection = input_.selection();
-    const scene::Section& section = settings_.render.section;
-    if (selection.hidden() != shell_.seen.hidden || section != shell_.seen.section) {
-        shell_.seen = {selection.hidden(), section};
-        shell_.pending = true;
+    const Selection& selection = document_.selection();
+    const scene::Section& section = document_.section();
+    if (!ImGui::IsAnyItemActive()) document_.settle();
+    for (const ShownState& step : document_.takeSteps())
+        events_.say("undo step: " + describe(step));
+    if (document_.shownVersion() != shell_.shownVersion) {
+        shell_.shownVersion = document_.shownVersion();
         shell_.changedAt = frameNumber_;
-    }
-    if (shell_.pending && !ImGui::IsAnyItemActive()) {
-        shell_.pending = false; // a drag that ends where it began makes no step
-        if (shell_.history.observe(shell_.seen, true))
-            events_.say("undo step: " + describe(shell_.seen));
     }
 
     if (shell_.help) {
@@ -118,9 +105,9 @@ void Viewer::drawOverlays() {
     // one comes, planes that cut everything away still do (hiding parts or adding copies
     // uncuts nothing), so the line does not blink off for the frames a new count takes.
     std::optional<uint32_t> visible;
-    if (!settings_.render.pipeline.technique->isFloor() && input_.partSetsFrame() > 0 &&
-        input_.partSetsFrame() >= shell_.changedAt) {
-        visible = input_.visibleParts();
+    if (!settings_.render.pipeline.technique->isFloor() && picking_.partSetsFrame() > 0 &&
+        picking_.partSetsFrame() >= shell_.changedAt) {
+        visible = picking_.visibleParts();
         shell_.countedSection = section;
     } else if (shell_.empty == "section" && section == shell_.countedSection) {
         visible = 0;
