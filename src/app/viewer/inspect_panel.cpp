@@ -3,7 +3,7 @@
 
 #include <imgui.h>
 
-#include "app/viewer/measure.h"
+#include "app/viewer/measure_overlay.h"
 #include "app/viewer/panel_widgets.h"
 
 namespace app {

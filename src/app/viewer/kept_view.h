@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/saved_settings.h"
-#include "app/viewer/panel.h"
+#include "app/viewer/view_settings.h"
 
 namespace app {
 

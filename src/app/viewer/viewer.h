@@ -17,7 +17,7 @@
 #include "app/viewer/file_chooser.h"
 #include "app/viewer/input.h"
 #include "app/viewer/inspect_report.h"
-#include "app/viewer/measure.h"
+#include "app/viewer/measure_overlay.h"
 #include "app/viewer/orbit_camera.h"
 #include "app/viewer/overlays.h"
 #include "app/viewer/pacer.h"
