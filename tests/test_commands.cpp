@@ -1,4 +1,4 @@
-// test_commands.cpp - the viewer's command table (app/viewer/commands.h): a key and the
+// test_commands.cpp - the viewer's command table (app/viewer/commands/commands.h): a key and the
 // script's words for it make the same command, every command's words parse back to it, the
 // help overlay lists every command with its keys and script words, a tree row's node command
 // finds that row, no chord runs two commands, the keys people know are where the help says;
@@ -11,9 +11,9 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "app/viewer/commands.h"
-#include "app/viewer/overlays.h"
-#include "app/viewer/script.h"
+#include "app/viewer/commands/commands.h"
+#include "app/viewer/panel/overlays.h"
+#include "app/viewer/commands/script.h"
 #include "render/technique.h"
 #include "scene/assembly_tree.h"
 #include "scene/standard_view.h"

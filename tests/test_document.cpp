@@ -1,11 +1,11 @@
-// test_document.cpp - the one owner of what the person has done (app/viewer/document.h):
+// test_document.cpp - the one owner of what the person has done (app/viewer/state/document.h):
 // every change undo covers records its own step as it is made (a held slider one step when
 // it lets go), undo and redo give back exactly the hidden parts and planes of each step, a
 // new scene forgets everything, and the versions the renderer follows move on each change
 // of what it draws and on nothing else.
 #include <gtest/gtest.h>
 
-#include "app/viewer/document.h"
+#include "app/viewer/state/document.h"
 
 namespace {
 

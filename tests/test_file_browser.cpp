@@ -1,4 +1,4 @@
-// test_file_browser.cpp - the panel's file browser (app/viewer/file_browser.h) over a folder
+// test_file_browser.cpp - the panel's file browser (app/viewer/state/file_browser.h) over a folder
 // tree made for the test: what it lists and in which order, the filter, the highlight and the
 // arrows, entering folders, choosing a model, typed paths and the recent folders.
 #include <filesystem>
@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "app/viewer/file_browser.h"
+#include "app/viewer/state/file_browser.h"
 
 namespace fs = std::filesystem;
 

@@ -1,9 +1,9 @@
 // test_history.cpp - undo and redo of hidden parts and section planes
-// (app/viewer/history.h): steps come back exactly, a change held by a widget is one step when
+// (app/viewer/state/history.h): steps come back exactly, a change held by a widget is one step when
 // it settles, a new step forgets redo, and a reset forgets all.
 #include <gtest/gtest.h>
 
-#include "app/viewer/history.h"
+#include "app/viewer/state/history.h"
 
 namespace {
 

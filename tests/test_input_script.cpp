@@ -3,8 +3,8 @@
 // hands lines out in time order.
 #include <gtest/gtest.h>
 
-#include "app/viewer/commands.h"
-#include "app/viewer/script.h"
+#include "app/viewer/commands/commands.h"
+#include "app/viewer/commands/script.h"
 #include "render/technique.h"
 #include "scene/standard_view.h"
 

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 
-#include "app/viewer/inspect_report.h"
-#include "app/viewer/things.h"
+#include "app/viewer/state/inspect_report.h"
+#include "app/viewer/state/things.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/units.h"
 

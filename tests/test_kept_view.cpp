@@ -1,13 +1,13 @@
 // test_kept_view.cpp - what the window keeps between runs beside its settings: its size and
 // place as the --size and --window-pos lines (the command line still wins, Reset to defaults
 // leaves them), and the viewer. lines of the panel's layout and the recent files
-// (app/viewer/kept_view.h), read back unchanged, bad ones dropped with one warning each.
+// (app/viewer/state/kept_view.h), read back unchanged, bad ones dropped with one warning each.
 #include <gtest/gtest.h>
 
 #include "app/cli.h"
 #include "app/cli_values.h"
 #include "app/saved_settings.h"
-#include "app/viewer/kept_view.h"
+#include "app/viewer/state/kept_view.h"
 
 using app::Options;
 

@@ -1,9 +1,9 @@
-// test_key_queue.cpp - key events held for Dear ImGui 1.86 (app/viewer/key_queue.h): a key
+// test_key_queue.cpp - key events held for Dear ImGui 1.86 (app/viewer/window/key_queue.h): a key
 // pressed and released between two frames shows as down for one frame, then up; a chord
 // (Ctrl+A) keeps its modifier down while its key goes down; a key struck twice shows twice.
 #include <gtest/gtest.h>
 
-#include "app/viewer/key_queue.h"
+#include "app/viewer/window/key_queue.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "app/viewer/orbit_camera.h"
+#include "app/viewer/state/orbit_camera.h"
 
 namespace {
 

@@ -1,9 +1,9 @@
 // test_progressive.cpp - what the viewer takes of a CAD file shown as it loads
-// (app/viewer/progressive.h): only the newest partial scene waits in the slot, uploads are
+// (app/viewer/state/progressive.h): only the newest partial scene waits in the slot, uploads are
 // spaced by their cost, and the panel's words for how far the load is and what it lacks.
 #include <gtest/gtest.h>
 
-#include "app/viewer/progressive.h"
+#include "app/viewer/state/progressive.h"
 #include "scene/bounds.h"
 
 namespace {

@@ -1,4 +1,4 @@
-// test_screenshot_path.cpp - where F12 writes (app/viewer/screenshot_path.h): XDG_PICTURES_DIR
+// test_screenshot_path.cpp - where F12 writes (app/viewer/window/screenshot_path.h): XDG_PICTURES_DIR
 // from the environment or user-dirs.dirs, else ~/Pictures, else the current folder; a name
 // with the date and time that never overwrites.
 #include <fstream>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/viewer/screenshot_path.h"
+#include "app/viewer/window/screenshot_path.h"
 
 namespace fs = std::filesystem;
 

@@ -3,7 +3,7 @@
 // renderer; and scene::PartSet, the bitset the GPU reads.
 #include <gtest/gtest.h>
 
-#include "app/viewer/selection.h"
+#include "app/viewer/state/selection.h"
 
 namespace {
 

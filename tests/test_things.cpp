@@ -1,12 +1,12 @@
-// test_things.cpp - the Inspect panel's things A and B (app/viewer/things.h): a click makes A,
+// test_things.cpp - the Inspect panel's things A and B (app/viewer/state/things.h): a click makes A,
 // Ctrl+click B, a third Ctrl+click replaces B, a plain click starts again, Esc and a new
 // scene forget them; their names from the assembly; and the Inspect panel's rows
 // (inspect_report.h): the sum of several solids (volumes and areas added, the centre
 // weighted by volume), every row naming its component, every value with its unit.
 #include <gtest/gtest.h>
 
-#include "app/viewer/inspect_report.h"
-#include "app/viewer/things.h"
+#include "app/viewer/state/inspect_report.h"
+#include "app/viewer/state/things.h"
 #include "scene/bounds.h"
 
 namespace {

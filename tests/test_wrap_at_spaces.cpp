@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/viewer/panel_widgets.h"
+#include "app/viewer/panel/panel_widgets.h"
 
 namespace {
 

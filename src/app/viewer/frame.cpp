@@ -11,9 +11,9 @@
 
 #include "app/camera_frame.h"
 #include "app/image_io.h"
-#include "app/viewer/commands.h"
-#include "app/viewer/inspect_panel.h"
-#include "app/viewer/kept_view.h" // maxRecentFiles
+#include "app/viewer/commands/commands.h"
+#include "app/viewer/panel/inspect_panel.h"
+#include "app/viewer/state/kept_view.h" // maxRecentFiles
 #include "app/viewer/viewer.h"
 #include "render/blink.h"
 #include "render/xray.h"

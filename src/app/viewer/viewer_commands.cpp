@@ -5,8 +5,8 @@
 
 #include <imgui.h>
 
-#include "app/viewer/commands.h"
-#include "app/viewer/screenshot_path.h"
+#include "app/viewer/commands/commands.h"
+#include "app/viewer/window/screenshot_path.h"
 #include "app/viewer/viewer.h"
 
 namespace app {
