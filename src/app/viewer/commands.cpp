@@ -81,11 +81,12 @@ void screenshot(Viewer& viewer, Input&, const Argument& argument) {
 
 void panel(Viewer& viewer, Input&, const Argument& argument) {
     viewer.view().panelVisible = on(argument);
-    viewer.say(on(argument) ? "panel: shown" : "panel: hidden");
+    viewer.events().say("panel", [&](util::JsonWriter& j) { j.member("shown", on(argument)); });
 }
 
 void escape(Viewer& viewer, Input& input, const Argument&) {
-    if (const auto what = cancelOne(viewer, input)) viewer.say("cancel: " + *what);
+    if (const auto what = cancelOne(viewer, input))
+        viewer.events().say("cancel", [&](util::JsonWriter& j) { j.member("what", *what); });
 }
 
 std::vector<CommandDef> windowCommands() {
@@ -381,7 +382,8 @@ void execute(Command command, Viewer& viewer, Input& input) {
     const CommandDef& row = definition(command.id);
     if (auto* s = std::get_if<Switch>(&command.argument); s && *s == Switch::Toggle)
         *s = row.isOn(viewer, input) ? Switch::Off : Switch::On;
-    viewer.say("command: " + commandWords(command));
+    viewer.events().say("command",
+                        [&](util::JsonWriter& j) { j.member("command", commandWords(command)); });
     row.run(viewer, input, command.argument);
 }
 

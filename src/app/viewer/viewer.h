@@ -124,8 +124,8 @@ class Viewer {
     void holdInspect(bool hold) { inspect_.hold(hold); }
 
     // The command table's (commands.h; viewer_commands.cpp).
-    void say(const std::string& line) const { events_.say(line); } // an event line
-    void toggleHelp();                                             // F1, ?: the help overlay
+    const Events& events() const { return events_; } // for commands' event records
+    void toggleHelp();                               // F1, ?: the help overlay
     bool helpOpen() const { return shell_.help; }
     // Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y: the hidden parts and section planes of a step before
     // or after.

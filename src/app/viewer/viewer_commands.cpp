@@ -14,24 +14,26 @@ namespace app {
 void Viewer::toggleHelp() {
     shell_.help = !shell_.help;
     if (!shell_.help) {
-        events_.say("help: closed");
+        events_.say("help", [](util::JsonWriter& j) { j.member("open", false); });
         return;
     }
-    events_.say("help: " + std::to_string(bindingCount()) + " bindings");
+    events_.say("help", [&](util::JsonWriter& j) {
+        j.member("open", true).member("bindings", bindingCount());
+    });
 }
 
 void Viewer::undo() {
     if (const auto state = shell_.history.undo())
         restore(*state, "undo");
     else
-        events_.say("undo: nothing to undo");
+        events_.say("undo", [](util::JsonWriter& j) { j.member("done", false); });
 }
 
 void Viewer::redo() {
     if (const auto state = shell_.history.redo())
         restore(*state, "redo");
     else
-        events_.say("redo: nothing to redo");
+        events_.say("redo", [](util::JsonWriter& j) { j.member("done", false); });
 }
 
 void Viewer::restore(const ShownState& state, const char* what) {
@@ -45,7 +47,7 @@ void Viewer::restore(const ShownState& state, const char* what) {
     shell_.changedAt = frameNumber_;
     if (selection.selected() != before) selectionChanged();
     partsChanged();
-    events_.say(std::string(what) + ": " + describe(state));
+    events_.say(what, [&](util::JsonWriter& j) { shownMembers(j.member("done", true), state); });
 }
 
 // F12 rather than Ctrl+Shift+S: one key, as in the tools that have a screenshot key (Steam,
@@ -66,7 +68,7 @@ void Viewer::startClean(SceneState::Change change) {
     const bool newModel = change == SceneState::Change::Model;
     if (newModel && !shell_.firstModel && settings_.render.section.any()) {
         settings_.render.section = {};
-        events_.say("section: off");
+        events_.say("section", [](util::JsonWriter& j) { j.member("on", false); });
     }
     if (newModel) shell_.firstModel = false; // the command line's --section is for its model
     shell_.seen = {input_.selection().hidden(), settings_.render.section};
@@ -104,12 +106,12 @@ void Viewer::drawOverlays() {
     if (shell_.pending && !ImGui::IsAnyItemActive()) {
         shell_.pending = false; // a drag that ends where it began makes no step
         if (shell_.history.observe(shell_.seen, true))
-            events_.say("undo step: " + describe(shell_.seen));
+            events_.say("undo_step", [&](util::JsonWriter& j) { shownMembers(j, shell_.seen); });
     }
 
     if (shell_.help) {
         drawHelp(shell_.help);
-        if (!shell_.help) events_.say("help: closed");
+        if (!shell_.help) events_.say("help", [](util::JsonWriter& j) { j.member("open", false); });
     }
     const float width = ImGui::GetIO().DisplaySize.x;
     const FreeSpan span =
@@ -139,7 +141,9 @@ void Viewer::drawOverlays() {
     // Until the model given at start shows, the view says what opens, without a line.
     if (reason != shell_.empty && !scene_.waitingForFirst()) {
         shell_.empty = reason;
-        events_.say("empty: " + (reason.empty() ? std::string("no") : reason));
+        events_.say("empty", [&](util::JsonWriter& j) {
+            j.member("reason", reason.empty() ? std::nullopt : std::optional(reason));
+        });
     }
     if (empty) drawCentred(empty->message, span, 0.5f);
     if (!shell_.notice.empty() && elapsed() < shell_.noticeUntil)
