@@ -72,7 +72,9 @@ t=0.5
 session newest --no-saved-settings
 titles=$(events "$work/newest.out" title .text | sed -n 's/.*idview - \([^ ]*\) + .*/\1/p' | uniq |
     paste -sd'|' -)
-ready=$(events "$work/newest.out" pipeline 'select(.state == "ready") | .name' | paste -sd'|' -)
+# The technique: the pipeline's name up to its first space.
+ready=$(events "$work/newest.out" pipeline 'select(.state == "ready") | .name | split(" ")[0]' |
+    paste -sd'|' -)
 [[ $titles == "vertex-fs|tri-gs" && $ready == tri-gs ]] &&
     echo "ok   the newest wish won: $titles" ||
     fail "titles '$titles', ready '$ready', expected vertex-fs|tri-gs and tri-gs"

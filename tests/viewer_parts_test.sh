@@ -159,7 +159,7 @@ clicked=$(echo "$after_x" | grep -m1 '^selected ')
 xray_seen=$(echo "$after_x" | sed -n '/^selected part/,/^xray off$/p' | sed -n 's/^visible //p' | tail -1)
 [[ $xray_seen == 1 ]] && echo "ok   X-ray: the ID image holds the one selected part" ||
     fail "X-ray with one part selected: visible parts '$xray_seen', expected 1"
-words "$work/parts.out" | grep -qx 'xray off' || fail "X-ray: no 'xray: off'"
+said "$work/parts.out" xray '.on == false' || fail "X-ray: no 'xray: off'"
 # The visible part count the panel shows: once F has framed the scene (the count before the
 # first box's selection, frames after F), the headless count of the same view; with the parts
 # hidden fewer (not compared with headless: parts revealed behind the hidden ones are seen

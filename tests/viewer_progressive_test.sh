@@ -155,7 +155,7 @@ t=0.5
 } >"$work/stop.txt"
 start stop --model "$model"
 finish
-ev command .command | grep -qx stop &&
+said "$work/stop.out" command '.command == "stop"' &&
     [[ $(ev loading 'select(.state == "stopped" and has("of")) | "\(.shown) \(.of) \(.missing)"') == "7 8 1" ]] &&
     said "$work/stop.out" title '.text | test("idview - .* - incomplete: 1 of 8 solids missing - ")' &&
     ! said "$work/stop.out" loading '.state == "complete"' &&
@@ -211,7 +211,7 @@ workers=$(tr ' ' '\n' <<<"$workers" | sed '/^$/d; /:$/d' | sort -u | paste -sd' 
 finish
 picks=$(ev selected 'select(.part != null)')
 [[ -n $(head -1 <<<"$picks") && $(head -1 <<<"$picks") == "$(sed -n 2p <<<"$picks")" ]] &&
-    ev command .command | grep -qx cancel && [[ $(ev loading "$back_to") == "procedural:preset=small" ]] &&
+    said "$work/cancel.out" command '.command == "cancel"' && [[ $(ev loading "$back_to") == "procedural:preset=small" ]] &&
     grep -q "^idview: $model: cancelled$" "$work/cancel.err" &&
     before '.event == "loading" and .state == "cancelled" and .after == "back"' \
         '.event == "cancel" and .what == "selection"' &&

@@ -110,7 +110,7 @@ else
     head -20 "$work/out.txt"
 fi
 for r in $renderers; do
-    events "$work/out.txt" title .text | grep -q "idview - $r + " || fail "title never named renderer $r"
+    said "$work/out.txt" title ".text | contains(\"idview - $r + \")" || fail "title never named renderer $r"
 done
 first=$(events "$work/out.txt" title .text | head -1)
 [[ $first == *"idview - $floor + "* ]] || fail "--renderer $floor opened as: $first"
