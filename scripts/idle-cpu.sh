@@ -7,7 +7,7 @@
 # /proc) over 10 seconds as a share of one core; then the same with the pointer over the
 # background, and with the pointer moved out of the window (the hover must end).
 # MODEL defaults to the default model; any file idview opens will do.
-# Needs the Release build in build/, Xvfb and xdotool; settings and caches go to a temporary
+# Needs the Release build in build/, Xvfb, xdotool and jq; settings and caches go to a temporary
 # folder (IDLE_KEEP=1 keeps it). Prints three lines.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,10 +36,13 @@ for _ in $(seq 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 
 build/idview --size "$size" --window-pos 0,0 --model "$model" --print-events \
     >"$work/out.txt" 2>"$work/err.txt" &
 viewer=$!
-seen=0 # event lines before the last action: wait_for looks after them
-wait_for() { # wait_for PATTERN: a line of the viewer's events, up to 5 minutes (a model loads)
+seen=0 # event records before the last action: wait_for looks after them
+# wait_for CONDITION: a record of the viewer's events (JSON Lines, docs/viewer.md) the jq
+# CONDITION holds for, up to 5 minutes (a model loads)
+wait_for() {
     for _ in $(seq 3000); do
-        tail -n +$((seen + 1)) "$work/out.txt" 2>/dev/null | grep -q "$1" && return 0
+        tail -n +$((seen + 1)) "$work/out.txt" 2>/dev/null |
+            jq -en "[inputs | select($1)] | length > 0" >/dev/null 2>&1 && return 0
         sleep 0.1
     done
     echo "idle-cpu: no '$1' from the viewer; see $work/out.txt" >&2
@@ -55,23 +58,25 @@ measure() {
     after=$(ticks)
     echo "$model, $1: $(awk -v t=$((after - before)) -v hz="$(getconf CLK_TCK)" \
         'BEGIN{printf "%.1f", 100 * t / hz / 10}') % of a core over 10 s at rest;" \
-        "$(grep '^idview: rest:' "$work/out.txt" | tail -1 | cut -d' ' -f2-)"
+        "$(jq -c 'select(.event == "rest")' "$work/out.txt" | tail -1)"
 }
 
-wait_for '^idview: rest:'
+hover_on='.event == "hovered" and .part != null'
+hover_off='.event == "hovered" and .part == null'
+wait_for '.event == "rest"'
 seen=$(wc -l <"$work/out.txt")
 xdotool mousemove "$x" "$y"
-wait_for '^idview: hovered: part'
-measure "$(grep '^idview: hovered:' "$work/out.txt" | tail -1 | cut -d' ' -f2-)$(
-    grep '^idview: edge hovered:' "$work/out.txt" | tail -1 | sed 's/^idview: /, /')"
+wait_for "$hover_on"
+edge=$(jq -c 'select(.event == "edge_hovered") | .edge' "$work/out.txt" | tail -1)
+measure "hovered part $(jq 'select(.event == "hovered") | .part' "$work/out.txt" | tail -1)${edge:+, edge $edge}"
 seen=$(wc -l <"$work/out.txt")
 xdotool mousemove $((width - 5)) $((height - 5))
-wait_for '^idview: hovered: none'
+wait_for "$hover_off"
 measure "nothing hovered"
 seen=$(wc -l <"$work/out.txt")
 xdotool mousemove "$x" "$y"
-wait_for '^idview: hovered: part'
+wait_for "$hover_on"
 seen=$(wc -l <"$work/out.txt")
 xdotool mousemove $((width + 100)) $((height + 100))
-wait_for '^idview: hovered: none'
+wait_for "$hover_off"
 measure "the pointer out of the window"

@@ -63,11 +63,19 @@ TEST(History, KeepsItsLimit) {
     EXPECT_EQ(h.undoSteps(), app::History::limit);
 }
 
-TEST(History, DescribeNamesTheSet) {
-    const std::string a = app::describe(hiding({1, 2})), b = app::describe(hiding({1, 3}));
+std::string shown(const app::ShownState& state) {
+    util::JsonWriter json;
+    json.beginObject();
+    app::shownMembers(json, state);
+    return json.endObject().text();
+}
+
+TEST(History, ShownMembersNameTheSet) {
+    const std::string a = shown(hiding({1, 2})), b = shown(hiding({1, 3}));
     EXPECT_NE(a, b); // same count, other parts
-    EXPECT_EQ(a.substr(0, 15), "hidden 2 parts ");
-    EXPECT_NE(app::describe(hiding({1}, true)).find("section on"), std::string::npos);
+    EXPECT_EQ(a.substr(0, 27), "{\"hidden\":2,\"hidden_hash\":\"");
+    EXPECT_EQ(a.size(), 27 + 16 + 18u); // 16 hex digits, then ","section":false}
+    EXPECT_NE(shown(hiding({1}, true)).find("\"section\":true}"), std::string::npos);
 }
 
 } // namespace

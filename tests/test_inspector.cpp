@@ -1,12 +1,14 @@
 // test_inspector.cpp - the Inspect panel's report worked out on its worker (inspect_report.h,
 // inspect_query.h), on Motor-c.brep's solids: the frame's update() asks and returns at once
-// ("inspect: computing", the rows "... computing..."), a newer selection supersedes the one
-// before (only its lines and rows come, with the values Open CASCADE gives for its solid), A's
+// (an inspect_computing record, the rows "... computing..."), a newer selection supersedes the one
+// before (only its records and rows come, with the values Open CASCADE gives for its solid), A's
 // and B's distance lands as scene::measureDistance gives it, and an Inspector destroyed while
 // its question is held ends cleanly.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 
 #include "app/viewer/state/inspect_report.h"
 #include "app/viewer/state/things.h"
@@ -33,11 +35,27 @@ bool starts(const std::string& line, const std::string& with) {
     return line.rfind(with, 0) == 0;
 }
 
-// The volume an "inspect solids N volume V area A mm" line says.
+// The event records one update() says, a line each.
+std::vector<std::string> update(app::Inspector& inspector, const scene::Scene& s,
+                                const scene::PartSet& selected, const app::Things& things) {
+    std::FILE* file = std::tmpfile();
+    inspector.update(s, {}, selected, things, app::Events(true, file));
+    std::rewind(file);
+    std::vector<std::string> lines;
+    char line[4096];
+    while (std::fgets(line, sizeof line, file)) lines.emplace_back(line, std::strlen(line) - 1);
+    std::fclose(file);
+    return lines;
+}
+
+const std::string computing = R"({"event":"inspect_computing"})";
+const std::string solidsStart = R"({"event":"inspect_solids","solids":1,"volume":)";
+const std::string distanceStart = R"({"event":"inspect_distance","distance":)";
+
+// The volume an inspect_solids record of one solid says.
 double saidVolume(const std::vector<std::string>& lines) {
     for (const std::string& line : lines)
-        if (starts(line, "inspect solids 1 volume "))
-            return std::stod(line.substr(std::string("inspect solids 1 volume ").size()));
+        if (starts(line, solidsStart)) return std::stod(line.substr(solidsStart.size()));
     return -1.0;
 }
 
@@ -57,8 +75,7 @@ TEST(Inspector, NewerSelectionSupersedesTheOneBeingWorkedOut) {
     app::Inspector inspector;
     app::Things things;
     inspector.hold(true); // the worker takes no question until released
-    EXPECT_EQ(inspector.update(s, {}, partsOf(s, first), things),
-              std::vector<std::string>{"inspect: computing"});
+    EXPECT_EQ(update(inspector, s, partsOf(s, first), things), std::vector<std::string>{computing});
     EXPECT_TRUE(inspector.computing());
     const auto& rows = inspector.report().rows;
     ASSERT_EQ(rows.size(), 4u); // the unit's heading, then the box's three rows, each waiting
@@ -66,16 +83,16 @@ TEST(Inspector, NewerSelectionSupersedesTheOneBeingWorkedOut) {
     for (size_t i = 1; i < rows.size(); ++i)
         EXPECT_NE(rows[i].text.find("computing..."), std::string::npos) << rows[i].text;
     EXPECT_FALSE(inspector.due(partsOf(s, first), things)); // asked: nothing to do per frame
-    EXPECT_TRUE(inspector.update(s, {}, partsOf(s, first), things).empty());
+    EXPECT_TRUE(update(inspector, s, partsOf(s, first), things).empty());
 
-    EXPECT_EQ(inspector.update(s, {}, partsOf(s, second), things),
-              std::vector<std::string>{"inspect: computing"});
+    EXPECT_EQ(update(inspector, s, partsOf(s, second), things),
+              std::vector<std::string>{computing});
     inspector.hold(false);
     inspector.wait();
     EXPECT_TRUE(inspector.due(partsOf(s, second), things)); // landed: a frame takes it in
-    const std::vector<std::string> lines = inspector.update(s, {}, partsOf(s, second), things);
+    const std::vector<std::string> lines = update(inspector, s, partsOf(s, second), things);
     ASSERT_EQ(lines.size(), 2u);
-    EXPECT_TRUE(starts(lines[0], "inspect size ")) << lines[0];
+    EXPECT_TRUE(starts(lines[0], R"({"event":"inspect_size","size":[)")) << lines[0];
     const double want = scene::objectProperties(s, second)->volume;
     EXPECT_NEAR(saidVolume(lines), want, 1e-6 * want);
     EXPECT_FALSE(inspector.computing());
@@ -94,16 +111,16 @@ TEST(Inspector, DistanceOfAAndBLandsAsMeasureDistanceGivesIt) {
     things.click(scene::Thing{partsOf(s, first).ids(), {}, "first"});
     things.add(scene::Thing{partsOf(s, second).ids(), {}, "second"});
     const scene::PartSet none(s.uniquePartCount());
-    const auto asked = inspector.update(s, {}, none, things);
-    EXPECT_EQ(asked,
-              (std::vector<std::string>{"inspect things first|second", "inspect: computing"}));
+    const auto asked = update(inspector, s, none, things);
+    EXPECT_EQ(asked, (std::vector<std::string>{
+                         R"({"event":"inspect_things","a":"first","b":"second"})", computing}));
     EXPECT_TRUE(inspector.report().computingDistance);
     inspector.wait();
-    const auto lines = inspector.update(s, {}, none, things);
+    const auto lines = update(inspector, s, none, things);
     ASSERT_EQ(lines.size(), 1u);
-    ASSERT_TRUE(starts(lines[0], "inspect distance ")) << lines[0];
+    ASSERT_TRUE(starts(lines[0], distanceStart)) << lines[0];
     const double want = scene::measureDistance(s, *things.a(), *things.b())->distance;
-    EXPECT_NEAR(std::stod(lines[0].substr(17)), want, 1e-9 + 1e-6 * want);
+    EXPECT_NEAR(std::stod(lines[0].substr(distanceStart.size())), want, 1e-9 + 1e-6 * want);
     ASSERT_TRUE(inspector.report().distance);
     EXPECT_TRUE(inspector.report().distance->fromBrep);
 }
@@ -114,12 +131,12 @@ TEST(Inspector, DestroyedWhileItsQuestionIsHeldEndsCleanly) {
     {
         app::Inspector inspector;
         inspector.hold(true);
-        inspector.update(s, {}, partsOf(s, 0), things);
+        update(inspector, s, partsOf(s, 0), things);
         EXPECT_TRUE(inspector.computing());
     }
     // And an empty selection asks nothing: no "computing".
     app::Inspector inspector;
-    EXPECT_TRUE(inspector.update(s, {}, scene::PartSet(s.uniquePartCount()), things).empty());
+    EXPECT_TRUE(update(inspector, s, scene::PartSet(s.uniquePartCount()), things).empty());
     EXPECT_FALSE(inspector.computing());
 }
 

@@ -28,16 +28,17 @@ t=0.5
 session builds --no-saved-settings
 out=$work/builds.out
 
-# The event lines in order, the screenshots among them.
-events=$(grep -E '^idview: (pipeline: (building|ready)|screenshot:)' "$out" |
-    sed -e 's/^idview: //' -e "s|$work/||" -e 's/ ([0-9.]* s)$//' -e 's/ ([0-9]*x[0-9]*)$//')
-building=$(grep -n '^pipeline: building tri-fs' <<<"$events" | head -1 | cut -d: -f1)
-ready=$(grep -n '^pipeline: ready' <<<"$events" | tail -1 | cut -d: -f1)
-held=$(grep -n '^screenshot: held-cut.png' <<<"$events" | cut -d: -f1)
+# The pipeline records in order, the screenshots among them: "pipeline building NAME",
+# "screenshot FILE".
+events=$(jq -r --arg w "$work/" 'if .event == "pipeline" then "pipeline \(.state) \(.name)"
+    elif .event == "screenshot" then "screenshot \(.path | ltrimstr($w))" else empty end' "$out")
+building=$(grep -n '^pipeline building tri-fs' <<<"$events" | head -1 | cut -d: -f1)
+ready=$(grep -n '^pipeline ready' <<<"$events" | tail -1 | cut -d: -f1)
+held=$(grep -n '^screenshot held-cut.png' <<<"$events" | cut -d: -f1)
 [[ -n $building && -n $ready && -n $held ]] && ((building < held && held < ready)) &&
     echo "ok   frames presented while the builds were held: $(paste -sd'|' <<<"$events")" ||
     fail "events out of order or missing: $(paste -sd'|' <<<"$events")"
-grep -q '^pipeline: building .*section' <<<"$events" &&
+grep -q '^pipeline building .*section' <<<"$events" &&
     echo "ok   the first section cut waited for its own build" ||
     fail "no build of the section variant: $(paste -sd'|' <<<"$events")"
 
@@ -48,7 +49,7 @@ cmp -s "$work/before.png" "$work/held-switch.png" && cmp -s "$work/before.png" "
     echo "ok   once built, the cut shows" || fail "after the builds the image is unchanged"
 
 # Titles name what is drawn: the technique before until the build is done, tri-fs after.
-titles=$(sed -n 's/^idview: title: .*idview - \([^ ]*\) + .*/\1/p' "$out" | uniq | paste -sd'|' -)
+titles=$(events "$out" title .text | sed -n 's/.*idview - \([^ ]*\) + .*/\1/p' | uniq | paste -sd'|' -)
 [[ $titles == "vertex-fs|tri-fs" ]] && echo "ok   the switch landed: $titles" ||
     fail "titles: '$titles', expected vertex-fs|tri-fs"
 grep -q 'validation' "$work/builds.err" && fail "validation: $(grep -m3 validation "$work/builds.err")"
@@ -69,9 +70,11 @@ t=0.5
     at quit
 } >"$work/newest.txt"
 session newest --no-saved-settings
-titles=$(sed -n 's/^idview: title: .*idview - \([^ ]*\) + .*/\1/p' "$work/newest.out" | uniq |
+titles=$(events "$work/newest.out" title .text | sed -n 's/.*idview - \([^ ]*\) + .*/\1/p' | uniq |
     paste -sd'|' -)
-ready=$(sed -n 's/^idview: pipeline: ready \([^ ]*\) .*/\1/p' "$work/newest.out" | paste -sd'|' -)
+# The technique: the pipeline's name up to its first space.
+ready=$(events "$work/newest.out" pipeline 'select(.state == "ready") | .name | split(" ")[0]' |
+    paste -sd'|' -)
 [[ $titles == "vertex-fs|tri-gs" && $ready == tri-gs ]] &&
     echo "ok   the newest wish won: $titles" ||
     fail "titles '$titles', ready '$ready', expected vertex-fs|tri-gs and tri-gs"

@@ -25,18 +25,17 @@ t=0.5
     at quit
 } >"$work/zoom.txt"
 session zoom
-fitted=$(sed -n 's/^idview: opened fitted: x \(-*[0-9]*\) to \(-*[0-9]*\), free \([0-9]*\) to \([0-9]*\) of .*/\1 \2 \3 \4/p' \
-    "$work/zoom.out")
+fitted=$(events "$work/zoom.out" opened_fitted '"\(.left) \(.right) \(.free_left) \(.free_right)"')
 read -r left right free_left free_right <<<"$fitted"
 [[ -n $fitted ]] && ((left >= free_left - 1 && right <= free_right + 1 && free_left > 300)) &&
     echo "ok   opened fitted beside the panel: x $left to $right in $free_left to $free_right" ||
     fail "the model opened outside the area beside the panel: '$fitted'"
-picked=$(sed -n 's/^idview: selected: part \([0-9]*\) .*/\1/p' "$work/zoom.out" | paste -sd' ' -)
-zoom=$(grep -m1 '^idview: zoom: ' "$work/zoom.out")
+picked=$(events "$work/zoom.out" selected 'select(.part != null) | .part' | paste -sd' ' -)
+zoom=$(events "$work/zoom.out" zoom | head -1)
 read -r before after <<<"$picked"
-at_now=$(sed -n 's/^idview: zoom: toward part [0-9]* at 432,232, now at \([0-9.]*\),\([0-9.]*\)$/\1 \2/p' \
-    "$work/zoom.out")
-[[ -n $before && $before == "$after" && $zoom == "idview: zoom: toward part $before at 432,232, now at "* ]] &&
+at_now=$(events "$work/zoom.out" zoom 'select(.pixel == [432, 232]) | .now_at | map(tostring) | join(" ")')
+[[ -n $before && $before == "$after" && -n $zoom ]] &&
+    jq -e ".part == $before and .pixel == [432, 232] and (.now_at | length) == 2" <<<"$zoom" >/dev/null &&
     awk -v p="$at_now" 'BEGIN{split(p, a, " "); exit !(p != "" && (a[1]-432)^2 + (a[2]-232)^2 <= 1)}' &&
     echo "ok   the wheel zoomed toward part $before under the cursor, which stays under it: $zoom" ||
     fail "zoom toward the cursor: parts picked '$picked', '$zoom'"
@@ -62,10 +61,11 @@ t=0.5
     at quit
 } >"$work/chooser.txt"
 PATH=$work/bin:$PATH session chooser
-grep -qx "idview: file chooser: $work/chosen model.glb (zenity)" "$work/chooser.out" &&
-    grep -q "^idview: opened: $work/chosen model.glb" "$work/chooser.out" &&
+chosen=$work/chosen\ model.glb
+said "$work/chooser.out" file_chooser ".state == \"chosen\" and .path == \"$chosen\" and .via == \"zenity\"" &&
+    said "$work/chooser.out" opened ".path == \"$chosen\"" &&
     echo "ok   Ctrl+O: zenity chose a model, which opened" ||
-    fail "Open... through zenity: $(grep -e chooser -e opened "$work/chooser.out" | head -5)"
+    fail "Open... through zenity: $(jq -c 'select(.event | IN("file_chooser", "opened"))' "$work/chooser.out" | head -5)"
 grep -qx -- "--file-filter=Models | \*.gltf \*.GLTF \*.glb \*.GLB \*.step .*\*.brep \*.BREP \*.stl \*.STL" \
     "$work/zenity-args.txt" && grep -qx -- "--file-filter=All files | \*" "$work/zenity-args.txt" &&
     echo "ok   zenity was given the formats idview reads, and All files" ||
@@ -107,38 +107,43 @@ t=0.5
 } >"$work/none.txt"
 idview=$work/idview-no-zenity session none
 out=$work/none.out
-has_line() { grep -qxF "idview: $1" "$out"; }
-# in_order LINE...: each line comes after the one before it.
+# in_order CONDITION...: a record each jq condition holds for, each after the one before.
 in_order() {
     local from=0 at
-    for line in "$@"; do
-        at=$(tail -n +$((from + 1)) "$out" | grep -nxF -m1 "idview: $line" | cut -d: -f1)
+    for condition in "$@"; do
+        at=$(event_lines "$out" "$condition" | awk -v f="$from" '$1 > f {print; exit}')
         [[ -n $at ]] || return 1
-        from=$((from + at))
+        from=$at
     done
 }
+# listing FOLDER SHOWN OF ENTRIES HIGHLIGHTED: the browser's record of a listing (ENTRIES a
+# JSON array of names).
+listing() {
+    echo ".event == \"file_browser\" and .state == \"listing\" and .folder == \"$1\" and .shown == $2 and
+        .of == $3 and .entries == $4 and .highlighted == \"$5\""
+}
+browser() { echo ".event == \"file_browser\" and .state == \"$1\"${2:+ and .path == \"$2\"}"; }
+chooser() { events "$out" file_chooser "select(.state == \"$1\")" | wc -l; }
 [[ $(grep -c "^idview: no desktop file chooser: neither the desktop portal nor zenity is there (zenity is not on PATH); browsing in the panel$" \
-    "$work/none.err") -eq 1 && $(grep -c "^idview: file chooser: open$" "$out") -eq 1 ]] &&
-    [[ $(grep -c "^idview: file chooser: none$" "$out") -eq 2 ]] &&
+    "$work/none.err") -eq 1 && $(chooser open) -eq 1 ]] && [[ $(chooser none) -eq 2 ]] &&
     echo "ok   no chooser: one line says so, the panel's browser opens, the second Ctrl+O goes to it at once" ||
-    fail "no chooser: $(grep chooser "$out" "$work/none.err" | head -3)"
+    fail "no chooser: $(events "$out" file_chooser | head -3) $(grep chooser "$work/none.err" | head -3)"
 home=$work/home models=$work/home/models
-in_order "file browser: $home: 3 of 3 entries: ../, empty/, models/; highlighted empty" &&
-    in_order "file browser: $home: 1 of 3 entries: models/; highlighted models" \
-        "file browser: $models: 2 of 2 entries: ../, small.stl; highlighted small.stl" \
-        "file browser: chose $models/small.stl" &&
-    grep -q "^idview: opened: $models/small.stl " "$out" &&
+models_listed=$(listing "$models" 2 2 '["../", "small.stl"]' small.stl)
+in_order "$(listing "$home" 3 3 '["../", "empty/", "models/"]' empty)" &&
+    in_order "$(listing "$home" 1 3 '["models/"]' models)" "$models_listed" \
+        "$(browser chose "$models/small.stl")" &&
+    said "$out" opened ".path == \"$models/small.stl\"" &&
     echo "ok   the browser: home listed (folders and models only), filtered, a folder entered, its model opened" ||
-    fail "the browser: $(grep -e 'file browser' -e opened "$out" | head -6 | paste -sd'|')"
-grep -q "^idview: title: small.stl - idview - " "$out" &&
+    fail "the browser: $(jq -c 'select(.event | IN("file_browser", "opened"))' "$out" | head -6 | paste -sd'|')"
+said "$out" title '.text | startswith("small.stl - idview - ")' &&
     echo "ok   the title names the open file" ||
-    fail "title: $(grep '^idview: title:' "$out" | tail -1)"
-in_order "file browser: chose $models/small.stl" "measure: on" \
-    "file browser: $models: 2 of 2 entries: ../, small.stl; highlighted small.stl" \
-    "file browser: closed" "measure: off" &&
-    ! grep -q "^idview: file browser: .*: [0-9]* of [0-9]* entries: .*; highlighted .*M" "$out" &&
+    fail "title: $(events "$out" title .text | tail -1)"
+in_order "$(browser chose "$models/small.stl")" '.event == "measure" and .on and (has("measured") | not)' "$models_listed" \
+    "$(browser closed)" '.event == "measure" and .on == false' &&
+    ! said "$out" file_browser '.state == "listing" and (.highlighted // "" | contains("M"))' &&
     echo "ok   after the browser the keys are the viewer's (M twice); Esc closed it opened again" ||
-    fail "keys after the browser: $(grep -e 'file browser' -e measure "$out" | paste -sd'|')"
+    fail "keys after the browser: $(jq -c 'select(.event | IN("file_browser", "measure"))' "$out" | paste -sd'|')"
 
 ((failures == 0)) || { echo "$failures check(s) failed"; exit 1; }
 echo "viewer desktop test passed"

@@ -55,11 +55,14 @@ out=$work/inspect.out
 grep -q 'validation' "$work/inspect.err" && fail "validation: $(grep -m3 validation "$work/inspect.err")"
 
 # The first selection: computing, a rest and a frame presented while held, then the answer.
-events=$(grep -E '^idview: (inspect|rest:|screenshot:|selected:)' "$out" | sed 's/^idview: //')
-first=$(sed -n '/^selected: /,$p' <<<"$events" | sed '/^inspect solids/q')
+# One word a record: its event, with the selection's count and the solids' count and volume.
+events=$(jq -r 'if .event == "selected" then "selected \(.parts)"
+    elif .event == "inspect_solids" then "inspect_solids \(.solids) \(.volume)"
+    elif (.event | test("^(inspect_.*|rest|screenshot)$")) then .event else empty end' "$out")
+first=$(sed -n '/^selected /,$p' <<<"$events" | sed '/^inspect_solids/q')
 line() { grep -n "$1" <<<"$first" | head -1 | cut -d: -f1; }
-computing=$(line '^inspect: computing') rest=$(line '^rest: ') shot=$(line '^screenshot: ')
-solids=$(line '^inspect solids')
+computing=$(line '^inspect_computing$') rest=$(line '^rest$') shot=$(line '^screenshot$')
+solids=$(line '^inspect_solids ')
 [[ -n $computing && -n $rest && -n $shot && -n $solids ]] &&
     ((computing < rest && rest < solids && shot < solids)) &&
     echo "ok   held: computing, the viewer rested and drew, then the answer: $(paste -sd'|' <<<"$first" | cut -c1-300)" ||
@@ -67,22 +70,22 @@ solids=$(line '^inspect solids')
 
 # Its values: every solid whole, as headless --properties all sums them.
 total=$("$idview" --model "$motor" --properties all 2>/dev/null | tail -1)
-read -r n volume area < <(sed -n 's/^idview: inspect solids \([0-9]*\) volume \([^ ]*\) area \([^ ]*\) .*/\1 \2 \3/p' "$out" | head -1)
+read -r n volume area < <(events "$out" inspect_solids '"\(.solids) \(.volume) \(.area)"' | head -1)
 want_volume=$(json '["volume"]' <<<"$total") want_area=$(json '["area"]' <<<"$total")
 [[ $n == 17 ]] && near "$volume" "$want_volume" && near "$area" "$want_area" &&
     echo "ok   17 solids: volume $volume area $area, as headless --properties all" ||
     fail "inspect solids '$n' volume '$volume' area '$area', headless 17 $want_volume $want_area"
-read -r sx sy sz < <(sed -n 's/^idview: inspect size \([^ ]*\) \([^ ]*\) \([^ ]*\) .*/\1 \2 \3/p' "$out" | head -1)
+read -r sx sy sz < <(events "$out" inspect_size '.size | map(tostring) | join(" ")' | head -1)
 size=($(json '["bbox"]["size"]' <<<"$total" | tr -d '[],'))
 near "$sx" "${size[0]}" && near "$sy" "${size[1]}" && near "$sz" "${size[2]}" &&
     echo "ok   the exact box $sx $sy $sz" || fail "inspect size '$sx $sy $sz', headless ${size[*]}"
 
 # The second: two selections asked while held, one answer, the newer's (solid 2, object 1).
-second=$(sed -n '/^selected: none/,$p' <<<"$events")
-answers=$(grep -c '^inspect solids' <<<"$second")
-asked=$(grep -c '^inspect: computing' <<<"$second")
+second=$(sed -n '/^selected 0$/,$p' <<<"$events")
+answers=$(grep -c '^inspect_solids ' <<<"$second")
+asked=$(grep -c '^inspect_computing$' <<<"$second")
 one=$("$idview" --model "$motor" --properties 1 2>/dev/null | json '["volume"]')
-got=$(sed -n 's/^inspect solids 1 volume \([^ ]*\) .*/\1/p' <<<"$second")
+got=$(sed -n 's/^inspect_solids 1 \(.*\)/\1/p' <<<"$second")
 [[ $asked == 2 && $answers == 1 ]] && near "$got" "$one" &&
     echo "ok   the newer selection superseded the held one: its volume $got alone" ||
     fail "asked $asked, answers $answers ('$got', want solid 2's $one): $(paste -sd'|' <<<"$second" | cut -c1-400)"

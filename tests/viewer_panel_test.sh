@@ -24,12 +24,13 @@ tall() {
     local rc=$?
     [[ $rc -eq 0 ]] || { fail "$name session: exit code $rc"; head -c 2000 "$work/$name.err"; }
 }
-# row OUT INDEX NAME: where the group NAME starts (window y) in the INDEXth "panel: rows"
-# line of OUT (1 the first, -1 the last).
+# The measure mode's toggle record (not a measurement's).
+measure_on='.on and (has("measured") | not)'
+# row OUT INDEX NAME: where the group NAME starts (window y) in the INDEXth panel_rows record
+# of OUT (1 the first, -1 the last).
 row() {
-    grep '^idview: panel: rows ' "$1" | if [[ $2 == -1 ]]; then tail -1; else sed -n "${2}p"; fi |
-        sed 's/^idview: panel: rows //' | tr ',' '\n' | sed 's/^ //' |
-        awk -v n="$3" '{ y = $NF; $NF = ""; sub(/ $/, ""); if ($0 == n) print y }'
+    events "$1" panel_rows .rows | if [[ $2 == -1 ]]; then tail -1; else sed -n "${2}p"; fi |
+        jq -r --arg n "$3" '.[] | select(.name == $n) | .y'
 }
 
 # Where the headers lie with the sections closed, and with Section open. Each session first
@@ -54,7 +55,7 @@ t=1
 } >"$work/probe.txt"
 tall probe
 section=$(row "$work/probe.out" -1 Section)
-[[ -n $section ]] || fail "no Section row in: $(grep -m1 'panel: rows' "$work/probe.out")"
+[[ -n $section ]] || fail "no Section row in: $(events "$work/probe.out" panel_rows | head -1)"
 sed "s/SECTION/$((section + 8))/" -i "$work/learn.txt"
 tall learn
 timing=$(row "$work/learn.out" -1 Timing)
@@ -85,12 +86,14 @@ t=1
     at quit
 } >"$work/stay.txt"
 tall stay
-probe_rows=$(grep '^idview: panel: rows ' "$work/probe.out" | tail -1)
-before_click=$(sed -n "1,/^idview: command: escape/p" "$work/stay.out" | grep '^idview: panel: rows ' |
-    tail -n +2 | sort -u)
+probe_rows=$(events "$work/probe.out" panel_rows .rows | tail -1)
+escape=$(event_lines "$work/stay.out" '.event == "command" and (.command | startswith("escape"))' |
+    head -1)
+before_click=$(sed -n "1,${escape:-\$}p" "$work/stay.out" |
+    jq -c 'select(.event == "panel_rows") | .rows' | tail -n +2 | sort -u)
 rendering=$(row "$work/stay.out" -1 Rendering)
-if ! grep -q '^idview: selected: part' "$work/stay.out" || ! grep -q '^idview: measure: on' "$work/stay.out"; then
-    fail "stay: no face selected or no measure mode ($(grep -cE '^idview: (selected|measure)' "$work/stay.out") lines)"
+if ! said "$work/stay.out" selected '.part != null' || ! said "$work/stay.out" measure "$measure_on"; then
+    fail "stay: no face selected or no measure mode ($(jq -c 'select(.event == "selected" or .event == "measure")' "$work/stay.out" | wc -l) records)"
 elif [[ -n $before_click && $before_click != "$probe_rows" ]]; then
     fail "stay: rows moved with the selection or the measure: '$before_click' against '$probe_rows'"
 elif [[ -z $rendering || $rendering -le $(($(row "$work/probe.out" -1 Rendering) + 60)) ]]; then
@@ -121,18 +124,18 @@ t=1
     at quit
 } >"$work/anchor.txt"
 tall anchor
-ys=$(sed -n 's/^idview: panel: pointer row Timing at \([0-9-]*\)$/\1/p' "$work/anchor.out" | tr '\n' ' ')
+ys=$(events "$work/anchor.out" panel_pointer 'select(.row == "Timing") | .y' | tr '\n' ' ')
 first=${ys%% *}
 last=$(awk '{print $NF}' <<<"$ys")
-moves=$(grep -c '^idview: panel: rows ' "$work/anchor.out")
+moves=$(events "$work/anchor.out" panel_rows | wc -l)
 if [[ -z $first ]]; then
-    fail "the pointer was never on Timing's row: $(grep 'pointer row' "$work/anchor.out" | head -5)"
+    fail "the pointer was never on Timing's row: $(events "$work/anchor.out" panel_pointer | head -5)"
 elif [[ $first == "$last" && $first -eq $timing ]]; then
     echo "ok   the row under the pointer stayed at y $first (drawn at: $ys)"
 else
     fail "the row under the pointer moved: drawn at $ys (first $first, last $last, learnt $timing)"
 fi
-grep -q '^idview: measure: on' "$work/anchor.out" || fail "M did not reach the viewer"
+said "$work/anchor.out" measure "$measure_on" || fail "M did not reach the viewer"
 
 # Every section open (clicked bottom-up, so the rows above stay where they were learnt), a
 # face selected, then the window narrowed until the panel is at its narrowest.
@@ -170,12 +173,12 @@ t=1
     at quit
 } >"$work/clip.txt"
 tall clip
-reports=$(grep '^idview: panel: width ' "$work/clip.out")
-wide=$(grep '^idview: panel: width 360,' <<<"$reports" | tail -1)
-narrow=$(grep '^idview: panel: width 320,' <<<"$reports" | tail -1)
-[[ $wide == "idview: panel: width 360, clipped: none" ]] && echo "ok   nothing clipped at 360 px" ||
+reports=$(events "$work/clip.out" panel_width)
+wide=$(events "$work/clip.out" panel_width 'select(.width == 360) | .clipped' | tail -1)
+narrow=$(events "$work/clip.out" panel_width 'select(.width == 320) | .clipped' | tail -1)
+[[ $wide == "[]" ]] && echo "ok   nothing clipped at 360 px" ||
     fail "at the default width: ${wide:-no report} (all: $reports)"
-[[ $narrow == "idview: panel: width 320, clipped: none" ]] && echo "ok   nothing clipped at 320 px" ||
+[[ $narrow == "[]" ]] && echo "ok   nothing clipped at 320 px" ||
     fail "at 320 px: ${narrow:-no report} (all: $reports)"
 opened=$(row "$work/clip.out" -1 Controls)
 [[ -n $opened && $opened -gt $(row "$work/probe.out" -1 Controls) ]] ||
@@ -183,34 +186,38 @@ opened=$(row "$work/clip.out" -1 Controls)
 
 # The selected face: its name in the assembly, its surface and its area with the unit, its
 # numbers rounded (no "e-15" noise).
-selected=$(grep -m1 '^idview: selected: part' "$work/clip.out")
-if [[ $selected =~ :\ .*the\ product\ name.*,\ face\ [0-9]+:\ [a-z]+.*,\ area\ [0-9.e+-]+\ mm² &&
-    $selected != *"e-"* ]]; then
+selected=$(events "$work/clip.out" selected 'select(.part != null)' | head -1)
+if [[ -n $selected && $selected != *"e-"* ]] && jq -e '(.path | contains("the product name")) and
+    (.face | type == "number") and (.surface | test("^[a-z]+.*, area [0-9.e+-]+ mm²"))' \
+    <<<"$selected" >/dev/null; then
     echo "ok   $selected"
 else
-    fail "the selected face's line lacks name, surface or area in mm²: ${selected:-none}"
+    fail "the selected face's record lacks name, surface or area in mm²: ${selected:-none}"
 fi
-measured=$(grep '^idview: measure: {' "$work/clip.out" | tail -1)
-[[ $measured == *'"distance":'[0-9]*'"unit":"mm"}' ]] && echo "ok   the measure line in mm: $measured" ||
-    fail "the measure line: ${measured:-none}"
+measured=$(events "$work/clip.out" measure 'select(.measured) | .measured' | tail -1)
+[[ -n $measured ]] && jq -e '(.distance | type == "number") and .unit == "mm"' <<<"$measured" >/dev/null &&
+    echo "ok   the measure record in mm: $measured" || fail "the measure record: ${measured:-none}"
 # The edge: hovered, then selected by a click with its curve and length, then no longer
 # selected after the click away from it that follows (the face's selection above).
-hovered=$(sed -n 's/^idview: edge hovered: \(part [0-9]* edge [0-9]*\)$/\1/p' "$work/clip.out" | head -1)
-edge=$(grep -m1 '^idview: edge selected: part' "$work/clip.out")
-# The unit once, on the line's first length (a circle's diameter, else the length).
-if [[ -n $hovered && $edge =~ ^idview:\ edge\ selected:\ $hovered:\ [a-z]+.*,\ length\ [0-9.e+-]+ &&
-    $edge == *[0-9]" mm"* && $edge != *"mm"*"mm"* ]]; then
+hovered=$(events "$work/clip.out" edge_hovered 'select(.edge != null) | .edge' | head -1)
+edge=$(events "$work/clip.out" edge_selected 'select(.edge != null)' | head -1)
+curve=$(jq -r .curve <<<"${edge:-null}")
+# The unit once, on the curve's first length (a circle's diameter, else the length).
+if [[ -n $hovered && $(jq -c .edge <<<"${edge:-null}") == "$hovered" &&
+    $curve =~ ^[a-z]+.*,\ length\ [0-9.e+-]+ && $curve == *[0-9]" mm"* && $curve != *"mm"*"mm"* ]]; then
     echo "ok   $edge"
 else
     fail "no edge hovered then selected: hovered '${hovered:-none}', ${edge:-no edge selected}"
 fi
-before=$(sed -n "1,\|^idview: screenshot: $work/edge.png|p" "$work/clip.out" | grep '^idview: edge selected:' | tail -1)
-after=$(sed -n "\|^idview: screenshot: $work/edge.png|,\$p" "$work/clip.out" | grep '^idview: edge selected:' | tail -1)
-[[ $before == *"edge selected: part"* && $after == "idview: edge selected: none" ]] &&
+shot=$(event_lines "$work/clip.out" ".event == \"screenshot\" and .path == \"$work/edge.png\"" | head -1)
+last_edge() { jq -c 'select(.event == "edge_selected") | [.edge, .curve]' | tail -1; }
+before=$(sed -n "1,${shot:-\$}p" "$work/clip.out" | last_edge)
+after=$([[ -n $shot ]] && sed -n "$shot,\$p" "$work/clip.out" | last_edge)
+[[ $before == '[{"part":'* && $after == "[null,null]" ]] &&
     echo "ok   a click away from the edge left none selected" ||
     fail "edge selected before the click away '${before:-nothing}', after '${after:-nothing}'"
-grep -q '^idview: title: .* - render (CPU device) [0-9.]* ms$' "$work/clip.out" &&
+said "$work/clip.out" title '.text | test(" - render \\(CPU device\\) [0-9.]* ms$")' &&
     echo "ok   the title says lavapipe's times are CPU time" ||
-    fail "title: $(grep -m1 '^idview: title:' "$work/clip.out")"
+    fail "title: $(events "$work/clip.out" title .text | head -1)"
 
 ((failures == 0)) && echo "all panel checks passed" || exit 1

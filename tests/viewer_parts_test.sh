@@ -9,6 +9,17 @@
 # Xvfb check, $work, fail, at and session: viewer_lib.sh; each session opens on the
 # viewer's defaults (--no-saved-settings).
 source "$(dirname "$0")/viewer_lib.sh"
+# words FILE: a line a record, its event and the fields these checks read: "selected 3" (a
+# count), "selected part 5" (one part named), "hidden 0", "visible 12", "xray on", "view front",
+# "projection orthographic", "fit scene"; other events by their name alone.
+words() {
+    jq -r '.event + " " + (if .event == "selected" and .part != null then "part \(.part)"
+        elif .event | IN("selected", "hidden", "visible") then "\(.parts)"
+        elif .event == "xray" then (if .on then "on" else "off" end)
+        elif .event == "view" then .name
+        elif .event == "projection" then (if .ortho then "orthographic" else "perspective" end)
+        elif .event == "fit" then .what else "" end)' "$1"
+}
 
 # The scene to open by typing its path, as glTF.
 "$idview" --scene procedural:preset=small --export "$work/small.glb" >/dev/null ||
@@ -110,64 +121,62 @@ EOF
     at quit
 } >"$work/parts.txt"
 session parts --no-saved-settings
-events=$(grep -E '^idview: (selected|hidden):' "$work/parts.out")
-expect_event() { # expect_event N LINE: the Nth selected/hidden event is LINE
+events=$(words "$work/parts.out" | grep -E '^(selected|hidden) ')
+expect_event() { # expect_event N WORDS: the Nth selected/hidden record reads WORDS
     local got
     got=$(echo "$events" | sed -n "${1}p")
-    if [[ $got == "idview: $2" ]]; then echo "ok   $2"; else fail "event $1: '$got', expected '$2'"; fi
+    if [[ $got == "$2" ]]; then echo "ok   $2"; else fail "event $1: '$got', expected '$2'"; fi
 }
-expect_event 1 "selected: $(count "$big") parts"
-expect_event 2 "selected: $(count "$after_remove") parts"
-expect_event 3 "selected: $(count "$after_add") parts"
-expect_event 4 "selected: none"
-expect_event 5 "hidden: $(count "$after_add") parts"
-expect_event 6 "hidden: 0 parts"
-expect_event 7 "selected: $(count "$big") parts"
+expect_event 1 "selected $(count "$big")"
+expect_event 2 "selected $(count "$after_remove")"
+expect_event 3 "selected $(count "$after_add")"
+expect_event 4 "selected 0"
+expect_event 5 "hidden $(count "$after_add")"
+expect_event 6 "hidden 0"
+expect_event 7 "selected $(count "$big")"
 partcount=$("$idview" --stats --scene procedural:preset=small 2>/dev/null |
     sed -n 's/.*"parts":\([0-9]*\),.*/\1/p')
 [[ -n $partcount ]] || fail "--stats gave no part count"
-expect_event 8 "hidden: $((partcount - $(count "$big"))) parts"
-expect_event 9 "hidden: 0 parts"
+expect_event 8 "hidden $((partcount - $(count "$big")))"
+expect_event 9 "hidden 0"
 line=$(echo "$events" | sed -n 10p)
-[[ $line =~ ^idview:\ selected:\ (part\ [0-9]+|[0-9]+\ parts) ]] && echo "ok   object list: $line" ||
+[[ $line =~ ^selected\ (part\ [0-9]+|[1-9][0-9]*)$ ]] && echo "ok   object list: $line" ||
     fail "selecting the object 'base plate' by name gave: $line"
 # Every renderer's box: Esc clears, then the same parts as headless.
 n=0
 for r in $("$idview" --list-renderers | awk '/^renderers:/{on=1; next} /^[^ ]/{on=0} on{print $1}'); do
     n=$((n + 1))
-    got=$(echo "$events" | grep -v 'selected: none' | sed -n "$((9 + n))p")
-    [[ $got == "idview: selected: $(count "$big") parts" ]] || fail "box with $r: '$got'"
+    got=$(echo "$events" | grep -vx 'selected 0' | sed -n "$((9 + n))p")
+    [[ $got == "selected $(count "$big")" ]] || fail "box with $r: '$got'"
 done
 echo "ok   box selection with each of $n renderers"
 # X-ray: on, the click through, then off.
-after_x=$(sed -n '/^idview: xray: on$/,$p' "$work/parts.out")
-clicked=$(echo "$after_x" | grep -m1 '^idview: selected:')
-[[ $clicked == "idview: selected: part ${xray_part:-none} "* ]] &&
+after_x=$(words "$work/parts.out" | sed -n '/^xray on$/,$p')
+clicked=$(echo "$after_x" | grep -m1 '^selected ')
+[[ $clicked == "selected part ${xray_part:-none}" ]] &&
     echo "ok   X-ray: a click through a translucent part selects part $xray_part behind it" ||
     fail "X-ray: the click at ${xray_x:-?},${xray_y:-?} gave '$clicked', expected part ${xray_part:-?}"
-xray_seen=$(echo "$after_x" | sed -n '/^idview: selected: part/,/^idview: xray: off$/p' |
-    sed -n 's/^idview: visible parts: //p' | tail -1)
+xray_seen=$(echo "$after_x" | sed -n '/^selected part/,/^xray off$/p' | sed -n 's/^visible //p' | tail -1)
 [[ $xray_seen == 1 ]] && echo "ok   X-ray: the ID image holds the one selected part" ||
     fail "X-ray with one part selected: visible parts '$xray_seen', expected 1"
-grep -q '^idview: xray: off$' "$work/parts.out" || fail "X-ray: no 'xray: off'"
+said "$work/parts.out" xray '.on == false' || fail "X-ray: no 'xray: off'"
 # The visible part count the panel shows: once F has framed the scene (the count before the
 # first box's selection, frames after F), the headless count of the same view; with the parts
 # hidden fewer (not compared with headless: parts revealed behind the hidden ones are seen
 # through a camera the viewer rebuilds from its orbit, which can differ from headless's in
 # the last bits, enough to show or not a sliver); isolated, exactly the parts of the box (all
 # of them were visible in it); and after Shift+H the first count again.
-counts=$(sed -n 's/^idview: visible parts: //p' "$work/parts.out")
-first_seen=$(awk '/^idview: selected:/{exit} /^idview: visible parts: /{n = $4} END{print n}' \
-    "$work/parts.out")
+counts=$(events "$work/parts.out" visible .parts)
+first_seen=$(words "$work/parts.out" | awk '/^selected /{exit} /^visible /{n = $2} END{print n}')
 [[ $first_seen == "$visible_all" ]] && echo "ok   visible parts: $first_seen" ||
     fail "visible parts: viewer '$first_seen', headless '$visible_all'"
-while_hidden=$(awk '/^idview: hidden: [1-9]/{on=1} on && /^idview: hidden: 0 parts/{exit} on' \
-    "$work/parts.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+while_hidden=$(words "$work/parts.out" | awk '/^hidden [1-9]/{on=1} on && /^hidden 0$/{exit} on' |
+    sed -n 's/^visible //p' | tail -1)
 [[ -n $while_hidden && $while_hidden != "$visible_all" ]] &&
     echo "ok   visible parts with $(count "$after_add") hidden: $while_hidden (headless: $visible_hidden)" ||
     fail "hiding parts did not change the visible count ($while_hidden)"
-isolated=$(awk '/^idview: hidden: [1-9]/{n++} n==2{on=1} on && /^idview: hidden: 0 parts/{exit} on' \
-    "$work/parts.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+isolated=$(words "$work/parts.out" | awk '/^hidden [1-9]/{n++} n==2{on=1} on && /^hidden 0$/{exit} on' |
+    sed -n 's/^visible //p' | tail -1)
 [[ $isolated == "$(count "$big")" ]] && echo "ok   visible parts isolated: $isolated" ||
     fail "visible parts after isolating $(count "$big") parts: $isolated"
 [[ $(echo "$counts" | tail -1) == "$visible_all" ]] ||
@@ -231,7 +240,7 @@ both=$(node_parts "gearbox module" "gearbox module/base plate")
     at quit
 } >"$work/tree.txt"
 session tree --no-saved-settings
-tree_events=$(grep -E '^idview: (selected|hidden):' "$work/tree.out" | head -8 | tr '\n' '|')
+tree_events=$(words "$work/tree.out" | grep -E '^(selected|hidden) ' | head -8 | tr '\n' '|')
 # The click at 470,260 lands on the base plate, object 0 (headless --pick says so): level
 # solid selects its parts, assembly every part under its group, a double-click the object.
 object0=$("$idview" --tree --scene procedural:preset=small | python3 -c '
@@ -244,9 +253,8 @@ print(find(json.load(sys.stdin)))')
 picked=$("$idview" --headless --scene procedural:preset=small --size 720x450 --frames 1 \
     --pick 470,260 2>/dev/null | sed -n 's/.*"object":\([0-9]*\),.*/\1/p')
 [[ $picked == 0 ]] || fail "the click point shows object '$picked', not the base plate"
-want="idview: hidden: $gearbox parts|idview: hidden: 0 parts|idview: selected: $plate parts|"
-want+="idview: selected: $both parts|idview: selected: none|idview: selected: $object0 parts|"
-want+="idview: selected: $gearbox parts|idview: selected: $object0 parts|"
+want="hidden $gearbox|hidden 0|selected $plate|selected $both|selected 0|selected $object0|"
+want+="selected $gearbox|selected $object0|"
 if [[ $gearbox -gt $plate && $plate -gt $object0 && $object0 -gt 1 && $tree_events == "$want" ]]; then
     echo "ok   assembly tree and selection levels: hide, show, select and add nodes; solid, assembly, double-click ($gearbox, $plate, $object0 parts)"
 else
@@ -266,14 +274,14 @@ print(p["part"], p["path"] + " \u00b7 part " + str(p["local_part"]))'
 read -r plate_part plate_face < <(pick 520,240)
 read -r bolt_part bolt_face < <(pick 350,180)
 read -r gear_part gear_face < <(pick 350,240)
-things=$(sed -n 's/^idview: inspect things //p' "$work/tree.out" | paste -sd'#' -)
+things=$(events "$work/tree.out" inspect_things '"\(.a // "none")|\(.b // "none")"' | paste -sd'#' -)
 want="gearbox module/base plate|none#gearbox module|none#gearbox module/base plate|none#"
 want+="$plate_face|none#$plate_face|$bolt_face#$plate_face|$gear_face#none|none"
 [[ $things == "$want" ]] && echo "ok   inspect things: a click makes A, Ctrl+click B, again B, Esc none" ||
     fail "inspect things '$things', expected '$want'"
-distances=($(sed -n 's/^idview: inspect distance \([0-9.e+-]*\) none$/\1/p' "$work/tree.out"))
+distances=($(events "$work/tree.out" inspect_distance 'select(.unit == "none") | .distance'))
 if [[ ${#distances[@]} -ne 2 ]]; then
-    fail "expected two 'inspect distance D none' lines: $(grep 'inspect distance' "$work/tree.out")"
+    fail "expected two inspect_distance records in unit none: $(events "$work/tree.out" inspect_distance)"
 elif "$idview" --help 2>&1 | grep -q -- '--distance'; then
     n=0
     for b in "$bolt_part" "$gear_part"; do
@@ -343,8 +351,8 @@ if [[ -f $motor && -f $terrain ]]; then
         fail "no one-line refusal of $motor: $(grep -v '^idview: loading ' "$work/refuse.err" | head -c 500)"
     grep -q "^idview: $terrain: cancelled$" "$work/refuse.err" && echo "ok   Cancel stopped $terrain" ||
         fail "Cancel did not stop $terrain: $(grep -v '^idview: loading ' "$work/refuse.err" | head -c 500)"
-    grep -q "^idview: opened: " "$work/refuse.out" && fail "a refused or cancelled model opened"
-    picks=$(grep '^idview: selected: part' "$work/refuse.out")
+    said "$work/refuse.out" opened && fail "a refused or cancelled model opened"
+    picks=$(events "$work/refuse.out" selected 'select(.part != null)')
     if [[ $(wc -l <<<"$picks") -eq 2 && $(sort -u <<<"$picks" | wc -l) -eq 1 ]]; then
         echo "ok   the scene stayed: $(head -1 <<<"$picks")"
     else
@@ -393,27 +401,27 @@ t=0.5
     at quit
 } >"$work/views.txt"
 session views --no-saved-settings
-said=$(grep -E '^idview: (view|projection|fit):' "$work/views.out" | sed 's/^idview: //' | paste -sd'|' -)
-expected='view: front|view: bottom|view: isometric|projection: orthographic|view: top|projection: perspective|view: front|fit: selection|fit: shown parts|fit: scene'
-[[ $said == "$expected" ]] && echo "ok   views session: $said" || fail "views session said '$said', expected '$expected'"
+told=$(words "$work/views.out" | grep -E '^(view|projection|fit) ' | paste -sd'|' -)
+expected='view front|view bottom|view isometric|projection orthographic|view top|projection perspective|view front|fit selection|fit shown parts|fit scene'
+[[ $told == "$expected" ]] && echo "ok   views session: $told" || fail "views session said '$told', expected '$expected'"
 # F on the base plate frames it (another set of parts shows); F with the plate isolated frames
 # it alone; F with nothing selected or hidden frames the whole scene beside the panel.
-visible_after() { # the last visible part count after the event line $1, before the next event
-    awk -v e="idview: $1" '$0 == e {on=1; next} on && /^idview: (view|projection|fit|selected):/{exit} on' \
-        "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1
+visible_after() { # the last visible part count after the record reading $1, before the next event
+    words "$work/views.out" | awk -v e="$1" '$0 == e {on=1; next} on && /^(view|projection|fit|selected) /{exit} on' |
+        sed -n 's/^visible //p' | tail -1
 }
-front=$(visible_after "view: front")
-on_plate=$(visible_after "fit: selection")
-whole=$(visible_after "fit: scene")
+front=$(visible_after "view front")
+on_plate=$(visible_after "fit selection")
+whole=$(visible_after "fit scene")
 [[ -n $front && -n $on_plate && $on_plate != "$front" && -n $whole && $whole != "$on_plate" ]] &&
     echo "ok   F: selection shows $on_plate parts, then the scene $whole (front view: $front)" ||
     fail "F: selection '$on_plate', scene '$whole', front view '$front'"
-top_viewer=$(awk '/^idview: view: top/{on=1} on && /^idview: projection: perspective/{exit} on' \
-    "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+top_viewer=$(words "$work/views.out" | awk '/^view top/{on=1} on && /^projection perspective/{exit} on' |
+    sed -n 's/^visible //p' | tail -1)
 top_headless=$("$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
     --view top --ortho --visible-parts 2>/dev/null | sed -n 's/^{"count":\([0-9]*\).*/\1/p')
-iso_count=$(awk '/^idview: view: isometric/{on=1} on && /^idview: projection: orthographic/{exit} on' \
-    "$work/views.out" | sed -n 's/^idview: visible parts: //p' | tail -1)
+iso_count=$(words "$work/views.out" | awk '/^view isometric/{on=1} on && /^projection orthographic/{exit} on' |
+    sed -n 's/^visible //p' | tail -1)
 [[ -n $top_viewer && $top_viewer == "$top_headless" && $top_viewer != "$iso_count" ]] &&
     echo "ok   top view in ortho shows $top_viewer parts, as headless (isometric: $iso_count)" ||
     fail "top view in ortho: viewer '$top_viewer' parts, headless '$top_headless' (isometric '$iso_count')"
@@ -440,7 +448,7 @@ t=0.5
     at quit
 } >"$work/typed.txt"
 session typed --no-saved-settings
-opened=$(sed -n 's/^idview: opened: \([^ ]*\) .*/\1/p' "$work/typed.out" | paste -sd' ' -)
+opened=$(events "$work/typed.out" opened .path | paste -sd' ' -)
 [[ $opened == "$work/small.glb $work/again.glb" ]] && echo "ok   typed paths opened: Enter kept, field emptied" ||
     fail "typed paths opened '$opened' ($(head -c 300 "$work/typed.err"))"
 

@@ -41,9 +41,10 @@ finish() {
     [[ $rc -eq 124 ]] && fail "$session_name: the viewer did not end (hang guard)"
     [[ $rc -eq 0 || $rc -eq 124 ]] || { fail "$session_name: exit code $rc"; head -c 2000 "$work/$session_name.err"; }
 }
-# wait_line PATTERN: until the session's event lines hold PATTERN; false if it ended first.
+# wait_line CONDITION: until the session has a record the jq CONDITION holds for; false if it
+# ended first.
 wait_line() {
-    until grep -q "$1" "$work/$session_name.out" 2>/dev/null; do
+    until jq -en "[inputs | select($1)] | length > 0" "$work/$session_name.out" >/dev/null 2>&1; do
         kill -0 $runner 2>/dev/null || return 1
         sleep 0.2
     done
@@ -60,11 +61,14 @@ viewer_pid() {
     done
 }
 stopped_worker() { ps -o pid=,stat= --ppid "$(viewer_pid)" | awk '$2 ~ /^T/ {print $1}'; }
-said() { sed -n "s/^idview: $1//p" "$work/$session_name.out"; }
-# before A B: event line A (a pattern) comes before B.
+# ev EVENT [FILTER]: the session's records of EVENT (viewer_lib.sh's events).
+ev() { events "$work/$session_name.out" "$@"; }
+# before A B: the first record jq condition A holds for comes before the first one B holds for.
 before() {
-    awk -v a="$1" -v b="$2" '$0 ~ a && !seen_a {seen_a = NR} $0 ~ b && !seen_b {seen_b = NR}
-        END {exit !(seen_a && seen_b && seen_a < seen_b)}' "$work/$session_name.out"
+    local a b
+    a=$(event_lines "$work/$session_name.out" "$1" | head -1)
+    b=$(event_lines "$work/$session_name.out" "$2" | head -1)
+    [[ -n $a && -n $b && $a -lt $b ]]
 }
 
 tree_nodes=$("$idview" --model "$model" --tree 2>/dev/null | grep -o '"name"' | wc -l)
@@ -95,36 +99,39 @@ t=0.5
     at quit
 } >"$work/pick.txt"
 start pick --model "$model"
-if wait_line "^idview: hidden: 37 parts"; then
+if wait_line '.event == "hidden" and .parts == 37'; then
     worker=$(stopped_worker)
     [[ -n $worker ]] && kill -CONT $worker || fail "pick: no stopped worker to go on"
 fi
 finish
-picks=$(said "selected: part ")
-# The part, its path, its face and the face's surface; not the surface's numbers, which are
-# rounded to the model's precision (scene/precision.h): the B-rep's tolerance is known only
-# once the model is whole, so while it loads they show finer.
-face() { sed 's/\(, face [0-9]*: [a-z]*\).*/\1/'; }
-during=$(head -1 <<<"$picks" | face)
-after=$(sed -n 2p <<<"$picks" | face)
-[[ -n $during && $during == "$after" && $during == *", face "*": "[a-z]* ]] &&
+# The part, its path, its face and the kind of the face's surface; not the surface's numbers,
+# which are rounded to the model's precision (scene/precision.h): the B-rep's tolerance is known
+# only once the model is whole, so while it loads they show finer.
+picks=$(ev selected 'select(.part != null) | "\(.part) \(.object) \(.local_part) \(.path) face \(.face) \((.surface // "") | capture("^(?<kind>[a-z]*)").kind)"')
+during=$(head -1 <<<"$picks")
+after=$(sed -n 2p <<<"$picks")
+[[ -n $during && $during == "$after" && $during =~ \ face\ [0-9]+\ [a-z]+$ ]] &&
     ok "a part picked while loading is the same once loaded: $during" ||
     fail "picked while loading '$during', at the same pixel once loaded '$after'"
-before "^idview: loading: partial: 7 of 8 solids" "^idview: selected: part " &&
-    before "^idview: hidden: 37 parts" "^idview: loading: complete" &&
-    before "^idview: loading: complete" "^idview: cancel: selection" &&
+complete='.event == "loading" and .state == "complete"'
+before '.event == "loading" and .state == "partial" and .shown == 7 and .of == 8' \
+    '.event == "selected" and .part != null' &&
+    before '.event == "hidden" and .parts == 37' "$complete" &&
+    before "$complete" '.event == "cancel" and .what == "selection"' &&
     ok "picked, selected and hid during the load; the selection stayed once it was complete" ||
-    fail "pick: the events came in another order: $(grep -E '^idview: (loading|selected|hidden|cancel):' "$work/pick.out" | paste -sd'|')"
-[[ $(said "loading: tree of ") == "$tree_nodes nodes, $objects objects" ]] &&
-    grep -q "^idview: selected: 37 parts$" "$work/pick.out" &&
+    fail "pick: the events came in another order: $(jq -c 'select(.event | IN("loading", "selected", "hidden", "cancel"))' "$work/pick.out" | paste -sd'|')"
+tree=$(ev loading 'select(.state == "tree") | "\(.nodes) nodes, \(.objects) objects"')
+[[ $tree == "$tree_nodes nodes, $objects objects" ]] &&
+    said "$work/pick.out" selected '.parts == 37 and .part == null' &&
     ok "the tree had its $tree_nodes nodes before the solids; the copy still loading was selected in it" ||
-    fail "tree while loading: '$(said "loading: tree of ")', --tree $tree_nodes nodes, $objects objects; selections: $(said "selected: " | paste -sd'|')"
-# The count just before Shift+H, the model whole: the line may come before "loading: complete"
-# where the last piece's partial scene was drawn first (the same parts) and none after it.
-hidden_kept=$(awk '/^idview: hidden: 0 parts/ {print v; exit} /^idview: visible parts: / {v = $4}' \
-    "$work/pick.out")
-shown_all=$(awk '/^idview: hidden: 0 parts/ {on = 1} on && /^idview: visible parts: / {v = $4}
-    END {print v}' "$work/pick.out")
+    fail "tree while loading: '$tree', --tree $tree_nodes nodes, $objects objects; selections: $(ev selected | paste -sd'|')"
+# The count just before Shift+H, the model whole: the record may come before the load's
+# "complete" where the last piece's partial scene was drawn first (the same parts) and none
+# after it.
+hidden_kept=$(jq -rs 'first(foreach .[] as $r (null; if $r.event == "visible" then $r.parts else . end;
+    if $r.event == "hidden" and $r.parts == 0 then . else empty end)) // empty' "$work/pick.out")
+shown_all=$(jq -rs '[foreach .[] as $r (false; . or ($r.event == "hidden" and $r.parts == 0);
+    if . and $r.event == "visible" then $r.parts else empty end)] | last // empty' "$work/pick.out")
 [[ -n $hidden_kept && -n $shown_all && $shown_all -gt $hidden_kept ]] &&
     ok "copy 3 stayed hidden once loaded: $hidden_kept visible parts, $shown_all after Shift+H" ||
     fail "visible parts once loaded '$hidden_kept', after showing all '$shown_all'"
@@ -148,19 +155,25 @@ t=0.5
 } >"$work/stop.txt"
 start stop --model "$model"
 finish
-said "command: " | grep -qx stop && [[ $(said "loading: stopped: ") == "7 of 8 solids shown, 1 missing" ]] &&
-    grep -q '^idview: title: .*idview - .* - incomplete: 1 of 8 solids missing - ' "$work/stop.out" &&
-    ! grep -q '^idview: loading: complete' "$work/stop.out" &&
+said "$work/stop.out" command '.command == "stop"' &&
+    [[ $(ev loading 'select(.state == "stopped" and has("of")) | "\(.shown) \(.of) \(.missing)"') == "7 8 1" ]] &&
+    said "$work/stop.out" title '.text | test("idview - .* - incomplete: 1 of 8 solids missing - ")' &&
+    ! said "$work/stop.out" loading '.state == "complete"' &&
     ok "Esc stopped the first model: 7 of 8 solids shown, marked incomplete" ||
-    fail "stop: $(grep -E '^idview: (command|loading|title):' "$work/stop.out" | tail -4 | paste -sd'|')"
-visible=$(awk '/^idview: visible parts: / {v = $4} /^idview: loading: stopped/ {on = 1}
-    on && /^idview: loading: (assembly shown|cancelled)/ {print v; exit}' "$work/stop.out")
+    fail "stop: $(jq -c 'select(.event | IN("command", "loading", "title"))' "$work/stop.out" | tail -4 | paste -sd'|')"
+# The visible count when the next load shows its assembly or is cancelled, after the stop.
+visible=$(jq -rs 'first(foreach .[] as $r ({v: null, on: false};
+    (if $r.event == "visible" then .v = $r.parts else . end) |
+    (if $r.event == "loading" and $r.state == "stopped" then .on = true else . end);
+    if .on and $r.event == "loading" and ($r.state | IN("assembly", "cancelled")) then .v
+    else empty end)) // empty' "$work/stop.out")
 [[ ${visible:-0} -gt 0 ]] && ok "what the stopped load showed stayed: $visible visible parts" ||
     fail "nothing visible after Stop"
-[[ $(said "loading: cancelled, back to ") == "$model" ]] &&
-    [[ $(grep '^idview: title: ' "$work/stop.out" | tail -1) == *" - incomplete: 1 of 8 solids missing - "* ]] &&
+back_to='select(.state == "cancelled" and .after == "back") | .back_to'
+[[ $(ev loading "$back_to") == "$model" ]] &&
+    [[ $(ev title .text | tail -1) == *" - incomplete: 1 of 8 solids missing - "* ]] &&
     ok "a load cancelled over the stopped model brought it back, still incomplete" ||
-    fail "cancel over the stopped model: $(grep -E '^idview: (loading: cancelled|title:)' "$work/stop.out" | tail -2 | paste -sd'|')"
+    fail "cancel over the stopped model: $(jq -c 'select(.event == "title" or (.event == "loading" and .state == "cancelled"))' "$work/stop.out" | tail -2 | paste -sd'|')"
 
 # (c, d) Esc on a dropped model (the small scene before it): Cancel, the small scene back with
 # its view and selection; then the model again, and the window closed while it loads.
@@ -196,14 +209,15 @@ while kill -0 $runner 2>/dev/null; do
 done
 workers=$(tr ' ' '\n' <<<"$workers" | sed '/^$/d; /:$/d' | sort -u | paste -sd' ')
 finish
-picks=$(said "selected: part ")
+picks=$(ev selected 'select(.part != null)')
 [[ -n $(head -1 <<<"$picks") && $(head -1 <<<"$picks") == "$(sed -n 2p <<<"$picks")" ]] &&
-    said "command: " | grep -qx cancel && [[ $(said "loading: cancelled, back to ") == "procedural:preset=small" ]] &&
+    said "$work/cancel.out" command '.command == "cancel"' && [[ $(ev loading "$back_to") == "procedural:preset=small" ]] &&
     grep -q "^idview: $model: cancelled$" "$work/cancel.err" &&
-    before "^idview: loading: cancelled, back to" "^idview: cancel: selection" &&
+    before '.event == "loading" and .state == "cancelled" and .after == "back"' \
+        '.event == "cancel" and .what == "selection"' &&
     ok "Esc cancelled the drop: the small scene back, its view and selection ($(head -1 <<<"$picks"))" ||
-    fail "cancel: picks '$(paste -sd'|' <<<"$picks")', $(grep -E '^idview: (command|loading|cancel):' "$work/cancel.out" | paste -sd'|')"
-grep -q '^idview: loading: cancelled, the window closed' "$work/cancel.out" &&
+    fail "cancel: picks '$(paste -sd'|' <<<"$picks")', $(jq -c 'select(.event | IN("command", "loading", "cancel"))' "$work/cancel.out" | paste -sd'|')"
+said "$work/cancel.out" loading '.state == "cancelled" and .after == "window closed"' &&
     ok "closing the window cancelled a load that would never end, and the viewer ended" ||
     fail "close: $(tail -3 "$work/cancel.out" | paste -sd'|')"
 left=

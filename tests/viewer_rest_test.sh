@@ -28,16 +28,16 @@ cat >"$work/rest.txt" <<'SCRIPT'
 SCRIPT
 session rest
 out=$work/rest.out
-# rest lines: "idview: rest: S scene passes, C compositions, T of the hovered part's tiles,
-# K frames keeping the panel"
-rest_line='^idview: rest: \([0-9]*\) scene passes, \([0-9]*\) compositions, \([0-9]*\) .*tiles, \([0-9]*\) frames.*$'
-scenes() { sed -n "s/$rest_line/\\1/p"; }
-comps() { sed -n "s/$rest_line/\\2/p"; }
-tiles() { sed -n "s/$rest_line/\\3/p"; }
-kept() { sed -n "s/$rest_line/\\4/p"; }
+# The rest records' fields, from the records on stdin: scene passes, compositions, those over
+# the hovered part's tiles, frames keeping the panel.
+rest_field() { jq -r "select(.event == \"rest\") | .$1"; }
+scenes() { rest_field scene_passes; }
+comps() { rest_field compositions; }
+tiles() { rest_field hover_tiles; }
+kept() { rest_field panel_kept; }
 
-hovered=$(grep -m1 -n '^idview: hovered: part ' "$out" | cut -d: -f1)
-off=$(grep -m1 -n '^idview: title: .* - vsync off' "$out" | cut -d: -f1)
+hovered=$(event_lines "$out" '.event == "hovered" and .part != null' | head -1)
+off=$(event_lines "$out" '.event == "title" and (.text | contains(" - vsync off"))' | head -1)
 [[ -n $hovered && -n $off && $hovered -lt $off ]] || {
     fail "no part hovered before vsync went off (hovered at line '$hovered', off at '$off')"
     exit 1
@@ -63,9 +63,10 @@ panels=$(($(echo "$resting" | kept | tail -1) - $(echo "$resting" | kept | head 
     fail "of $steps steps of the blink $tiled were over the tiles and $panels kept the panel"
 
 # vsync off: a scene pass every frame (the script's 10 frames at least), continuous title.
-grep -q '^idview: title: .* - vsync off, continuous - ' "$out" &&
+said "$out" title '.text | contains(" - vsync off, continuous - ")' &&
     echo "ok   vsync off says continuous" || fail "vsync off: no 'continuous' title"
-on=$(awk -v from="$off" 'NR > from && /^idview: title: .* - vsync on, draws on change/ {print NR; exit}' "$out")
+on=$(event_lines "$out" '.event == "title" and (.text | contains(" - vsync on, draws on change"))' |
+    awk -v from="$off" '$1 > from {print; exit}')
 after=$(sed -n "${on:-1},\$p" "$out" | scenes | head -1)
 [[ -n $after && $after -ge $((s + 10)) ]] &&
     echo "ok   continuous drawing: scene passes $s -> $after" ||
@@ -74,7 +75,7 @@ after=$(sed -n "${on:-1},\$p" "$out" | scenes | head -1)
 end=$(scenes <"$out" | tail -1)
 [[ -n $end && $end -gt $after ]] && echo "ok   a drag draws scene passes: $after -> $end" ||
     fail "a drag drew no scene pass ($after -> '$end')"
-grep -c '^idview: rest: ' "$out" | xargs echo "     rest lines:"
+events "$out" rest | wc -l | xargs echo "     rest records:"
 
 # Pictures: each step of the blink (held by the script) drawn anew from the scene pass on
 # (`redraw` and the screenshot at the same time, so in the same frame), and composed over
@@ -114,9 +115,13 @@ blink_pictures() {
     # Screenshots come from the same encoder, so equal files are equal pictures.
     same() { cmp -s "$work/$name-$1.png" "$work/$name-$2.png"; }
     local pictures
-    pictures=$(grep -c '^idview: screenshot: ' "$work/$name.out")
-    # The frames keeping the panel by each screenshot (the first rest line after it).
-    kept_at() { sed -n "/^idview: screenshot: .*$name-$1.png/,\$p" "$work/$name.out" | kept | head -1; }
+    pictures=$(events "$work/$name.out" screenshot | wc -l)
+    # The frames keeping the panel by each screenshot (the first rest record after it).
+    kept_at() {
+        local at
+        at=$(event_lines "$work/$name.out" ".event == \"screenshot\" and (.path | endswith(\"$name-$1.png\"))")
+        sed -n "${at:-\$},\$p" "$work/$name.out" | kept | head -1
+    }
     if [[ $pictures -ne 4 ]]; then
         fail "$name: $pictures screenshots of 4"
     elif same strong-drawn weak-drawn; then
@@ -136,8 +141,8 @@ blink_pictures blink 480 230
 # (ImGui's foreground list): a step of the blink draws it again over the part's tiles alone.
 motor=/usr/share/opencascade/data/occ/Motor-c.brep
 blink_pictures edge 480 230 --model "$motor"
-grep -q '^idview: edge hovered: part ' "$work/edge.out" &&
-    echo "ok   edge: $(grep -m1 '^idview: edge hovered: part ' "$work/edge.out" | cut -d' ' -f2-)" ||
+said "$work/edge.out" edge_hovered '.edge != null' &&
+    echo "ok   edge: $(events "$work/edge.out" edge_hovered 'select(.edge != null) | .edge' | head -1)" ||
     fail "edge: no B-rep edge hovered at 480,230 on $motor"
 
 # The hover ends when the pointer leaves the window and when the window loses the keyboard:
@@ -163,15 +168,18 @@ out=$work/leave.out
 n=0
 while read -r at; do
     n=$((n + 1))
-    c=$(sed -n "$at,\$p" "$out" | awk '/^idview: hovered: part/ {exit} {print}' | comps)
+    # The records from there to the next hover of a part.
+    next=$(event_lines "$out" '.event == "hovered" and .part != null' |
+        awk -v from="$at" '$1 > from {print; exit}')
+    c=$(sed -n "$at,${next:-\$}p" "$out" | comps)
     first=$(echo "$c" | head -1)
     last=$(echo "$c" | tail -1)
     [[ -n $first && $((last - first)) -le 4 ]] &&
         echo "ok   hover $n ended: compositions $first to $last while the pointer is away" ||
         fail "hover $n ended but the compositions went on: '$first' to '$last'"
-done < <(grep -n '^idview: hovered: none' "$out" | cut -d: -f1)
-[[ $n -eq 2 && $(grep -c '^idview: hovered: part' "$out") -eq 2 ]] ||
-    fail "leave, then unfocus: $n hovers ended of 2, $(grep -c '^idview: hovered: part' "$out") began"
+done < <(event_lines "$out" '.event == "hovered" and .part == null')
+began=$(events "$out" hovered 'select(.part != null)' | wc -l)
+[[ $n -eq 2 && $began -eq 2 ]] || fail "leave, then unfocus: $n hovers ended of 2, $began began"
 
 # The explode slider, as a script's `explode` sets it: the picture changes, and afterwards
 # the viewer rests again, frames composed with no scene pass while nothing moves.
@@ -190,7 +198,7 @@ t=0.5
 } >"$work/explode.txt"
 session explode
 out=$work/explode.out
-said=$(grep -n -m1 '^idview: explode: 0.8$' "$out" | cut -d: -f1)
+said=$(event_lines "$out" '.event == "explode" and .at == 0.8' | head -1)
 # The rest lines after the slider moved: the first after its scene pass, then the last.
 moved=$(sed -n "${said:-1},\$p" "$out" | scenes | head -1)
 ended=$(sed -n "${said:-1},\$p" "$out" | scenes | tail -1)

@@ -36,8 +36,8 @@ t=0.5
     at quit
 } >"$work/kept2.txt"
 session kept2
-titles=$(sed -n 's/^idview: title: .*idview - \([^ ]* + [^ ]*\) - .*/\1/p' "$work/kept2.out" | uniq |
-    paste -sd'|' -)
+titles=$(events "$work/kept2.out" title .text |
+    sed -n 's/.*idview - \([^ ]* + [^ ]*\) - .*/\1/p' | uniq | paste -sd'|' -)
 [[ $titles == "tri-fs + mdi-baseinstance|vertex-fs + mdi-baseinstance" ]] &&
     echo "ok   opened on the kept renderer, then the defaults: $titles" ||
     fail "second run's titles: '$titles'"
@@ -76,8 +76,8 @@ t=0.5
     at quit
 } >"$work/window2.txt"
 session_sized window2
-window=$(grep -m1 '^idview: window: ' "$work/window2.out")
-[[ $window == "idview: window: 800x500 at 60,40, 1 recent files" ]] &&
+window=$(events "$work/window2.out" window '"\(.width)x\(.height) at \(.x),\(.y), \(.recent_files) recent files"' | head -1)
+[[ $window == "800x500 at 60,40, 1 recent files" ]] &&
     echo "ok   size, place and recent files restored: $window" ||
     fail "second run's window: '$window', viewer.conf: $(cat "$conf")"
 grep -qx "viewer.panel = hidden" "$conf" && grep -qx "viewer.recent = $work/recent.glb" "$conf" &&
@@ -90,8 +90,8 @@ t=0.5
     at quit
 } >"$work/window3.txt"
 session_sized window3 --window-pos 5000,5000
-window=$(grep -m1 '^idview: window: ' "$work/window3.out")
-[[ $window == "idview: window: 800x500 at 480,300, 1 recent files" ]] &&
+window=$(events "$work/window3.out" window '"\(.width)x\(.height) at \(.x),\(.y), \(.recent_files) recent files"' | head -1)
+[[ $window == "800x500 at 480,300, 1 recent files" ]] &&
     echo "ok   a place off the screen pulled onto it: $window" ||
     fail "off-screen place: '$window'"
 grep -q '^viewer.recent' "$conf" && fail "clear list left: $(grep '^viewer.recent' "$conf")" ||

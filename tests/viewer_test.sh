@@ -101,7 +101,8 @@ if [[ $rc -ne 0 ]]; then
 fi
 
 # The title: vsync on, then off after the first V, then on again after the second.
-vsync=$(sed -n 's/^idview: title: .* - vsync \(on\|off\).*/\1/p' "$work/out.txt" | uniq | tr '\n' ' ')
+vsync=$(events "$work/out.txt" title .text | sed -n 's/.* - vsync \(on\|off\).*/\1/p' | uniq |
+    tr '\n' ' ')
 if [[ $vsync == *"on off on"* ]]; then
     echo "ok   title follows vsync: $vsync"
 else
@@ -109,26 +110,26 @@ else
     head -20 "$work/out.txt"
 fi
 for r in $renderers; do
-    grep -q "^idview: title: .*idview - $r + " "$work/out.txt" || fail "title never named renderer $r"
+    said "$work/out.txt" title ".text | contains(\"idview - $r + \")" || fail "title never named renderer $r"
 done
-first=$(grep -m1 '^idview: title:' "$work/out.txt")
-[[ $first == "idview: title: "*"idview - $floor + "* ]] || fail "--renderer $floor opened as: $first"
+first=$(events "$work/out.txt" title .text | head -1)
+[[ $first == *"idview - $floor + "* ]] || fail "--renderer $floor opened as: $first"
 
-grep -q '^idview: shaders reloaded' "$work/out.txt" || fail "R did not reload the shaders"
+said "$work/out.txt" shaders_reloaded || fail "R did not reload the shaders"
 grep -q '^idview: 1000000 copies make .* objects' "$work/err.txt" ||
     fail "1000000 copies were not refused in words"
 
 # The click on the model selected a part; Esc cleared it (and so did not close the window).
-if grep -q '^idview: selected: part [0-9]' "$work/out.txt"; then
-    echo "ok   click selected: $(grep -m1 '^idview: selected: part' "$work/out.txt")"
+if said "$work/out.txt" selected '.part != null'; then
+    echo "ok   click selected: $(events "$work/out.txt" selected 'select(.part != null)' | head -1)"
 else
     fail "the click selected no part"
 fi
-grep -q '^idview: selected: none' "$work/out.txt" || fail "Esc did not clear the selection"
+said "$work/out.txt" selected '.parts == 0' || fail "Esc did not clear the selection"
 
 # A broken drop names the file and keeps the scene; a good one opens.
 grep -q "^idview: .*broken.glb" "$work/err.txt" || fail "the broken drop reported nothing"
-if grep -q "^idview: opened: .*small.glb" "$work/out.txt"; then
+if said "$work/out.txt" opened '.path | endswith("small.glb")'; then
     echo "ok   dropped model opened"
 else
     fail "the dropped model did not open"
@@ -138,7 +139,7 @@ for f in "${cad_files[@]}"; do
     stats=$("$idview" --model "$f" --stats 2>/dev/null)
     objects=$(sed -n 's/.*"objects":\([0-9]*\).*/\1/p' <<<"$stats")
     parts=$(sed -n 's/.*"parts":\([0-9]*\).*/\1/p' <<<"$stats")
-    if [[ -n $objects ]] && grep -q "^idview: opened: $f ($objects objects, $parts parts" "$work/out.txt"; then
+    if [[ -n $objects ]] && said "$work/out.txt" opened ".path == \"$f\" and .objects == $objects and .parts == $parts"; then
         echo "ok   dropped $(basename "$f") opened: $objects objects, $parts parts"
     else
         fail "the dropped $f did not open with $objects objects and $parts parts"
@@ -147,7 +148,7 @@ done
 
 # Measure mode: the second click's line holds both points, as headless --measure finds them
 # in its opening view (F with the panel hidden frames the scene as it does, to float rounding).
-measured=$(grep '^idview: measure: {' "$work/out.txt" | tail -1 | sed 's/^idview: measure: //')
+measured=$(events "$work/out.txt" measure 'select(.measured) | .measured' | tail -1)
 expected=$("$idview" --headless --scene procedural:preset=small --size 720x450 --frames 1 \
     --measure 470,260,520,280 2>/dev/null)
 if python3 - "$measured" "$expected" <<'EOF'
@@ -163,7 +164,10 @@ then
 else
     fail "measure mode gave '$measured', headless --measure '$expected'"
 fi
-sed -n '/measure: on/,/measure: off/p' "$work/out.txt" | grep -q '^idview: selected: part' &&
+# The records from each "measure on" to the next "measure off" (the toggles, not the results).
+jq -es '[foreach .[] as $r (false; if $r.event == "measure" and ($r | has("measured") | not)
+    then $r.on else . end; . and $r.event == "selected" and $r.part != null)] | any' \
+    "$work/out.txt" >/dev/null &&
     fail "a click in measure mode selected a part"
 
 # The section plane changed the picture.

@@ -79,8 +79,8 @@ std::vector<Flag> viewerFlags(const Options&) {
              "screenshot, drop, quit)",
              &Options::script),
         on("--print-events",
-           "viewer: print one 'idview: ...' line on stdout per event (title, selection, opened "
-           "model, screenshot, shader reload), for scripts and tests; quiet otherwise",
+           "viewer: print one JSON record a line on stdout per event (title, selection, opened "
+           "model, screenshot, shader reload...), for scripts and tests; quiet otherwise",
            &Options::printEvents),
         {"--window-pos", "X,Y",
          "viewer: the window's top left corner on the screen, kept between runs with "

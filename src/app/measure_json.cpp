@@ -8,6 +8,14 @@ namespace app {
 std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
                         const std::array<std::optional<uint32_t>, 2>& parts,
                         const scene::LengthUnit& unit) {
+    util::JsonWriter json;
+    measureMembers(json.beginObject(), points, parts, unit);
+    return json.endObject().text();
+}
+
+void measureMembers(util::JsonWriter& json, const std::array<std::optional<glm::dvec3>, 2>& points,
+                    const std::array<std::optional<uint32_t>, 2>& parts,
+                    const scene::LengthUnit& unit) {
     const auto& [p0, p1] = points;
     std::optional<glm::dvec3> delta;
     std::optional<double> distance;
@@ -16,9 +24,7 @@ std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
         distance = glm::length(*delta);
     }
     // Every digit of a double: points far from the origin read back exactly.
-    util::JsonWriter json;
-    json.beginObject()
-        .member("p0", p0)
+    json.member("p0", p0)
         .member("p1", p1)
         .member("distance", distance)
         .member("delta", delta)
@@ -27,7 +33,6 @@ std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
         .value(parts[1])
         .endArray();
     scene::unitMember(json, unit);
-    return json.endObject().text();
 }
 
 } // namespace app

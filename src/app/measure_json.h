@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/units.h"
+#include "util/json_writer.h"
 
 namespace app {
 
@@ -18,5 +19,9 @@ namespace app {
 std::string measureJson(const std::array<std::optional<glm::dvec3>, 2>& points,
                         const std::array<std::optional<uint32_t>, 2>& parts,
                         const scene::LengthUnit& unit);
+// The same members, into an object `json` has open (the viewer's measure record nests them).
+void measureMembers(util::JsonWriter& json, const std::array<std::optional<glm::dvec3>, 2>& points,
+                    const std::array<std::optional<uint32_t>, 2>& parts,
+                    const scene::LengthUnit& unit);
 
 } // namespace app

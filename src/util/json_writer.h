@@ -67,6 +67,7 @@ class JsonWriter {
         return maybe ? value(*maybe) : null();
     }
     JsonWriter& null();
+    JsonWriter& value(std::nullopt_t) { return null(); } // member("name", std::nullopt)
 
     // key(name).value(v): one member of the innermost object.
     template <typename T>

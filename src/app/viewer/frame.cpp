@@ -44,7 +44,7 @@ void Viewer::drawFrame(const FrameWants& wants) {
     zoomWhenReady();
     if (const auto hovered = document_.selection().hovered(); hovered != saidHovered_) {
         saidHovered_ = hovered;
-        events_.say(hovered ? "hovered: part " + std::to_string(*hovered) : "hovered: none");
+        events_.say("hovered", [&](util::JsonWriter& j) { j.member("part", hovered); });
     }
     // The cursor at its pixel's centre, as --edge-info takes it.
     const VkExtent2D extent = scene_.targets()->extent();
@@ -57,7 +57,7 @@ void Viewer::drawFrame(const FrameWants& wants) {
         selectionChanged();
     if (picking_.visibleParts() != saidVisible_) {
         saidVisible_ = picking_.visibleParts();
-        events_.say("visible parts: " + std::to_string(saidVisible_));
+        events_.say("visible", [&](util::JsonWriter& j) { j.member("parts", saidVisible_); });
     }
     const auto image = presenter_.acquire(frameNumber_);
     if (!image) return; // out of date: the next frame makes a new swapchain first
@@ -86,9 +86,8 @@ void Viewer::drawPanel() {
         selectedRow_ = scene::rowOfParts(tree_, namedSelection_);
     }
     // Sizes, properties and distances: worked out when the selection or A and B changed.
-    for (const std::string& line : inspect_.update(
-             scene_.scene(), tree_, document_.selection().selected(), document_.things()))
-        events_.say(line);
+    inspect_.update(scene_.scene(), tree_, document_.selection().selected(), document_.things(),
+                    events_);
     if (view_.panelVisible) act(app::drawPanel(settings_, view_, panelInfo()));
     // The box being dragged, over everything.
     if (const auto box = input_.boxInWindow())
@@ -134,9 +133,9 @@ void Viewer::explode() {
     camera_.setBounds(scene_.scene().bounds());
     document_.forgetMeasurePoints();
     partDetails_ = PartDetailsCache{}; // the same arrays hold other placements now
-    char text[48];
-    std::snprintf(text, sizeof text, "explode: %.3g", double(at));
-    events_.say(text);
+    events_.say("explode", [&](util::JsonWriter& j) {
+        j.member("at", util::Significant{double(at), 3});
+    });
 }
 
 void Viewer::openDrops() {
@@ -244,8 +243,9 @@ void Viewer::saveScreenshot(const std::string& path) {
     slots_.finish();
     const VkExtent2D size = presenter_.capturedExtent();
     writePng(path, size.width, size.height, presenter_.capturedRgba());
-    events_.say("screenshot: " + path + " (" + std::to_string(size.width) + "x" +
-                std::to_string(size.height) + ")");
+    events_.say("screenshot", [&](util::JsonWriter& j) {
+        j.member("path", path).member("width", size.width).member("height", size.height);
+    });
 }
 
 PanelInfo Viewer::panelInfo() const {
@@ -362,7 +362,7 @@ void Viewer::updateTitle(double seconds, bool now) {
     if (title_ == text) return;
     title_ = text;
     window_.setTitle(title_);
-    events_.say("title: " + title_);
+    events_.say("title", [&](util::JsonWriter& j) { j.member("text", title_); });
 }
 
 } // namespace app

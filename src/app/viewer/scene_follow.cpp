@@ -32,8 +32,10 @@ void Viewer::follow(SceneState::Change change) {
     if (back) document_.bringBack(back->selection, back->section); // no undo step of them
     rebuildTree(false);
     if (change == Change::Model && scene_.partial()) // the tree is whole before the solids
-        events_.say("loading: tree of " + std::to_string(tree_.size()) + " nodes, " +
-                    std::to_string(scene.objects.size()) + " objects");
+        events_.say("loading", [&](util::JsonWriter& j) {
+            j.member("state", "tree").member("nodes", tree_.size());
+            j.member("objects", scene.objects.size());
+        });
     if (back) {
         camera_ = back->camera;
         selectionChanged();

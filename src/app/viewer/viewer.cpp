@@ -51,9 +51,11 @@ Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, S
       scene_(device_, compiler_, events_, options, presenter_.extent()), slots_(device_),
       input_(*this, window.handle(), std::move(script)) {
     const auto size = window.size(), position = window.position();
-    events_.say("window: " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + " at " +
-                std::to_string(position[0]) + "," + std::to_string(position[1]) + ", " +
-                std::to_string(view_.recentFiles.size()) + " recent files");
+    events_.say("window", [&](util::JsonWriter& j) {
+        j.member("width", size[0]).member("height", size[1]);
+        j.member("x", position[0]).member("y", position[1]);
+        j.member("recent_files", view_.recentFiles.size());
+    });
     // Nothing is open until the model given at start shows (follow, from the frames' poll).
     // The command line's planes, explode and X-ray are the document's from here on; the
     // frames hand them to the renderer (applySettings, showParts).
@@ -93,18 +95,21 @@ void Viewer::selectionChanged() const {
     const auto& info = details.part;
     if (!info || selection.selected().size() > 1) { // a solid or assembly: its count
         const uint32_t count = selection.selected().size();
-        events_.say(count ? "selected: " + std::to_string(count) + " parts" : "selected: none");
+        events_.say("selected", [&](util::JsonWriter& j) {
+            j.member("parts", count).member("part", std::nullopt);
+        });
         return;
     }
     // Named as the assembly names it (its path ends with the object's name), then for a CAD
-    // part its face: "...: board/R1, face 3: cylinder r 0.5 mm, area 3.14159 mm²".
-    const std::string face =
-        details.face && info->face
-            ? ", face " + std::to_string(*info->face) + ": " + scene::describeSurface(*details.face)
-            : "";
-    events_.say("selected: part " + std::to_string(info->uniquePartId) + " (object " +
-                std::to_string(info->object) + ", local part " + std::to_string(info->localPart) +
-                "): " + info->path + face);
+    // part its face: "board/R1", face 3, "cylinder r 0.5 mm, area 3.14159 mm²".
+    const bool face = details.face && info->face;
+    events_.say("selected", [&](util::JsonWriter& j) {
+        j.member("parts", 1).member("part", info->uniquePartId).member("object", info->object);
+        j.member("local_part", info->localPart).member("path", info->path);
+        j.member("face", face ? info->face : std::nullopt);
+        j.member("surface",
+                 face ? std::optional(scene::describeSurface(*details.face)) : std::nullopt);
+    });
 }
 
 void Viewer::keepViewProj(uint64_t frame, const glm::dmat4& viewProj) {
@@ -151,7 +156,7 @@ void Viewer::zoomNow(float steps) {
     const auto point = pointUnderCursor();
     if (!point) {
         camera_.zoom(steps);
-        events_.say("zoom: toward the target");
+        events_.say("zoom", [](util::JsonWriter& j) { j.member("part", std::nullopt); });
         return;
     }
     camera_.zoomToward(*point, steps);
@@ -165,10 +170,11 @@ void Viewer::zoomNow(float steps) {
                                    glm::dvec2(extent.width, extent.height)) -
                          scene_.targets()->pass().sampleZero();
     const glm::uvec2 pixel = picking_.hoverPick()->pixel;
-    char text[160];
-    std::snprintf(text, sizeof text, "zoom: toward part %u at %u,%u, now at %.2f,%.2f",
-                  *picking_.hoverPick()->part, pixel.x, pixel.y, at.x, at.y);
-    events_.say(text);
+    events_.say("zoom", [&](util::JsonWriter& j) {
+        j.member("part", *picking_.hoverPick()->part);
+        j.beginArray("pixel").value(pixel.x).value(pixel.y).endArray();
+        j.beginArray("now_at").value(util::Fixed{at.x, 2}).value(util::Fixed{at.y, 2}).endArray();
+    });
 }
 
 void Viewer::fitView() {
@@ -191,7 +197,7 @@ void Viewer::fitView() {
     } else {
         camera_.fit(bounds, aspect(), span);
     }
-    events_.say(std::string("fit: ") + what);
+    events_.say("fit", [&](util::JsonWriter& j) { j.member("what", what); });
 }
 
 FreeSpan Viewer::panelSpan() const {
@@ -222,30 +228,33 @@ void Viewer::sayFitted() const {
         right = std::max(right, x);
     }
     const FreeSpan span = panelSpan();
-    char text[160];
-    std::snprintf(text, sizeof text, "opened fitted: x %.0f to %.0f, free %.0f to %.0f of %u", left,
-                  right, span.left * float(extent.width), span.right * float(extent.width),
-                  extent.width);
-    events_.say(text);
+    events_.say("opened_fitted", [&](util::JsonWriter& j) {
+        j.member("left", util::Fixed{left, 0}).member("right", util::Fixed{right, 0});
+        j.member("free_left", util::Fixed{span.left * float(extent.width), 0});
+        j.member("free_right", util::Fixed{span.right * float(extent.width), 0});
+        j.member("width", extent.width);
+    });
 }
 
 void Viewer::turnTo(const scene::StandardView& view) {
     camera_.turnTo(view);
-    events_.say(std::string("view: ") + view.name);
+    events_.say("view", [&](util::JsonWriter& j) { j.member("name", view.name); });
 }
 
 void Viewer::setOrtho(bool ortho) {
     settings_.camera.ortho = ortho;
-    events_.say(ortho ? "projection: orthographic" : "projection: perspective");
+    events_.say("projection", [&](util::JsonWriter& j) { j.member("ortho", ortho); });
 }
 
 void Viewer::setXray(bool on) {
     document_.setXray(on); // shown by the next frame's showParts
-    events_.say(on ? "xray: on" : "xray: off");
+    events_.say("xray", [&](util::JsonWriter& j) { j.member("on", on); });
 }
 
 void Viewer::partsChanged() const {
-    events_.say("hidden: " + std::to_string(document_.selection().hidden().size()) + " parts");
+    events_.say("hidden", [&](util::JsonWriter& j) {
+        j.member("parts", document_.selection().hidden().size());
+    });
 }
 
 void Viewer::selectObjects(const std::string& name, SelectMode mode) {
@@ -335,7 +344,9 @@ void Viewer::run() {
     // A load still running stops now: its workers are killed, and the thread waited for at
     // the end is one that has seen the cancel, not one that goes on to the model's end.
     if (const auto loading = scene_.loading(); loading && !loading->stopping) {
-        events_.say("loading: cancelled, the window closed");
+        events_.say("loading", [](util::JsonWriter& j) {
+            j.member("state", "cancelled").member("after", "window closed");
+        });
         scene_.cancelOpen();
     }
     slots_.finish();
@@ -387,10 +398,11 @@ SceneKey Viewer::sceneKey(const render::FrameParams& params) const {
 void Viewer::rest() {
     if (rested_) return;
     rested_ = true;
-    events_.say("rest: " + std::to_string(pacer_.scenePasses()) + " scene passes, " +
-                std::to_string(pacer_.compositions()) + " compositions, " +
-                std::to_string(tileCompositions_) + " of the hovered part's tiles, " +
-                std::to_string(presenter_.keptPanels()) + " frames keeping the panel");
+    events_.say("rest", [&](util::JsonWriter& j) {
+        j.member("scene_passes", pacer_.scenePasses())
+            .member("compositions", pacer_.compositions());
+        j.member("hover_tiles", tileCompositions_).member("panel_kept", presenter_.keptPanels());
+    });
 }
 
 int runViewer(const Options& options) {
@@ -423,12 +435,12 @@ void Viewer::resetSettings() {
         writeSavedSettings(
             savedSettingsPath(), settings_,
             [this](const std::string& message) { scene_.fail(message); }, keptViewText(view_));
-    events_.say("settings: defaults");
+    events_.say("settings", [](util::JsonWriter& j) { j.member("reset", true); });
 }
 
 void Viewer::toggleMeasure() {
     document_.toggleMeasure();
-    events_.say(std::string("measure: ") + (document_.measure().on() ? "on" : "off"));
+    events_.say("measure", [&](util::JsonWriter& j) { j.member("on", document_.measure().on()); });
 }
 
 // The point is where the pick's depth puts the surface, in the view of the newest frame: a
@@ -447,7 +459,11 @@ void Viewer::measured(const render::PickReading& pick) {
         at[i] = points[i].world;
         parts[i] = points[i].part;
     }
-    events_.say("measure: " + measureJson(at, parts, scene_.scene().unit));
+    events_.say("measure", [&](util::JsonWriter& j) {
+        measureMembers(j.member("on", true).beginObject("measured"), at, parts,
+                       scene_.scene().unit);
+        j.endObject();
+    });
 }
 
 } // namespace app

@@ -11,21 +11,21 @@
 #include <string>
 
 #include "app/cli.h"
-#include "app/viewer/state/document.h"
-#include "app/viewer/panel/edge_hover.h"
-#include "app/viewer/state/events.h"
-#include "app/viewer/window/file_chooser.h"
-#include "app/viewer/window/input.h"
-#include "app/viewer/state/inspect_report.h"
-#include "app/viewer/panel/measure_overlay.h"
-#include "app/viewer/state/orbit_camera.h"
-#include "app/viewer/panel/overlays.h"
 #include "app/viewer/pacer.h"
+#include "app/viewer/panel/edge_hover.h"
+#include "app/viewer/panel/measure_overlay.h"
+#include "app/viewer/panel/overlays.h"
 #include "app/viewer/panel/panel.h"
+#include "app/viewer/state/document.h"
+#include "app/viewer/state/events.h"
+#include "app/viewer/state/inspect_report.h"
+#include "app/viewer/state/orbit_camera.h"
 #include "app/viewer/state/part_details.h"
 #include "app/viewer/state/picking.h"
-#include "app/viewer/window/presenter.h"
 #include "app/viewer/state/scene_state.h"
+#include "app/viewer/window/file_chooser.h"
+#include "app/viewer/window/input.h"
+#include "app/viewer/window/presenter.h"
 #include "app/viewer/window/window.h"
 #include "render/frame_slots.h"
 #include "vk/shader_compiler.h"
@@ -60,7 +60,7 @@ class Viewer final : public InputTarget {
     ViewSettings& view() override { return view_; }
     const ViewSettings& view() const override { return view_; }
     OrbitCamera& camera() override { return camera_; }
-    void say(const std::string& line) const override { events_.say(line); }
+    const Events& events() const override { return events_; }
     void selectionChanged() const override;
     void partsChanged() const override;
     void toggleHelp() override; // F1, ?: the help overlay
@@ -155,7 +155,8 @@ class Viewer final : public InputTarget {
     void drawOverlays();                        // help, empty view, notice; undo steps
     std::optional<EmptyReason> emptyView(uint32_t partCount, uint32_t hidden, bool sectionOn,
                                          std::optional<uint32_t> visible) const;
-    void restored(const ShownState& state, const char* what); // undo, redo: the event lines
+    // Undo and redo: the event records (the selection `before` them).
+    void restored(const ShownState& state, const char* what, const scene::PartSet& before);
     // The parts a click at `level` selects around `part` (scene::partsAround).
     scene::PartSet partsAround(uint32_t part, uint32_t level) const;
     void remember(const std::string& source); // a model that opened: the recent files

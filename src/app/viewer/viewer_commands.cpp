@@ -6,39 +6,43 @@
 #include <imgui.h>
 
 #include "app/viewer/commands/commands.h"
-#include "app/viewer/window/screenshot_path.h"
 #include "app/viewer/viewer.h"
+#include "app/viewer/window/screenshot_path.h"
 
 namespace app {
 
 void Viewer::toggleHelp() {
     shell_.help = !shell_.help;
     if (!shell_.help) {
-        events_.say("help: closed");
+        events_.say("help", [](util::JsonWriter& j) { j.member("open", false); });
         return;
     }
-    events_.say("help: " + std::to_string(bindingCount()) + " bindings");
+    events_.say("help", [&](util::JsonWriter& j) {
+        j.member("open", true).member("bindings", bindingCount());
+    });
 }
 
 void Viewer::undo() {
+    const scene::PartSet before = document_.selection().selected();
     if (const auto state = document_.undo())
-        restored(*state, "undo");
+        restored(*state, "undo", before);
     else
-        events_.say("undo: nothing to undo");
+        events_.say("undo", [](util::JsonWriter& j) { j.member("done", false); });
 }
 
 void Viewer::redo() {
+    const scene::PartSet before = document_.selection().selected();
     if (const auto state = document_.redo())
-        restored(*state, "redo");
+        restored(*state, "redo", before);
     else
-        events_.say("redo: nothing to redo");
+        events_.say("redo", [](util::JsonWriter& j) { j.member("done", false); });
 }
 
-// The document has come back to `state`; the selection loses what it hides.
-void Viewer::restored(const ShownState& state, const char* what) {
-    selectionChanged();
+// The document has come back to `state`; the selection (`before` it) lost what it hides.
+void Viewer::restored(const ShownState& state, const char* what, const scene::PartSet& before) {
+    if (document_.selection().selected() != before) selectionChanged();
     partsChanged();
-    events_.say(std::string(what) + ": " + describe(state));
+    events_.say(what, [&](util::JsonWriter& j) { shownMembers(j.member("done", true), state); });
 }
 
 // F12 rather than Ctrl+Shift+S: one key, as in the tools that have a screenshot key (Steam,
@@ -60,7 +64,7 @@ void Viewer::startClean(SceneState::Change change) {
     scene::Section section = document_.section();
     if (newModel && !shell_.firstModel && section.any()) {
         section = {};
-        events_.say("section: off");
+        events_.say("section", [](util::JsonWriter& j) { j.member("on", false); });
     }
     if (newModel) shell_.firstModel = false; // the command line's --section is for its model
     document_.newScene(scene_.scene().uniquePartCount(), section);
@@ -88,7 +92,7 @@ void Viewer::drawOverlays() {
     const scene::Section& section = document_.section();
     if (!ImGui::IsAnyItemActive()) document_.settle();
     for (const ShownState& step : document_.takeSteps())
-        events_.say("undo step: " + describe(step));
+        events_.say("undo_step", [&](util::JsonWriter& j) { shownMembers(j, step); });
     if (document_.shownVersion() != shell_.shownVersion) {
         shell_.shownVersion = document_.shownVersion();
         shell_.changedAt = frameNumber_;
@@ -96,7 +100,7 @@ void Viewer::drawOverlays() {
 
     if (shell_.help) {
         drawHelp(shell_.help);
-        if (!shell_.help) events_.say("help: closed");
+        if (!shell_.help) events_.say("help", [](util::JsonWriter& j) { j.member("open", false); });
     }
     const float width = ImGui::GetIO().DisplaySize.x;
     const FreeSpan span =
@@ -126,7 +130,9 @@ void Viewer::drawOverlays() {
     // Until the model given at start shows, the view says what opens, without a line.
     if (reason != shell_.empty && !scene_.waitingForFirst()) {
         shell_.empty = reason;
-        events_.say("empty: " + (reason.empty() ? std::string("no") : reason));
+        events_.say("empty", [&](util::JsonWriter& j) {
+            j.member("reason", reason.empty() ? std::nullopt : std::optional(reason));
+        });
     }
     if (empty) drawCentred(empty->message, span, 0.5f);
     if (!shell_.notice.empty() && elapsed() < shell_.noticeUntil)

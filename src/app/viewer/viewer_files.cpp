@@ -41,12 +41,12 @@ void Viewer::chooseFile() {
     filters.push_back({"All files", {"*"}});
     if (noChooser_) {
         openBrowser();
-        events_.say("file chooser: none");
+        events_.say("file_chooser", [](util::JsonWriter& j) { j.member("state", "none"); });
         return;
     }
     // The answer wakes the loop, which may be resting in its event wait.
     if (chooser_.start("Open a model - idview", filters, [] { glfwPostEmptyEvent(); }))
-        events_.say("file chooser: open");
+        events_.say("file_chooser", [](util::JsonWriter& j) { j.member("state", "open"); });
 }
 
 void Viewer::focusOpenField() {
@@ -73,11 +73,13 @@ void Viewer::openBrowser() {
 void Viewer::chosen(const ChooserResult& result) {
     switch (result.kind) {
     case ChooserResult::Kind::Chosen:
-        events_.say("file chooser: " + result.path + " (" + result.via + ")");
+        events_.say("file_chooser", [&](util::JsonWriter& j) {
+            j.member("state", "chosen").member("path", result.path).member("via", result.via);
+        });
         input_.onDrop(result.path); // opened as a dropped file
         break;
     case ChooserResult::Kind::Cancelled:
-        events_.say("file chooser: cancelled");
+        events_.say("file_chooser", [](util::JsonWriter& j) { j.member("state", "cancelled"); });
         break;
     case ChooserResult::Kind::Unavailable:
         // The panel's own browser instead, where the model shown lies (else a recent folder,
@@ -87,7 +89,7 @@ void Viewer::chosen(const ChooserResult& result) {
         noChooser_ = true;
         std::fprintf(stderr, "idview: no desktop file chooser: %s; browsing in the panel\n",
                      result.via.c_str());
-        events_.say("file chooser: none");
+        events_.say("file_chooser", [](util::JsonWriter& j) { j.member("state", "none"); });
         break;
     }
 }

@@ -9,6 +9,7 @@
 
 #include "app/cli.h"
 #include "app/viewer/state/document.h"
+#include "app/viewer/state/events.h"
 #include "app/viewer/state/orbit_camera.h"
 #include "app/viewer/state/scene_state.h"
 #include "app/viewer/state/view_settings.h"
@@ -29,9 +30,9 @@ class CommandTarget {
     virtual const ViewSettings& view() const = 0;
     virtual OrbitCamera& camera() = 0;
 
-    virtual void say(const std::string& line) const = 0; // an event line
-    virtual void selectionChanged() const = 0;           // tells the event lines
-    virtual void partsChanged() const = 0;               // the hidden parts: the same
+    virtual const Events& events() const = 0;  // for the commands' event records
+    virtual void selectionChanged() const = 0; // tells the event lines
+    virtual void partsChanged() const = 0;     // the hidden parts: the same
 
     // The window and files.
     virtual void toggleHelp() = 0;

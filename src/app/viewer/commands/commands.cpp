@@ -82,11 +82,12 @@ void screenshot(CommandTarget& viewer, const Argument& argument) {
 
 void panel(CommandTarget& viewer, const Argument& argument) {
     viewer.view().panelVisible = on(argument);
-    viewer.say(on(argument) ? "panel: shown" : "panel: hidden");
+    viewer.events().say("panel", [&](util::JsonWriter& j) { j.member("shown", on(argument)); });
 }
 
 void escape(CommandTarget& viewer, const Argument&) {
-    if (const auto what = cancelOne(viewer)) viewer.say("cancel: " + *what);
+    if (const auto what = cancelOne(viewer))
+        viewer.events().say("cancel", [&](util::JsonWriter& j) { j.member("what", *what); });
 }
 
 std::vector<CommandDef> windowCommands() {
@@ -378,7 +379,8 @@ void execute(Command command, CommandTarget& viewer) {
     const CommandDef& row = definition(command.id);
     if (auto* s = std::get_if<Switch>(&command.argument); s && *s == Switch::Toggle)
         *s = row.isOn(viewer) ? Switch::Off : Switch::On;
-    viewer.say("command: " + commandWords(command));
+    viewer.events().say("command",
+                        [&](util::JsonWriter& j) { j.member("command", commandWords(command)); });
     row.run(viewer, command.argument);
 }
 

@@ -8,9 +8,13 @@
 namespace app {
 namespace {
 
-std::string refText(const std::optional<scene::EdgeRef>& ref) {
-    if (!ref) return "none";
-    return "part " + std::to_string(ref->part) + " edge " + std::to_string(ref->edge);
+// "edge":{"part":P,"edge":E}, or null.
+void edgeMember(util::JsonWriter& json, const std::optional<scene::EdgeRef>& ref) {
+    if (!ref) {
+        json.member("edge", std::nullopt);
+        return;
+    }
+    json.beginObject("edge").member("part", ref->part).member("edge", ref->edge).endObject();
 }
 
 std::optional<scene::EdgeReport> reportOf(const scene::Scene& scene,
@@ -61,13 +65,16 @@ void EdgeHover::tell(const scene::Scene& scene, const Selection& selection, cons
     if (selection.hoveredEdge() != saidHovered_) {
         saidHovered_ = selection.hoveredEdge();
         hovered_ = reportOf(scene, saidHovered_);
-        events.say("edge hovered: " + refText(saidHovered_));
+        events.say("edge_hovered", [&](util::JsonWriter& j) { edgeMember(j, saidHovered_); });
     }
     if (selection.selectedEdge() != saidSelected_) {
         saidSelected_ = selection.selectedEdge();
         selected_ = reportOf(scene, saidSelected_);
-        events.say("edge selected: " + refText(saidSelected_) +
-                   (selected_ ? ": " + scene::describeEdge(*selected_) : ""));
+        events.say("edge_selected", [&](util::JsonWriter& j) {
+            edgeMember(j, saidSelected_);
+            j.member("curve",
+                     selected_ ? std::optional(scene::describeEdge(*selected_)) : std::nullopt);
+        });
     }
 }
 

@@ -80,6 +80,20 @@ FileBrowser::Outcome filterRow(FileBrowser& browser, bool& focus, bool& close) {
     return outcome;
 }
 
+// The file_browser record of a listing: the folder, how many entries show of how many, the
+// first names (folders end in "/") and the highlighted one.
+void listing(util::JsonWriter& json, const FileBrowser& browser) {
+    const auto& shown = browser.shown();
+    json.member("state", "listing").member("folder", browser.folder());
+    json.member("shown", shown.size()).member("of", browser.entryCount());
+    json.beginArray("entries");
+    for (size_t i = 0; i < shown.size() && i < 12; ++i)
+        json.value(shown[i].name + (shown[i].folder ? "/" : ""));
+    json.endArray().member("highlighted", shown.empty()
+                                              ? std::nullopt
+                                              : std::optional(shown[browser.highlighted()].name));
+}
+
 FileBrowser::Outcome entryList(FileBrowser& browser, bool keysMoved) {
     FileBrowser::Outcome outcome;
     const float height = ImGui::GetTextLineHeightWithSpacing() * float(listRows) +
@@ -132,12 +146,14 @@ void drawFileBrowser(std::optional<FileBrowser>& browser, PanelActions& actions,
     textDisabledWrapped(("shows folders and " + scene::extensionList()).c_str());
     ImGui::PopID();
     if (events)
-        if (const auto line = browser->news()) events->say("file browser: " + *line);
+        if (browser->news())
+            events->say("file_browser", [&](util::JsonWriter& j) { listing(j, *browser); });
     if (outcome.open) actions.ask({CommandId::Open, *outcome.open});
     if (outcome.open || close) {
         if (events)
-            events->say(outcome.open ? "file browser: chose " + *outcome.open
-                                     : std::string("file browser: closed"));
+            events->say("file_browser", [&](util::JsonWriter& j) {
+                j.member("state", outcome.open ? "chose" : "closed").member("path", outcome.open);
+            });
         browser.reset();
     }
 }

@@ -94,21 +94,31 @@ void PanelLayout::finish(const Events* events) {
 void PanelLayout::tell(const Events* events) {
     if (!events) return;
     const float top = ImGui::GetWindowPos().y + roomAbove_ - scroll_; // content y 0, in the window
-    auto at = [&](const Mark& m) { return std::to_string(int(std::lround(top + m.y))); };
-    std::string rows = "panel: rows ";
-    for (size_t i = 0; i < marks_.size(); ++i)
-        rows += (i ? ", " : "") + marks_[i].name + " " + at(marks_[i]);
-    if (rows != state_.toldRows) events->say(state_.toldRows = rows);
-    std::string pointer = "panel: pointer row none";
+    auto at = [&](const Mark& m) { return int(std::lround(top + m.y)); };
+    // The text compared with the last told one is the record's own fields.
+    auto told = [&](std::string& last, const char* event, auto fields) {
+        util::JsonWriter json;
+        fields(json.beginObject());
+        if (json.endObject().text() == last) return;
+        last = json.text();
+        events->say(event, fields);
+    };
+    told(state_.toldRows, "panel_rows", [&](util::JsonWriter& j) {
+        j.beginArray("rows");
+        for (const Mark& m : marks_)
+            j.beginObject().member("name", m.name).member("y", at(m)).endObject();
+        j.endArray();
+    });
+    const Mark* pointer = nullptr;
     for (const Mark& m : marks_)
-        if (hovered_ && m.name == state_.anchor)
-            pointer = "panel: pointer row " + m.name + " at " + at(m);
-    if (pointer != state_.toldPointer) events->say(state_.toldPointer = pointer);
-    std::string report =
-        "panel: width " + std::to_string(int(std::lround(ImGui::GetWindowWidth()))) + ", clipped: ";
-    for (size_t i = 0; i < clipped_.size(); ++i) report += (i ? ", " : "") + clipped_[i];
-    if (clipped_.empty()) report += "none";
-    if (report != state_.told) events->say(state_.told = report);
+        if (hovered_ && m.name == state_.anchor) pointer = &m;
+    told(state_.toldPointer, "panel_pointer", [&](util::JsonWriter& j) {
+        j.member("row", pointer ? std::optional(pointer->name) : std::nullopt);
+        j.member("y", pointer ? std::optional(at(*pointer)) : std::nullopt);
+    });
+    told(state_.told, "panel_width", [&](util::JsonWriter& j) {
+        j.member("width", int(std::lround(ImGui::GetWindowWidth()))).array("clipped", clipped_);
+    });
 }
 
 } // namespace app

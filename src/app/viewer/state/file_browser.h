@@ -36,6 +36,7 @@ class FileBrowser {
     // files, each by name without regard to case.
     const std::vector<Entry>& shown() const { return shown_; }
     size_t highlighted() const { return highlighted_; }
+    size_t entryCount() const { return all_.size(); } // in the folder, whatever the filter
     // Why the folder could not be read, or "".
     const std::string& problem() const { return problem_; }
 
@@ -54,7 +55,7 @@ class FileBrowser {
     // A line for the event log: the folder, how many entries show of how many, and the first
     // names.
     std::string describe() const;
-    // describe()'s line when it changed since the last call, for the event lines.
+    // describe()'s line when it changed since the last call, for the event records.
     std::optional<std::string> news();
     // A typed path that led nowhere, until the filter changes.
     const std::string& note() const { return note_; }

@@ -5,17 +5,17 @@
 
 namespace app {
 
-std::string describe(const ShownState& state) {
+void shownMembers(util::JsonWriter& json, const ShownState& state) {
     uint64_t hash = 1469598103934665603ull; // FNV-1a over the hidden IDs
     for (const uint32_t id : state.hidden.ids())
         for (int byte = 0; byte < 4; ++byte) {
             hash ^= (id >> (8 * byte)) & 0xffu;
             hash *= 1099511628211ull;
         }
-    char text[96];
-    std::snprintf(text, sizeof text, "hidden %u parts %016llx, section %s", state.hidden.size(),
-                  static_cast<unsigned long long>(hash), state.section.any() ? "on" : "off");
-    return text;
+    char hex[24];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    json.member("hidden", state.hidden.size()).member("hidden_hash", hex);
+    json.member("section", state.section.any());
 }
 
 void History::reset(const ShownState& now) {

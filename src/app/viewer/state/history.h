@@ -11,6 +11,7 @@
 
 #include "scene/part_set.h"
 #include "scene/section.h"
+#include "util/json_writer.h"
 
 namespace app {
 
@@ -20,9 +21,10 @@ struct ShownState {
     bool operator==(const ShownState&) const = default;
 };
 
-// "hidden 3 parts 8a4f0c21e3d56b70, section off": what the event lines say of a state; the
-// hash names the exact set of hidden parts, so tests compare sets without listing them.
-std::string describe(const ShownState& state);
+// "hidden":3,"hidden_hash":"8a4f0c21e3d56b70","section":false: what the event records say of
+// a state; the hash names the exact set of hidden parts, so tests compare sets without
+// listing them.
+void shownMembers(util::JsonWriter& json, const ShownState& state);
 
 class History {
   public:

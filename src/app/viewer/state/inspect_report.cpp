@@ -10,23 +10,14 @@
 namespace app {
 namespace {
 
-std::string number(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
-
 std::string objectPath(const scene::Scene& scene, uint32_t object) {
     const scene::Object& o = scene.objects[object];
     return !o.path.empty() ? o.path : !o.name.empty() ? o.name : "object " + std::to_string(object);
 }
 
-// The event lines' numbers: enough digits to compare with the headless JSON.
-std::string precise(double value) {
-    return number("%.9g", value);
-}
-std::string unitWord(const scene::LengthUnit& unit) {
-    return unit.symbol.empty() ? "none" : unit.symbol;
+// The event records' numbers: enough digits to compare with the headless JSON.
+util::Significant precise(double value) {
+    return util::Significant{value, 9};
 }
 
 // Named as the clicks named it (A, or A and B), else by its tree node, else by its count.
@@ -127,26 +118,23 @@ void Inspector::forget() {
     worker_.cancel(); // its answer is of the scene before
 }
 
-std::vector<std::string> Inspector::update(const scene::Scene& scene,
-                                           const std::vector<scene::TreeRow>& tree,
-                                           const scene::PartSet& selected, const Things& things) {
-    std::vector<std::string> said;
+void Inspector::update(const scene::Scene& scene, const std::vector<scene::TreeRow>& tree,
+                       const scene::PartSet& selected, const Things& things, const Events& events) {
     const bool changed = !valid_ || selected != selection_ || things.version() != version_;
-    if (changed) ask(scene, selected, things, said);
+    if (changed) ask(scene, selected, things, events);
     // Only the newest question's answer lands: an older one's never shows.
     std::optional<InspectAnswer> answer = worker_.take();
-    if (answer) takeIn(scene, std::move(*answer), said);
-    if (!changed && !answer) return said;
+    if (answer) takeIn(scene, std::move(*answer), events);
+    if (!changed && !answer) return;
     if (report_.selectedParts) report_.selectionName = selectionName(tree, selected, things);
     report_.rows = inspectRows(scene, report_);
-    return said;
 }
 
 // What changed loses its answer at once (it no longer holds); what is still owed, the
 // selection's part, A's and B's distance or both, is asked anew, superseding the question
 // before, whose answer would not be taken.
 void Inspector::ask(const scene::Scene& scene, const scene::PartSet& selected, const Things& things,
-                    std::vector<std::string>& said) {
+                    const Events& events) {
     const bool selectionChanged = !valid_ || selected != selection_;
     const bool thingsChanged = !valid_ || things.version() != version_;
     valid_ = true;
@@ -168,7 +156,11 @@ void Inspector::ask(const scene::Scene& scene, const scene::PartSet& selected, c
         report_.distance.reset();
         report_.computingDistance = report_.a && report_.b;
         const std::string line = thingsLine(things);
-        if (line != saidThings_) said.push_back("inspect things " + line);
+        if (line != saidThings_)
+            events.say("inspect_things", [&](util::JsonWriter& j) {
+                j.member("a", report_.a ? std::optional(report_.a->label) : std::nullopt);
+                j.member("b", report_.b ? std::optional(report_.b->label) : std::nullopt);
+            });
         saidThings_ = line;
     }
     if (!computing()) return worker_.cancel();
@@ -183,12 +175,10 @@ void Inspector::ask(const scene::Scene& scene, const scene::PartSet& selected, c
     worker_.submit([query = std::move(query)](const std::atomic<bool>& cancelled) {
         return answerInspect(query, cancelled);
     });
-    said.push_back("inspect: computing");
+    events.say("inspect_computing");
 }
 
-void Inspector::takeIn(const scene::Scene& scene, InspectAnswer answer,
-                       std::vector<std::string>& said) {
-    const std::string unit = unitWord(scene.unit);
+void Inspector::takeIn(const scene::Scene& scene, InspectAnswer answer, const Events& events) {
     if (answer.selection) {
         InspectReport& got = answer.report;
         report_.selectedParts = got.selectedParts;
@@ -200,21 +190,29 @@ void Inspector::takeIn(const scene::Scene& scene, InspectAnswer answer,
         report_.computingSelection = false;
         if (report_.bounds) {
             const glm::dvec3 size = report_.bounds->max - report_.bounds->min;
-            said.push_back("inspect size " + precise(size.x) + " " + precise(size.y) + " " +
-                           precise(size.z) + " " + unit);
+            events.say("inspect_size", [&](util::JsonWriter& j) {
+                j.beginArray("size");
+                for (int i = 0; i < 3; ++i) j.value(precise(size[i]));
+                scene::unitMember(j.endArray(), scene.unit);
+            });
         }
         if (!report_.solids.empty()) {
             const scene::SolidProperties sum =
                 report_.sum ? *report_.sum : scene::sumProperties(report_.solids);
-            said.push_back("inspect solids " + std::to_string(sum.object) + " volume " +
-                           precise(sum.volume) + " area " + precise(sum.area) + " " + unit);
+            events.say("inspect_solids", [&](util::JsonWriter& j) {
+                j.member("solids", sum.object).member("volume", precise(sum.volume));
+                scene::unitMember(j.member("area", precise(sum.area)), scene.unit);
+            });
         }
     }
     if (answer.distance) {
         report_.distance = answer.measured;
         report_.computingDistance = false;
         if (report_.distance)
-            said.push_back("inspect distance " + precise(report_.distance->distance) + " " + unit);
+            events.say("inspect_distance", [&](util::JsonWriter& j) {
+                j.member("distance", precise(report_.distance->distance));
+                scene::unitMember(j, scene.unit);
+            });
     }
 }
 

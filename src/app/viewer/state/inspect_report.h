@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/viewer/state/events.h"
 #include "app/viewer/state/things.h"
 #include "scene/assembly_tree.h"
 #include "scene/inspect.h"
@@ -72,13 +73,11 @@ class Inspector {
         return !valid_ || selected != selection_ || things.version() != version_ ||
                worker_.landed();
     }
-    // Asks when the selection or things changed, takes a landed answer in; returns the event
-    // lines to say: at once "inspect things A|B" and, where there is work, "inspect:
-    // computing"; with the answer, a frame or more later, "inspect size ...", "inspect solids
-    // ..." and "inspect distance D mm".
-    std::vector<std::string> update(const scene::Scene& scene,
-                                    const std::vector<scene::TreeRow>& tree,
-                                    const scene::PartSet& selected, const Things& things);
+    // Asks when the selection or things changed, takes a landed answer in; says the event
+    // records: at once inspect_things and, where there is work, inspect_computing; with the
+    // answer, a frame or more later, inspect_size, inspect_solids and inspect_distance.
+    void update(const scene::Scene& scene, const std::vector<scene::TreeRow>& tree,
+                const scene::PartSet& selected, const Things& things, const Events& events);
     void forget(); // a new scene: the same part IDs name other parts
     const InspectReport& report() const { return report_; }
     // Whether an answer is still being worked out (the script's `inspect ready` waits).
@@ -90,8 +89,8 @@ class Inspector {
 
   private:
     void ask(const scene::Scene& scene, const scene::PartSet& selected, const Things& things,
-             std::vector<std::string>& said);
-    void takeIn(const scene::Scene& scene, InspectAnswer answer, std::vector<std::string>& said);
+             const Events& events);
+    void takeIn(const scene::Scene& scene, InspectAnswer answer, const Events& events);
 
     bool valid_ = false;
     scene::PartSet selection_;

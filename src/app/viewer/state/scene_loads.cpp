@@ -111,22 +111,23 @@ SceneState::Change SceneState::showPartial(scene::CadPartial partial, SceneSetti
 void SceneState::tellPartial(PendingOpen& open, bool first, double uploadMs) {
     const double seconds = std::chrono::duration<double>(Clock::now() - open.start).count();
     const scene::CadPartial& p = *partial_;
-    char text[200];
-    if (first) {
-        std::snprintf(text, sizeof text,
-                      "loading: assembly shown: %zu objects, %u of %u solids after %.2f s",
-                      base_.scene.objects.size(), p.solidsReady, p.solidsTotal, seconds);
-        events_.say(text);
-    }
-    std::snprintf(text, sizeof text,
-                  "loading: partial: %u of %u solids, %u lost, uploaded in %.1f ms at %.2f s",
-                  p.solidsReady, p.solidsTotal, p.solidsLost, uploadMs, seconds);
-    events_.say(text);
+    const util::Fixed after{seconds, 2};
+    if (first)
+        events_.say("loading", [&](util::JsonWriter& j) {
+            j.member("state", "assembly").member("objects", base_.scene.objects.size());
+            j.member("shown", p.solidsReady).member("of", p.solidsTotal).member("seconds", after);
+        });
+    events_.say("loading", [&](util::JsonWriter& j) {
+        j.member("state", "partial").member("shown", p.solidsReady).member("of", p.solidsTotal);
+        j.member("lost", p.solidsLost).member("upload_ms", util::Fixed{uploadMs, 1});
+        j.member("seconds", after);
+    });
     if (open.saidSolids || p.solidsReady == 0) return;
     open.saidSolids = true;
-    std::snprintf(text, sizeof text, "loading: %u of %u solids shown after %.2f s", p.solidsReady,
-                  p.solidsTotal, seconds);
-    events_.say(text);
+    events_.say("loading", [&](util::JsonWriter& j) {
+        j.member("state", "shown").member("shown", p.solidsReady).member("of", p.solidsTotal);
+        j.member("seconds", after);
+    });
 }
 
 SceneState::Change SceneState::finishOpen(SceneSettings& settings) {
@@ -154,11 +155,11 @@ SceneState::Change SceneState::whole(PendingOpen& done, LoadedScene loaded,
         return ended(done, e.what(), settings);
     }
     if (done.shown) {
-        char text[160];
-        std::snprintf(text, sizeof text, "loading: complete: %zu objects after %.2f s",
-                      base_.scene.objects.size(),
-                      std::chrono::duration<double>(Clock::now() - done.start).count());
-        events_.say(text);
+        const double seconds = std::chrono::duration<double>(Clock::now() - done.start).count();
+        events_.say("loading", [&](util::JsonWriter& j) {
+            j.member("state", "complete").member("objects", base_.scene.objects.size());
+            j.member("seconds", util::Fixed{seconds, 2});
+        });
     }
     partial_.reset();
     incomplete_.clear();
@@ -177,15 +178,18 @@ SceneState::Change SceneState::ended(PendingOpen& done, const std::string& error
                                      SceneSettings& settings) {
     if (done.ending == PendingOpen::Ending::Stop) {
         if (!done.shown) {
-            events_.say("loading: stopped before anything was shown");
+            events_.say("loading", [](util::JsonWriter& j) {
+                j.member("state", "stopped").member("shown", 0);
+            });
             return Change::None;
         }
         before_.reset();
         incomplete_ = missingLine(*partial_);
         const scene::CadPartial& p = *partial_;
-        events_.say("loading: stopped: " + std::to_string(p.solidsReady) + " of " +
-                    std::to_string(p.solidsTotal) + " solids shown, " +
-                    std::to_string(p.solidsTotal - p.solidsReady) + " missing");
+        events_.say("loading", [&](util::JsonWriter& j) {
+            j.member("state", "stopped").member("shown", p.solidsReady).member("of", p.solidsTotal);
+            j.member("missing", p.solidsTotal - p.solidsReady);
+        });
         return Change::None;
     }
     if (done.ending == PendingOpen::Ending::Load && done.first) {
@@ -194,9 +198,12 @@ SceneState::Change SceneState::ended(PendingOpen& done, const std::string& error
     }
     fail(error); // "<file>: cancelled" after Cancel
     if (done.ending == PendingOpen::Ending::Cancel)
-        events_.say(!done.shown ? "loading: cancelled"
-                    : before_   ? "loading: cancelled, back to " + before_->base.source
-                                : std::string("loading: cancelled, nothing open"));
+        events_.say("loading", [&](util::JsonWriter& j) {
+            j.member("state", "cancelled");
+            j.member("after", !done.shown ? "nothing shown" : before_ ? "back" : "nothing open");
+            j.member("back_to",
+                     before_ && done.shown ? std::optional(before_->base.source) : std::nullopt);
+        });
     return done.shown ? restoreBefore(done.settings, settings) : Change::None;
 }
 
@@ -264,9 +271,10 @@ scene::Bounds SceneState::extent() const {
 
 void SceneState::opened() {
     const scene::Scene& scene = atRest();
-    events_.say("opened: " + base_.source + " (" + std::to_string(scene.objects.size()) +
-                " objects, " + std::to_string(scene.uniquePartCount()) + " parts, " +
-                std::to_string(scene.drawnTriangleCount()) + " triangles)");
+    events_.say("opened", [&](util::JsonWriter& j) {
+        j.member("path", base_.source).member("objects", scene.objects.size());
+        j.member("parts", scene.uniquePartCount()).member("triangles", scene.drawnTriangleCount());
+    });
 }
 
 } // namespace app

@@ -154,7 +154,7 @@ void SceneState::reloadShaders() {
         return;
     }
     error_.clear();
-    events_.say("shaders reloaded");
+    events_.say("shaders_reloaded");
 }
 
 bool SceneState::showHidden(const scene::PartSet& hidden) {
@@ -184,7 +184,9 @@ void SceneState::waitFor(std::optional<Wait>& wait, const render::PipelineBuild&
                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                            std::chrono::duration<double>(build.seconds));
     wait = Wait{build.name, start, std::move(then)};
-    events_.say("pipeline: building " + build.name);
+    events_.say("pipeline", [&](util::JsonWriter& j) {
+        j.member("state", "building").member("name", build.name);
+    });
 }
 
 void SceneState::arrived(std::optional<Wait>& wait) {
@@ -195,9 +197,10 @@ void SceneState::arrived(std::optional<Wait>& wait) {
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wait->start).count();
-    char text[32];
-    std::snprintf(text, sizeof text, " (%.2f s)", seconds);
-    events_.say("pipeline: ready " + wait->pipeline + text);
+    events_.say("pipeline", [&](util::JsonWriter& j) {
+        j.member("state", "ready").member("name", wait->pipeline);
+        j.member("seconds", util::Fixed{seconds, 2});
+    });
     wait.reset();
 }
 
