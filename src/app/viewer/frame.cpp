@@ -88,7 +88,7 @@ void Viewer::drawPanel() {
     // Sizes, properties and distances: worked out when the selection or A and B changed.
     inspect_.update(scene_.scene(), tree_, document_.selection().selected(), document_.things(),
                     events_);
-    if (view_.panelVisible) act(app::drawPanel(settings_, view_, panelInfo()));
+    act(view_.panelVisible ? app::drawPanel(settings_, view_, panelInfo()) : PanelActions{});
     // The box being dragged, over everything.
     if (const auto box = input_.boxInWindow())
         ImGui::GetForegroundDrawList()->AddRect(ImVec2(box->first.x, box->first.y),
@@ -108,9 +108,14 @@ void Viewer::drawPanel() {
 }
 
 // The panel's buttons and widgets ask for commands as keys and script lines do (commands.h).
+// A widget let go settles its held change into one undo step; the steps the document
+// recorded since the last frame, by keys, scripts or the panel, are told.
 void Viewer::act(const PanelActions& actions) {
     for (const Command& command : actions.commands) execute(command, *this);
-    if (actions.section) document_.setSection(actions.section->section, actions.section->held);
+    if (actions.section) document_.setSection(*actions.section, actions.held);
+    if (!actions.held) document_.settle();
+    for (const ShownState& step : document_.takeSteps())
+        events_.say("undo_step", [&](util::JsonWriter& j) { shownMembers(j, step); });
 }
 
 void Viewer::applySettings() {

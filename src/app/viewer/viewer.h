@@ -145,7 +145,7 @@ class Viewer final : public InputTarget {
     // frame.cpp: the steps of one frame.
     void drawFrame(const FrameWants& wants);
     void drawPanel();
-    void act(const PanelActions& actions); // the commands the panel asked for
+    void act(const PanelActions& actions); // the panel's commands and edits; undo steps told
     void applySettings();
     void openDrops();
     void follow(SceneState::Change change);

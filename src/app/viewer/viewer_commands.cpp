@@ -85,14 +85,10 @@ std::optional<EmptyReason> Viewer::emptyView(uint32_t partCount, uint32_t hidden
     return whyEmpty(partCount, hidden, sectionOn, visible);
 }
 
-// After the panel, inside the ImGui frame: the undo steps the document recorded are told,
-// and a held widget let go settles its change into one.
+// After the panel, inside the ImGui frame.
 void Viewer::drawOverlays() {
     const Selection& selection = document_.selection();
     const scene::Section& section = document_.section();
-    if (!ImGui::IsAnyItemActive()) document_.settle();
-    for (const ShownState& step : document_.takeSteps())
-        events_.say("undo_step", [&](util::JsonWriter& j) { shownMembers(j, step); });
     if (document_.shownVersion() != shell_.shownVersion) {
         shell_.shownVersion = document_.shownVersion();
         shell_.changedAt = frameNumber_;

@@ -256,12 +256,11 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
         propertiesSection(info, layout);
     layout.mark("Section");
     if (ImGui::CollapsingHeader("Section")) {
-        // The document's planes, edited as a copy: a change goes back as the actions' section,
-        // held while a widget is (a slider's drag makes one undo step, Document::setSection).
+        // The document's planes, edited as a copy: a change goes back as the actions' section.
         scene::Section section = info.section;
         sectionPlanes(section, info.bounds, info.selectedPlane,
                       info.scene ? info.scene->unit : scene::generatedUnit(), layout);
-        if (section != info.section) actions.section = {section, ImGui::IsAnyItemActive()};
+        if (section != info.section) actions.section = section;
     }
     layout.mark("Rendering");
     if (ImGui::CollapsingHeader("Rendering")) {
@@ -280,6 +279,7 @@ PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& i
     if (ImGui::CollapsingHeader("Which technique?")) ImGui::TextWrapped("%s", techniqueHelp);
     layout.finish(info.events);
     ImGui::End();
+    actions.held = ImGui::IsAnyItemActive();
     return actions;
 }
 

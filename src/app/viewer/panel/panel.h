@@ -15,8 +15,8 @@
 
 #include "app/cli.h"
 #include "app/viewer/commands/command.h"
-#include "app/viewer/state/events.h"
 #include "app/viewer/panel/panel_layout.h"
+#include "app/viewer/state/events.h"
 #include "app/viewer/state/selection.h"
 #include "app/viewer/state/view_settings.h"
 #include "render/draw_list.h"
@@ -45,12 +45,10 @@ inline constexpr float minTreeRows = 3.0f, maxTreeRows = 40.0f;
 // script line would give (commands.h), for the viewer to run once the panel is drawn.
 struct PanelActions {
     std::vector<Command> commands;
-    // The section planes as the panel's widgets left them, and whether one is still held.
-    struct SectionEdit {
-        scene::Section section;
-        bool held = false;
-    };
-    std::optional<SectionEdit> section;
+    // The section planes as the panel's widgets left them.
+    std::optional<scene::Section> section;
+    // A widget is held (a slider being dragged): its change is one undo step once let go.
+    bool held = false;
     void ask(Command command) { commands.push_back(std::move(command)); }
 };
 
