@@ -13,7 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "app/viewer/command.h"
 #include "app/viewer/events.h"
 #include "app/viewer/file_browser.h"
@@ -136,7 +136,7 @@ struct PanelInfo {
     std::vector<float> gpuHistory; // the last ~200 scene pass times, oldest first
     PartLine hovered, selected;
     uint32_t selectedCount = 0, hiddenCount = 0;
-    bool xray = false;                 // Options::xray
+    bool xray = false;                 // LiveSettings::xray
     std::bitset<commandCount> enabled; // by CommandId: what can do anything now (commands.h)
     bool can(CommandId id) const { return enabled[size_t(id)]; }
     const scene::PartSet* selectedParts = nullptr; // the tree highlights rows all selected
@@ -159,6 +159,6 @@ struct PanelInfo {
 
 // Draws the panel; the user's changes land in `settings` (scene, render, animation) and
 // `view`, what it asks of the parts in the result.
-PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info);
+PanelActions drawPanel(LiveSettings& settings, ViewSettings& view, const PanelInfo& info);
 
 } // namespace app

@@ -11,7 +11,7 @@ namespace app {
 namespace {
 
 // Edges, projection, vsync and the standard views.
-void viewRow(const Options& settings, const ViewSettings& view, PanelActions& actions) {
+void viewRow(const LiveSettings& settings, const ViewSettings& view, PanelActions& actions) {
     switchCheckbox("edges", CommandId::Edges, settings.render.edges.on, actions);
     switchCheckbox("ortho", CommandId::Ortho, settings.camera.ortho, actions, true);
     switchCheckbox("vsync", CommandId::Vsync, view.vsync, actions, true);
@@ -59,7 +59,7 @@ void hideRow(const PanelInfo& info, PanelActions& actions) {
 
 // The exploded view, by assembly level (scene/explode.h); --animate's loop, for the
 // benchmark, has no place here.
-void explodeSlider(const Options& settings, PanelActions& actions) {
+void explodeSlider(const LiveSettings& settings, PanelActions& actions) {
     float explode = settings.animation.explode;
     ImGui::SliderFloat(fitLabel("explode").c_str(), &explode, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
@@ -71,7 +71,7 @@ void explodeSlider(const Options& settings, PanelActions& actions) {
 
 } // namespace
 
-void toolsSection(const Options& settings, const ViewSettings& view, const PanelInfo& info,
+void toolsSection(const LiveSettings& settings, const ViewSettings& view, const PanelInfo& info,
                   PanelActions& actions, PanelLayout& layout) {
     layout.mark("view");
     viewRow(settings, view, actions);

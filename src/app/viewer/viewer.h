@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "app/viewer/edge_hover.h"
 #include "app/viewer/events.h"
 #include "app/viewer/file_chooser.h"
@@ -31,6 +31,20 @@
 
 namespace app {
 
+struct Options; // cli.h: the command line
+
+// What the viewer reads once, at start, from the command line and the saved settings; all it
+// changes while it runs is the LiveSettings it is handed.
+struct ViewerStart {
+    WindowPlace window; // --size, --window-pos; Viewer::aspect's until the first frame
+    std::string device; // --device
+    std::string shaderDir;
+    bool validation = false, syncValidation = false;
+    std::string script;        // --script (script.h)
+    bool printEvents = false;  // --print-events: the event lines on stdout (events.h)
+    bool savedSettings = true; // read and write saved_settings.h's file (--no-saved-settings)
+};
+
 // Opens the window on the options' scene and runs until it is closed (window close button,
 // Ctrl+Q, or a script's quit), then keeps its settings, the window's size
 // and place, the panel's layout and the recent files for the next run unless
@@ -41,7 +55,8 @@ int runViewer(const Options& options);
 
 class Viewer {
   public:
-    Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script);
+    Viewer(const ViewerStart& start, const LiveSettings& settings, Window& window,
+           vk::Instance& instance, ScriptPlayer script);
     ~Viewer();
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
@@ -49,8 +64,8 @@ class Viewer {
     void run();
 
     // What input acts on.
-    Options& settings() { return settings_; } // applied at the start of the next frame
-    const Options& settings() const { return settings_; }
+    LiveSettings& settings() { return settings_; } // applied at the start of the next frame
+    const LiveSettings& settings() const { return settings_; }
     ViewSettings& view() { return view_; }
     const ViewSettings& view() const { return view_; }
     OrbitCamera& camera() { return camera_; }
@@ -70,10 +85,10 @@ class Viewer {
     // whole scene, in the area beside the panel.
     void fitView();
     // The view command (1, 3, 7, 0): a standard view, at the same distance. The ortho command
-    // (O): the projection, a setting (Options::camera).
+    // (O): the projection, a setting (LiveSettings::camera).
     void turnTo(const scene::StandardView& view);
     void setOrtho(bool ortho);
-    // The xray command (X): X-ray on or off (Options::xray).
+    // The xray command (X): X-ray on or off (LiveSettings::xray).
     void setXray(bool on);
     void screenshot(const std::string& path) { screenshotPath_ = path; }
     // The next frame draws everything anew, as after a change: the scene pass, the whole
@@ -173,7 +188,8 @@ class Viewer {
     // scene of it, or the whole), so that its lines act on a model.
     double scriptSeconds() const;
 
-    Options settings_; // the scene, render and animation settings, edited in place
+    const ViewerStart startup_;
+    LiveSettings settings_; // the scene, render and animation settings, edited in place
     ViewSettings view_;
     Window& window_;
     Events events_;
@@ -226,7 +242,8 @@ class Viewer {
     std::string title_, screenshotPath_;
     // The selection and hidden parts last handed to the renderer.
     scene::PartSet shownSelected_, shownHidden_;
-    bool shownXray_ = false; // Options::xray as the renderer's hidden and translucent parts show it
+    bool shownXray_ =
+        false; // LiveSettings::xray as the renderer's hidden and translucent parts show it
     uint32_t saidVisible_ = UINT32_MAX;   // the visible part count last told
     std::optional<uint32_t> saidHovered_; // the hovered part last told
     Shell shell_;                         // the help, undo history and overlays (overlays.h)
