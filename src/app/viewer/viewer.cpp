@@ -41,8 +41,14 @@ ViewSettings keptView(const ViewerStart& start) {
 }
 
 ViewerStart viewerStart(const Options& options) {
-    return {windowPlace(options),   options.device, options.shaderDir,   options.validation,
-            options.syncValidation, options.script, options.printEvents, options.savedSettings};
+    return {.window = windowPlace(options),
+            .device = options.device,
+            .shaderDir = options.shaderDir,
+            .validation = options.validation,
+            .syncValidation = options.syncValidation,
+            .script = options.script,
+            .printEvents = options.printEvents,
+            .savedSettings = options.savedSettings};
 }
 
 } // namespace
