@@ -203,10 +203,10 @@ TEST(ExplodeMaths, LoopGoesOutAndBackInFourSeconds) {
 
 TEST(AnimationFlags, ParseAnimateAndTime) {
     const app::Options o = app::parseArgs({"--animate", "--time", "1.5"});
-    EXPECT_TRUE(o.animation.animate);
-    ASSERT_TRUE(o.animation.time.has_value());
-    EXPECT_EQ(*o.animation.time, 1.5f);
-    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).animation.time.has_value());
+    EXPECT_TRUE(o.live.animation.animate);
+    ASSERT_TRUE(o.live.animation.time.has_value());
+    EXPECT_EQ(*o.live.animation.time, 1.5f);
+    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).live.animation.time.has_value());
     EXPECT_THROW(app::parseArgs({"--time", "1"}), app::UsageError); // needs --animate
     EXPECT_THROW(app::parseArgs({"--animate", "--time", "soon"}), app::UsageError);
     EXPECT_THROW(app::parseArgs({"--animate", "--time=-1"}), app::UsageError);
@@ -215,9 +215,9 @@ TEST(AnimationFlags, ParseAnimateAndTime) {
 }
 
 TEST(AnimationFlags, ExplodeTakesZeroToOne) {
-    EXPECT_EQ(app::parseArgs({"--explode", "0.25"}).animation.explode, 0.25f);
-    EXPECT_EQ(app::parseArgs({"--explode=1"}).animation.explode, 1.0f);
-    EXPECT_EQ(app::parseArgs(std::vector<std::string>{}).animation.explode, 0.0f);
+    EXPECT_EQ(app::parseArgs({"--explode", "0.25"}).live.animation.explode, 0.25f);
+    EXPECT_EQ(app::parseArgs({"--explode=1"}).live.animation.explode, 1.0f);
+    EXPECT_EQ(app::parseArgs(std::vector<std::string>{}).live.animation.explode, 0.0f);
     for (const char* bad : {"1.5", "-0.1", "far", "nan"}) {
         try {
             app::parseArgs({"--explode", bad});
@@ -232,7 +232,7 @@ TEST(AnimationFlags, ExplodeTakesZeroToOne) {
 
 app::Options renderOptions(const render::Technique& technique, const render::DrawMode& mode) {
     app::Options o = testing_support::headlessOptions(W, H, 2);
-    o.render = testing_support::settingsFor(technique, mode);
+    o.live.render = testing_support::settingsFor(technique, mode);
     return o;
 }
 
@@ -270,7 +270,7 @@ TEST_P(GpuAnimation, MatchesCpuExplodedSceneBitForBitAndPicksWhatItShows) {
     const float explode = 0.6f;
 
     app::Options animated = renderOptions(*c.technique, *c.mode);
-    animated.animation.explode = explode;
+    animated.live.animation.explode = explode;
     // Picks across the image: they run before the timed frames, at the same explode.
     for (uint32_t y = 5; y < H; y += 18)
         for (uint32_t x = 5; x < W; x += 25) animated.picks.push_back({x, y});
@@ -321,8 +321,8 @@ TEST(GpuAnimationLoop, AnimateAtTimeFollowsTheLoop) {
     Fixture& f = fixture();
     const render::Technique& technique = *render::partIdTechniques().back();
     app::Options o = renderOptions(technique, render::defaultDrawMode());
-    o.animation.animate = true;
-    o.animation.time = 1.3f;
+    o.live.animation.animate = true;
+    o.live.animation.time = 1.3f;
     const app::HeadlessResult gpu = app::renderHeadless(o, f.loaded.scene, f.camera);
     const app::HeadlessResult cpu = app::renderHeadless(
         renderOptions(technique, render::defaultDrawMode()),
@@ -429,7 +429,7 @@ TEST(GpuExplode, HeadlessFlagDrawsAndPicksTheExplodedScene) {
     EXPECT_GT(idDifference(cpu.ids, rest.ids, W).pixels, cpu.ids.size() / 20) << "nothing moved";
 
     app::Options picking = still;
-    picking.animation.explode = explode;
+    picking.live.animation.explode = explode;
     picking.picks = pixelsInsideParts(cpu.ids);
     ASSERT_GT(picking.picks.size(), 10u);
     const app::HeadlessResult picked = app::renderHeadless(picking, f.loaded.scene, camera);
@@ -462,7 +462,7 @@ TEST(GpuAnimationLoop, ExplodeZeroAfterMotionRestoresTheRestPose) {
     std::vector<std::optional<uint32_t>> picked;
     {
         app::Offscreen rig(instance, o);
-        rig.renderer.setScene(f.loaded.scene, o.render);
+        rig.renderer.setScene(f.loaded.scene, o.live.render);
         render::FrameParams params = app::cameraFrame(f.camera, rig.extent);
         params.pickPixel = pixel;
         uint64_t frame = 0;

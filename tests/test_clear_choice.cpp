@@ -82,9 +82,9 @@ std::pair<ClearPath, ClearTiming> autoWith(const std::filesystem::path& home, ui
                                            const FileText& text) {
     cadtest::CacheHome cacheHome(home);
     app::Options o = testing_support::headlessOptions(32, 24);
-    o.scene.builtin = "procedural:preset=small";
-    o.render.clear = ClearPath::Auto;
-    o.render.pipeline.msaa = msaa;
+    o.live.scene.builtin = "procedural:preset=small";
+    o.live.render.clear = ClearPath::Auto;
+    o.live.render.pipeline.msaa = msaa;
     vk::Instance instance({true, {}, false});
     std::pair<ClearPath, ClearTiming> result;
     {
@@ -96,8 +96,8 @@ std::pair<ClearPath, ClearTiming> autoWith(const std::filesystem::path& home, ui
         if (const auto contents = text(id)) {
             EXPECT_EQ(util::writeFileAtomically(file, {*contents}), "");
         }
-        const app::LoadedScene loaded = app::loadScene(o.scene);
-        rig.renderer.setScene(loaded.scene, o.render);
+        const app::LoadedScene loaded = app::loadScene(o.live.scene);
+        rig.renderer.setScene(loaded.scene, o.live.render);
         result.first = rig.renderer.clearPath();
         result.second = rig.renderer.clearTiming(msaa).value_or(ClearTiming{});
         EXPECT_TRUE(std::filesystem::exists(file)) << "the timings are kept";

@@ -274,7 +274,7 @@ TEST(ClearPaths, XrayPicksAndPartSetsAreTheSameOnBothPaths) {
     ASSERT_FALSE(configs.empty());
     app::Options o = testing_support::headlessOptions(W, H);
     o.selectRect = render::PartSetQuery{{W / 2 - 10, H / 2 - 6}, {W / 2 + 10, H / 2 + 6}};
-    o.xray = true;
+    o.live.xray = true;
     o.hide = {0, 1, 2, 3, 40, 41};
     // Background, then points in the box: some of them on the selection.
     o.picks = {{0, 0}};
@@ -429,7 +429,7 @@ TEST(ClearPaths, TheRendererReportsThePathItDrawsWith) {
         uint64_t frame = 0;
         for (uint32_t msaa : {1u, 4u})
             for (ClearPath path : {ClearPath::Pass, ClearPath::Compute, ClearPath::Auto}) {
-                render::RenderSettings settings = o.render;
+                render::RenderSettings settings = o.live.render;
                 settings.pipeline.msaa = msaa;
                 settings.clear = path;
                 const std::string name =

@@ -22,18 +22,18 @@ TEST(Cli, DefaultsWithoutArguments) {
     EXPECT_FALSE(o.validation);
     EXPECT_EQ(o.width, 1280u);
     EXPECT_EQ(o.height, 720u);
-    EXPECT_EQ(o.scene.builtin, ""); // the default model
-    EXPECT_EQ(o.scene.model, "");
-    EXPECT_EQ(o.scene.parts, scene::PartMode::Primitives);
-    EXPECT_EQ(o.scene.copies, 1u);
-    EXPECT_EQ(o.render.pipeline.searchBatch, 16u);
+    EXPECT_EQ(o.live.scene.builtin, ""); // the default model
+    EXPECT_EQ(o.live.scene.model, "");
+    EXPECT_EQ(o.live.scene.parts, scene::PartMode::Primitives);
+    EXPECT_EQ(o.live.scene.copies, 1u);
+    EXPECT_EQ(o.live.render.pipeline.searchBatch, 16u);
     EXPECT_FALSE(o.stats);
-    EXPECT_EQ(o.render.pipeline.technique, &render::defaultTechnique());
-    EXPECT_EQ(o.render.pipeline.mode, &render::defaultDrawMode());
-    EXPECT_FLOAT_EQ(o.render.shading.partWeight, 0.5f);
+    EXPECT_EQ(o.live.render.pipeline.technique, &render::defaultTechnique());
+    EXPECT_EQ(o.live.render.pipeline.mode, &render::defaultDrawMode());
+    EXPECT_FLOAT_EQ(o.live.render.shading.partWeight, 0.5f);
     // The defaults are the settings structs' own, untouched by parsing.
-    EXPECT_EQ(o.render, render::RenderSettings{});
-    EXPECT_EQ(o.scene, app::SceneSettings{});
+    EXPECT_EQ(o.live.render, render::RenderSettings{});
+    EXPECT_EQ(o.live.scene, app::SceneSettings{});
 }
 
 TEST(Cli, EveryFlagIsApplied) {
@@ -64,9 +64,9 @@ TEST(Cli, EveryFlagIsApplied) {
     EXPECT_EQ(o.frames, 7u);
     EXPECT_EQ(o.screenshot, "a.png");
     EXPECT_EQ(o.idImage, "a.ids");
-    EXPECT_EQ(o.scene.builtin, "tiles");
-    EXPECT_FLOAT_EQ(o.render.shading.partWeight, 0.25f);
-    EXPECT_TRUE(o.render.shading.colorizeDraws);
+    EXPECT_EQ(o.live.scene.builtin, "tiles");
+    EXPECT_FLOAT_EQ(o.live.render.shading.partWeight, 0.25f);
+    EXPECT_TRUE(o.live.render.shading.colorizeDraws);
     EXPECT_TRUE(o.validation);
     EXPECT_EQ(o.device, "llvm");
     EXPECT_EQ(o.shaderDir, "/x");
@@ -75,18 +75,18 @@ TEST(Cli, EveryFlagIsApplied) {
     EXPECT_TRUE(parseArgs({"--help"}).help);
     Options m = parseArgs({"--model", "a.glb", "--parts", "components", "--copies", "3", "--stats",
                            "--search-batch", "8", "--export", "out.glb"});
-    EXPECT_EQ(m.scene.model, "a.glb");
-    EXPECT_EQ(m.scene.parts, scene::PartMode::Components);
-    EXPECT_EQ(m.scene.copies, 3u);
-    EXPECT_EQ(m.render.pipeline.searchBatch, 8u);
+    EXPECT_EQ(m.live.scene.model, "a.glb");
+    EXPECT_EQ(m.live.scene.parts, scene::PartMode::Components);
+    EXPECT_EQ(m.live.scene.copies, 3u);
+    EXPECT_EQ(m.live.render.pipeline.searchBatch, 8u);
     EXPECT_TRUE(m.stats);
     EXPECT_EQ(m.exportPath, "out.glb");
-    EXPECT_EQ(parseArgs({"--scene", "procedural:preset=car-like,seed=42"}).scene.builtin,
+    EXPECT_EQ(parseArgs({"--scene", "procedural:preset=car-like,seed=42"}).live.scene.builtin,
               "procedural:preset=car-like,seed=42");
-    EXPECT_EQ(parseArgs({"--scene=procedural"}).scene.builtin, "procedural");
+    EXPECT_EQ(parseArgs({"--scene=procedural"}).live.scene.builtin, "procedural");
     // Section planes fill the slots in order.
     const scene::Section cut =
-        parseArgs({"--section", "z,-2,flip", "--section", "x,1"}).render.section;
+        parseArgs({"--section", "z,-2,flip", "--section", "x,1"}).live.render.section;
     EXPECT_EQ(cut.planes[0], scene::axisPlane(2, -2.0f, true));
     EXPECT_EQ(cut.planes[1], scene::axisPlane(0, 1.0f));
     EXPECT_FALSE(cut.planes[2].on);
@@ -189,10 +189,10 @@ TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
     EXPECT_TRUE(o.benchmark && o.headless);
     EXPECT_EQ(o.width, 2560u);
     EXPECT_EQ(o.height, 1440u);
-    EXPECT_EQ(o.render.pipeline.msaa, 4u);
-    EXPECT_EQ(o.scene.copies, 3u);
+    EXPECT_EQ(o.live.render.pipeline.msaa, 4u);
+    EXPECT_EQ(o.live.scene.copies, 3u);
     EXPECT_EQ(o.frames, 200u);
-    EXPECT_EQ(o.render.pipeline.searchBatch, 16u);
+    EXPECT_EQ(o.live.render.pipeline.searchBatch, 16u);
     // Every part-ID technique of the registry and every mode; the floor is the benchmark's own.
     EXPECT_EQ(o.benchmarkTechniques, render::partIdTechniques());
     EXPECT_EQ(o.benchmarkModes.size(), render::drawModes().size());
@@ -201,9 +201,9 @@ TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
         "--size", "64x48", "--benchmark", "--msaa", "1", "--renderer",
         std::string(ids[1]->name) + "," + ids[0]->name, "--colorize-draws"});
     EXPECT_EQ(o.width, 64u);
-    EXPECT_EQ(o.render.pipeline.msaa, 1u);
-    EXPECT_EQ(o.scene.copies, 3u);
-    EXPECT_TRUE(o.render.shading.colorizeDraws);
+    EXPECT_EQ(o.live.render.pipeline.msaa, 1u);
+    EXPECT_EQ(o.live.scene.copies, 3u);
+    EXPECT_TRUE(o.live.render.shading.colorizeDraws);
     EXPECT_EQ(o.benchmarkTechniques, (std::vector<const render::Technique*>{ids[1], ids[0]}));
     EXPECT_EQ(app::modeList("all").size(), render::drawModes().size());
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--mode", "push,mdi-attribute"}),
@@ -214,21 +214,21 @@ TEST(Cli, BenchmarkDefaultsFollowTheSeedTableAndYieldToFlags) {
 
 TEST(Cli, LevelsOfDetail) {
     const Options o = parseArgs({"--lod-levels", "4", "--lod-level", "3"});
-    EXPECT_EQ(o.scene.lodLevels, 4u);
-    EXPECT_EQ(o.scene.lodLevel, 3u);
+    EXPECT_EQ(o.live.scene.lodLevels, 4u);
+    EXPECT_EQ(o.live.scene.lodLevel, 3u);
     const Options none = parseArgs({});
-    EXPECT_EQ(none.scene.lodLevels, 1u);
-    EXPECT_EQ(none.scene.lodLevel, 0u);
-    EXPECT_EQ(none.render.lod.errorPixels, 0.0f);
+    EXPECT_EQ(none.live.scene.lodLevels, 1u);
+    EXPECT_EQ(none.live.scene.lodLevel, 0u);
+    EXPECT_EQ(none.live.render.lod.errorPixels, 0.0f);
     // An error builds every level unless told how many.
     const Options chosen = parseArgs({"--lod-error", "1.5"});
-    EXPECT_EQ(chosen.render.lod.errorPixels, 1.5f);
-    EXPECT_EQ(chosen.scene.lodLevels, scene::maxLevels);
-    EXPECT_EQ(parseArgs({"--lod-error", "2", "--lod-levels", "2"}).scene.lodLevels, 2u);
+    EXPECT_EQ(chosen.live.render.lod.errorPixels, 1.5f);
+    EXPECT_EQ(chosen.live.scene.lodLevels, scene::maxLevels);
+    EXPECT_EQ(parseArgs({"--lod-error", "2", "--lod-levels", "2"}).live.scene.lodLevels, 2u);
     // The benchmark takes a list: its rows, and the largest for the levels built.
     const Options bench = parseArgs({"--benchmark", "--lod-error", "0,1,0.5"});
     EXPECT_EQ(bench.benchmarkLodErrors, (std::vector<float>{0.0f, 1.0f, 0.5f}));
-    EXPECT_EQ(bench.render.lod.errorPixels, 1.0f);
+    EXPECT_EQ(bench.live.render.lod.errorPixels, 1.0f);
     EXPECT_EQ(parseArgs({"--benchmark"}).benchmarkLodErrors, std::vector<float>{0.0f});
 }
 
@@ -238,7 +238,7 @@ TEST(Cli, PickAndMsaaFlags) {
     ASSERT_EQ(o.picks.size(), 2u);
     EXPECT_EQ(o.picks[1], (app::Options::Pixel{99, 49}));
     EXPECT_EQ(o.selects.size(), 1u);
-    EXPECT_EQ(o.render.pipeline.msaa, 8u);
+    EXPECT_EQ(o.live.render.pipeline.msaa, 8u);
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--size", "100x50", "--pick", "100,0"}),
                  app::UsageError);
     EXPECT_THROW(app::parseArgs(std::vector<std::string>{"--pick", "3"}), app::UsageError);
@@ -267,10 +267,10 @@ TEST(Benchmark, PercentileIsNearestRank) {
 
 TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
     Options d = parseArgs(std::vector<std::string>{});
-    EXPECT_EQ(d.render.pipeline.nsearch, render::NarySearch{});
-    EXPECT_FLOAT_EQ(d.render.draws.visible, 1.0f);
-    EXPECT_FALSE(d.render.shading.ignoreMaterials);
-    EXPECT_EQ(d.scene.copyAxes, scene::COPY_XY);
+    EXPECT_EQ(d.live.render.pipeline.nsearch, render::NarySearch{});
+    EXPECT_FLOAT_EQ(d.live.render.draws.visible, 1.0f);
+    EXPECT_FALSE(d.live.render.shading.ignoreMaterials);
+    EXPECT_EQ(d.live.scene.copyAxes, scene::COPY_XY);
     const render::Technique* nary = nullptr;
     for (const auto& t : render::techniques())
         if (t.narySearch && !nary) nary = &t;
@@ -278,17 +278,18 @@ TEST(Cli, NarySearchVisibleMaterialsAndCopyAxes) {
     Options o = parseArgs({"--renderer", nary->name, "--nsearch-n", "5", "--nsearch-guess=on",
                            "--nsearch-linear", "0", "--nsearch-steps", "64", "--visible", "0.25",
                            "--ignore-materials", "--copy-axes", "zx"});
-    EXPECT_EQ(o.render.pipeline.technique, nary);
-    EXPECT_EQ(o.render.pipeline.nsearch, (render::NarySearch{5, true, 0, 64}));
-    EXPECT_FLOAT_EQ(o.render.draws.visible, 0.25f);
-    EXPECT_TRUE(o.render.shading.ignoreMaterials);
-    EXPECT_EQ(o.scene.copyAxes, scene::COPY_X | scene::COPY_Z);
-    EXPECT_TRUE(parseArgs({"--nsearch-guess", "on"}).render.pipeline.nsearch.guess);
-    EXPECT_EQ(parseArgs({"--nsearch-n", "16", "--nsearch-linear", "64"}).render.pipeline.nsearch.n,
-              16u);
+    EXPECT_EQ(o.live.render.pipeline.technique, nary);
+    EXPECT_EQ(o.live.render.pipeline.nsearch, (render::NarySearch{5, true, 0, 64}));
+    EXPECT_FLOAT_EQ(o.live.render.draws.visible, 0.25f);
+    EXPECT_TRUE(o.live.render.shading.ignoreMaterials);
+    EXPECT_EQ(o.live.scene.copyAxes, scene::COPY_X | scene::COPY_Z);
+    EXPECT_TRUE(parseArgs({"--nsearch-guess", "on"}).live.render.pipeline.nsearch.guess);
+    EXPECT_EQ(
+        parseArgs({"--nsearch-n", "16", "--nsearch-linear", "64"}).live.render.pipeline.nsearch.n,
+        16u);
     // Every technique of the registry is a valid --renderer, the no-id floor included.
     for (const auto& t : render::techniques())
-        EXPECT_EQ(parseArgs({"--renderer", t.name}).render.pipeline.technique, &t) << t.name;
+        EXPECT_EQ(parseArgs({"--renderer", t.name}).live.render.pipeline.technique, &t) << t.name;
     const std::vector<std::vector<std::string>> bad = {
         {"--nsearch-n", "2"},       {"--nsearch-n", "17"},    {"--nsearch-guess", "yes"},
         {"--nsearch-linear", "65"}, {"--nsearch-steps", "0"}, {"--nsearch-steps", "65"},
@@ -322,15 +323,15 @@ TEST(Cli, PartFlags) {
     EXPECT_EQ(*o.selectRect, (render::PartSetQuery{{10, 5}, {90, 40}}));
     EXPECT_EQ(o.hide, (std::vector<uint32_t>{3, 1, 4}));
     EXPECT_TRUE(o.visibleParts);
-    EXPECT_TRUE(o.render.edges.on);
-    EXPECT_EQ(o.render.edges.width, 3u);
-    EXPECT_EQ(o.render.edges.color, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
+    EXPECT_TRUE(o.live.render.edges.on);
+    EXPECT_EQ(o.live.render.edges.width, 3u);
+    EXPECT_EQ(o.live.render.edges.color, glm::vec3(1.0f, 128.0f / 255.0f, 0.0f));
     EXPECT_EQ(app::parseArgs(std::vector<std::string>{"--isolate", "7"}).isolate,
               std::vector<uint32_t>{7});
-    EXPECT_TRUE(app::parseArgs(std::vector<std::string>{"--xray"}).xray);
+    EXPECT_TRUE(app::parseArgs(std::vector<std::string>{"--xray"}).live.xray);
     const app::Options d;
-    EXPECT_FALSE(d.render.edges.on);
-    EXPECT_FALSE(d.xray);
+    EXPECT_FALSE(d.live.render.edges.on);
+    EXPECT_FALSE(d.live.xray);
     EXPECT_NE(app::usage().find("(default 101014)"), std::string::npos); // the edge colour's
     for (const auto& bad : std::vector<std::vector<std::string>>{
              {"--size", "100x50", "--select-rect", "0,0,100,10"}, // outside the image
@@ -366,11 +367,11 @@ TEST(Cli, InspectionFlags) {
 
 TEST(Cli, CadCacheAndTriangleLimitFlags) {
     const app::Options d;
-    EXPECT_TRUE(d.scene.cadCache);
-    EXPECT_EQ(d.scene.cad.maxTriangles, scene::kDefaultMaxTriangles);
+    EXPECT_TRUE(d.live.scene.cadCache);
+    EXPECT_EQ(d.live.scene.cad.maxTriangles, scene::kDefaultMaxTriangles);
     const auto o = app::parseArgs(std::vector<std::string>{"--no-cache", "--max-triangles=5000"});
-    EXPECT_FALSE(o.scene.cadCache);
-    EXPECT_EQ(o.scene.cad.maxTriangles, 5000u);
+    EXPECT_FALSE(o.live.scene.cadCache);
+    EXPECT_EQ(o.live.scene.cad.maxTriangles, 5000u);
     const std::string text = app::usage();
     for (const std::string& needle : std::vector<std::string>{
              "--no-cache", "--max-triangles N", std::to_string(scene::kDefaultMaxTriangles)})
@@ -383,13 +384,13 @@ TEST(Cli, CadCacheAndTriangleLimitFlags) {
 
 TEST(Cli, CadTessellationFlags) {
     const app::Options d;
-    EXPECT_EQ(d.scene.cad.deflection, 0.0);
-    EXPECT_EQ(d.scene.cad.angularDeflection, 0.5);
+    EXPECT_EQ(d.live.scene.cad.deflection, 0.0);
+    EXPECT_EQ(d.live.scene.cad.angularDeflection, 0.5);
     auto o = app::parseArgs(std::vector<std::string>{"--model", "part.STEP", "--deflection", "0.25",
                                                      "--angular-deflection=0.3"});
-    EXPECT_EQ(o.scene.model, "part.STEP");
-    EXPECT_FLOAT_EQ(float(o.scene.cad.deflection), 0.25f);
-    EXPECT_FLOAT_EQ(float(o.scene.cad.angularDeflection), 0.3f);
+    EXPECT_EQ(o.live.scene.model, "part.STEP");
+    EXPECT_FLOAT_EQ(float(o.live.scene.cad.deflection), 0.25f);
+    EXPECT_FLOAT_EQ(float(o.live.scene.cad.angularDeflection), 0.3f);
     const std::string text = app::usage();
     for (const char* needle : {"--deflection", "--angular-deflection", ".step", "0.1%"})
         EXPECT_NE(text.find(needle), std::string::npos) << needle;
@@ -404,16 +405,16 @@ TEST(Cli, CadTessellationFlags) {
 // lists them; --ortho switches the projection. Neither is set by default.
 TEST(Cli, ViewAndOrthoFlags) {
     const Options none = parseArgs(std::vector<std::string>{});
-    EXPECT_EQ(none.camera.standard, nullptr);
-    EXPECT_FALSE(none.camera.ortho);
+    EXPECT_EQ(none.live.camera.standard, nullptr);
+    EXPECT_FALSE(none.live.camera.ortho);
     for (const scene::StandardView& view : scene::standardViews()) {
         const Options o = parseArgs({"--view", view.name});
-        EXPECT_EQ(o.camera.standard, &view) << view.name;
-        EXPECT_FALSE(o.camera.ortho);
-        EXPECT_EQ(parseArgs({"--view=" + std::string(view.name), "--ortho"}).camera.standard,
+        EXPECT_EQ(o.live.camera.standard, &view) << view.name;
+        EXPECT_FALSE(o.live.camera.ortho);
+        EXPECT_EQ(parseArgs({"--view=" + std::string(view.name), "--ortho"}).live.camera.standard,
                   &view);
     }
-    EXPECT_TRUE(parseArgs({"--ortho"}).camera.ortho);
+    EXPECT_TRUE(parseArgs({"--ortho"}).live.camera.ortho);
     try {
         parseArgs({"--view", "sideways"});
         ADD_FAILURE() << "--view sideways was accepted";

@@ -45,7 +45,7 @@ struct Drawing {
             const scene::Camera& camera, bool edges)
         : rig(instance, o), readback(rig.device, rig.extent),
           params(app::cameraFrame(camera, rig.extent)) {
-        render::RenderSettings settings = o.render;
+        render::RenderSettings settings = o.live.render;
         settings.edges.on = edges;
         rig.renderer.setScene(scene, settings);
     }
@@ -178,7 +178,7 @@ TEST_P(Composition, AloneDrawsWhatAScenePassWithTheSameStateDraws) {
     const scene::Camera camera = app::initialCamera(loaded, float(W) / float(H));
 
     app::Options o = testing_support::headlessOptions(W, H);
-    o.render.pipeline.msaa = msaa;
+    o.live.render.pipeline.msaa = msaa;
     vk::Instance instance({true, {}, false});
     {
         Drawing d(instance, o, scene, camera, edges);

@@ -64,7 +64,7 @@ void alongThePath(const char* technique, Before&& before, Check&& check) {
         *render::findTechnique(technique), *render::findDrawMode("mdi-baseinstance"));
     settings.culling.mode = render::CullMode::Occlusion;
     app::Options o = testing_support::headlessOptions(W, H);
-    o.render = settings;
+    o.live.render = settings;
     vk::Instance instance({true, {}, false});
     {
         app::Offscreen rig(instance, o);

@@ -89,7 +89,7 @@ std::vector<uint32_t> twoFrameImage(const scene::Scene& s, const render::RenderS
                                     uint32_t& validationMessages) {
     app::Options o = testing_support::headlessOptions(SW, SH);
     o.shaderDir = shaderDir;
-    o.render = settings;
+    o.live.render = settings;
     vk::Instance instance({true, {}, false});
     std::vector<uint32_t> ids;
     {
@@ -340,15 +340,15 @@ TEST(CullingSamples, APartShowingOnlyInLaterSamplesIsDrawnFirst) {
 
     for (const char* mode : {"mdi-baseinstance", "mdi-attribute"}) {
         app::Options o = testing_support::headlessOptions(SW, SH);
-        o.render = culled("vertex-fs", mode, render::CullMode::Occlusion);
-        o.render.pipeline.msaa = 4;
+        o.live.render = culled("vertex-fs", mode, render::CullMode::Occlusion);
+        o.live.render.pipeline.msaa = 4;
         vk::Instance instance({true, {}, false});
         std::vector<uint32_t> ids;
         std::vector<uint8_t> color;
         gpu::CullStats stats{};
         {
             app::Offscreen rig(instance, o);
-            rig.renderer.setScene(s, o.render);
+            rig.renderer.setScene(s, o.live.render);
             const app::Readback readback(rig.device, rig.extent);
             render::FrameParams params;
             params.viewProj = testing_support::flatViewProj();

@@ -91,7 +91,7 @@ TEST(DepthPrecision, FacesATenthOfAMillimetreApartAKilometreAwayStayDistinct) {
                 std::string(backFirst ? "back first" : "front first") +
                 (cull == render::CullMode::Off ? ", culling off" : ", occlusion");
             app::Options o = testing_support::headlessOptions(W, H);
-            o.render.culling.mode = cull;
+            o.live.render.culling.mode = cull;
             const app::HeadlessResult r = app::renderHeadless(o, g.scene, camera);
             EXPECT_EQ(r.validationMessages, 0u) << name;
             ASSERT_EQ(r.ids.size(), size_t(W) * H) << name;

@@ -196,9 +196,9 @@ TEST(HeadlessRenderAssembly, IdsNamePartsAndAgreeWithRaycast) {
 TEST(HeadlessRenderAssembly, ShadingOptionsChangeColoursButNotIds) {
     scene::Scene s = scene::makeTiles();
     app::Options plain = testOptions(160, 100);
-    plain.render.shading.partWeight = 0.0f;
+    plain.live.render.shading.partWeight = 0.0f;
     app::Options colorized = plain;
-    colorized.render.shading.colorizeDraws = true;
+    colorized.live.render.shading.colorizeDraws = true;
     HeadlessResult a = renderChecked(plain, s, scene::tilesCamera());
     HeadlessResult b = renderChecked(colorized, s, scene::tilesCamera());
     EXPECT_TRUE(testing_support::sameIds(a.ids, b.ids, plain.width));
@@ -275,7 +275,7 @@ TEST(HeadlessRenderScenes, StandardViewsInBothProjectionsAgreeWithRaycast) {
 TEST(HeadlessRenderScenes, OrthoLightsEveryPointFromTheViewsDirection) {
     const scene::Scene s = scene::makeTiles();
     app::Options o = testOptions(160, 100);
-    o.render.shading.partWeight = 0.0f;
+    o.live.render.shading.partWeight = 0.0f;
     scene::Camera camera = scene::tilesCamera();
     auto colours = [&](bool ortho) {
         camera.ortho = ortho;

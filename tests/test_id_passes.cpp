@@ -59,7 +59,7 @@ Fixture& fixture(Detail detail) {
         fx.section.planes[0] =
             scene::axisPlane(2, fx.camera.target.z, fx.camera.eye.z < fx.camera.target.z);
     app::Options o = testing_support::headlessOptions(W, H);
-    o.render.section = fx.section;
+    o.live.render.section = fx.section;
     fx.ids = app::renderHeadless(o, fx.loaded.scene, fx.camera).ids;
     return fx;
 }
@@ -405,7 +405,7 @@ TEST(Hide, ShowingAllRestoresTheImage) {
     Fixture& f = fixture(Detail::Full);
     app::Options o = testing_support::headlessOptions(W, H);
     app::Offscreen rig(*new vk::Instance({true, {}, false}), o); // the instance lives on
-    rig.renderer.setScene(f.loaded.scene, o.render);
+    rig.renderer.setScene(f.loaded.scene, o.live.render);
     const VkPipeline plain = rig.renderer.pipeline();
     scene::PartSet hidden(f.loaded.scene.uniquePartCount());
     hidden.insert(0);

@@ -27,7 +27,7 @@ TEST(KeptView, WindowGeometryIsKeptAsFlagsAndTheCommandLineWins) {
     o.width = 900;
     o.height = 560;
     o.windowPos = std::array<int, 2>{-1200, 40}; // a monitor left of the primary one
-    const std::string text = app::savedSettingsText(o);
+    const std::string text = app::savedSettingsText(o.live, app::windowPlace(o));
     EXPECT_NE(text.find("\n--size 900x560\n"), std::string::npos) << text;
     EXPECT_NE(text.find("\n--window-pos -1200,40\n"), std::string::npos) << text;
     Warnings w;
@@ -40,12 +40,14 @@ TEST(KeptView, WindowGeometryIsKeptAsFlagsAndTheCommandLineWins) {
     args.insert(args.end(), {"--size", "720x450"}); // given when the viewer starts
     EXPECT_EQ(app::parseArgs(args, app::viewerDefaults()).width, 720u);
     // Reset to defaults is about how the scene is drawn, not where the window is.
-    app::resetSavedSettings(o);
+    app::resetSavedSettings(o.live);
     EXPECT_EQ(o.width, 900u);
     EXPECT_EQ(o.windowPos, (std::array<int, 2>{-1200, 40}));
     // Nothing known: no line.
-    EXPECT_EQ(app::savedSettingsText(app::viewerDefaults()).find("--window-pos"),
-              std::string::npos);
+    EXPECT_EQ(
+        app::savedSettingsText(app::viewerDefaults().live, app::windowPlace(app::viewerDefaults()))
+            .find("--window-pos"),
+        std::string::npos);
 }
 
 TEST(KeptView, WindowPosTakesTwoWholeNumbers) {

@@ -38,7 +38,7 @@ struct Fixture {
 
 app::Options options(uint32_t msaa) {
     app::Options o = testing_support::headlessOptions(W, H);
-    o.render.pipeline.msaa = msaa;
+    o.live.render.pipeline.msaa = msaa;
     return o;
 }
 

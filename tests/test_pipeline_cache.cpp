@@ -148,7 +148,7 @@ TEST_F(PipelineDiskCache, ColdRunWritesItAndTheNextCreatesItsPipelinesFromIt) {
         EXPECT_EQ(cache.file(), written[0]);
         EXPECT_EQ(cacheInitialBytes[cache.handle()], blobBytes) << "made from the file's blob";
         const size_t before = pipelineCaches.size() - cache.created(); // the renderer's made
-        rig.renderer.setScene(scene_->scene, options().render);
+        rig.renderer.setScene(scene_->scene, options().live.render);
         // Every pipeline of the warm start, as many as the cold one made, from that cache.
         EXPECT_EQ(cache.created(), coldCaches_.size());
         EXPECT_EQ(pipelineCaches.size() - before, coldCaches_.size());
@@ -169,7 +169,7 @@ TEST_F(PipelineDiskCache, NoCacheNeitherReadsNorWrites) {
     ASSERT_EQ(before.size(), 1u);
     const auto written = fs::last_write_time(before[0]);
     app::Options o = options();
-    o.scene.cadCache = false;
+    o.live.scene.cadCache = false;
     const app::HeadlessResult off = render(o);
     EXPECT_EQ(off.pipelineCache, "off");
     EXPECT_EQ(off.validationMessages, 0u);

@@ -111,9 +111,9 @@ TEST(ProgressLines, LoadsReportOnStderrInAFileOnlyWithProgress) {
 
 TEST(ProgressLines, TheFlagReachesTheSceneSettings) {
     EXPECT_FALSE(app::SceneSettings{}.progress);
-    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).scene.progress);
+    EXPECT_FALSE(app::parseArgs(std::vector<std::string>{}).live.scene.progress);
     EXPECT_TRUE(
-        app::parseArgs(std::vector<std::string>{"--headless", "--progress"}).scene.progress);
+        app::parseArgs(std::vector<std::string>{"--headless", "--progress"}).live.scene.progress);
     EXPECT_NE(app::usage().find("--progress"), std::string::npos);
 }
 

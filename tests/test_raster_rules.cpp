@@ -89,10 +89,10 @@ struct Drawn {
 // The hardware's ID image: vertex-fs in push mode, culling off.
 Drawn draw(const scene::Scene& s, uint32_t msaa) {
     app::Options o = testing_support::headlessOptions(W, H);
-    o.render = testing_support::settingsFor(*render::findTechnique("vertex-fs"),
-                                            render::defaultDrawMode());
-    o.render.culling.mode = render::CullMode::Off;
-    o.render.pipeline.msaa = msaa;
+    o.live.render = testing_support::settingsFor(*render::findTechnique("vertex-fs"),
+                                                 render::defaultDrawMode());
+    o.live.render.culling.mode = render::CullMode::Off;
+    o.live.render.pipeline.msaa = msaa;
     vk::Instance instance({true, {}, false});
     Drawn drawn;
     {
@@ -100,7 +100,7 @@ Drawn draw(const scene::Scene& s, uint32_t msaa) {
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(rig.device.physical(), &props);
         drawn.subpixelBits = props.limits.subPixelPrecisionBits;
-        rig.renderer.setScene(s, o.render);
+        rig.renderer.setScene(s, o.live.render);
         uint64_t frame = 0;
         drawn.ids = testing_support::renderIds(rig, frame);
     }

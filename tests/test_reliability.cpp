@@ -109,8 +109,8 @@ TEST(Reliability, HundredSwitchesKeepHostMemoryFlat) {
 
 TEST(Reliability, DeviceMemoryIsReturnedAtTeardown) {
     app::Options o = testing_support::headlessOptions(32, 32);
-    o.scene.builtin = "tiles";
-    const app::LoadedScene loaded = app::loadScene(o.scene);
+    o.live.scene.builtin = "tiles";
+    const app::LoadedScene loaded = app::loadScene(o.live.scene);
     const render::RenderSettings settings =
         testing_support::settingsFor(render::techniques()[1], render::drawModes()[1]);
     vk::Instance instance({true, {}});
@@ -119,7 +119,7 @@ TEST(Reliability, DeviceMemoryIsReturnedAtTeardown) {
         const auto empty = rig.device.liveMemory();
         rig.renderer.setScene(loaded.scene, settings);
         EXPECT_GT(rig.device.liveMemory().bytes, empty.bytes);
-        rig.renderer.setScene(app::loadScene(o.scene).scene, settings); // replaces, never adds
+        rig.renderer.setScene(app::loadScene(o.live.scene).scene, settings); // replaces, never adds
     }
     EXPECT_EQ(instance.validationMessages(), 0u);
 }

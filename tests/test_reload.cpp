@@ -40,7 +40,7 @@ app::Options copiedShaders(const std::string& name) {
     fs::remove_all(dir);
     fs::copy(IDVIEW_SOURCE_SHADER_DIR, dir, fs::copy_options::recursive);
     app::Options o;
-    o.scene.builtin = "tiles";
+    o.live.scene.builtin = "tiles";
     o.width = 64;
     o.height = 48;
     o.shaderDir = dir.string();
@@ -54,7 +54,7 @@ size_t covered(const std::vector<uint32_t>& ids) {
 TEST(ShaderReload, EditsTakeEffectAndBrokenShadersKeepTheLastGoodPipeline) {
     const app::Options o = copiedShaders("idview-reload-");
     const fs::path dir = o.shaderDir;
-    const app::LoadedScene loaded = app::loadScene(o.scene);
+    const app::LoadedScene loaded = app::loadScene(o.live.scene);
     // The last part-ID technique with a lookup file of its own whose scene pass writes the
     // part (a visibility buffer writes a payload, and its shading pass the part), in an
     // indirect mode.
@@ -105,7 +105,7 @@ TEST(ShaderReload, EditsTakeEffectAndBrokenShadersKeepTheLastGoodPipeline) {
 TEST(ShaderReload, CullingEditsTakeEffectInAStillView) {
     const app::Options o = copiedShaders("idview-reload-cull-");
     const fs::path dir = o.shaderDir;
-    const app::LoadedScene loaded = app::loadScene(o.scene);
+    const app::LoadedScene loaded = app::loadScene(o.live.scene);
     vk::Instance instance({true, {}});
     {
         app::Offscreen rig(instance, o);
@@ -134,7 +134,7 @@ TEST(ShaderReload, CullingEditsTakeEffectInAStillView) {
 TEST(ShaderReload, VisibilityShadingEditsTakeEffect) {
     const app::Options o = copiedShaders("idview-reload-vis-");
     const fs::path dir = o.shaderDir;
-    const app::LoadedScene loaded = app::loadScene(o.scene);
+    const app::LoadedScene loaded = app::loadScene(o.live.scene);
     vk::Instance instance({true, {}});
     {
         app::Offscreen rig(instance, o);

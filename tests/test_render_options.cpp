@@ -84,10 +84,10 @@ TEST(Visible, HalfTheObjectsShowOnlyTheirOwnParts) {
 TEST(IgnoreMaterials, WithoutPartColourEveryPixelIsNeutralGrey) {
     const scene::Scene& s = fixture().loaded.scene;
     app::Options o = options();
-    o.render.shading.partWeight = 0.0f;
-    o.render.pipeline.technique = render::partIdTechniques().back();
+    o.live.render.shading.partWeight = 0.0f;
+    o.live.render.pipeline.technique = render::partIdTechniques().back();
     const app::HeadlessResult plain = app::renderHeadless(o, s, fixture().camera);
-    o.render.shading.ignoreMaterials = true;
+    o.live.render.shading.ignoreMaterials = true;
     const app::HeadlessResult grey = app::renderHeadless(o, s, fixture().camera);
     EXPECT_EQ(plain.validationMessages + grey.validationMessages, 0u);
     ASSERT_EQ(grey.color.size(), size_t(4) * grey.ids.size());
@@ -107,7 +107,7 @@ TEST(IgnoreMaterials, WithoutPartColourEveryPixelIsNeutralGrey) {
     EXPECT_GT(coloured, 0u) << "the default shows material colours";
     EXPECT_FALSE(testing_support::sameColours(grey.color, plain.color, o.width));
     // With part colours back, the neutral base lets them through: no longer all grey.
-    o.render.shading.partWeight = 0.5f;
+    o.live.render.shading.partWeight = 0.5f;
     const app::HeadlessResult tinted = app::renderHeadless(o, s, fixture().camera);
     EXPECT_FALSE(testing_support::sameColours(tinted.color, grey.color, o.width));
 }

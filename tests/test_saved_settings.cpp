@@ -38,22 +38,22 @@ struct Warnings {
 // Every kept setting away from its default.
 Options changed() {
     Options o = app::viewerDefaults();
-    render::PipelineKey& key = o.render.pipeline;
+    render::PipelineKey& key = o.live.render.pipeline;
     key.technique = render::findTechnique("tri-fs");
     key.mode = render::findDrawMode("push");
     key.msaa = 4;
-    o.render.clear = render::ClearPath::Compute;
+    o.live.render.clear = render::ClearPath::Compute;
     key.searchBatch = 7;
     key.nsearch = {5, false, 3, 9};
-    o.render.draws.sortDraws = false;
-    o.render.shading = {0.3125f, true, true, true};
-    o.render.edges.on = true;
-    o.render.edges.width = 2;
-    o.render.edges.color = app::parseColor("--edge-color", "a0b1c2");
-    o.render.culling.mode = render::CullMode::Frustum;
-    o.scene.lodLevels = 4;
-    o.render.lod.errorPixels = 1.37f;
-    o.camera.ortho = true;
+    o.live.render.draws.sortDraws = false;
+    o.live.render.shading = {0.3125f, true, true, true};
+    o.live.render.edges.on = true;
+    o.live.render.edges.width = 2;
+    o.live.render.edges.color = app::parseColor("--edge-color", "a0b1c2");
+    o.live.render.culling.mode = render::CullMode::Frustum;
+    o.live.scene.lodLevels = 4;
+    o.live.render.lod.errorPixels = 1.37f;
+    o.live.camera.ortho = true;
     return o;
 }
 
@@ -62,9 +62,9 @@ Options changed() {
 // The viewer opens on what README's "Which technique?" recommends; headless does not.
 TEST(SavedSettings, ViewerOpensOnTheRecommendedTechnique) {
     const Options viewer = app::viewerDefaults();
-    EXPECT_STREQ(viewer.render.pipeline.technique->name, "vertex-fs");
-    EXPECT_STREQ(viewer.render.pipeline.mode->name, "mdi-baseinstance");
-    EXPECT_EQ(app::parseArgs(std::vector<std::string>{}).render.pipeline.technique,
+    EXPECT_STREQ(viewer.live.render.pipeline.technique->name, "vertex-fs");
+    EXPECT_STREQ(viewer.live.render.pipeline.mode->name, "mdi-baseinstance");
+    EXPECT_EQ(app::parseArgs(std::vector<std::string>{}).live.render.pipeline.technique,
               &render::defaultTechnique());
     EXPECT_NE(app::usage().find("the viewer opens on vertex-fs"), std::string::npos);
     EXPECT_NE(app::usage().find("the viewer opens on mdi-baseinstance"), std::string::npos);
@@ -80,17 +80,18 @@ TEST(SavedSettings, HeadlessOnlyFlagsAreNamed) {
 
 TEST(SavedSettings, RoundTripThroughTheFlagTable) {
     const Options o = changed();
-    const std::string text = app::savedSettingsText(o);
+    const std::string text = app::savedSettingsText(o.live, app::windowPlace(o));
     Warnings w;
     const Options back = app::parseArgs(app::savedArgs(text, "t", w.warn()), app::viewerDefaults());
     EXPECT_TRUE(w.lines.empty()) << w.lines.front();
-    EXPECT_EQ(back.render, o.render) << text;
-    EXPECT_EQ(back.scene.lodLevels, 4u);
-    EXPECT_TRUE(back.camera.ortho);
+    EXPECT_EQ(back.live.render, o.live.render) << text;
+    EXPECT_EQ(back.live.scene.lodLevels, 4u);
+    EXPECT_TRUE(back.live.camera.ortho);
     EXPECT_NE(text.find("\n--no-sort-draws\n"), std::string::npos) << text;
     EXPECT_NE(text.find("\n--renderer tri-fs\n"), std::string::npos) << text;
     // The defaults write no setting at all: only the comment line.
-    const std::string none = app::savedSettingsText(app::viewerDefaults());
+    const std::string none =
+        app::savedSettingsText(app::viewerDefaults().live, app::windowPlace(app::viewerDefaults()));
     EXPECT_EQ(none.find("\n--"), std::string::npos) << none;
     EXPECT_EQ(none.back(), '\n');
 }
@@ -113,17 +114,18 @@ TEST(SavedSettings, CommandLineWinsAndNoSavedSettingsIgnoresTheFile) {
     const std::string path = (folder.path / "idview" / "viewer.conf").string();
     Warnings w;
     // Nothing kept yet: the viewer's defaults.
-    EXPECT_EQ(app::viewerOptions({}, path, w.warn()).render, app::viewerDefaults().render);
-    app::writeSavedSettings(path, changed(), w.warn());
+    EXPECT_EQ(app::viewerOptions({}, path, w.warn()).live.render,
+              app::viewerDefaults().live.render);
+    app::writeSavedSettings(path, changed().live, app::windowPlace(changed()), w.warn());
     ASSERT_TRUE(w.lines.empty()) << w.lines.front();
-    EXPECT_EQ(app::viewerOptions({}, path, w.warn()).render, changed().render);
+    EXPECT_EQ(app::viewerOptions({}, path, w.warn()).live.render, changed().live.render);
     const Options mixed =
         app::viewerOptions({"--msaa", "2", "--renderer", "mesh-fs"}, path, w.warn());
-    EXPECT_EQ(mixed.render.pipeline.msaa, 2u);
-    EXPECT_STREQ(mixed.render.pipeline.technique->name, "mesh-fs");
-    EXPECT_STREQ(mixed.render.pipeline.mode->name, "push"); // kept
+    EXPECT_EQ(mixed.live.render.pipeline.msaa, 2u);
+    EXPECT_STREQ(mixed.live.render.pipeline.technique->name, "mesh-fs");
+    EXPECT_STREQ(mixed.live.render.pipeline.mode->name, "push"); // kept
     const Options fresh = app::viewerOptions({"--no-saved-settings"}, path, w.warn());
-    EXPECT_EQ(fresh.render, app::viewerDefaults().render);
+    EXPECT_EQ(fresh.live.render, app::viewerDefaults().live.render);
     EXPECT_FALSE(fresh.savedSettings);
     EXPECT_TRUE(w.lines.empty());
     // Kept settings the command line contradicts (--lod-error against --lod-level) are all
@@ -132,22 +134,22 @@ TEST(SavedSettings, CommandLineWinsAndNoSavedSettingsIgnoresTheFile) {
         app::viewerOptions({"--lod-levels", "2", "--lod-level", "1"}, path, w.warn());
     ASSERT_EQ(w.lines.size(), 1u);
     EXPECT_NE(w.lines[0].find("do not go with the command line"), std::string::npos);
-    EXPECT_EQ(level.render, app::viewerDefaults().render);
-    EXPECT_EQ(level.scene.lodLevel, 1u);
+    EXPECT_EQ(level.live.render, app::viewerDefaults().live.render);
+    EXPECT_EQ(level.live.scene.lodLevel, 1u);
     EXPECT_THROW(app::viewerOptions({"--bogus"}, path, w.warn()), app::UsageError);
 }
 
 TEST(SavedSettings, ResetPutsBackOnlyTheKeptSettings) {
     Options o = changed();
-    o.scene.copies = 3;
-    o.render.draws.visible = 0.5f;
-    app::resetSavedSettings(o);
+    o.live.scene.copies = 3;
+    o.live.render.draws.visible = 0.5f;
+    app::resetSavedSettings(o.live);
     Options want = app::viewerDefaults();
-    want.render.draws.visible = 0.5f;
-    EXPECT_EQ(o.render, want.render);
-    EXPECT_FALSE(o.camera.ortho);
-    EXPECT_EQ(o.scene.lodLevels, 1u);
-    EXPECT_EQ(o.scene.copies, 3u); // the scene is not a kept setting
+    want.live.render.draws.visible = 0.5f;
+    EXPECT_EQ(o.live.render, want.live.render);
+    EXPECT_FALSE(o.live.camera.ortho);
+    EXPECT_EQ(o.live.scene.lodLevels, 1u);
+    EXPECT_EQ(o.live.scene.copies, 3u); // the scene is not a kept setting
 }
 
 TEST(SavedSettings, FileLivesUnderXdgConfigHomeElseHome) {

@@ -85,9 +85,9 @@ TEST(Section, CutSolidMatchesTheRaycastAndCapsShowInTheCapColour) {
     if (!std::filesystem::exists(motor)) GTEST_SKIP() << motor << " missing (package occt-misc)";
     const Cut& c = motorCut();
     app::Options o = testing_support::headlessOptions(W, H, 2);
-    o.render.section = c.section;
-    o.render.shading.ignoreMaterials = true; // one grey: the cap colour is known exactly
-    o.render.shading.partWeight = 0.0f;
+    o.live.render.section = c.section;
+    o.live.render.shading.ignoreMaterials = true; // one grey: the cap colour is known exactly
+    o.live.render.shading.partWeight = 0.0f;
     const app::HeadlessResult r = app::renderHeadless(o, c.loaded.scene, c.camera);
     EXPECT_EQ(r.validationMessages, 0u);
 
@@ -127,7 +127,7 @@ TEST(Section, CutSolidMatchesTheRaycastAndCapsShowInTheCapColour) {
 // The depth at `pixel` of the nearest surface with every part but `part` hidden (culling off).
 float depthOfPartAt(app::Options o, const scene::Scene& s, const scene::Camera& camera,
                     uint32_t part, uint32_t pixel) {
-    o.render.culling.mode = render::CullMode::Off;
+    o.live.render.culling.mode = render::CullMode::Off;
     o.picks = {{pixel % W, pixel / W}};
     for (uint32_t p = 0; p < s.uniquePartCount(); ++p)
         if (p != part) o.hide.push_back(p);
@@ -181,7 +181,7 @@ TEST(Section, MovingAPlaneInAStillViewCullsAnew) {
     EXPECT_EQ(results.front().validationMessages, 0u);
     for (size_t i = 0; i < configs.size(); ++i) {
         app::Options alone = o;
-        alone.render = configs[i];
+        alone.live.render = configs[i];
         const auto single = app::renderHeadless(alone, loaded.scene, camera);
         expectSameUpToTies(results[i].ids, single.ids, alone, loaded.scene, camera, i);
         if (i > 0) {

@@ -126,7 +126,7 @@ void expectFaceWholeOrGone(const FaceCut& c, const std::string& view) {
     for (bool flip : {false, true}) {
         scene::Section section;
         section.add(scene::planeAtFace(c.plane, flip));
-        o.render.section = section;
+        o.live.render.section = section;
         if (flip) o.hide = {c.face};
         const app::HeadlessResult expected = render(o, c);
         o.hide.clear();

@@ -30,7 +30,7 @@ struct Reference {
 
 app::Options renderOptions(const render::Technique& technique, const render::DrawMode& mode) {
     app::Options o = testing_support::headlessOptions(240, 150, 2);
-    o.render = testing_support::settingsFor(technique, mode);
+    o.live.render = testing_support::settingsFor(technique, mode);
     return o;
 }
 
@@ -120,9 +120,9 @@ TEST_P(AllTechniques, IdImageEqualsPerDrawPushPixelForPixel) {
     EXPECT_EQ(r.validationMessages, 0u);
     EXPECT_TRUE(testing_support::sameIdsAs(*c.technique, r.ids, ref.image.ids, ref.loaded.scene,
                                            ref.camera, {o.width, o.height},
-                                           o.render.pipeline.msaa));
+                                           o.live.render.pipeline.msaa));
     EXPECT_EQ(r.stats.draws,
-              expectedDraws(*c.technique, ref.loaded.scene, o.render.pipeline.searchBatch));
+              expectedDraws(*c.technique, ref.loaded.scene, o.live.render.pipeline.searchBatch));
 }
 
 std::vector<Combination> combinations() {
@@ -273,7 +273,7 @@ TEST(SyncValidation, EveryTechniqueAndModeIsHazardFree) {
         o.syncValidation = true;
         o.picks = {{48, 32}};
         o.selects = {{40, 30}};
-        o.animation.explode = 0.4f;
+        o.live.animation.explode = 0.4f;
         const auto results = app::renderHeadlessSequence(o, ref.loaded.scene, ref.camera, configs);
         EXPECT_EQ(results.front().validationMessages, 0u) << "MSAA " << msaa;
     }

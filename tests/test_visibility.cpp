@@ -164,8 +164,8 @@ TEST(Visibility, SectionsHiddenPartsExplodeEdgesAndXrayDrawVertexFsImages) {
         }
         app::Options o = testing_support::headlessOptions(W, H);
         o.hide = {0, 1, 2, 3, 40, 41};
-        if (!xray) o.animation.explode = 0.5f;
-        o.xray = xray;
+        if (!xray) o.live.animation.explode = 0.5f;
+        o.live.xray = xray;
         if (xray)
             o.selectRect = render::PartSetQuery{{W / 2 - 12, H / 2 - 8}, {W / 2 + 12, H / 2 + 8}};
         // Over the whole image; under X-ray over the selection's box, where parts can be picked.

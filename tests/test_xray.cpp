@@ -109,7 +109,7 @@ void expectAClickSelectsAsIsolated(const scene::Scene& scene, const scene::Camer
                                    const app::HeadlessResult& plain, app::Options::Pixel at) {
     app::Options click = testing_support::headlessOptions(W, H);
     click.selects = {at};
-    click.xray = true;
+    click.live.xray = true;
     const app::HeadlessResult one = app::renderHeadless(click, scene, camera);
     ASSERT_TRUE(one.selected.has_value());
     EXPECT_EQ(*one.selected, plain.ids[size_t(at.y) * W + at.x]);
@@ -131,7 +131,7 @@ TEST(Xray, TheIdImageHoldsTheSelectionAsIsolatedAndTheRestShowsTranslucent) {
     // The parts seen in the middle of the view become the selection, under X-ray.
     app::Options xray = testing_support::headlessOptions(W, H);
     xray.selectRect = render::PartSetQuery{{W / 2 - 12, H / 2 - 8}, {W / 2 + 12, H / 2 + 8}};
-    xray.xray = true;
+    xray.live.xray = true;
     const app::HeadlessResult plain =
         app::renderHeadless(testing_support::headlessOptions(W, H), scene, camera);
     // The pixels to pick through, found on the image X-ray draws without picks.

@@ -45,11 +45,11 @@ rows(const Options& options, const vk::DeviceInfo& device,
     std::vector<render::CullMode> culling;
     for (const render::CullModeEntry* entry : options.benchmarkCulling)
         culling.push_back(entry->mode);
-    if (culling.empty()) culling.push_back(options.render.culling.mode);
+    if (culling.empty()) culling.push_back(options.live.render.culling.mode);
     std::vector<render::RenderSettings> list;
     auto add = [&](const render::Technique& technique, const render::DrawMode& mode,
                    render::CullMode cull, float lodError) {
-        render::RenderSettings settings = options.render;
+        render::RenderSettings settings = options.live.render;
         settings.pipeline.technique = &technique;
         settings.pipeline.mode = &mode;
         settings.culling.mode = cull;
@@ -181,7 +181,7 @@ struct RowTimer {
     BenchmarkRow time(const scene::Scene& scene, const render::RenderSettings& settings,
                       bool first) {
         if (first) {
-            uploadScene(rig.renderer, sourceOf(options.scene), scene, settings);
+            uploadScene(rig.renderer, sourceOf(options.live.scene), scene, settings);
             rig.renderer.setHidden(hiddenParts(options, scene));
         } else
             rig.renderer.configure(scene, settings);
@@ -219,7 +219,7 @@ BenchmarkReport reportHeader(const Options& options, const LoadedScene& loaded) 
     report.lodLevel = loaded.settings.lodLevel;
     if (report.lodLevels > 1) report.levels = scene::levelStats(loaded.scene);
     report.frames = options.frames;
-    report.settings = options.render;
+    report.settings = options.live.render;
     report.cameraPath = scene::cameraPathName(options.cameraPath);
     return report;
 }
@@ -229,7 +229,7 @@ void timeRows(RowTimer& timer, const scene::Scene& scene,
               const std::vector<render::RenderSettings>& list, BenchmarkReport& report) {
     std::map<std::tuple<std::string, std::string, render::CullMode, float>, double> floorMs;
     // A line per row as it is timed: progress, so at a terminal or with --progress only.
-    const bool progress = progressLinesWanted(timer.options.scene.progress, STDERR_FILENO);
+    const bool progress = progressLinesWanted(timer.options.live.scene.progress, STDERR_FILENO);
     for (size_t i = 0; i < list.size(); ++i) {
         BenchmarkRow row = timer.time(scene, list[i], i == 0);
         if (i == 0) report.hiddenParts = timer.rig.renderer.hidden().size();
@@ -259,7 +259,7 @@ void timeFixedCost(RowTimer& timer, const scene::Scene& scene,
     for (BenchmarkRow& row : report.rows) row.aboveFixedMs = row.gpuMsMedian - empty.gpuMsMedian;
     const render::Renderer& renderer = timer.rig.renderer;
     report.clearPath = render::clearPathName(renderer.clearPath());
-    report.clearTiming = renderer.clearTiming(timer.options.render.pipeline.msaa);
+    report.clearTiming = renderer.clearTiming(timer.options.live.render.pipeline.msaa);
     std::fprintf(stderr,
                  "benchmark: fixed cost (%s + %s, culling off, nothing drawn): GPU %.3f ms, "
                  "%zu draws, %llu triangles; clear path %s\n",
@@ -286,7 +286,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
         const float aspect = float(rig.extent.width) / float(rig.extent.height);
         // As headless and the viewer open the scene; with a path, timed frame f is frame f
         // of the path (the warm-up frames stay at its start).
-        const scene::Camera start = initialCamera(loaded, aspect, options.camera);
+        const scene::Camera start = initialCamera(loaded, aspect, options.live.camera);
         RowTimer timer{options, rig, FrameLoop(rig, options, scene, start),
                        cameraFrame(start, rig.extent), FrameRun{}};
         // Enough frames for clocks to settle and pipelines to be warm, without wasting time.
@@ -302,7 +302,7 @@ BenchmarkReport runBenchmark(const Options& options, const LoadedScene& loaded) 
 }
 
 int benchmarkCommand(const Options& options) {
-    const LoadedScene loaded = loadScene(options.scene);
+    const LoadedScene loaded = loadScene(options.live.scene);
     std::fprintf(stderr, "benchmark: %s, %u objects, %u parts, %llu triangles\n",
                  loaded.source.c_str(), unsigned(loaded.scene.objects.size()),
                  loaded.scene.uniquePartCount(),

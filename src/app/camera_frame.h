@@ -6,7 +6,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
 

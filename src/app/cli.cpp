@@ -59,9 +59,13 @@ std::vector<const render::CullModeEntry*> cullingList(const std::string& value) 
 
 Options viewerDefaults() {
     Options options;
-    options.render.pipeline.technique = render::findTechnique("vertex-fs");
-    options.render.pipeline.mode = render::findDrawMode("mdi-baseinstance");
+    options.live.render.pipeline.technique = render::findTechnique("vertex-fs");
+    options.live.render.pipeline.mode = render::findDrawMode("mdi-baseinstance");
     return options;
+}
+
+WindowPlace windowPlace(const Options& options) {
+    return {options.width, options.height, options.windowPos};
 }
 
 std::vector<std::string> ignoredByViewer(const Options& options) {
@@ -114,14 +118,14 @@ void applyFlags(const std::vector<std::string>& args, Options& options) {
 void settleBenchmarkLists(Options& options) {
     if (options.benchmark) {
         if (!given(options, "--size")) options.width = 2560, options.height = 1440;
-        if (!given(options, "--msaa")) options.render.pipeline.msaa = 4;
-        if (!given(options, "--copies")) options.scene.copies = 3;
+        if (!given(options, "--msaa")) options.live.render.pipeline.msaa = 4;
+        if (!given(options, "--copies")) options.live.scene.copies = 3;
         if (!given(options, "--frames")) options.frames = 200;
         if (!given(options, "--renderer")) options.benchmarkTechniques = techniqueList("all");
         if (!given(options, "--mode")) options.benchmarkModes = modeList("all");
         if (!given(options, "--culling")) options.benchmarkCulling = cullingList("all");
         if (!given(options, "--lod-error"))
-            options.benchmarkLodErrors = {options.render.lod.errorPixels};
+            options.benchmarkLodErrors = {options.live.render.lod.errorPixels};
         return;
     }
     const bool oneEach =
@@ -141,21 +145,21 @@ void settleBenchmarkLists(Options& options) {
 
 // Levels of detail, and the exploded view's two forms.
 void settleLevelsAndAnimation(Options& options) {
-    if (options.scene.lodLevel >= options.scene.lodLevels)
-        throw UsageError("--lod-level " + std::to_string(options.scene.lodLevel) +
-                         " needs --lod-levels " + std::to_string(options.scene.lodLevel + 1) +
+    if (options.live.scene.lodLevel >= options.live.scene.lodLevels)
+        throw UsageError("--lod-level " + std::to_string(options.live.scene.lodLevel) +
+                         " needs --lod-levels " + std::to_string(options.live.scene.lodLevel + 1) +
                          " or more");
     // Levels to choose from: all of them unless the levels built are given.
-    const bool chosen = options.render.lod.errorPixels > 0.0f;
-    if (chosen && !given(options, "--lod-levels")) options.scene.lodLevels = scene::maxLevels;
-    if (chosen && options.scene.lodLevels < 2)
+    const bool chosen = options.live.render.lod.errorPixels > 0.0f;
+    if (chosen && !given(options, "--lod-levels")) options.live.scene.lodLevels = scene::maxLevels;
+    if (chosen && options.live.scene.lodLevels < 2)
         throw UsageError("--lod-error needs --lod-levels 2 or more");
-    if (chosen && options.scene.lodLevel > 0)
+    if (chosen && options.live.scene.lodLevel > 0)
         throw UsageError("--lod-error and --lod-level cannot be combined: --lod-level draws one "
                          "level everywhere");
-    if (options.animation.time && !options.animation.animate)
+    if (options.live.animation.time && !options.live.animation.animate)
         throw UsageError("--time needs --animate");
-    if (options.animation.animate && options.animation.explode > 0.0f)
+    if (options.live.animation.animate && options.live.animation.explode > 0.0f)
         throw UsageError("--explode and --animate cannot be combined: --animate runs the "
                          "exploded view from 0 to 1 and back");
 }

@@ -1,6 +1,7 @@
 // cli.h - idview's command line: the options a run is made of and their parsing. The flag
-// table writes straight into the settings structs (render/settings.h, SceneSettings,
-// Animation) that headless rendering, the benchmark and the viewer then hold unchanged.
+// table writes straight into the settings structs (Options::live, live_settings.h) that
+// headless rendering, the benchmark and the viewer then hold unchanged; the rest of Options
+// is what to do (one-shot queries, outputs) and how the run starts.
 // Parsing never touches Vulkan, so every flag is unit-tested.
 #pragma once
 
@@ -11,53 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "app/live_settings.h"
 #include "render/culling.h"
 #include "render/pick.h"
-#include "render/settings.h"
-#include "scene/cad/cad_loader.h"
 #include "scene/camera_path.h"
-#include "scene/copies.h"
-#include "scene/gltf/gltf_loader.h"
-#include "scene/standard_view.h"
 
 namespace app {
-
-// Where the scene comes from, and how many times it is placed.
-struct SceneSettings {
-    std::string model;   // glTF or CAD file; with `builtin` empty too, the default model
-    std::string builtin; // built-in or procedural scene spec (scene_source.h)
-    scene::PartMode parts = scene::PartMode::Primitives; // glTF: what one part is
-    scene::CadOptions cad;                               // STEP, IGES, BREP: the tessellation
-    // STEP, IGES, BREP: read and write the tessellation cache (scene/cad/cad_cache.h).
-    bool cadCache = true;
-    // --progress: progress lines on stderr even where it is no terminal: a CAD load's
-    // (app/progress_lines.h), and the benchmark's line per row, which reads it from here.
-    bool progress = false;
-    uint32_t copies = 1;
-    uint32_t copyAxes = scene::COPY_XY; // the axes the copies' grid spans
-    // Levels of detail built at load, full detail included (scene/lod.h; 1 builds none), and
-    // the level every object is drawn at (0, full detail, unless forced for the whole scene).
-    uint32_t lodLevels = 1;
-    uint32_t lodLevel = 0;
-    bool operator==(const SceneSettings&) const = default;
-};
-
-// The exploded view (scene/explode.h): at `explode`, 0 (at rest) to 1, as --explode and the
-// viewer's slider set it; with `animate` (the benchmark's motion) it follows
-// scene::explodeLoop instead, headless at `time` seconds or at frame / 60 without it.
-struct Animation {
-    bool animate = false;
-    std::optional<float> time;
-    float explode = 0.0f;
-};
-
-// The opening view: one of the standard views (scene/standard_view.h) instead of the
-// three-quarter one, at the same fitted distance, and the projection. The viewer starts from
-// it and then changes it with its keys (1, 3, 7, 0, O).
-struct CameraSettings {
-    const scene::StandardView* standard = nullptr; // nullptr: the three-quarter view
-    bool ortho = false;
-};
 
 struct Options {
     // What to do.
@@ -71,11 +31,11 @@ struct Options {
     bool benchmark = false;
     std::string benchmarkOut; // JSON, or CSV when the name ends in .csv
     // --benchmark: what to time, as --renderer and --mode list it (every part-ID technique
-    // and every mode when not given). Other runs use render.pipeline alone.
+    // and every mode when not given). Other runs use live.render.pipeline alone.
     std::vector<const render::Technique*> benchmarkTechniques;
     std::vector<const render::DrawMode*> benchmarkModes;
     std::vector<const render::CullModeEntry*> benchmarkCulling; // --culling (default: all)
-    std::vector<float> benchmarkLodErrors; // --lod-error (default: render.lod's one value)
+    std::vector<float> benchmarkLodErrors; // --lod-error (default: live.render.lod's one value)
 
     // The device and how it is driven.
     std::string device; // index or name substring; empty: best device
@@ -125,15 +85,10 @@ struct Options {
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;
     bool visibleParts = false; // print {"count","parts"} of the last frame's ID image
-    // X-ray (render/xray.h): the parts outside the selection drawn translucent, left out of
-    // the ID image and picks. Headless: from the frames after --select / --select-rect on;
-    // the viewer opens with it on (X toggles it).
-    bool xray = false;
 
-    SceneSettings scene;
-    render::RenderSettings render;
-    Animation animation;
-    CameraSettings camera;
+    // What is drawn, how and from where: all a headless run or the benchmark renders with,
+    // and all the viewer is handed to edit while it runs (live_settings.h).
+    LiveSettings live;
 
     // Viewer: scripted input, one `<seconds> <command> [args]` per line (viewer/script.h),
     // and the event lines (title, selection, opened, screenshot, reload) on stdout.
@@ -167,6 +122,8 @@ Options parseArgs(const std::vector<std::string>& args, Options start);
 // recommends. Headless runs and the benchmark keep the registries' first rows, which their
 // tests and scripted comparisons rely on.
 Options viewerDefaults();
+// The window the viewer opens: --size and --window-pos.
+WindowPlace windowPlace(const Options& options);
 // The flags given that only headless runs read (Flag::headlessOnly), for the viewer to say
 // it ignores them.
 std::vector<std::string> ignoredByViewer(const Options& options);

@@ -46,7 +46,7 @@ Flag registryFlag(const char* name, const char* help, const char* value, const c
                 "; with --benchmark a comma list or all (default)",
             [=](Options& o, const std::string& v) {
                 o.*benchmarkList = list(v);
-                o.render.pipeline.*field = (o.*benchmarkList).front();
+                o.live.render.pipeline.*field = (o.*benchmarkList).front();
             }};
 }
 

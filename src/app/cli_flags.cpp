@@ -66,7 +66,7 @@ std::vector<Flag> runningFlags(const Options&) {
          "neither read nor write the caches in $XDG_CACHE_HOME/idview (else "
          "~/.cache/idview): CAD files' tessellations, and the driver's compiled pipelines "
          "(then kept in memory only)",
-         [](Options& o, auto&) { o.scene.cadCache = false; }},
+         [](Options& o, auto&) { o.live.scene.cadCache = false; }},
     };
 }
 

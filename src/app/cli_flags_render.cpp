@@ -13,7 +13,7 @@
 namespace app::flag_tables {
 
 std::vector<Flag> imageFlags(const Options& d) {
-    const render::PipelineKey& key = d.render.pipeline;
+    const render::PipelineKey& key = d.live.render.pipeline;
     return {
         {"--size", "WxH",
          "render size in pixels" +
@@ -22,7 +22,7 @@ std::vector<Flag> imageFlags(const Options& d) {
         {"--msaa", "N",
          "samples per pixel: 1, 2, 4 or 8, as the device offers" + byDefault(key.msaa),
          [](Options& o, auto& v) {
-             uint32_t& msaa = o.render.pipeline.msaa;
+             uint32_t& msaa = o.live.render.pipeline.msaa;
              msaa = parseCount("--msaa", v, 1, 8);
              if (msaa & (msaa - 1)) throw UsageError("--msaa expects 1, 2, 4 or 8, not " + v);
          }},
@@ -31,18 +31,18 @@ std::vector<Flag> imageFlags(const Options& d) {
          "resolves MSAA), compute (it clears depth alone; a compute pass writes the "
          "background and resolves) or auto, the faster of the two on this device, timed "
          "once and kept beside the pipeline cache" +
-             byDefault(render::clearPathName(d.render.clear)),
+             byDefault(render::clearPathName(d.live.render.clear)),
          [](Options& o, auto& v) {
              const auto path = render::findClearPath(v);
              if (!path) throw UsageError("--clear expects auto, pass or compute, not " + v);
-             o.render.clear = *path;
+             o.live.render.clear = *path;
          }},
     };
 }
 
 std::vector<Flag> techniqueFlags(const Options& d) {
-    const render::PipelineKey& key = d.render.pipeline;
-    const render::PipelineKey viewer = viewerDefaults().render.pipeline;
+    const render::PipelineKey& key = d.live.render.pipeline;
+    const render::PipelineKey viewer = viewerDefaults().live.render.pipeline;
     const render::NarySearch& nary = key.nsearch;
     return {
         registryFlag("--renderer", "part-ID technique (see --list-renderers)", key.technique->name,
@@ -52,46 +52,48 @@ std::vector<Flag> techniqueFlags(const Options& d) {
                      modeList, &Options::benchmarkModes, &render::PipelineKey::mode),
         rangeFlag("--search-batch", "parts per draw of the search techniques",
                   render::searchBatchRange, key.searchBatch,
-                  [](Options& o) -> uint32_t& { return o.render.pipeline.searchBatch; }),
+                  [](Options& o) -> uint32_t& { return o.live.render.pipeline.searchBatch; }),
         rangeFlag("--nsearch-n", "nsearch renderers: offsets read per step",
                   render::nsearchFanOutRange, nary.n,
-                  [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.n; }),
+                  [](Options& o) -> uint32_t& { return o.live.render.pipeline.nsearch.n; }),
         {"--nsearch-guess", "on|off",
          "nsearch renderers: start at the part a uniform part size predicts" + onOff(nary.guess),
          [](Options& o, auto& v) {
-             o.render.pipeline.nsearch.guess = parseOnOff("--nsearch-guess", v);
+             o.live.render.pipeline.nsearch.guess = parseOnOff("--nsearch-guess", v);
          }},
-        rangeFlag("--nsearch-linear", "nsearch renderers: scan linearly from N parts left",
-                  render::nsearchLinearRange, nary.linearBelow,
-                  [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.linearBelow; }),
+        rangeFlag(
+            "--nsearch-linear", "nsearch renderers: scan linearly from N parts left",
+            render::nsearchLinearRange, nary.linearBelow,
+            [](Options& o) -> uint32_t& { return o.live.render.pipeline.nsearch.linearBelow; }),
         rangeFlag("--nsearch-steps",
                   "nsearch renderers: N-ary steps at most, a linear scan finishes",
                   render::nsearchStepsRange, nary.maxSteps,
-                  [](Options& o) -> uint32_t& { return o.render.pipeline.nsearch.maxSteps; }),
+                  [](Options& o) -> uint32_t& { return o.live.render.pipeline.nsearch.maxSteps; }),
         {"--gs-ordinary", nullptr,
          "gs renderers: use an ordinary geometry shader even where "
          "VK_NV_geometry_shader_passthrough is offered",
-         [](Options& o, auto&) { o.render.pipeline.gsPassthrough = false; }},
+         [](Options& o, auto&) { o.live.render.pipeline.gsPassthrough = false; }},
         {"--no-sort-draws", nullptr,
          "keep draws in scene order instead of by geometry and material",
-         [](Options& o, auto&) { o.render.draws.sortDraws = false; }},
+         [](Options& o, auto&) { o.live.render.draws.sortDraws = false; }},
         {"--visible", "F",
          "draw only the first ceil(F * objects) objects in scene order, 0 to 1" +
-             byDefault(d.render.draws.visible),
-         [](Options& o, auto& v) { o.render.draws.visible = parseFraction("--visible", v); }},
+             byDefault(d.live.render.draws.visible),
+         [](Options& o, auto& v) { o.live.render.draws.visible = parseFraction("--visible", v); }},
         {"--raster-pixels", "PX",
          "visbuffer-compute: rasterize in compute the meshlets whose projected rectangle "
          "holds at most PX pixels per triangle (PX samples with MSAA: PX / 4 pixels at 4x); 0 "
          "draws every one on the hardware" +
-             byDefault(d.render.raster.trianglePixels),
+             byDefault(d.live.render.raster.trianglePixels),
          [](Options& o, auto& v) {
-             o.render.raster.trianglePixels = parseNumber("--raster-pixels", v, 1e6f, "pixels");
+             o.live.render.raster.trianglePixels =
+                 parseNumber("--raster-pixels", v, 1e6f, "pixels");
          }},
         {"--raster-all", nullptr,
          "visbuffer-compute: rasterize in compute every meshlet the compute pass can draw "
          "(all but those that reach in front of the near plane, across a section plane, or "
          "over 62 pixels)",
-         [](Options& o, auto&) { o.render.raster.all = true; }},
+         [](Options& o, auto&) { o.live.render.raster.all = true; }},
     };
 }
 
@@ -101,23 +103,23 @@ std::vector<Flag> cullingFlags(const Options& d) {
          "leave out what cannot show, the images unchanged: off, frustum or occlusion "
          "(two-phase: first what passed the last frame's test, then the rest against a depth "
          "pyramid of that)" +
-             byDefault(render::cullModeName(d.render.culling.mode)) +
+             byDefault(render::cullModeName(d.live.render.culling.mode)) +
              "; what each per-draw mode gets: --list-renderers; with --benchmark a comma "
              "list or all (default)",
          [](Options& o, auto& v) {
              o.benchmarkCulling = cullingList(v);
-             o.render.culling.mode = o.benchmarkCulling.front()->mode;
+             o.live.render.culling.mode = o.benchmarkCulling.front()->mode;
          }},
         {"--freeze-culling", nullptr,
          "keep the draw lists of the first culled frame in every later one (what the "
          "panel's freeze culling does), so the camera can move and show what was left out",
-         [](Options& o, auto&) { o.render.culling.freeze = true; }},
+         [](Options& o, auto&) { o.live.render.culling.freeze = true; }},
         {"--lod-error", "PX",
          "draw each object at its coarsest level of detail whose error stays under PX "
          "pixels, chosen on the GPU by the cull pass (mdi modes, culling on or off; push mode "
          "draws full detail); 0 is full detail; builds every level unless --lod-levels says "
          "otherwise" +
-             byDefault(d.render.lod.errorPixels) + "; with --benchmark a comma list",
+             byDefault(d.live.render.lod.errorPixels) + "; with --benchmark a comma list",
          [](Options& o, auto& v) {
              o.benchmarkLodErrors.clear();
              for (size_t start = 0; start <= v.size();) {
@@ -126,7 +128,7 @@ std::vector<Flag> cullingFlags(const Options& d) {
                      parseNumber("--lod-error", v.substr(start, end - start), 1e6f, "pixels"));
                  start = end + 1;
              }
-             o.render.lod.errorPixels =
+             o.live.render.lod.errorPixels =
                  *std::max_element(o.benchmarkLodErrors.begin(), o.benchmarkLodErrors.end());
          }},
     };
@@ -136,38 +138,38 @@ std::vector<Flag> shadingFlags(const Options& d) {
     return {
         {"--part-weight", "F",
          "blend of part colour over material colour, 0 to 1" +
-             byDefault(d.render.shading.partWeight),
+             byDefault(d.live.render.shading.partWeight),
          [](Options& o, auto& v) {
-             o.render.shading.partWeight = parseFraction("--part-weight", v);
+             o.live.render.shading.partWeight = parseFraction("--part-weight", v);
          }},
         {"--colorize-draws", nullptr, "replace material colours by a colour per draw call",
-         [](Options& o, auto&) { o.render.shading.colorizeDraws = true; }},
+         [](Options& o, auto&) { o.live.render.shading.colorizeDraws = true; }},
         {"--tint-levels", nullptr,
          "replace material colours by a colour per level of detail drawn: grey full "
          "detail, then blue, yellow and red",
-         [](Options& o, auto&) { o.render.shading.tintLevels = true; }},
+         [](Options& o, auto&) { o.live.render.shading.tintLevels = true; }},
         {"--ignore-materials", nullptr,
          "shade every object with one neutral grey, so only part colours show",
-         [](Options& o, auto&) { o.render.shading.ignoreMaterials = true; }},
+         [](Options& o, auto&) { o.live.render.shading.ignoreMaterials = true; }},
         {"--edges", nullptr,
          "draw part edges from the ID image, and outlines of the selected and hovered parts",
-         [](Options& o, auto&) { o.render.edges.on = true; }},
+         [](Options& o, auto&) { o.live.render.edges.on = true; }},
         rangeFlag("--edge-width", "edge width in pixels (outlines are wider)",
-                  render::edgeWidthRange, d.render.edges.width,
-                  [](Options& o) -> uint32_t& { return o.render.edges.width; }),
+                  render::edgeWidthRange, d.live.render.edges.width,
+                  [](Options& o) -> uint32_t& { return o.live.render.edges.width; }),
         {"--edge-color", "RRGGBB",
-         "edge colour in hex, as displayed" + byDefault(hexColor(d.render.edges.color)),
-         [](Options& o, auto& v) { o.render.edges.color = parseColor("--edge-color", v); }},
+         "edge colour in hex, as displayed" + byDefault(hexColor(d.live.render.edges.color)),
+         [](Options& o, auto& v) { o.live.render.edges.color = parseColor("--edge-color", v); }},
         {"--section", "AXIS,VALUE[,flip]",
          "cut the scene: keep where coordinate AXIS (x, y or z) is at most VALUE (model "
          "units), flip keeps the other side; caps show where a cut opens a solid; up to " +
              std::to_string(scene::maxSectionPlanes) + ", each cutting its side away",
-         [](Options& o, auto& v) { addSectionPlane(o.render.section, v); }},
-        on("--xray",
-           "X-ray: draw the parts outside the selection translucent, out of the ID image and "
-           "picks, so the selected parts inside show (headless: after --select or "
-           "--select-rect; with nothing selected it changes nothing)",
-           &Options::xray),
+         [](Options& o, auto& v) { addSectionPlane(o.live.render.section, v); }},
+        {"--xray", nullptr,
+         "X-ray: draw the parts outside the selection translucent, out of the ID image and "
+         "picks, so the selected parts inside show (headless: after --select or "
+         "--select-rect; with nothing selected it changes nothing)",
+         [](Options& o, auto&) { o.live.xray = true; }},
     };
 }
 

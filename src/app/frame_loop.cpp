@@ -48,7 +48,7 @@ HeadlessResult::Images FrameLoop::readImages() const {
 
 void FrameLoop::waitedFrame(render::FrameParams params) {
     // --animate: every frame at its own moment, the picks' too.
-    params.explode = explodeAt(options_.animation, frameNumber_);
+    params.explode = explodeAt(options_.live.animation, frameNumber_);
     render::FrameSlot& slot = rig_.slots.begin(frameNumber_++);
     rig_.renderer.record(slot, rig_.targets, params);
     rig_.slots.submit(slot);
@@ -64,7 +64,7 @@ TimedFrames FrameLoop::run(const render::FrameParams& params, const FrameRun& ho
         render::FrameSlot& slot = rig_.slots.begin(frameNumber_);
         render::FrameParams frame = params;
         // --animate: objects move while being timed, the compute pass included.
-        frame.explode = explodeAt(options_.animation, frameNumber_);
+        frame.explode = explodeAt(options_.live.animation, frameNumber_);
         frame.setView(view(f < how.warmup ? 0 : f - how.warmup));
         if (last && !how.lastFrameSets.empty()) frame.partSets = how.lastFrameSets;
         const auto begun = Clock::now();

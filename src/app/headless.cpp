@@ -103,16 +103,16 @@ void HeadlessRun::switchTo(const render::RenderSettings& settings, bool first,
                            HeadlessResult& result) {
     render::Renderer& renderer = rig_.renderer;
     if (first)
-        uploadScene(renderer, sourceOf(options_.scene), scene_, settings);
+        uploadScene(renderer, sourceOf(options_.live.scene), scene_, settings);
     else
         renderer.configure(scene_, settings);
     rig_.useMsaa(settings.pipeline.msaa);
     result.stats = renderer.stats();
     // X-ray of the configuration before is off until this one's selection is made.
-    if (first || options_.xray) renderer.setHidden(hidden_);
+    if (first || options_.live.xray) renderer.setHidden(hidden_);
     const scene::PartSet none(scene_.uniquePartCount());
     renderer.setSelection(none);
-    if (options_.xray) renderer.setTranslucent(scene_, none);
+    if (options_.live.xray) renderer.setTranslucent(scene_, none);
     params_.pickPixel.reset();
 }
 
@@ -193,7 +193,7 @@ HeadlessResult HeadlessRun::configuration(const render::RenderSettings& settings
     switchTo(settings, first, result);
     const scene::PartSet selection = select(result);
     // The picks and the timed frames see the selection through X-ray.
-    if (options_.xray) {
+    if (options_.live.xray) {
         const render::XrayParts xray = render::xrayParts(true, selection, hidden_);
         rig_.renderer.setHidden(xray.hidden);
         rig_.renderer.setTranslucent(scene_, xray.translucent);
@@ -229,7 +229,7 @@ renderHeadlessSequence(const Options& options, const scene::Scene& scene,
 
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera) {
-    return renderHeadlessSequence(options, scene, camera, {options.render}).front();
+    return renderHeadlessSequence(options, scene, camera, {options.live.render}).front();
 }
 
 namespace {
@@ -249,7 +249,7 @@ bool printJsonLines(const Options& options, const LoadedScene& loaded, const sce
         lines.push_back(partSetJson(*result.visibleParts, result.visibleCount, std::nullopt));
     lines.insert(lines.end(), inspection.begin(), inspection.end());
     if (options.stats)
-        lines.push_back(statsJson(loaded, options.render,
+        lines.push_back(statsJson(loaded, options.live.render,
                                   FirstFrame{result.firstFrameMs, result.pipelineCache}));
     for (const std::string& line : lines) std::printf("%s\n", line.c_str());
     return !lines.empty();
@@ -259,7 +259,7 @@ bool printJsonLines(const Options& options, const LoadedScene& loaded, const sce
 // 1.234 ms".
 std::string summaryLine(const Options& options, const scene::Scene& scene,
                         const HeadlessResult& result) {
-    const render::PipelineKey& key = options.render.pipeline;
+    const render::PipelineKey& key = options.live.render.pipeline;
     // What the last frame drew, culling's counters against their totals.
     const render::CullCounts drawn =
         result.cullStats.empty()
@@ -271,7 +271,7 @@ std::string summaryLine(const Options& options, const scene::Scene& scene,
                    std::to_string(result.cullTotals.meshlets) + " meshlets, ";
     // With levels of detail chosen, the triangles of each level.
     std::string levels;
-    if (options.render.lod.errorPixels > 0.0f) {
+    if (options.live.render.lod.errorPixels > 0.0f) {
         levels = " (by level of detail:";
         for (uint64_t t : drawn.levelTriangles) levels.append(" ").append(std::to_string(t));
         levels += ")";
@@ -283,7 +283,7 @@ std::string summaryLine(const Options& options, const scene::Scene& scene,
                   "scene pass GPU median %.3f ms\n",
                   options.frames, result.width, result.height, result.deviceName.c_str(),
                   key.technique->name, result.stats.gsPassthrough ? " (passthrough)" : "",
-                  key.mode->name, render::cullModeName(options.render.culling.mode),
+                  key.mode->name, render::cullModeName(options.live.render.culling.mode),
                   result.stats.draws, static_cast<unsigned long long>(scene.drawnTriangleCount()),
                   scene.uniquePartCount(), static_cast<unsigned long long>(drawn.draws),
                   meshlets.c_str(), static_cast<unsigned long long>(drawn.triangles),
@@ -294,21 +294,21 @@ std::string summaryLine(const Options& options, const scene::Scene& scene,
 } // namespace
 
 int runHeadless(const Options& options) {
-    const LoadedScene loaded = loadScene(options.scene);
+    const LoadedScene loaded = loadScene(options.live.scene);
     for (const auto& warning : loaded.warnings)
         std::fprintf(stderr, "idview: warning: %s: %s\n", loaded.source.c_str(), warning.c_str());
     // --explode: the GPU draws it from the scene at rest (render/animator.h); what the CPU
     // answers (face reports, measurements, inspection) and the opening view take the objects
     // where they are drawn, bit for bit (scene::explodedScene).
     std::optional<scene::Scene> exploded;
-    if (!options.animation.animate && options.animation.explode > 0.0f)
-        exploded = scene::explodedScene(loaded.scene, options.animation.explode);
+    if (!options.live.animation.animate && options.live.animation.explode > 0.0f)
+        exploded = scene::explodedScene(loaded.scene, options.live.animation.explode);
     const scene::Scene& scene = exploded ? *exploded : loaded.scene;
     // Before rendering: a part or object not in the scene ends the run at once.
     const std::vector<std::string> inspection = inspectionJson(options, scene);
     const float aspect = float(options.width) / float(options.height);
     const HeadlessResult result = renderHeadless(
-        options, loaded.scene, initialCamera(loaded, aspect, options.camera, scene.bounds()));
+        options, loaded.scene, initialCamera(loaded, aspect, options.live.camera, scene.bounds()));
 
     if (!options.screenshot.empty())
         writePng(options.screenshot, result.width, result.height, result.color);

@@ -81,14 +81,14 @@ std::string measureJson(const HeadlessResult& result, const scene::LengthUnit& u
 // Options::hide / isolate apply first. Then the picks: Options::selects (one frame, its part
 // becomes the selection), Options::selectRect (one frame, its parts become the selection),
 // then one frame per Options::picks entry, then one per Options::measure point; the timed frames
-// keep the last pick point hovered. With Options::xray, X-ray (render/xray.h) applies once the
+// keep the last pick point hovered. With Options::live.xray, X-ray (render/xray.h) applies once the
 // selection is made: the picks, measures and timed frames see the selection through it.
 // Throws vk::Error / vk::ShaderError with a message for people.
 HeadlessResult renderHeadless(const Options& options, const scene::Scene& scene,
                               const scene::Camera& camera);
 
 // The same with one device and one renderer, switched to each of `settings` in turn (as the
-// viewer switches at run time; options.render is not used). validationMessages counts the
+// viewer switches at run time; options.live.render is not used). validationMessages counts the
 // whole sequence.
 std::vector<HeadlessResult>
 renderHeadlessSequence(const Options& options, const scene::Scene& scene,

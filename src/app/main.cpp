@@ -120,11 +120,12 @@ int main(int argc, char** argv) {
         // --distance and --properties need no image; with --headless they come with its lines.
         if (!renderedStats && (options.stats || options.tree || !options.exportPath.empty() ||
                                (inspects(options) && !options.headless))) {
-            const app::LoadedScene loaded = app::loadScene(options.scene);
+            const app::LoadedScene loaded = app::loadScene(options.live.scene);
             // Checked and answered before anything is written: a wrong ID leaves no file.
             const std::vector<std::string> inspection = app::inspectionJson(options, loaded.scene);
             if (!options.exportPath.empty()) scene::writeGlb(loaded.scene, options.exportPath);
-            if (options.stats) std::printf("%s\n", app::statsJson(loaded, options.render).c_str());
+            if (options.stats)
+                std::printf("%s\n", app::statsJson(loaded, options.live.render).c_str());
             if (options.tree) std::printf("%s\n", app::treeJson(loaded).c_str());
             for (const std::string& line : inspection) std::printf("%s\n", line.c_str());
             return 0;

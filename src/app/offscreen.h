@@ -63,10 +63,9 @@ struct Offscreen {
         : start(std::chrono::steady_clock::now()),
           device(instance, vk::chooseDevice(instance.devices(), options.device)),
           compiler(vk::ShaderCompiler::locate(options.shaderDir)),
-          renderer(device, compiler, pipelineCacheFolder(options)), extent{options.width,
-                                                                           options.height},
-          slots(device) {
-        useMsaa(options.render.pipeline.msaa);
+          renderer(device, compiler, pipelineCacheFolder(options.live.scene)),
+          extent{options.width, options.height}, slots(device) {
+        useMsaa(options.live.render.pipeline.msaa);
     }
 
     // Targets for `msaa` (the ones before stay with the frames that drew into them).

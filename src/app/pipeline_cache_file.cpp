@@ -8,8 +8,8 @@
 
 namespace app {
 
-std::filesystem::path pipelineCacheFolder(const Options& options) {
-    return options.scene.cadCache ? util::cacheFolder() : std::filesystem::path{};
+std::filesystem::path pipelineCacheFolder(const SceneSettings& scene) {
+    return scene.cadCache ? util::cacheFolder() : std::filesystem::path{};
 }
 
 void savePipelineCache(const render::Renderer& renderer) {

@@ -4,14 +4,14 @@
 
 #include <filesystem>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "render/renderer.h"
 
 namespace app {
 
 // Where the driver's pipeline cache is kept between runs: scene::cacheFolder(), nothing
 // (memory only) with --no-cache.
-std::filesystem::path pipelineCacheFolder(const Options& options);
+std::filesystem::path pipelineCacheFolder(const SceneSettings& scene);
 // At exit (headless and the viewer), so that the next start finds what this run compiled: a
 // file that cannot be written is a warning on stderr, as it costs only the next start time.
 void savePipelineCache(const render::Renderer& renderer);

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "app/cli.h"
 #include "app/cli_flags.h"
 #include "render/culling.h"
 
@@ -19,8 +20,8 @@ namespace {
 // A kept setting: its flag, its value as the flag takes it, and putting it back to a default.
 struct Kept {
     const char* flag;
-    std::function<std::string(const Options&)> text;
-    std::function<void(Options&, const Options&)> reset;
+    std::function<std::string(const LiveSettings&, const WindowPlace&)> text;
+    std::function<void(LiveSettings&, const LiveSettings&)> reset;
 };
 
 std::string valueText(uint32_t value) {
@@ -50,14 +51,15 @@ std::string valueText(const glm::vec3& color) {
     return hexColor(color);
 }
 
-// `field` is a generic lambda returning the setting of a const or non-const Options.
+// `field` is a generic lambda returning the setting of a const or non-const LiveSettings.
 template <typename Field>
 Kept kept(const char* flag, Field field) {
-    return {flag, [field](const Options& o) { return valueText(field(o)); },
-            [field](Options& o, const Options& d) { field(o) = field(d); }};
+    return {flag,
+            [field](const LiveSettings& o, const WindowPlace&) { return valueText(field(o)); },
+            [field](LiveSettings& o, const LiveSettings& d) { field(o) = field(d); }};
 }
 
-// A setting of a const or non-const Options, for kept().
+// A setting of a const or non-const LiveSettings, for kept().
 // clang-format off
 #define FIELD(path) [](auto& o) -> auto& { return o.path; }
 // clang-format on
@@ -93,15 +95,17 @@ const std::vector<Kept>& keptSettings() {
         // The window's geometry at the last close: flags too, so a --size on the command line
         // wins as it does for every kept flag; Reset to defaults leaves them as they are.
         {"--size",
-         [](const Options& o) { return std::to_string(o.width) + "x" + std::to_string(o.height); },
-         [](Options&, const Options&) {}},
-        {"--window-pos",
-         [](const Options& o) {
-             return o.windowPos ? std::to_string((*o.windowPos)[0]) + "," +
-                                      std::to_string((*o.windowPos)[1])
-                                : std::string();
+         [](const LiveSettings&, const WindowPlace& w) {
+             return std::to_string(w.width) + "x" + std::to_string(w.height);
          },
-         [](Options&, const Options&) {}},
+         [](LiveSettings&, const LiveSettings&) {}},
+        {"--window-pos",
+         [](const LiveSettings&, const WindowPlace& w) {
+             return w.position
+                        ? std::to_string((*w.position)[0]) + "," + std::to_string((*w.position)[1])
+                        : std::string();
+         },
+         [](LiveSettings&, const LiveSettings&) {}},
     };
     return list;
 }
@@ -138,14 +142,14 @@ std::string savedSettingsPath() {
     return "";
 }
 
-std::string savedSettingsText(const Options& options) {
+std::string savedSettingsText(const LiveSettings& live, const WindowPlace& window) {
     const Options defaults = viewerDefaults();
     std::string text = "# idview's viewer settings, written when it closes: one command-line "
                        "flag a line (the command line wins, idview --help), then the window's "
                        "own viewer. lines\n";
     for (const Kept& k : keptSettings()) {
-        const std::string value = k.text(options);
-        if (value == k.text(defaults)) continue;
+        const std::string value = k.text(live, window);
+        if (value == k.text(defaults.live, windowPlace(defaults))) continue;
         text += k.flag;
         if (flagNamed(k.flag).value) text += " " + value;
         text += "\n";
@@ -199,9 +203,9 @@ Options viewerOptions(const std::vector<std::string>& args, const std::string& p
     }
 }
 
-void resetSavedSettings(Options& options) {
-    const Options defaults = viewerDefaults();
-    for (const Kept& k : keptSettings()) k.reset(options, defaults);
+void resetSavedSettings(LiveSettings& live) {
+    const LiveSettings defaults = viewerDefaults().live;
+    for (const Kept& k : keptSettings()) k.reset(live, defaults);
 }
 
 std::string readSavedSettings(const std::string& path) {
@@ -211,14 +215,14 @@ std::string readSavedSettings(const std::string& path) {
     return text.str();
 }
 
-void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn,
-                        const std::string& viewText) {
+void writeSavedSettings(const std::string& path, const LiveSettings& live,
+                        const WindowPlace& window, const Warn& warn, const std::string& viewText) {
     if (path.empty()) return warn("settings not saved: neither XDG_CONFIG_HOME nor HOME is set");
     std::error_code error;
     std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
     // Written beside the file and renamed over it: a crash never leaves half a file.
     const std::string partial = path + ".partial";
-    std::ofstream(partial) << savedSettingsText(options) << viewText;
+    std::ofstream(partial) << savedSettingsText(live, window) << viewText;
     std::filesystem::rename(partial, path, error);
     if (error) warn("cannot save the settings to " + path + ": " + error.message());
 }

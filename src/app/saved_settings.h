@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 
 namespace app {
+
+struct Options; // cli.h: the command line
 
 using Warn = std::function<void(const std::string&)>; // one line for people
 
@@ -25,8 +27,9 @@ bool isViewLine(const std::string& line);
 // neither variable is set.
 std::string savedSettingsPath();
 
-// The kept settings of `options` that differ from viewerDefaults(), one flag per line.
-std::string savedSettingsText(const Options& options);
+// The kept settings of `live` and the window's place that differ from viewerDefaults()', one
+// flag per line.
+std::string savedSettingsText(const LiveSettings& live, const WindowPlace& window);
 
 // The arguments the lines of `text` hold. A line that names no kept setting or that its flag
 // refuses is left out, with one warning naming `name`:line and why; blank lines and lines
@@ -40,15 +43,17 @@ std::vector<std::string> savedArgs(const std::string& text, const std::string& n
 Options viewerOptions(const std::vector<std::string>& args, const std::string& path,
                       const Warn& warn);
 
-// The kept settings of `options` back to viewerDefaults()' (the panel's Reset to defaults).
-void resetSavedSettings(Options& options);
+// The kept settings of `live` back to viewerDefaults()' (the panel's Reset to defaults); the
+// window's place stays where it is.
+void resetSavedSettings(LiveSettings& live);
 
 // The file's text; "" when there is none.
 std::string readSavedSettings(const std::string& path);
 
-// Writes savedSettingsText(options) and then `viewText` (the window's own lines) to `path`,
-// making its folder; a failure is one warning.
-void writeSavedSettings(const std::string& path, const Options& options, const Warn& warn,
+// Writes savedSettingsText(live, window) and then `viewText` (the window's own lines) to
+// `path`, making its folder; a failure is one warning.
+void writeSavedSettings(const std::string& path, const LiveSettings& live,
+                        const WindowPlace& window, const Warn& warn,
                         const std::string& viewText = {});
 
 } // namespace app

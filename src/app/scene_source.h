@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/camera.h"
 #include "scene/lod.h"

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/camera_frame.h"
+#include "app/cli.h"
 #include "app/exit_code.h"
 #include "app/measure_json.h"
 #include "app/pipeline_cache_file.h"
@@ -32,23 +33,35 @@ vk::DeviceInfo presentableDevice(const vk::Instance& instance, const std::string
 }
 
 // The panel's layout and the recent files as the last run left them (kept_view.h).
-ViewSettings keptView(const Options& options) {
+ViewSettings keptView(const ViewerStart& start) {
     ViewSettings view;
-    const std::string path = options.savedSettings ? savedSettingsPath() : "";
+    const std::string path = start.savedSettings ? savedSettingsPath() : "";
     if (!path.empty()) readKeptView(readSavedSettings(path), path, view, Events::problem);
     return view;
 }
 
+ViewerStart viewerStart(const Options& options) {
+    return {.window = windowPlace(options),
+            .device = options.device,
+            .shaderDir = options.shaderDir,
+            .validation = options.validation,
+            .syncValidation = options.syncValidation,
+            .script = options.script,
+            .printEvents = options.printEvents,
+            .savedSettings = options.savedSettings};
+}
+
 } // namespace
 
-Viewer::Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script)
-    : settings_(options), view_(keptView(options)), window_(window), events_(options.printEvents),
-      surface_(instance, window.createSurface(instance)),
-      device_(instance, presentableDevice(instance, options.device, surface_.handle()),
+Viewer::Viewer(const ViewerStart& start, const LiveSettings& settings, Window& window,
+               vk::Instance& instance, ScriptPlayer script)
+    : startup_(start), settings_(settings), view_(keptView(start)), window_(window),
+      events_(start.printEvents), surface_(instance, window.createSurface(instance)),
+      device_(instance, presentableDevice(instance, start.device, surface_.handle()),
               {VK_KHR_SWAPCHAIN_EXTENSION_NAME}),
-      compiler_(vk::ShaderCompiler::locate(options.shaderDir)),
+      compiler_(vk::ShaderCompiler::locate(start.shaderDir)),
       presenter_(window, instance, device_, surface_.handle()),
-      scene_(device_, compiler_, events_, options, presenter_.extent()), slots_(device_),
+      scene_(device_, compiler_, events_, settings, presenter_.extent()), slots_(device_),
       input_(*this, window.handle(), std::move(script)) {
     const auto size = window.size(), position = window.position();
     events_.say("window", [&](util::JsonWriter& j) {
@@ -81,7 +94,7 @@ double Viewer::elapsed() const {
 float Viewer::aspect() const {
     const VkExtent2D e = presenter_.extent();
     return e.height ? float(e.width) / float(e.height)
-                    : float(settings_.width) / float(settings_.height);
+                    : float(startup_.window.width) / float(startup_.window.height);
 }
 
 void Viewer::reloadShaders() {
@@ -405,24 +418,24 @@ void Viewer::rest() {
     });
 }
 
+// The one place the viewer reads the command line: what it starts with, and its live settings.
 int runViewer(const Options& options) {
+    const ViewerStart start = viewerStart(options);
     // A bad script fails before any window opens.
-    ScriptPlayer script(options.script.empty() ? std::vector<ScriptLine>{}
-                                               : loadScript(options.script));
-    Window window(options.width, options.height, options.windowPos);
-    vk::Instance instance({options.validation, window.vulkanExtensions(), options.syncValidation});
+    ScriptPlayer script(start.script.empty() ? std::vector<ScriptLine>{}
+                                             : loadScript(start.script));
+    Window window(start.window.width, start.window.height, start.window.position);
+    vk::Instance instance({start.validation, window.vulkanExtensions(), start.syncValidation});
     {
-        Viewer viewer(options, window, instance, std::move(script));
+        Viewer viewer(start, options.live, window, instance, std::move(script));
         viewer.run();
-        if (options.savedSettings) {
+        if (start.savedSettings) {
             // The window as it closes opens next time: its size and place are --size and
             // --window-pos lines, the panel and the recent files the viewer's own.
-            Options kept = viewer.settings();
             const auto size = window.size();
-            kept.width = uint32_t(std::max(size[0], 1));
-            kept.height = uint32_t(std::max(size[1], 1));
-            kept.windowPos = window.position();
-            writeSavedSettings(savedSettingsPath(), kept, Events::problem,
+            const WindowPlace closed{uint32_t(std::max(size[0], 1)), uint32_t(std::max(size[1], 1)),
+                                     window.position()};
+            writeSavedSettings(savedSettingsPath(), viewer.settings(), closed, Events::problem,
                                keptViewText(viewer.view()));
         }
     }
@@ -431,9 +444,9 @@ int runViewer(const Options& options) {
 
 void Viewer::resetSettings() {
     resetSavedSettings(settings_);
-    if (settings_.savedSettings)
+    if (startup_.savedSettings)
         writeSavedSettings(
-            savedSettingsPath(), settings_,
+            savedSettingsPath(), settings_, startup_.window,
             [this](const std::string& message) { scene_.fail(message); }, keptViewText(view_));
     events_.say("settings", [](util::JsonWriter& j) { j.member("reset", true); });
 }

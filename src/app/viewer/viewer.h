@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "app/viewer/pacer.h"
 #include "app/viewer/panel/edge_hover.h"
 #include "app/viewer/panel/measure_overlay.h"
@@ -33,6 +33,20 @@
 
 namespace app {
 
+struct Options; // cli.h: the command line
+
+// What the viewer reads once, at start, from the command line and the saved settings; all it
+// changes while it runs is the LiveSettings it is handed.
+struct ViewerStart {
+    WindowPlace window; // --size, --window-pos; Viewer::aspect's until the first frame
+    std::string device; // --device
+    std::string shaderDir;
+    bool validation = false, syncValidation = false;
+    std::string script;        // --script (script.h)
+    bool printEvents = false;  // --print-events: the event lines on stdout (events.h)
+    bool savedSettings = true; // read and write saved_settings.h's file (--no-saved-settings)
+};
+
 // Opens the window on the options' scene and runs until it is closed (window close button,
 // Ctrl+Q, or a script's quit), then keeps its settings, the window's size
 // and place, the panel's layout and the recent files for the next run unless
@@ -45,7 +59,8 @@ int runViewer(const Options& options);
 // the command table ask of it.
 class Viewer final : public InputTarget {
   public:
-    Viewer(const Options& options, Window& window, vk::Instance& instance, ScriptPlayer script);
+    Viewer(const ViewerStart& start, const LiveSettings& settings, Window& window,
+           vk::Instance& instance, ScriptPlayer script);
     ~Viewer() override;
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;
@@ -55,8 +70,10 @@ class Viewer final : public InputTarget {
     // CommandTarget.
     Document& document() override { return document_; }
     const Document& document() const override { return document_; }
-    Options& settings() override { return settings_; } // applied at the start of the next frame
-    const Options& settings() const override { return settings_; }
+    LiveSettings& settings() override {
+        return settings_;
+    } // applied at the start of the next frame
+    const LiveSettings& settings() const override { return settings_; }
     ViewSettings& view() override { return view_; }
     const ViewSettings& view() const override { return view_; }
     OrbitCamera& camera() override { return camera_; }
@@ -89,7 +106,7 @@ class Viewer final : public InputTarget {
     // whole scene, in the area beside the panel.
     void fitView() override;
     // The view command (1, 3, 7, 0): a standard view, at the same distance. The ortho command
-    // (O): the projection, a setting (Options::camera).
+    // (O): the projection, a setting (LiveSettings::camera).
     void turnTo(const scene::StandardView& view) override;
     void setOrtho(bool ortho) override;
     void setXray(bool on) override; // X
@@ -176,7 +193,8 @@ class Viewer final : public InputTarget {
     // scene of it, or the whole), so that its lines act on a model.
     double scriptSeconds() const;
 
-    Options settings_; // the scene, render and animation settings, edited in place
+    const ViewerStart startup_;
+    LiveSettings settings_; // the scene, render and animation settings, edited in place
     ViewSettings view_;
     Window& window_;
     Events events_;

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "app/viewer/state/document.h"
 #include "app/viewer/state/events.h"
 #include "app/viewer/state/orbit_camera.h"
@@ -24,8 +24,8 @@ class CommandTarget {
 
     virtual Document& document() = 0;
     virtual const Document& document() const = 0;
-    virtual Options& settings() = 0; // applied at the start of the next frame
-    virtual const Options& settings() const = 0;
+    virtual LiveSettings& settings() = 0; // applied at the start of the next frame
+    virtual const LiveSettings& settings() const = 0;
     virtual ViewSettings& view() = 0;
     virtual const ViewSettings& view() const = 0;
     virtual OrbitCamera& camera() = 0;

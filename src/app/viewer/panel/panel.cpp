@@ -222,7 +222,7 @@ bool beginPanel(ViewSettings& view) {
 
 } // namespace
 
-PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info) {
+PanelActions drawPanel(LiveSettings& settings, ViewSettings& view, const PanelInfo& info) {
     PanelActions actions;
     view.panelLeft = view.panelRight = 0.0f; // until it is drawn
     if (!beginPanel(view)) {

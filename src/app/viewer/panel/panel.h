@@ -13,7 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "app/viewer/commands/command.h"
 #include "app/viewer/panel/panel_layout.h"
 #include "app/viewer/state/events.h"
@@ -135,6 +135,6 @@ struct PanelInfo {
 
 // Draws the panel; the user's changes land in `settings` (scene, render, animation) and
 // `view`, what it asks of the parts in the result.
-PanelActions drawPanel(Options& settings, ViewSettings& view, const PanelInfo& info);
+PanelActions drawPanel(LiveSettings& settings, ViewSettings& view, const PanelInfo& info);
 
 } // namespace app

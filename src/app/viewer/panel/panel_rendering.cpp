@@ -167,7 +167,7 @@ void clearPathCombo(render::ClearPath clear, const PanelInfo& info, PanelActions
 
 // Levels of detail: how many the scene has (a reload), the error the cull pass chooses them
 // by, the tint, and the triangles the newest frame drew at each.
-void levelsOfDetail(Options& settings, const PanelInfo& info) {
+void levelsOfDetail(LiveSettings& settings, const PanelInfo& info) {
     sliderOnRelease("LOD levels built", settings.scene.lodLevels, 1u, scene::maxLevels);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("levels of detail built when the scene loads, full detail included "
@@ -267,7 +267,7 @@ void edgeSettings(render::EdgeSettings& edges) {
 
 } // namespace
 
-void rendering(Options& settings, const PanelInfo& info, PanelActions& actions) {
+void rendering(LiveSettings& settings, const PanelInfo& info, PanelActions& actions) {
     pipeline(settings.render, info, actions);
     edgeSettings(settings.render.edges);
     culling(settings.render.culling, info, actions);

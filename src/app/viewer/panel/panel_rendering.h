@@ -6,7 +6,7 @@
 namespace app {
 
 // The renderer, its mode and settings, culling, levels of detail; Reset to defaults.
-void rendering(Options& settings, const PanelInfo& info, PanelActions& actions);
+void rendering(LiveSettings& settings, const PanelInfo& info, PanelActions& actions);
 // Model copies, the parts mode, and what the scene and the renderer hold.
 void sceneSection(SceneSettings& s, const PanelInfo& info, PanelActions& actions);
 

@@ -11,7 +11,7 @@ namespace app {
 namespace {
 
 // Edges, projection, vsync and the standard views.
-void viewRow(const Options& settings, const ViewSettings& view, PanelActions& actions) {
+void viewRow(const LiveSettings& settings, const ViewSettings& view, PanelActions& actions) {
     switchCheckbox("edges", CommandId::Edges, settings.render.edges.on, actions);
     switchCheckbox("ortho", CommandId::Ortho, settings.camera.ortho, actions, true);
     switchCheckbox("vsync", CommandId::Vsync, view.vsync, actions, true);
@@ -71,7 +71,7 @@ void explodeSlider(const PanelInfo& info, PanelActions& actions) {
 
 } // namespace
 
-void toolsSection(const Options& settings, const ViewSettings& view, const PanelInfo& info,
+void toolsSection(const LiveSettings& settings, const ViewSettings& view, const PanelInfo& info,
                   PanelActions& actions, PanelLayout& layout) {
     layout.mark("view");
     viewRow(settings, view, actions);

@@ -8,7 +8,7 @@
 
 namespace app {
 
-void toolsSection(const Options& settings, const ViewSettings& view, const PanelInfo& info,
+void toolsSection(const LiveSettings& settings, const ViewSettings& view, const PanelInfo& info,
                   PanelActions& actions, PanelLayout& layout);
 
 } // namespace app

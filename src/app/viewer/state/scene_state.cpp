@@ -12,8 +12,9 @@
 namespace app {
 
 SceneState::SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, const Events& events,
-                       const Options& settings, VkExtent2D extent)
-    : device_(device), events_(events), renderer_(device, compiler, pipelineCacheFolder(settings)),
+                       const LiveSettings& settings, VkExtent2D extent)
+    : device_(device), events_(events),
+      renderer_(device, compiler, pipelineCacheFolder(settings.scene)),
       sampleCounts_(render::supportedSampleCounts(device)) {
     const uint32_t msaa = settings.render.pipeline.msaa;
     targets_ = std::make_shared<render::SceneTargets>(device, renderer_.pass(msaa), extent);

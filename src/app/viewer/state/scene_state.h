@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "app/cli.h"
+#include "app/live_settings.h"
 #include "app/scene_source.h"
 #include "app/viewer/state/events.h"
 #include "app/viewer/state/progressive.h"
@@ -32,7 +32,7 @@ class SceneState {
     // shows it as it comes. Throws what the renderer refuses at start-up, as headless would
     // (exit 1); a model that cannot be opened is firstFailure()'s.
     SceneState(vk::Device& device, const vk::ShaderCompiler& compiler, const Events& events,
-               const Options& settings, VkExtent2D extent);
+               const LiveSettings& settings, VkExtent2D extent);
 
     // What the camera and selection must follow.
     enum class Change {
