@@ -172,8 +172,7 @@ class Viewer final : public InputTarget {
     void drawOverlays();                        // help, empty view, notice; undo steps
     std::optional<EmptyReason> emptyView(uint32_t partCount, uint32_t hidden, bool sectionOn,
                                          std::optional<uint32_t> visible) const;
-    // Undo and redo: the event records (the selection `before` them).
-    void restored(const ShownState& state, const char* what, const scene::PartSet& before);
+    void travel(bool forward); // undo (back) or redo, with their event records
     // The parts a click at `level` selects around `part` (scene::partsAround).
     scene::PartSet partsAround(uint32_t part, uint32_t level) const;
     void remember(const std::string& source); // a model that opened: the recent files

@@ -23,26 +23,26 @@ void Viewer::toggleHelp() {
 }
 
 void Viewer::undo() {
-    const scene::PartSet before = document_.selection().selected();
-    if (const auto state = document_.undo())
-        restored(*state, "undo", before);
-    else
-        events_.say("undo", [](util::JsonWriter& j) { j.member("done", false); });
+    travel(false);
 }
 
 void Viewer::redo() {
-    const scene::PartSet before = document_.selection().selected();
-    if (const auto state = document_.redo())
-        restored(*state, "redo", before);
-    else
-        events_.say("redo", [](util::JsonWriter& j) { j.member("done", false); });
+    travel(true);
 }
 
-// The document has come back to `state`; the selection (`before` it) lost what it hides.
-void Viewer::restored(const ShownState& state, const char* what, const scene::PartSet& before) {
+// The document comes back to the hidden parts and planes of the step before (or after); the
+// selection loses what they hide.
+void Viewer::travel(bool forward) {
+    const char* what = forward ? "redo" : "undo";
+    const scene::PartSet before = document_.selection().selected();
+    const auto state = forward ? document_.redo() : document_.undo();
+    if (!state) {
+        events_.say(what, [](util::JsonWriter& j) { j.member("done", false); });
+        return;
+    }
     if (document_.selection().selected() != before) selectionChanged();
     partsChanged();
-    events_.say(what, [&](util::JsonWriter& j) { shownMembers(j.member("done", true), state); });
+    events_.say(what, [&](util::JsonWriter& j) { shownMembers(j.member("done", true), *state); });
 }
 
 // F12 rather than Ctrl+Shift+S: one key, as in the tools that have a screenshot key (Steam,
