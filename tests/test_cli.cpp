@@ -2,12 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "app/benchmark.h"
 #include "app/cli.h"
 #include "app/cli_flags.h"
 #include "app/headless.h"
+#include "app/version.h"
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "scene/mesh_builder.h"
@@ -137,6 +139,32 @@ TEST(Cli, RefusesBadCommandLines) {
         std::string joined;
         for (const auto& a : args) joined += a + " ";
         EXPECT_THROW(parseArgs(args), UsageError) << joined;
+    }
+}
+
+// --version: "idview VERSION (COMMIT)", COMMIT the source's HEAD at build time (the test runs
+// after the build, from the same tree) or "unknown" where the source is not a git checkout.
+TEST(Cli, VersionNamesTheCommit) {
+    EXPECT_TRUE(parseArgs({"--version"}).version);
+    EXPECT_FALSE(parseArgs({}).version);
+    const std::string line = app::versionLine();
+    const std::string start = std::string("idview ") + IDVIEW_VERSION + " (";
+    ASSERT_EQ(line.rfind(start, 0), 0u) << line;
+    ASSERT_EQ(line.back(), ')') << line;
+    const std::string commit = line.substr(start.size(), line.size() - start.size() - 1);
+    std::string head;
+    const std::string ask =
+        std::string("git -C '") + IDVIEW_SOURCE_SHADER_DIR + "/..' rev-parse HEAD 2>/dev/null";
+    if (FILE* git = popen(ask.c_str(), "r")) {
+        char text[64] = {};
+        if (std::fgets(text, sizeof text, git)) head = text;
+        pclose(git);
+    }
+    if (head.size() < 12) {
+        EXPECT_EQ(commit, "unknown");
+    } else {
+        // git describe: the abbreviated hash alone, or TAG-N-gHASH; "-dirty" with local edits.
+        EXPECT_NE(commit.find(head.substr(0, 12)), std::string::npos) << line << " HEAD " << head;
     }
 }
 

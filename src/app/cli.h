@@ -22,6 +22,7 @@ namespace app {
 struct Options {
     // What to do.
     bool help = false;
+    bool version = false; // print the version line and exit
     bool listDevices = false;
     bool listRenderers = false;
     bool headless = false;

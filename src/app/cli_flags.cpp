@@ -49,6 +49,8 @@ Flag rangeFlag(const char* name, const char* help, render::Range range, uint32_t
 std::vector<Flag> runningFlags(const Options&) {
     return {
         on("--help", "print this text", &Options::help),
+        on("--version", "print idview's version and the commit it was built from, then exit",
+           &Options::version),
         on("--headless", "render offscreen without a window or surface", &Options::headless),
         on("--validation", "enable the Khronos validation layer; messages make exit 3",
            &Options::validation),

@@ -11,6 +11,7 @@
 #include "app/headless.h"
 #include "app/saved_settings.h"
 #include "app/scene_source.h"
+#include "app/version.h"
 #include "app/viewer/viewer.h"
 #include "render/culling.h"
 #include "render/technique.h"
@@ -99,8 +100,9 @@ int main(int argc, char** argv) {
     app::Options options;
     try {
         options = app::parseArgs(args);
-        if (!options.help && !options.listRenderers && !options.listDevices && !options.stats &&
-            !options.tree && options.exportPath.empty() && !options.headless && !inspects(options))
+        if (!options.help && !options.version && !options.listRenderers && !options.listDevices &&
+            !options.stats && !options.tree && options.exportPath.empty() && !options.headless &&
+            !inspects(options))
             options = viewerOptions(args);
     } catch (const app::UsageError& e) {
         // One line and where to look: the usage would scroll it away.
@@ -109,6 +111,10 @@ int main(int argc, char** argv) {
     }
     if (options.help) {
         std::printf("%s", app::usage().c_str());
+        return 0;
+    }
+    if (options.version) {
+        std::printf("%s\n", app::versionLine().c_str());
         return 0;
     }
     try {

@@ -22,6 +22,7 @@
 #include "scene/procedural/generator.h"
 #include "scene/procedural/procedural.h"
 #include "scene/stl/stl_loader.h"
+#include "util/program_paths.h"
 
 namespace app {
 
@@ -63,13 +64,7 @@ SceneSpec parseSceneSpec(const std::string& text) {
 }
 
 std::string defaultModelPath() {
-    std::error_code ignored;
-    auto exe = std::filesystem::read_symlink("/proc/self/exe", ignored);
-    if (!ignored) {
-        auto bundled = exe.parent_path() / "assets" / "default.glb";
-        if (std::filesystem::exists(bundled)) return bundled.string();
-    }
-    return IDVIEW_SOURCE_ASSET_DIR "/default.glb";
+    return util::dataPath("assets/default.glb").string();
 }
 
 std::string sourceOf(const SceneSettings& settings) {

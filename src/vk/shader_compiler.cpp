@@ -11,6 +11,8 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "util/program_paths.h"
+
 namespace vk {
 namespace {
 
@@ -193,13 +195,7 @@ std::vector<uint32_t> ShaderCompiler::compileNow(const ShaderRequest& request) c
 
 std::filesystem::path ShaderCompiler::locate(const std::string& overrideDir) {
     if (!overrideDir.empty()) return overrideDir;
-    std::error_code ignored;
-    auto exe = std::filesystem::read_symlink("/proc/self/exe", ignored);
-    if (!ignored) {
-        auto bundled = exe.parent_path() / "shaders";
-        if (std::filesystem::exists(bundled / "shared.h")) return bundled;
-    }
-    return IDVIEW_SOURCE_SHADER_DIR;
+    return util::dataPath("shaders/shared.h").parent_path();
 }
 
 Handle<VkShaderModule> createShaderModule(const Device& device, const std::vector<uint32_t>& spirv,

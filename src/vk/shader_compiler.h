@@ -53,8 +53,8 @@ class ShaderCompiler {
     uint64_t compilations() const { return compilations_; }
     uint64_t remembered() const { return remembered_; }
 
-    // The folder idview reads shaders from: --shader-dir if given, else shaders/ next to the
-    // executable (a bundled copy), else the source tree the binary was built from.
+    // The folder idview reads shaders from: --shader-dir if given, else shaders/ beside the
+    // executable, else installed (../share/idview/shaders), else the source's (util::dataPath).
     static std::filesystem::path locate(const std::string& overrideDir);
 
   private:

@@ -10,6 +10,7 @@
 #include "scene/cad/cad_assembly.h"
 #include "scene/cad/cad_stages.h"
 #include "util/memory.h"
+#include "util/program_paths.h"
 #include "util/worker_pool.h"
 
 namespace scene::cad {
@@ -353,14 +354,15 @@ CadLoadResult loadWhole(const std::string& path, const CadOptions& options, uint
 
 std::string loadWorkerProgram() {
     if (const char* set = std::getenv("IDVIEW_LOAD_WORKER"); set && *set) return set;
-    std::error_code ignored;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ignored);
-    for (const fs::path& folder : {self.parent_path(), fs::path(IDVIEW_BINARY_DIR)}) {
+    const fs::path self = util::programDir();
+    const fs::path installed = util::installedHelperDir();
+    for (const fs::path& folder : {self, installed, fs::path(IDVIEW_BINARY_DIR)}) {
         const fs::path program = folder / "idview-load-worker";
         if (!folder.empty() && access(program.c_str(), X_OK) == 0) return program.string();
     }
-    throw Bad("idview-load-worker, which reads CAD files, is neither beside " + self.string() +
-              " nor in " + IDVIEW_BINARY_DIR + " (set IDVIEW_LOAD_WORKER to it)");
+    throw Bad("idview-load-worker, which reads CAD files, is neither beside idview in " +
+              self.string() + ", nor in " + installed.string() + ", nor in " + IDVIEW_BINARY_DIR +
+              " (set IDVIEW_LOAD_WORKER to it)");
 }
 
 unsigned workerCount(const CadOptions& options) {

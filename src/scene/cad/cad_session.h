@@ -17,8 +17,8 @@ CadLoadResult loadWithWorkers(const std::string& path, const CadOptions& options
                               const CadProgress& progress, uint32_t levels,
                               const std::atomic<bool>* cancel, const CadPartialSink& partial);
 
-// The worker program: $IDVIEW_LOAD_WORKER, else idview-load-worker beside this executable,
-// else in the build folder this binary came from. Throws Bad where there is none.
+// The worker program: $IDVIEW_LOAD_WORKER, else idview-load-worker beside this executable, else
+// ../libexec/idview (installed), else this binary's build folder. Throws Bad where there is none.
 std::string loadWorkerProgram();
 
 // options.workers, or one per core.
