@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# package_test.sh BUILD VERSION - the Debian package as `cpack -G DEB` makes it from BUILD
+# (written here into a work folder, so the build's own package is left alone): its name, the
+# files it installs, its control fields (Depends from dpkg-shlibdeps) and lintian with no error.
+set -uo pipefail
+build=$1
+version=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() {
+    echo "FAIL $1"
+    failures=$((failures + 1))
+}
+
+if ! (cd "$build" && cpack -G DEB -B "$work" >"$work/cpack.log" 2>&1); then
+    fail "cpack -G DEB: $(tail -5 "$work/cpack.log")"
+    exit 1
+fi
+deb=$work/idview_${version}_$(dpkg --print-architecture).deb
+[[ -f $deb ]] || { fail "no $(basename "$deb"): $(ls "$work")"; exit 1; }
+echo "ok   $(basename "$deb"), $(stat -c %s "$deb") bytes"
+
+files=$(dpkg-deb -c "$deb" | awk '{print $6}')
+for file in ./usr/bin/idview ./usr/bin/idview-step-copies ./usr/libexec/idview/idview-load-worker \
+    ./usr/share/idview/shaders/shared.h ./usr/share/idview/shaders/scene.vert \
+    ./usr/share/idview/assets/default.glb ./usr/share/doc/idview/copyright \
+    ./usr/share/doc/idview/changelog.gz; do
+    grep -qxF "$file" <<<"$files" && echo "ok   has $file" || fail "no $file in the package"
+done
+# Nothing outside /usr, nothing of the build or the source tree.
+outside=$(grep -vE '^\./(usr/.*)?$' <<<"$files")
+[[ -z $outside ]] && echo "ok   everything under /usr" || fail "outside /usr: $outside"
+
+field() { dpkg-deb -f "$deb" "$1"; }
+[[ $(field Package) == idview ]] && echo "ok   Package: idview" || fail "Package: $(field Package)"
+[[ $(field Version) == "$version" ]] && echo "ok   Version: $version" ||
+    fail "Version: '$(field Version)', the project's is $version"
+[[ $(field Section) == graphics ]] && echo "ok   Section: graphics" || fail "Section: $(field Section)"
+[[ -n $(field Maintainer) ]] || fail "no Maintainer"
+depends=$(field Depends)
+for library in libvulkan1 libglfw3 libc6 libstdc++6; do
+    [[ $depends =~ (^|, )"$library"( |,|$) ]] && echo "ok   Depends: $library" ||
+        fail "Depends has no $library: '$depends'"
+done
+recommends=$(field Recommends)
+for package in zenity mesa-vulkan-drivers; do
+    [[ $recommends == *"$package"* ]] && echo "ok   Recommends: $package" ||
+        fail "Recommends has no $package: '$recommends'"
+done
+
+# lintian: no E: line (its warnings are listed in docs/install.md).
+if ! command -v lintian >/dev/null; then
+    fail "lintian is not installed (Debian package lintian; scripts/setup.sh test installs it)"
+else
+    lintian --tag-display-limit 0 "$deb" >"$work/lintian.log" 2>&1
+    errors=$(grep '^E: ' "$work/lintian.log")
+    [[ -z $errors ]] && echo "ok   lintian: no errors ($(grep -c '^W: ' "$work/lintian.log") warnings)" ||
+        fail "lintian errors:"$'\n'"$errors"
+fi
+
+[[ $failures -eq 0 ]] && echo "all package checks passed"
+exit $((failures > 0))
