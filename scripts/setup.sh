@@ -29,9 +29,12 @@ packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-
     libportal-dev) # Open...: the desktop portal's file chooser (optional to the build)
 if [[ $what == test ]]; then
     # occt-misc: the STEP, IGES and BREP samples the CAD loader tests read; xdotool: the viewer
-    # tests' real input; jq: the viewer tests read the event records by field.
+    # tests' real input; jq: the viewer tests read the event records by field;
+    # desktop-file-utils, shared-mime-info, libglib2.0-bin (gio): the desktop files' tests
+    # validate the launcher and ask the MIME database each sample's type.
     packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang
-        libclang-rt-14-dev python3-matplotlib occt-misc xdotool jq)
+        libclang-rt-14-dev python3-matplotlib occt-misc xdotool jq desktop-file-utils
+        shared-mime-info libglib2.0-bin)
 fi
 
 missing=()
