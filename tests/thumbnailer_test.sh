@@ -88,8 +88,11 @@ ls "$XDG_CACHE_HOME"/idview/* >/dev/null 2>&1 || fail "nothing in the cache $XDG
 
 printf 'ISO-10303-21;\nHEADER;\nthis is not STEP\n' >"$work/broken.step"
 refused broken "^idview: error: .*broken\.step" "$work/broken.step"
-refused deadline "^idview: error: .*screw\.step: no thumbnail: gave up after 0\.3 s" \
-    "$step" --no-cache --thumbnail-timeout 0.3
+# A file that would block the reader forever is refused before it is read.
+mkfifo "$work/fifo.step"
+refused fifo "^idview: error: .*fifo\.step: not a regular file" "$work/fifo.step"
+refused deadline "^idview: error: .*screw\.step: no thumbnail: gave up after 0\.1 s" \
+    "$step" --no-cache --thumbnail-timeout 0.1
 refused memory "^idview: error: .*screw\.step: no thumbnail: " "$step" --no-cache \
     --thumbnail-memory 64
 # The watchdog's kill reached the whole process group: no idview or load worker of this
