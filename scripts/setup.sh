@@ -30,9 +30,12 @@ packages=(cmake g++ make pkg-config libglfw3-dev libglm-dev glslang-dev glslang-
 if [[ $what == test ]]; then
     # occt-misc: the STEP, IGES and BREP samples the CAD loader tests read; xdotool: the viewer
     # tests' real input; jq: the viewer tests read the event records by field; lintian: the
-    # Debian package's check (tests/package_test.sh).
+    # Debian package's check (tests/package_test.sh); desktop-file-utils, shared-mime-info,
+    # libglib2.0-bin (gio): the desktop files' tests validate the launcher and ask the MIME
+    # database each sample's type.
     packages+=(vulkan-validationlayers xvfb xauth googletest libgtest-dev assimp-testmodels clang
-        libclang-rt-14-dev python3-matplotlib occt-misc xdotool jq lintian)
+        libclang-rt-14-dev python3-matplotlib occt-misc xdotool jq lintian desktop-file-utils
+        shared-mime-info libglib2.0-bin)
 fi
 
 missing=()

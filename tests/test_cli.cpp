@@ -97,7 +97,7 @@ TEST(Cli, EveryFlagIsApplied) {
 TEST(Cli, RefusesBadCommandLines) {
     const std::vector<std::vector<std::string>> bad = {
         {"--bogus"},
-        {"headless"},
+        {"a.step", "headless"}, // a second model (the first is the model)
         {"--size"},
         {"--size", "320"},
         {"--size", "0x200"},

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "app/cli_flags.h"
+#include "app/cli_values.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/lod.h"
@@ -87,9 +88,26 @@ bool given(const Options& options, const char* name) {
     return std::find(options.given.begin(), options.given.end(), name) != options.given.end();
 }
 
+// The one argument that is no flag: the model, as --model would take it (a launcher's %f);
+// refused after another model, where which one was meant is a guess.
+void applyModelArgument(const std::string& argument, Options& options) {
+    if (given(options, "--model"))
+        throw UsageError(
+            "one model at a time: '" + argument + "' after " +
+            (options.live.scene.model.empty() ? "--model" : "'" + options.live.scene.model + "'"));
+    options.live.scene.model = modelPath(argument);
+    options.given.push_back("--model");
+}
+
 // Each argument through its flag (--name value or --name=value), recorded in Options::given.
 void applyFlags(const std::vector<std::string>& args, Options& options) {
+    bool positionalModel = false;
     for (size_t i = 0; i < args.size(); ++i) {
+        if (!args[i].empty() && args[i][0] != '-') {
+            applyModelArgument(args[i], options);
+            positionalModel = true;
+            continue;
+        }
         std::string name = args[i], value;
         bool inlineValue = false;
         if (auto eq = name.find('='); name.rfind("--", 0) == 0 && eq != std::string::npos) {
@@ -101,6 +119,9 @@ void applyFlags(const std::vector<std::string>& args, Options& options) {
         for (const auto& f : flags())
             if (name == f.name) flag = &f;
         if (!flag) throw UsageError("unknown option '" + args[i] + "'");
+        if (name == "--model" && positionalModel)
+            throw UsageError("one model at a time: --model after '" + options.live.scene.model +
+                             "'");
         if (flag->value && !inlineValue) {
             if (i + 1 >= args.size())
                 throw UsageError(name + " needs a value (" + flag->value + ")");
@@ -164,6 +185,16 @@ void settleLevelsAndAnimation(Options& options) {
                          "exploded view from 0 to 1 and back");
 }
 
+// --thumbnail: a square image of one frame, written where --screenshot says.
+void settleThumbnail(Options& options) {
+    if (options.thumbnail.size == 0) return;
+    if (options.screenshot.empty())
+        throw UsageError("--thumbnail needs --screenshot FILE, where the PNG goes");
+    if (options.benchmark) throw UsageError("--thumbnail and --benchmark cannot be combined");
+    options.width = options.height = options.thumbnail.size;
+    options.frames = 1;
+}
+
 // Every pixel a flag names lies in the image.
 void checkPixels(const Options& options) {
     std::vector<Options::Pixel> pixels = options.picks;
@@ -190,6 +221,7 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
     applyFlags(args, options);
     settleBenchmarkLists(options);
     settleLevelsAndAnimation(options);
+    settleThumbnail(options);
     checkPixels(options);
     if (!options.hide.empty() && !options.isolate.empty())
         throw UsageError("--hide and --isolate cannot be combined: --isolate hides the rest");
@@ -201,7 +233,7 @@ Options parseArgs(int argc, char** argv) {
 }
 
 std::string usage() {
-    std::string text = "usage: idview [OPTIONS]\n"
+    std::string text = "usage: idview [OPTIONS] [FILE]\n"
                        "Renders a CAD assembly and knows which part is at every pixel.\n";
     for (const FlagGroup& group : flagGroups()) {
         text.append("\n").append(group.title).append(":\n");

@@ -55,7 +55,15 @@ struct Options {
     // (HeadlessResult::frames); each frame is then waited for.
     bool keepEveryFrame = false;
     std::string screenshot; // PNG path
-    std::string idImage;    // raw little-endian uint32 path
+    // --thumbnail SIZE: a file manager's preview (thumbnail.h): a SIZExSIZE PNG written to
+    // `screenshot` by a child process that is given up on after `seconds` or past `memoryMib`
+    // of data memory, leaving no file. size 0: not a thumbnail run.
+    struct Thumbnail {
+        uint32_t size = 0;
+        float seconds = 10.0f;
+        uint32_t memoryMib = 4096;
+    } thumbnail;
+    std::string idImage; // raw little-endian uint32 path
     // Headless picking: one frame per point picks it and prints a JSON line; `selects` is
     // picked first and selected as a click there would (steady highlight in the images).
     struct Pixel {
@@ -110,7 +118,8 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Accepts "--flag value" and "--flag=value". Throws UsageError.
+// Accepts "--flag value" and "--flag=value", and one argument that is no flag: the model's path
+// or file:// URI, as --model (a launcher's `idview %f`). Throws UsageError.
 // With --benchmark, flags not given take the benchmark's defaults (the seed's results table:
 // 2560x1440, 4x MSAA, 3 copies, 200 frames, all renderers, modes and culling modes).
 Options parseArgs(const std::vector<std::string>& args);

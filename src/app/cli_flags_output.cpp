@@ -14,6 +14,28 @@ std::vector<Flag> headlessFlags(const Options& d) {
                   [](Options& o, auto& v) { o.frames = parseCount("--frames", v, 1, 1000000); }}),
         headless(text("--screenshot", "FILE", "write the last frame's colour image as PNG",
                       &Options::screenshot)),
+        {"--thumbnail", "SIZE",
+         "write a file manager's preview: a SIZExSIZE PNG of the model, fitted, to the "
+         "--screenshot file (written whole or not at all), by a child process given up on after "
+         "--thumbnail-timeout or past --thumbnail-memory; implies --headless and one frame",
+         [](Options& o, auto& v) {
+             o.thumbnail.size = parseCount("--thumbnail", v, 1, 4096);
+             o.headless = true;
+         }},
+        {"--thumbnail-timeout", "SECONDS",
+         "--thumbnail: give up after SECONDS, above 0" + byDefault(d.thumbnail.seconds),
+         [](Options& o, auto& v) {
+             o.thumbnail.seconds = parseNumber("--thumbnail-timeout", v, 3600.0f, "seconds");
+             if (o.thumbnail.seconds <= 0.0f)
+                 throw UsageError("--thumbnail-timeout expects seconds above 0, not '" + v + "'");
+         }},
+        {"--thumbnail-memory", "MIB",
+         "--thumbnail: give up past MIB MiB of data memory in any one process (its heap and "
+         "private maps)" +
+             byDefault(d.thumbnail.memoryMib),
+         [](Options& o, auto& v) {
+             o.thumbnail.memoryMib = parseCount("--thumbnail-memory", v, 16, 1u << 20);
+         }},
         headless(
             text("--id-image", "FILE",
                  "write the last frame's part IDs: W*H little-endian uint32, row-major, top row "

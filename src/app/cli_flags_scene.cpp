@@ -19,8 +19,9 @@ std::vector<Flag> sceneFlags(const Options& d) {
         {"--model", "FILE",
          "open a model: " + scene::formatList() +
              "; a part is a glTF primitive, a B-rep face, an STL solid; default: "
-             "assets/default.glb",
-         [](Options& o, auto& v) { o.live.scene.model = v; }},
+             "assets/default.glb; also given as the one argument that is no flag (idview "
+             "FILE), and as a file:// URI",
+         [](Options& o, auto& v) { o.live.scene.model = modelPath(v); }},
         {"--scene", "SPEC",
          "built-in scene instead of a model: assembly, tiles (the test layout) or "
          "procedural[:preset=small|car-like][,seed=N]",

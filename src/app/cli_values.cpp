@@ -3,6 +3,7 @@
 #include "app/cli_values.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -146,6 +147,27 @@ std::string hexColor(glm::vec3 color) {
     const glm::uvec3 c = glm::uvec3(glm::round(glm::clamp(color, 0.0f, 1.0f) * 255.0f));
     std::snprintf(text, sizeof text, "%02x%02x%02x", c.r, c.g, c.b);
     return text;
+}
+
+std::string modelPath(const std::string& argument) {
+    const std::string scheme = "file://";
+    if (argument.rfind(scheme, 0) != 0) return argument;
+    std::string rest = argument.substr(scheme.size());
+    // file://HOST/path: only the local host's files can be opened.
+    if (rest.rfind("localhost/", 0) == 0) rest.erase(0, std::string("localhost").size());
+    if (rest.empty() || rest[0] != '/')
+        throw UsageError("'" + argument + "' is not a local file URI (file:///path)");
+    auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+    std::string path;
+    for (size_t i = 0; i < rest.size(); ++i) {
+        if (rest[i] == '%' && i + 2 < rest.size() && hex(rest[i + 1]) && hex(rest[i + 2])) {
+            path += static_cast<char>(std::stoi(rest.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            path += rest[i];
+        }
+    }
+    return path;
 }
 
 } // namespace app

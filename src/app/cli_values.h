@@ -33,6 +33,9 @@ std::array<Options::Pixel, 2> parseMeasure(const std::string& text);
 std::array<uint32_t, 2> parseDistance(const std::string& text); // A,B: two unique part IDs
 // --section AXIS,VALUE[,flip]: into the first free plane; more than the planes are refused.
 void addSectionPlane(scene::Section& section, const std::string& text);
+// A model argument as a path: a file:// URI (a file manager's or launcher's %u, a
+// thumbnailer's %i) decoded, anything else as given.
+std::string modelPath(const std::string& argument);
 // "RRGGBB" in hex, as displayed, and back.
 glm::vec3 parseColor(const std::string& flag, const std::string& text);
 std::string hexColor(glm::vec3 color);

@@ -11,6 +11,7 @@
 #include "app/headless.h"
 #include "app/saved_settings.h"
 #include "app/scene_source.h"
+#include "app/thumbnail.h"
 #include "app/version.h"
 #include "app/viewer/viewer.h"
 #include "render/culling.h"
@@ -120,6 +121,7 @@ int main(int argc, char** argv) {
     try {
         if (options.listRenderers) return listRenderers();
         if (options.listDevices) return listDevices(options);
+        if (options.thumbnail.size > 0) return app::runThumbnail(options);
         // --stats with --headless renders first, to say how long the first frame took.
         const bool renderedStats = options.stats && options.headless && !options.benchmark &&
                                    !options.tree && options.exportPath.empty();
