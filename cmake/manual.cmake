@@ -9,6 +9,9 @@ add_executable(idview-docs src/tools/docs_main.cpp src/tools/manual_page.cpp
   src/tools/completion.cpp)
 target_compile_options(idview-docs PRIVATE ${IDVIEW_WARNINGS})
 target_link_libraries(idview-docs PRIVATE idview_core)
+# The page's version is the project's alone: a commit in it would make every commit's page
+# differ from the committed one.
+target_compile_definitions(idview-docs PRIVATE IDVIEW_DOCS_VERSION="${PROJECT_VERSION}")
 
 add_custom_target(docs-data
   COMMAND idview-docs man > ${PROJECT_SOURCE_DIR}/data/idview.1
