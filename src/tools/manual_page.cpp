@@ -99,7 +99,7 @@ The viewer's screenshot key (F12) writes there, else to the Pictures folder of
 .TP
 .B IDVIEW_LOAD_WORKER
 The program that reads CAD files in worker processes, instead of the
-\fBidview\-load\-worker\fR beside idview.
+\fB\%idview\-load\-worker\fR idview finds itself.
 .TP
 .B VK_DRIVER_FILES\fR, \fBVK_ICD_FILENAMES
 Read by the Vulkan loader: which drivers it offers (\fB\-\-list\-devices\fR shows them).
