@@ -9,8 +9,8 @@
 set -uo pipefail
 idview=$1
 if ! command -v prlimit >/dev/null; then
-    echo "SKIP: prlimit is needed (Debian package util-linux)"
-    exit 77
+    echo "FAIL prlimit is needed: apt-get install util-linux"
+    exit 1
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -36,6 +36,7 @@
 #include "scene/cad/cad_cache.h"
 #include "scene/cad/cad_mesh.h"
 #include "scene/lod.h"
+#include "test_data.h"
 #include "util/hash64.h"
 
 namespace {
@@ -50,7 +51,7 @@ const fs::path kMotor = "/usr/share/opencascade/data/occ/Motor-c.brep";
 class CadCache : public ::testing::Test {
   protected:
     void SetUp() override {
-        if (!fs::exists(kMotor)) GTEST_SKIP() << kMotor << " missing (package occt-misc)";
+        REQUIRE_DATA(kMotor);
         root_ = fs::temp_directory_path() /
                 ("idview_cache_" + std::to_string(::getpid()) + "_" +
                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -166,7 +167,7 @@ TEST(Hash64, EveryBitOfTheInputCounts) {
 // cache keeps the parts' order all the same.
 TEST_F(CadCache, ASewnShapeComesBackFaceForFace) {
     const std::string bearing = "/usr/share/opencascade/data/iges/bearing.iges";
-    if (!fs::exists(bearing)) GTEST_SKIP() << bearing << " missing (package occt-misc)";
+    REQUIRE_DATA(bearing);
     const CadLoadResult first = loadCadCached(bearing, {}, {}, 1);
     const CadLoadResult second = loadCadCached(bearing, {}, {}, 1);
     ASSERT_EQ(second.cache, "hit");
@@ -396,7 +397,7 @@ TEST_F(CadCache, AChangedFileIsAMissAndReplacesItsEntry) {
 // Sequential meshing of Motor-c.brep with a budget of 1000 triangles: faces stop being
 // meshed right after the one that passes it, and the count is what the faces hold.
 TEST(MaxTriangles, TheMesherStopsBetweenFaces) {
-    if (!fs::exists(kMotor)) GTEST_SKIP() << kMotor << " missing (package occt-misc)";
+    REQUIRE_DATA(kMotor);
     TopoDS_Shape shape;
     BRep_Builder builder;
     ASSERT_TRUE(BRepTools::Read(shape, kMotor.c_str(), builder));
@@ -429,7 +430,7 @@ TEST(MaxTriangles, TheMesherStopsBetweenFaces) {
 }
 
 TEST(MaxTriangles, TheRefusalNamesTheFileAndDeflectionsThatLeadUnderTheLimit) {
-    if (!fs::exists(kMotor)) GTEST_SKIP() << kMotor << " missing (package occt-misc)";
+    REQUIRE_DATA(kMotor);
     const CadLoadResult full = loadCad(kMotor.string());
     const uint64_t triangles = full.scene.indices.size() / 3;
     CadOptions options;

@@ -11,6 +11,7 @@
 #include "closed_cad_files.h"
 #include "rig_step.h"
 #include "scene/lod.h"
+#include "test_data.h"
 
 namespace {
 
@@ -44,7 +45,7 @@ size_t edgesUsedOnce(const scene::Scene& s, const scene::Geometry& g) {
 // resolution) and the float-apart points of CrankArm.brep and Motor-c.brep left edges open.
 TEST(CadClosedSolids, EveryLevelOfAClosedModelIsAClosedMesh) {
     const std::vector<std::string> files = testing_support::closedCadFiles();
-    if (files.empty()) GTEST_SKIP() << "no occt-misc samples (package occt-misc)";
+    ASSERT_FALSE(files.empty()) << testing_support::missingData(testing_support::kOcctData);
     EXPECT_GE(files.size(), 20u); // the criterion keeps most samples: it must not drop them
     size_t levels = 0;
     for (const std::string& path : files) {

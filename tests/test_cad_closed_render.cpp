@@ -13,6 +13,7 @@
 #include "scene/camera_path.h"
 #include "scene/lod.h"
 #include "scene/raycast.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -62,7 +63,7 @@ app::LoadedScene everyLevelSideBySide(const std::string& path) {
 // background pixel enclosed by the parts where the triangles cover it.
 TEST(CadClosedSolids, NoBackgroundShowsThroughAClosedModel) {
     const std::vector<std::string> files = testing_support::closedCadFiles();
-    if (files.empty()) GTEST_SKIP() << "no occt-misc samples (package occt-misc)";
+    ASSERT_FALSE(files.empty()) << testing_support::missingData(testing_support::kOcctData);
     constexpr uint32_t frames = 3;
     for (const std::string& path : files) {
         const app::LoadedScene loaded = everyLevelSideBySide(path);

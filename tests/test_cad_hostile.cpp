@@ -15,6 +15,7 @@
 
 #include "scene/cad/brep_counts.h"
 #include "scene/cad/cad_loader.h"
+#include "test_data.h"
 
 namespace {
 
@@ -42,7 +43,7 @@ std::optional<std::string> checked(const std::string& text) {
 } // namespace
 
 TEST(HostileBrep, EveryShippedFilePassesTheCountCheck) {
-    if (!fs::is_directory(kOcc)) GTEST_SKIP() << kOcc << " missing (package occt-misc)";
+    REQUIRE_DATA(kOcc);
     size_t files = 0;
     for (const auto& entry : fs::directory_iterator(kOcc)) {
         if (entry.path().extension() != ".brep") continue;
@@ -58,7 +59,7 @@ TEST(HostileBrep, EveryShippedFilePassesTheCountCheck) {
 // test's time limit) and names the section.
 TEST(HostileBrep, ACountTheFileCannotHoldIsRefusedByName) {
     const fs::path source = kOcc / "solid.brep";
-    if (!fs::exists(source)) GTEST_SKIP() << source << " missing (package occt-misc)";
+    REQUIRE_DATA(source);
     const std::string text = readAll(source);
     const std::regex countLine(R"((^|\n)(Locations|Curve2ds|Curves|Surfaces|TShapes) (\d+)\n)");
     const std::map<std::string, std::string> words{{"Locations", "locations"},
@@ -94,7 +95,7 @@ TEST(HostileBrep, ACountTheFileCannotHoldIsRefusedByName) {
 // file, adding sub-shapes until memory runs out (found by fuzz_cad under AddressSanitizer).
 TEST(HostileBrep, AFileCutOffInItsShapesIsRefused) {
     const fs::path source = kOcc / "solid.brep";
-    if (!fs::exists(source)) GTEST_SKIP() << source << " missing (package occt-misc)";
+    REQUIRE_DATA(source);
     const std::string text = readAll(source);
     const size_t shapes = text.find("\nTShapes ");
     ASSERT_NE(shapes, std::string::npos);
@@ -158,7 +159,7 @@ size_t trimmedSurfaces(const std::string& text) {
 
 TEST(HostileIges, EntitiesAndFacesTheReaderDroppedAreSaid) {
     const fs::path source = "/usr/share/opencascade/data/iges/bearing.iges";
-    if (!fs::exists(source)) GTEST_SKIP() << source << " missing (package occt-misc)";
+    REQUIRE_DATA(source);
     const std::string damaged = damagedBearing(readAll(source));
     const size_t faces = trimmedSurfaces(damaged);
     ASSERT_EQ(faces, 213u);
@@ -183,19 +184,16 @@ TEST(HostileIges, EntitiesAndFacesTheReaderDroppedAreSaid) {
 }
 
 TEST(HostileIges, IntactFilesDropNothing) {
-    size_t files = 0;
     for (const char* name : {"iges/bearing.iges", "iges/hammer.iges", "step/linkrods.step",
                              "step/screw.step", "occ/Motor-c.brep"}) {
         const fs::path path = fs::path("/usr/share/opencascade/data") / name;
-        if (!fs::exists(path)) continue;
-        ++files;
+        REQUIRE_DATA(path);
         // Nothing dropped by the reader, and no face kept from the mesher (cad_check.h).
         for (const std::string& warning : scene::loadCad(path.string(), {}).warnings) {
             EXPECT_EQ(warning.find("dropped"), std::string::npos) << name << ": " << warning;
             EXPECT_EQ(warning.find("run off"), std::string::npos) << name << ": " << warning;
         }
     }
-    if (files == 0) GTEST_SKIP() << "occt-misc's STEP and IGES files missing";
 }
 
 namespace {
@@ -259,7 +257,7 @@ std::string blankedThenIntact(const fs::path& source) {
 // this thread covers.
 TEST(HostileIgesDeathTest, ATranslatorCrashDropsItsEntityAndTheNextLoadIsWhole) {
     const fs::path source = "/usr/share/opencascade/data/iges/bearing.iges";
-    if (!fs::exists(source)) GTEST_SKIP() << source << " missing (package occt-misc)";
+    REQUIRE_DATA(source);
     GTEST_FLAG_SET(death_test_style, "threadsafe");
     EXPECT_EXIT(
         {

@@ -14,6 +14,7 @@
 
 #include "scene/cad/cad_loader.h"
 #include "scene/lod.h"
+#include "test_data.h"
 
 namespace fs = std::filesystem;
 using namespace scene;
@@ -122,7 +123,7 @@ TEST(CadLevels, CoarserTessellationsOfTheSameFaces) {
     const LodOptions policy;
     for (const char* name : {"iges/bearing.iges", "step/linkrods.step", "occ/Motor-c.brep"}) {
         const fs::path path = kData / name;
-        if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+        REQUIRE_DATA(path);
         const CadLoadResult r = loadCad(path.string(), {}, {}, maxLevels);
         const Scene& s = r.scene;
         validate(s);
@@ -165,7 +166,7 @@ TEST(CadLevels, CoarserTessellationsOfTheSameFaces) {
 // or while their errors are measured on every thread (the second), stops the load in words.
 TEST(CadLevels, ACancelStopsTheLevelsStage) {
     const fs::path path = kData / "occ/Motor-c.brep";
-    if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    REQUIRE_DATA(path);
     for (double at : {0.2, 0.7}) {
         std::atomic<bool> cancel{false};
         double last = 0.0;

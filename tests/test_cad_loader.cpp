@@ -25,6 +25,7 @@
 #include "scene/cad/cad_loader.h"
 #include "scene/gltf/gltf_loader.h"
 #include "scene/gltf/gltf_writer.h"
+#include "test_data.h"
 
 namespace {
 
@@ -108,12 +109,9 @@ void expectWellFormed(const scene::Scene& s) {
 }
 
 CadLoadResult loadSample(const fs::path& path) {
-    if (!fs::exists(path)) throw std::runtime_error("missing " + path.string());
+    if (!fs::exists(path)) throw std::runtime_error(testing_support::missingData(path));
     return scene::loadCad(path.string());
 }
-
-#define SKIP_WITHOUT(path)                                                                         \
-    if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)"
 
 TEST(CadLoader, KnowsItsExtensionsInAnyCase) {
     for (const char* name : {"a.step", "b.STP", "c.Iges", "d.igs", "e.BREP", "dir.x/f.stp"})
@@ -139,19 +137,19 @@ CadLoadResult expectMatches(const fs::path& path, OcctCounts (*count)(const fs::
 
 TEST(CadLoader, StepSamplesMatchOcctCounts) {
     for (const char* name : {"step/screw.step", "step/linkrods.step"}) {
-        SKIP_WITHOUT(kData / name);
+        REQUIRE_DATA(kData / name);
         expectMatches(kData / name, stepCounts);
     }
 }
 
 TEST(CadLoader, IgesBearingMatchesOcctCounts) {
-    SKIP_WITHOUT(kData / "iges/bearing.iges");
+    REQUIRE_DATA(kData / "iges/bearing.iges");
     expectMatches(kData / "iges/bearing.iges", igesCounts);
 }
 
 TEST(CadLoader, BrepIsOneObjectNamedAfterTheFile) {
     const fs::path path = kData / "occ/bottle.brep";
-    SKIP_WITHOUT(path);
+    REQUIRE_DATA(path);
     const CadLoadResult r = expectMatches(path, brepCounts);
     ASSERT_EQ(r.scene.objects.size(), 1u);
     EXPECT_EQ(r.scene.objects[0].name, "bottle");
@@ -160,7 +158,7 @@ TEST(CadLoader, BrepIsOneObjectNamedAfterTheFile) {
 
 TEST(CadLoader, FinerDeflectionMakesMoreTriangles) {
     const fs::path path = kData / "occ/bottle.brep";
-    SKIP_WITHOUT(path);
+    REQUIRE_DATA(path);
     const CadLoadResult coarse = scene::loadCad(path.string(), {1.0, 0.8});
     const CadLoadResult fine = scene::loadCad(path.string(), {0.01, 0.2});
     EXPECT_DOUBLE_EQ(coarse.deflection, 1.0);
@@ -170,7 +168,7 @@ TEST(CadLoader, FinerDeflectionMakesMoreTriangles) {
 
 TEST(CadLoader, ReportsProgressByStage) {
     const fs::path path = kData / "occ/bottle.brep";
-    SKIP_WITHOUT(path);
+    REQUIRE_DATA(path);
     std::vector<std::string> stages;
     bool inRange = true;
     scene::loadCad(path.string(), {}, [&](const char* stage, double fraction) {
@@ -329,15 +327,15 @@ void expectTruncatedRefused(const fs::path& source, const std::string& name) {
 
 TEST(CadLoader, RefusesTruncatedIgesAndBrep) {
     const fs::path iges = kData / "iges/bearing.iges", brep = kData / "occ/bottle.brep";
-    SKIP_WITHOUT(iges);
-    SKIP_WITHOUT(brep);
+    REQUIRE_DATA(iges);
+    REQUIRE_DATA(brep);
     expectTruncatedRefused(iges, "truncated.iges");
     expectTruncatedRefused(brep, "truncated.brep");
 }
 
 TEST(CadLoader, RefusesTruncatedStep) {
     const fs::path source = kData / "step/screw.step";
-    SKIP_WITHOUT(source);
+    REQUIRE_DATA(source);
     expectTruncatedRefused(source, "truncated.step");
 }
 
@@ -356,7 +354,7 @@ TEST(CadLoader, RefusesStepWithoutShapes) {
 
 TEST(CadLoader, RefusesBadDeflection) {
     const fs::path path = kData / "occ/bottle.brep";
-    SKIP_WITHOUT(path);
+    REQUIRE_DATA(path);
     EXPECT_THROW(scene::loadCad(path.string(), {-1.0, 0.5}), ModelError);
     EXPECT_THROW(scene::loadCad(path.string(), {0.0, 0.0}), ModelError);
 }

@@ -11,6 +11,7 @@
 
 #include "scene/cad/cad_loader.h"
 #include "scene/camera.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -20,7 +21,7 @@ namespace fs = std::filesystem;
 // Five deep copies of screw.step, one piece each, by idview-step-copies.
 fs::path screws() {
     const fs::path sample = "/usr/share/opencascade/data/step/screw.step";
-    if (!fs::exists(sample)) ADD_FAILURE() << sample << " is missing: install occt-misc";
+    if (!fs::exists(sample)) ADD_FAILURE() << testing_support::missingData(sample);
     // Not cad_test_parts.h's folder: its Open CASCADE headers' Handle macro meets Vulkan's here.
     const fs::path out =
         fs::temp_directory_path() / ("idview_progressive_" + std::to_string(::getpid()) + ".step");

@@ -13,6 +13,7 @@
 #include "render/technique.h"
 #include "scene/face_info.h"
 #include "scene/raycast.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -44,7 +45,7 @@ class CadRender : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CadRender, EveryTechniqueDrawsTheSameFacesAndAPickNamesTheFace) {
     const std::string path = GetParam();
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    REQUIRE_DATA(path);
     app::SceneSettings source;
     source.model = path;
     const app::LoadedScene loaded = app::loadScene(source);
@@ -157,7 +158,7 @@ TEST(CadSeams, ClosedModelsShowNoBackgroundBetweenTheirFaces) {
     for (const char* path : {"/usr/share/opencascade/data/iges/bearing.iges",
                              "/usr/share/opencascade/data/occ/Motor-c.brep",
                              "/usr/share/opencascade/data/step/linkrods.step"}) {
-        if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+        REQUIRE_DATA(path);
         app::SceneSettings source;
         source.model = path;
         const app::LoadedScene loaded = app::loadScene(source);
@@ -181,7 +182,7 @@ namespace {
 // B-rep face the pick names, a surface the B-rep knows and an area that is positive.
 TEST(FaceInfoPick, NamesTheFaceTheIdImageShows) {
     const std::string path = "/usr/share/opencascade/data/step/linkrods.step";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    REQUIRE_DATA(path);
     app::SceneSettings source;
     source.model = path;
     const app::LoadedScene loaded = app::loadScene(source);

@@ -23,6 +23,7 @@
 #include "rig_step.h"
 #include "scene/assembly_tree.h"
 #include "scene/cad/cad_loader.h"
+#include "test_data.h"
 
 namespace {
 
@@ -46,7 +47,7 @@ uint32_t facesOf(const TopoDS_Shape& shape) {
 
 TEST(CadSolids, MotorIsAnObjectPerSolid) {
     const fs::path path = kData / "occ/Motor-c.brep";
-    if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    REQUIRE_DATA(path);
     TopoDS_Shape shape;
     BRep_Builder builder;
     ASSERT_TRUE(BRepTools::Read(shape, path.c_str(), builder));

@@ -19,6 +19,7 @@
 #include "scene/cad/brep_shapes.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/cad/scene_codec.h"
+#include "test_data.h"
 
 namespace {
 
@@ -40,7 +41,7 @@ fs::path scratch() {
 
 fs::path sample(const char* name) {
     const fs::path path = kSteps / name;
-    if (!fs::exists(path)) ADD_FAILURE() << path << " is missing: install the package occt-misc";
+    if (!fs::exists(path)) ADD_FAILURE() << testing_support::missingData(path);
     return path;
 }
 

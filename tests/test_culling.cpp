@@ -15,6 +15,7 @@
 #include "render/culling.h"
 #include "render/technique.h"
 #include "shader_copy.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -172,8 +173,7 @@ TEST_P(CullingExact, EveryTechniqueAndModeDrawsTheImagesOfCullingOffOnEveryFrame
     const PathCase& c = GetParam();
     app::SceneSettings source;
     if (std::string(c.scene) == "cad") {
-        if (!std::filesystem::exists(kCadBearing))
-            GTEST_SKIP() << kCadBearing << " missing (package occt-misc)";
+        REQUIRE_DATA(kCadBearing);
         source.model = kCadBearing;
     }
     const app::LoadedScene loaded = app::loadScene(source);

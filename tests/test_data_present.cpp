@@ -1,9 +1,7 @@
 // test_data_present.cpp - every file or folder of Debian's test data that a test names is
-// installed. A test whose file is missing skips and says which (so a machine without the
-// packages still runs the rest), and ctest counts a skip as no failure: this test fails
-// instead, so that a run missing them cannot pass. The paths are read from the tests' own
-// sources, every string literal in them that starts with /usr/share/, so a new one is
-// checked without a list to keep.
+// installed, in one list (each test whose file is missing fails too, naming the package:
+// test_data.h). The paths are read from the tests' own sources, every string literal in them
+// that starts with /usr/share/, so a new one is checked without a list to keep.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +9,8 @@
 #include <regex>
 #include <set>
 #include <sstream>
+
+#include "test_data.h"
 
 namespace fs = std::filesystem;
 
@@ -32,13 +32,6 @@ std::set<std::string> namedDataPaths() {
     return paths;
 }
 
-// The Debian package that installs what lies under `path`.
-std::string packageOf(const std::string& path) {
-    if (path.rfind("/usr/share/opencascade/", 0) == 0) return "occt-misc";
-    if (path.rfind("/usr/share/assimp/", 0) == 0) return "assimp-testmodels";
-    return "the package that installs it";
-}
-
 } // namespace
 
 TEST(TestData, EveryDataFileTheTestsNameIsInstalled) {
@@ -47,6 +40,5 @@ TEST(TestData, EveryDataFileTheTestsNameIsInstalled) {
     EXPECT_GE(paths.size(), 3u);
     EXPECT_TRUE(paths.count("/usr/share/opencascade/data/iges/bearing.iges"));
     for (const std::string& path : paths)
-        EXPECT_TRUE(fs::exists(path))
-            << path << " is missing: install " << packageOf(path) << " (scripts/setup.sh does)";
+        EXPECT_TRUE(fs::exists(path)) << testing_support::missingData(path);
 }

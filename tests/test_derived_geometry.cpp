@@ -17,6 +17,7 @@
 #include "scene/part_vertices.h"
 #include "scene/procedural/procedural.h"
 #include "shared_vertex_gltf.h"
+#include "test_data.h"
 
 namespace {
 
@@ -31,7 +32,8 @@ std::vector<std::pair<std::string, scene::Scene>> scenes() {
     all.emplace_back(
         "2CylinderEngine components",
         scene::loadGltf(
-            "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+            testing_support::requiredData(
+                "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"),
             {scene::PartMode::Components})
             .scene);
     all.emplace_back("shared vertices", sharedVertexScene());

@@ -32,6 +32,7 @@
 #include "scene/cad/brep_occt.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/edge_info.h"
+#include "test_data.h"
 
 namespace {
 
@@ -191,7 +192,9 @@ TEST(EdgeInfo, TheNearestEdgeOnScreenIsTheOneNextToTheCursor) {
 // occt-misc's pump nut: every edge of every face as Open CASCADE gives it from the edge's own
 // 3D curve (kind, length between its parameters, a circle's radius), placed.
 TEST(EdgeInfo, AnOcctFilesEdgesAreOpenCascadesOwn) {
-    const Scene s = loadCad("/usr/share/opencascade/data/occ/Pump_Nut.brep", {}).scene;
+    const Scene s =
+        loadCad(testing_support::requiredData("/usr/share/opencascade/data/occ/Pump_Nut.brep"), {})
+            .scene;
     ASSERT_TRUE(s.brep);
     int circles = 0, checked = 0;
     for (uint32_t part = 0; part < s.uniquePartCount(); ++part) {

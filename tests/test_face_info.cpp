@@ -33,6 +33,7 @@
 #include "scene/face_info.h"
 #include "scene/inspect.h"
 #include "scene/procedural/procedural.h"
+#include "test_data.h"
 
 namespace {
 
@@ -202,10 +203,8 @@ std::vector<std::pair<int, double>> occtFaces(const fs::path& path) {
 
 TEST(FaceInfo, EveryFaceOfTheSampleFilesIsWhatOpenCascadeSays) {
     const fs::path data = "/usr/share/opencascade/data";
-    size_t files = 0;
     for (const char* name : {"occ/Motor-c.brep", "step/linkrods.step", "iges/bearing.iges"}) {
-        if (!fs::exists(data / name)) continue;
-        ++files;
+        REQUIRE_DATA(data / name);
         std::optional<OcctLeaksIgnored> ignored(std::in_place); // the first reader's setup
         const auto expected = occtFaces(data / name);
         ignored.reset();
@@ -240,7 +239,6 @@ TEST(FaceInfo, EveryFaceOfTheSampleFilesIsWhatOpenCascadeSays) {
             EXPECT_NEAR(ours[i].second, expected[i].second, slack) << name << " face " << i;
         }
     }
-    if (files == 0) GTEST_SKIP() << "occt-misc's files missing";
 }
 
 // A part that is no B-rep face: surface mesh, the area of its triangles where its object
@@ -274,6 +272,7 @@ TEST(FaceInfo, AMeshPartHasTheAreaOfItsTriangles) {
 // text, is Open CASCADE's own for that face rounded to the model's precision, in mm².
 TEST(FaceInfo, EachFaceLineGivesOpenCascadesAreaInMillimetres) {
     const char* path = "/usr/share/opencascade/data/step/screw.step";
+    REQUIRE_DATA(path);
     Scene s = loadCad(path, {}).scene;
     s.unit = cadUnit(path);          // as app::loadScene sets it (test_units.cpp checks that)
     s.precision = scenePrecision(s); // and this (test_precision.cpp)

@@ -2,18 +2,21 @@
 // test corpus, and on small handmade files that pin each feature and how objects are named;
 // the errors, versions and URIs of handmade files: test_gltf_refusals.cpp.
 #include "gltf_handmade.h"
+#include "test_data.h"
 
 // ---- real models -------------------------------------------------------------------------
 
 // Numbers cross-checked with an independent python script over the GLB's JSON and binary
 // chunk (node walk of the default scene, primitive count, union-find over index data).
 TEST(GltfReal, TwoCylinderEngineStatistics) {
+    REQUIRE_DATA(kCorpus);
     const std::string file = "2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
     expectStats(file, PartMode::Primitives, {67, 29, 34, 115, 121496});
     expectStats(file, PartMode::Components, {67, 29, 1069, 1410, 121496});
 }
 
 TEST(GltfReal, BoxTexturedVariants) {
+    REQUIRE_DATA(kCorpus);
     for (const char* file :
          {"BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Embedded/BoxTextured.gltf",
           "BoxTextured-glTF-Binary/BoxTextured.glb"}) {
@@ -24,6 +27,7 @@ TEST(GltfReal, BoxTexturedVariants) {
 }
 
 TEST(GltfReal, MaterialColourFromBaseColourFactor) {
+    REQUIRE_DATA(kCorpus);
     LoadResult r = scene::loadGltf((kCorpus / "BoxTextured-glTF/BoxTextured.gltf").string());
     ASSERT_EQ(r.scene.objects.size(), 1u);
     const scene::Material& m = r.scene.materials[r.scene.objects[0].material];
@@ -35,6 +39,7 @@ TEST(GltfReal, MaterialColourFromBaseColourFactor) {
 // Every file either loads into a valid scene or fails with one line naming the file; never a
 // crash, never another exception type.
 TEST(GltfCorpus, EveryFileLoadsOrFailsWithOneLine) {
+    REQUIRE_DATA(kCorpus);
     size_t files = 0, failures = 0;
     for (const auto& entry : fs::recursive_directory_iterator(kCorpus)) {
         std::string ext = entry.path().extension().string();
@@ -62,6 +67,7 @@ TEST(GltfCorpus, EveryFileLoadsOrFailsWithOneLine) {
 }
 
 TEST(GltfCorpus, ClearlyBrokenFilesAreRefusedWithTheReason) {
+    REQUIRE_DATA(kCorpus);
     const std::pair<const char*, const char*> cases[] = {
         {"IndexOutOfRange/IndexOutOfRange.gltf", "vertex count"},
         {"IndexOutOfRange/AllIndicesOutOfRange.gltf", "vertex count"},
@@ -81,6 +87,7 @@ TEST(GltfCorpus, ClearlyBrokenFilesAreRefusedWithTheReason) {
 // assimp's glTF 1.0 models (1.0, 1.0.2, one without asset.version, a version-1 GLB) used to
 // come out as "empty scene" or tinygltf's words; each is now refused as what it is.
 TEST(GltfCorpus, GltfOneFilesAreRefusedAsGltfOne) {
+    REQUIRE_DATA(kCorpus.parent_path() / "glTF");
     size_t files = 0;
     for (const auto& entry : fs::recursive_directory_iterator(kCorpus.parent_path() / "glTF")) {
         std::string ext = entry.path().extension().string();

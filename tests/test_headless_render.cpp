@@ -14,6 +14,7 @@
 #include "image_compare.h"
 #include "scene/procedural/generator.h"
 #include "scene/raycast.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -250,7 +251,8 @@ TEST(HeadlessRenderScenes, ProceduralSmallAgreesWithRaycast) {
 
 TEST(HeadlessRenderScenes, EngineFromGltfInComponentsModeAgreesWithRaycast) {
     app::SceneSettings source;
-    source.model = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+    source.model = testing_support::requiredData(
+        "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
     // 1,410 parts instead of 115: many more borders to get right.
     source.parts = scene::PartMode::Components;
     expectIdsMatchRaycast(app::loadScene(source), 192, 120, 100);
@@ -295,7 +297,8 @@ TEST(HeadlessRenderScenes, OrthoLightsEveryPointFromTheViewsDirection) {
 // triangles' IDs (and the background), and a real model agrees with the ray cast.
 TEST(HeadlessRenderScenes, StlSolidsDrawTheirPartsAndAgreeWithRaycast) {
     app::SceneSettings source;
-    source.model = "/usr/share/assimp/models/STL/triangle_with_two_solids.stl";
+    source.model =
+        testing_support::requiredData("/usr/share/assimp/models/STL/triangle_with_two_solids.stl");
     const app::LoadedScene two = app::loadScene(source);
     const scene::Camera camera = app::initialCamera(two, 160.0f / 100.0f);
     const HeadlessResult r = renderChecked(testOptions(160, 100), two.scene, camera);

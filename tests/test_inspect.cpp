@@ -39,6 +39,7 @@
 #include "scene/inspect.h"
 #include "scene/mesh_builder.h"
 #include "scene/mesh_inspect.h"
+#include "test_data.h"
 
 namespace {
 
@@ -285,7 +286,7 @@ TEST_F(Inspect, JsonLinesCarryTheMembersAndUnit) {
 // and centre, and the distance between two solids' faces.
 TEST(InspectOcct, AFileAnswersAsOpenCascadeDoes) {
     const fs::path file = testing_support::kOcctData / "occ" / "Motor-c.brep";
-    if (!fs::exists(file)) GTEST_SKIP() << file << " missing (package occt-misc)";
+    REQUIRE_DATA(file);
     const Scene s = loadCad(file.string(), {}).scene;
     const TopoDS_Shape plain = testing_support::readPlain(file);
     std::vector<TopoDS_Shape> solids;

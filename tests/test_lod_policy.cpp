@@ -13,6 +13,7 @@
 #include "scene/lod_choice.h"
 #include "scene/lod_policy.h"
 #include "scene/procedural/procedural.h"
+#include "test_data.h"
 
 namespace fs = std::filesystem;
 using namespace scene;
@@ -125,7 +126,7 @@ LevelMesh meshOf(const std::vector<glm::vec3>& points) {
 TEST(LodPolicy, CadLevelsAreTheChoiceAmongItsTessellations) {
     for (const char* name : {"occ/Motor-c.brep", "iges/bearing.iges"}) {
         const fs::path path = kData / name;
-        if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+        REQUIRE_DATA(path);
         const CadLoadResult bare = loadCad(path.string(), {}, {}, 1);
         const CadLoadResult built = loadCad(path.string(), {}, {}, maxLevels);
         ASSERT_TRUE(bare.scene.brep);
@@ -145,7 +146,7 @@ TEST(LodPolicy, MeshLevelsAreTheChoiceAmongItsSimplifications) {
 
 TEST(LodPolicy, ACadGeometryAndTheSameAsAMeshGetTheSameLevels) {
     const fs::path path = kData / "occ/Motor-c.brep";
-    if (!fs::exists(path)) GTEST_SKIP() << path << " missing (package occt-misc)";
+    REQUIRE_DATA(path);
     CadLoadResult loaded = loadCad(path.string(), {}, {}, 1);
     Scene& s = loaded.scene;
     const std::vector<GeometryCandidates> candidates = cadCandidates(

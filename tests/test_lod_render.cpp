@@ -17,6 +17,7 @@
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/lod.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -291,8 +292,7 @@ TEST(LodRender, AOnePixelErrorMovesPartsOnlyNextToOutlinesOnTheDefaultModel) {
 }
 
 TEST(LodRender, AOnePixelErrorMovesPartsOnlyNextToOutlinesOnACadFile) {
-    if (!std::filesystem::exists(kCadBearing))
-        GTEST_SKIP() << kCadBearing << " missing (package occt-misc)";
+    REQUIRE_DATA(kCadBearing);
     app::SceneSettings source;
     source.model = kCadBearing;
     source.lodLevels = scene::maxLevels;

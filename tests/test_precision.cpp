@@ -11,6 +11,7 @@
 #include "scene/cad/brep_inspect.h"
 #include "scene/inspect.h"
 #include "scene/precision.h"
+#include "test_data.h"
 
 namespace {
 
@@ -79,7 +80,7 @@ TEST(Precision, DirectionsAndAngles) {
 // floats at its size, as loadScene sets it.
 TEST(Precision, LoadedScenesCarryTheirs) {
     app::SceneSettings brep;
-    brep.model = "/usr/share/opencascade/data/occ/Motor-c.brep";
+    brep.model = testing_support::requiredData("/usr/share/opencascade/data/occ/Motor-c.brep");
     brep.cadCache = false;
     const scene::Scene cad = app::loadScene(brep).scene;
     const double tolerance = scene::brepTolerance(cad);

@@ -10,6 +10,7 @@
 #include "app/headless.h"
 #include "app/scene_source.h"
 #include "scene/raycast.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -82,7 +83,7 @@ const Cut& motorCut() {
 } // namespace
 
 TEST(Section, CutSolidMatchesTheRaycastAndCapsShowInTheCapColour) {
-    if (!std::filesystem::exists(motor)) GTEST_SKIP() << motor << " missing (package occt-misc)";
+    REQUIRE_DATA(motor);
     const Cut& c = motorCut();
     app::Options o = testing_support::headlessOptions(W, H, 2);
     o.live.render.section = c.section;

@@ -11,6 +11,7 @@
 #include "render/technique.h"
 #include "scene/face_info.h"
 #include "scene/raycast.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -157,7 +158,7 @@ void expectFaceWholeOrGone(const FaceCut& c, const std::string& view) {
 
 // From along the face's normal and from off it.
 void expectFaceWholeOrGone(const char* model) {
-    if (!std::filesystem::exists(model)) GTEST_SKIP() << model << " missing (package occt-misc)";
+    REQUIRE_DATA(model);
     FaceCut c = largestPlanarFace(model);
     for (double tilt : {0.0, 0.4}) {
         c.camera = cameraOn(c, tilt);

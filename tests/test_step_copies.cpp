@@ -19,6 +19,7 @@
 #include "rig_step.h"
 #include "scene/cad/cad_loader.h"
 #include "scene/copy_grid.h"
+#include "test_data.h"
 
 namespace {
 
@@ -68,7 +69,7 @@ Run runTool(const std::string& args) {
 // An occt-misc sample: a missing one fails the test, naming the package.
 fs::path sample(const std::string& name) {
     const fs::path path = kSteps / name;
-    EXPECT_TRUE(fs::exists(path)) << path << " is missing: install the package occt-misc";
+    EXPECT_TRUE(fs::exists(path)) << testing_support::missingData(path);
     return path;
 }
 

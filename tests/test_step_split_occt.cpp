@@ -37,6 +37,7 @@
 #include "scene/cad/cad_read.h"
 #include "scene/step/step_split.h"
 #include "step_split_files.h"
+#include "test_data.h"
 #include "util/cache_file.h"
 
 namespace {
@@ -198,7 +199,7 @@ std::vector<Piece> expectSplitAsOpenCascadeReads(const std::string& path, double
 TEST(StepSplitOcct, SplitsTheOcctMiscFilesAsOpenCascadeReadsThem) {
     for (const char* name : {"linkrods.step", "screw.step"}) {
         const fs::path path = kStepData / name;
-        ASSERT_TRUE(fs::exists(path)) << path << " missing (package occt-misc)";
+        REQUIRE_DATA(path);
         const std::vector<Piece> pieces = expectSplitAsOpenCascadeReads(path.string(), 1.0);
         ASSERT_EQ(pieces.size(), 1u) << name;
         EXPECT_EQ(pieces[0].layout.solids, 1u);

@@ -16,6 +16,7 @@
 #include "scene/cad/cad_loader.h"
 #include "scene/formats.h"
 #include "scene/stl/stl_loader.h"
+#include "test_data.h"
 
 namespace fs = std::filesystem;
 
@@ -69,6 +70,7 @@ std::string refusal(const std::string& path) {
 } // namespace
 
 TEST(Stl, AsciiAndBinarySpiderGiveTheSameTrianglesAsTheFilesCount) {
+    REQUIRE_DATA(kSpiderAscii);
     const scene::LoadResult ascii = scene::loadStl(kSpiderAscii);
     const scene::LoadResult binary = scene::loadStl(kSpiderBinary);
     // Independent counts: the ASCII text's facet lines, the binary header's uint32.
@@ -94,6 +96,7 @@ TEST(Stl, AsciiAndBinarySpiderGiveTheSameTrianglesAsTheFilesCount) {
 }
 
 TEST(Stl, EachSolidOfAnAsciiFileIsAnObjectOfOnePart) {
+    REQUIRE_DATA(kTwoSolids);
     const scene::LoadResult r = scene::loadStl(kTwoSolids);
     ASSERT_EQ(r.scene.objects.size(), 2u);
     EXPECT_EQ(r.scene.uniquePartCount(), 2u);
@@ -116,6 +119,7 @@ TEST(Stl, EachSolidOfAnAsciiFileIsAnObjectOfOnePart) {
 }
 
 TEST(Stl, AnEmptySolidIsSkippedWithAWarning) {
+    REQUIRE_DATA(kEmptySolid);
     const scene::LoadResult r = scene::loadStl(kEmptySolid);
     ASSERT_EQ(r.scene.objects.size(), 1u);
     EXPECT_EQ(r.scene.objects[0].name, "testTriangle");
@@ -124,6 +128,7 @@ TEST(Stl, AnEmptySolidIsSkippedWithAWarning) {
 }
 
 TEST(Stl, BearingAgreesWithOpenCascadesOwnTriangulation) {
+    REQUIRE_DATA(kBearing);
     const scene::LoadResult r = scene::loadStl(kBearing);
     // At idview's crease angle: merged across every angle, a few zero-area triangles (two
     // corners closer than Precision::Confusion) collapse, which split nodes keep.
@@ -146,6 +151,7 @@ TEST(Stl, BearingAgreesWithOpenCascadesOwnTriangulation) {
 }
 
 TEST(Stl, NormalsAreUnitLengthAndFaceOutOfFlatFacets) {
+    REQUIRE_DATA(kTwoSolids);
     const scene::LoadResult r = scene::loadStl(kTwoSolids);
     for (const scene::Vertex& v : r.scene.vertices)
         EXPECT_NEAR(glm::length(v.normal - glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
@@ -166,6 +172,7 @@ TEST(Stl, SolidsSplitAtTheirKeywordsAndNothingElse) {
 }
 
 TEST(Stl, TheFormatTableKnowsStlInAnyCase) {
+    REQUIRE_DATA(kUpperCase);
     ASSERT_NE(scene::formatOfName(kUpperCase), nullptr);
     EXPECT_EQ(scene::formatOfName(kUpperCase)->reader, scene::Reader::Stl);
     EXPECT_EQ(scene::checkModelFile(kUpperCase).name, "STL");
@@ -175,6 +182,7 @@ TEST(Stl, TheFormatTableKnowsStlInAnyCase) {
 }
 
 TEST(Stl, FilesThatAreNoStlAreRefusedInOneLineNamingThem) {
+    REQUIRE_DATA(kSpiderBinary);
     const TempFile text("notreally.stl", "hello, no model here\n");
     const TempFile empty("empty.stl", "");
     const TempFile brokenFacet("broken.stl", "solid x\nfacet normal 0 0 1\nouter loop\n"

@@ -18,6 +18,7 @@
 #include "render/technique.h"
 #include "scene/lod.h"
 #include "shared_vertex_gltf.h"
+#include "test_data.h"
 #include "test_support.h"
 
 namespace {
@@ -71,18 +72,18 @@ Reference& reference(const std::string& name) {
         source.copies = 2;
     } else if (name == "engine-level-2") {
         // Every object at its second coarser level of detail (scene/lod.h), or its coarsest.
-        source.model = kEngine;
+        source.model = testing_support::requiredData(kEngine);
         source.parts = scene::PartMode::Components;
         source.lodLevels = scene::maxLevels;
         source.lodLevel = 2;
     } else if (name == "cad-bearing") {
-        source.model = kCadBearing; // one part per B-rep face
+        source.model = testing_support::requiredData(kCadBearing); // one part per B-rep face
     } else if (name == "shared-vertices") {
         source.model = testing_support::writeSharedVertexGltf(
                            std::filesystem::temp_directory_path() / "idview-techniques")
                            .string();
     } else {
-        source.model = kEngine;
+        source.model = testing_support::requiredData(kEngine);
         source.parts = scene::PartMode::Components;
     }
     Reference ref;

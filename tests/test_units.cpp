@@ -13,6 +13,7 @@
 #include "scene/face_info.h"
 #include "scene/mesh_builder.h"
 #include "scene/units.h"
+#include "test_data.h"
 #include "util/json_writer.h"
 
 namespace {
@@ -61,7 +62,7 @@ TEST(Units, CadFilesTakeOpenCascadesUnitAndBrepNone) {
 TEST(Units, EverySourceSaysItsUnit) {
     auto unitOf = [](app::SceneSettings s) { return app::loadScene(s).scene.unit.symbol; };
     app::SceneSettings step;
-    step.model = "/usr/share/opencascade/data/step/screw.step";
+    step.model = testing_support::requiredData("/usr/share/opencascade/data/step/screw.step");
     step.cadCache = false;
     EXPECT_EQ(unitOf(step), "mm");
     app::SceneSettings gltf; // the default model

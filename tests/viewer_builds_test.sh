@@ -4,7 +4,7 @@
 # cut are built on a worker while frames go on being presented with what was drawn before;
 # once built, the switch lands. The script holds the workers (`pipeline hold`) for as long as
 # "being built" must last, so nothing here depends on how fast the compile is.
-# Exit 77: skipped (viewer_lib.sh).
+# Without Xvfb it fails (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 t=0.5

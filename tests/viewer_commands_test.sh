@@ -5,7 +5,7 @@
 # Esc cancelling one thing at a time and never quitting, Ctrl+Q quitting with exit code 0, keys
 # typed into the open field reaching no command, a new model starting clean while new copies
 # keep the section, the empty view saying why, undo and redo of hidden parts and section,
-# F12's screenshot in the Pictures folder, and (with xdotool's real input) Esc during a box drag. Exit 77: skipped. The lavapipe environment, the
+# F12's screenshot in the Pictures folder, and (with xdotool's real input) Esc during a box drag. Without Xvfb it fails (viewer_lib.sh). The lavapipe environment, the
 # Xvfb check, $work, fail, at and session: viewer_lib.sh.
 source "$(dirname "$0")/viewer_lib.sh"
 

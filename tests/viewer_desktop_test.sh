@@ -6,7 +6,7 @@
 # fake zenity on PATH with no D-Bus session (so no portal), and opens what it chose; with
 # neither, it says so in one line and opens the panel's own file browser, driven by the keys
 # to a model that opens (the title names it), after which the keys are the viewer's again.
-# Exit 77: skipped (viewer_lib.sh).
+# Without Xvfb it fails (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 # --- Fitted beside the panel, and the zoom toward the cursor --------------------------------

@@ -6,10 +6,10 @@
 # solid says "inspect: computing" at once, the viewer then rests (a rest line: no frames spun
 # while it waits) and still presents frames (a screenshot), and once released the answer
 # lands with the values headless --properties gives. A second selection made while the first
-# is held supersedes it: only the second's answer shows. Exit 77: skipped (viewer_lib.sh).
+# is held supersedes it: only the second's answer shows. Without Xvfb it fails (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 motor=/usr/share/opencascade/data/occ/Motor-c.brep
-[[ -r $motor ]] || { echo "SKIP: $motor is missing (Debian package occt-misc)"; exit 77; }
+[[ -r $motor ]] || { echo "FAIL needs $motor from Debian's occt-misc: apt-get install occt-misc"; exit 1; }
 
 # motor NAME: the viewer on Motor-c.brep, running $work/NAME.txt.
 motor() {

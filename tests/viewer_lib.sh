@@ -1,5 +1,6 @@
 # viewer_lib.sh IDVIEW LAVAPIPE_ICD - what the viewer tests share, sourced by them with their
-# arguments: the lavapipe environment, the Xvfb check (exit 77: skipped), a work folder that
+# arguments: the lavapipe environment, the Xvfb check (without it they fail, never skip), a
+# work folder that
 # holds the CAD cache and the viewer's kept settings, fail(), at() and the readers of the
 # event records.
 set -uo pipefail
@@ -9,8 +10,8 @@ icd=$2
 # folder, for the newer libdrm (tests/CMakeLists.txt).
 export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd
 if ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; then
-    echo "SKIP: xvfb-run and xauth are needed (Debian packages xvfb, xauth)"
-    exit 77
+    echo "FAIL xvfb-run and xauth are needed: apt-get install xvfb xauth (scripts/setup.sh test)"
+    exit 1
 fi
 # The tests read the viewer's event records (JSON Lines, docs/viewer.md) by field, with jq:
 # without it they fail, never skip.

@@ -10,10 +10,10 @@
 # type and area in mm², and a measured distance its unit; clicks stepping onto the seam of the
 # screw's shaft hover its B-rep edge, then select that edge (event lines with its curve and
 # length in mm), and a click away from it leaves no edge selected; on lavapipe the title says its times are a CPU device's.
-# A validation message fails a session (exit code 3). Exit 77: skipped (viewer_lib.sh).
+# A validation message fails a session (exit code 3). Without Xvfb it fails (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 screw=/usr/share/opencascade/data/step/screw.step
-[[ -r $screw ]] || { echo "SKIP: $screw is missing (Debian package occt-misc)"; exit 77; }
+[[ -r $screw ]] || { echo "FAIL needs $screw from Debian's occt-misc: apt-get install occt-misc"; exit 1; }
 
 # tall NAME: the viewer at 1000x1700 on screw.step, running $work/NAME.txt.
 tall() {

@@ -5,7 +5,7 @@
 # the Inspect panel's things A and B (click, Ctrl+click, Esc) and their distance,
 # loads refused past --max-triangles and cancelled, the standard views, the projection and F,
 # and paths typed into the panel's open field. Each session's counts are checked against
-# headless runs of the same view or --tree. Exit 77: skipped. The lavapipe environment, the
+# headless runs of the same view or --tree. Without Xvfb it fails (viewer_lib.sh). The lavapipe environment, the
 # Xvfb check, $work, fail, at and session: viewer_lib.sh; each session opens on the
 # viewer's defaults (--no-saved-settings).
 source "$(dirname "$0")/viewer_lib.sh"

@@ -7,7 +7,7 @@
 # every frame; a drag that turns the camera draws scene passes; the explode slider changes
 # the picture and the viewer rests again after it. On Motor-c.brep with a B-rep edge hovered
 # the same holds (the edge is drawn again over the tiles, the panel kept); the hover ends when
-# the pointer leaves or the window loses focus. Exit 77: skipped (viewer_lib.sh).
+# the pointer leaves or the window loses focus. Without Xvfb it fails (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 cat >"$work/rest.txt" <<'SCRIPT'

@@ -6,7 +6,7 @@
 # vertex-fs + mdi-baseinstance and emptying the file; flags only headless runs read named
 # in one line and ignored; and the window's size and place, the panel and the recent files
 # restored by runs without --size, a place off the screen pulled onto it, the recent files'
-# clear list emptying them. Exit 77: skipped (viewer_lib.sh).
+# clear list emptying them. Without Xvfb it fails (viewer_lib.sh).
 source "$(dirname "$0")/viewer_lib.sh"
 
 conf=$XDG_CONFIG_HOME/idview/viewer.conf

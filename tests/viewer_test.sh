@@ -7,7 +7,7 @@
 # viewer_parts_test.sh.
 # Checks the exit code (3 means validation messages), the title following the renderer and
 # vsync, the click selecting a part, the drops, and that the screenshot shows a picture; and
-# that without --print-events the viewer writes nothing to stdout. Exit 77: skipped.
+# that without --print-events the viewer writes nothing to stdout. Without Xvfb it fails (viewer_lib.sh).
 # The lavapipe environment, the Xvfb check, $work, fail and at: viewer_lib.sh. Each session
 # opens on the viewer's defaults (--no-saved-settings), whatever the last one closed with;
 # viewer_settings_test.sh tests the settings kept between runs.

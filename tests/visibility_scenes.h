@@ -10,6 +10,7 @@
 #include "app/scene_source.h"
 #include "scene/lod.h"
 #include "shared_vertex_gltf.h"
+#include "test_data.h"
 
 namespace testing_support {
 
@@ -21,14 +22,15 @@ inline app::LoadedScene loadNamed(const std::string& name) {
         source.builtin = "procedural:preset=small,seed=1";
         source.copies = 2;
     } else if (name == "engine") {
-        source.model = engine;
+        source.model = requiredData(engine);
         source.parts = scene::PartMode::Components;
     } else if (name == "shared-vertices") {
         source.model = testing_support::writeSharedVertexGltf(
                            std::filesystem::temp_directory_path() / "idview-visibility")
                            .string();
     } else {
-        source.model = "/usr/share/opencascade/data/iges/bearing.iges"; // a part per face
+        source.model =
+            requiredData("/usr/share/opencascade/data/iges/bearing.iges"); // a part per face
     }
     source.lodLevels = scene::maxLevels;
     return app::loadScene(source);

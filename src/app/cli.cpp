@@ -10,6 +10,7 @@
 
 #include "app/cli_flags.h"
 #include "app/cli_values.h"
+#include "app/exit_code.h"
 #include "render/culling.h"
 #include "render/technique.h"
 #include "scene/lod.h"
@@ -233,8 +234,7 @@ Options parseArgs(int argc, char** argv) {
 }
 
 std::string usage() {
-    std::string text = "usage: idview [OPTIONS] [FILE]\n"
-                       "Renders a CAD assembly and knows which part is at every pixel.\n";
+    std::string text = std::string("usage: ") + usageSynopsis + "\n" + programSummary + "\n";
     for (const FlagGroup& group : flagGroups()) {
         text.append("\n").append(group.title).append(":\n");
         for (const Flag& f : group.flags) {
@@ -247,9 +247,16 @@ std::string usage() {
             text += left + f.help + "\n";
         }
     }
-    text += "\nExit codes: 0 ok, 1 error (no device, missing features, I/O), 2 bad command line,\n"
-            "3 validation messages were reported (with --validation).\n";
-    return text;
+    // "Exit codes: 0 ok, 1 error ..., 3 ...", broken before 90 columns.
+    std::string line = "\nExit codes:";
+    const auto& codes = exitCodes();
+    for (size_t i = 0; i < codes.size(); ++i) {
+        const std::string item = " " + std::to_string(codes[i].code) + " " + codes[i].meaning +
+                                 (i + 1 < codes.size() ? "," : ".");
+        if (line.size() - line.rfind('\n') + item.size() > 90) line += "\n";
+        line += line.back() == '\n' ? item.substr(1) : item;
+    }
+    return text + line + "\n";
 }
 
 } // namespace app

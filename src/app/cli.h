@@ -144,6 +144,12 @@ std::vector<const render::Technique*> techniqueList(const std::string& value);
 std::vector<const render::DrawMode*> modeList(const std::string& value);
 std::vector<const render::CullModeEntry*> cullingList(const std::string& value);
 
+// The usage's first two lines, which the manual page's SYNOPSIS and NAME print too
+// (src/tools/idview_docs.cpp).
+inline constexpr const char* usageSynopsis = "idview [OPTIONS] [FILE]";
+inline constexpr const char* programSummary =
+    "Renders a CAD assembly and knows which part is at every pixel.";
+// --help: those lines, every flag group by group, and the exit codes (app/exit_code.h).
 std::string usage();
 
 } // namespace app
