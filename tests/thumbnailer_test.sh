@@ -83,6 +83,18 @@ step=/usr/share/opencascade/data/step/screw.step
 previewed step "$step"
 previewed iges /usr/share/opencascade/data/iges/bearing.iges
 previewed glb "$here/assets/default.glb"
+# Thunar's tumbler makes the output file itself and reads the thumbnail back through the
+# descriptor it keeps: the PNG must land in that file, not beside it.
+kept=$work/kept/out.png
+mkdir -p "$work/kept" && : >"$kept"
+exec 7<"$kept"
+if thumbnail "$step" "$kept" --thumbnail-timeout 300 && cp /proc/$$/fd/7 "$work/kept.png" &&
+    python3 "$summary" "$work/kept.png" >/dev/null 2>&1; then
+    echo "ok   the output file made by the caller holds the PNG, read through its descriptor"
+else
+    fail "the PNG did not land in the output file the caller made and holds open"
+fi
+exec 7<&-
 # Nautilus hands a URI: a file:// with an escaped space.
 cp "$here/assets/default.glb" "$work/a model.glb"
 previewed uri "file://$work/a%20model.glb"

@@ -1,7 +1,7 @@
 // thumbnail.cpp - idview --thumbnail: the preview is rendered by a child process, so that a
 // hostile or huge file costs the file manager a few seconds at most: a watchdog kills the
 // child's whole process group (its Open CASCADE load workers too) at the deadline, and a
-// data-memory limit makes the child refuse what does not fit. The PNG appears by rename only.
+// data-memory limit makes the child refuse what does not fit. The PNG appears only whole.
 #include "app/thumbnail.h"
 
 #include <fcntl.h>
@@ -31,6 +31,26 @@ void refuse(const Options& options, const std::string& why) {
     const std::string& model = options.live.scene.model;
     std::fprintf(stderr, "idview: error: %s: no thumbnail: %s\n",
                  model.empty() ? "the default model" : model.c_str(), why.c_str());
+}
+
+// The finished PNG in `temp` becomes `out`. A file manager may make `out` itself and read the
+// thumbnail back through the descriptor it keeps (tumbler, Thunar's thumbnailer, does), so an
+// `out` that is there already is filled in place; else the rename makes it appear whole.
+// False with errno set when neither works.
+bool publish(const std::string& temp, const std::string& out) {
+    const int to = open(out.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (to < 0) return std::rename(temp.c_str(), out.c_str()) == 0;
+    const int from = open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+    bool written = from >= 0;
+    char buffer[65536];
+    for (ssize_t n = 0; written && (n = read(from, buffer, sizeof buffer)) != 0;)
+        written = n > 0 && write(to, buffer, size_t(n)) == n;
+    const int error = errno;
+    if (from >= 0) close(from);
+    written = close(to) == 0 && written;
+    errno = error;
+    if (written) std::remove(temp.c_str());
+    return written;
 }
 
 // The child: its own process group (what the watchdog kills), gone with its parent (a file
@@ -96,8 +116,7 @@ int runThumbnail(const Options& options) {
     bool timedOut = false;
     const int status = waitWithDeadline(child, options.thumbnail.seconds, timedOut);
     kill(-child, SIGKILL); // whatever of its group is left (workers die with it anyway)
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
-        std::rename(temp.c_str(), options.screenshot.c_str()) == 0)
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && publish(temp, options.screenshot))
         return 0;
     const int renameError = errno;
     std::remove(temp.c_str());
