@@ -39,7 +39,7 @@ LABELS = {
     "fuzz": "the glTF and CAD loaders under libFuzzer",
     "far": "models far from the origin, against the same models at the origin",
     "memory": "running out of memory under an address-space limit: one line, exit 1",
-    "install": "cmake --install moved to another folder, and the Debian package (cpack, lintian)",
+    "install": "cmake --install moved to another folder, the Debian package (cpack, lintian, unpacked and run), the launcher opening a model",
 }
 
 

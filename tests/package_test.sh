@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# package_test.sh BUILD VERSION - the Debian package as `cpack -G DEB` makes it from BUILD
-# (written here into a work folder, so the build's own package is left alone): its name, the
-# files it installs, its control fields (Depends from dpkg-shlibdeps) and lintian with no error.
+# package_test.sh BUILD VERSION LAVAPIPE_ICD - the Debian package as `cpack -G DEB` makes it
+# from BUILD (written here into a work folder, so the build's own package is left alone): its
+# name, the files it installs, its control fields (Depends from dpkg-shlibdeps), lintian with no
+# error, and the program unpacked as dpkg puts it, run from there.
 set -uo pipefail
 build=$1
 version=$2
+icd=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -57,6 +59,23 @@ else
     errors=$(grep '^E: ' "$work/lintian.log")
     [[ -z $errors ]] && echo "ok   lintian: no errors ($(grep -c '^W: ' "$work/lintian.log") warnings)" ||
         fail "lintian errors:"$'\n'"$errors"
+fi
+
+# The package's files as dpkg unpacks them, run from there: its version line, and a headless
+# frame of a STEP file through the packaged load worker, shaders and default settings.
+dpkg-deb -x "$deb" "$work/root"
+installed=$work/root/usr/bin/idview
+export VK_DRIVER_FILES=$icd VK_ICD_FILENAMES=$icd XDG_CACHE_HOME=$work/cache \
+    XDG_CONFIG_HOME=$work/config
+line=$("$installed" --version 2>&1)
+[[ $line == "idview $version ("*")" ]] && echo "ok   unpacked: $line" ||
+    fail "unpacked --version: '$line'"
+step=/usr/share/opencascade/data/step/screw.step
+if "$installed" --headless --model "$step" --frames 1 --stats >"$work/stats.json" 2>"$work/err" &&
+    [[ $(jq -r .parts "$work/stats.json") == 10 ]]; then
+    echo "ok   unpacked: screw.step drawn headless, 10 parts"
+else
+    fail "unpacked headless run: $(head -c 400 "$work/err")"
 fi
 
 [[ $failures -eq 0 ]] && echo "all package checks passed"
