@@ -5,19 +5,12 @@
 # database and the system's together (gio info, as a file manager's GLib asks), by name and,
 # for the types idview adds, by content alone. The launcher and the thumbnailer list the same
 # types, and every one of them is known.
-set -uo pipefail
+source "$(dirname "$0")/work_lib.sh"
 source_dir=$1 build=$2
 for tool in desktop-file-validate update-mime-database gio; do
     command -v $tool >/dev/null ||
         { echo "FAIL $tool is missing (scripts/setup.sh test installs it)"; exit 1; }
 done
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() {
-    echo "FAIL $1"
-    failures=$((failures + 1))
-}
 
 DESTDIR=$work/dest cmake --install "$build" --prefix /usr >/dev/null ||
     { echo "FAIL cmake --install"; exit 1; }

@@ -3,17 +3,10 @@
 # from BUILD (written here into a work folder, so the build's own package is left alone): its
 # name, the files it installs, its control fields (Depends from dpkg-shlibdeps), lintian with no
 # error, and the program unpacked as dpkg puts it, run from there.
-set -uo pipefail
+source "$(dirname "$0")/work_lib.sh"
 build=$1
 version=$2
 icd=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() {
-    echo "FAIL $1"
-    failures=$((failures + 1))
-}
 
 if ! (cd "$build" && cpack -G DEB -B "$work" >"$work/cpack.log" 2>&1); then
     fail "cpack -G DEB: $(tail -5 "$work/cpack.log")"
