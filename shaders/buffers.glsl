@@ -98,5 +98,9 @@ layout(buffer_reference, std430, buffer_reference_align = 16) buffer PartSetRef 
     PartSetResult head;
     uint words[];
 };
+// The visibility census's totals (census.comp); its per-view counters are UintsRef.
+layout(buffer_reference, std430, buffer_reference_align = 16) buffer CensusTotalsRef {
+    CensusTotals parts[];
+};
 
 #endif

@@ -11,6 +11,7 @@
 //   shared_animate.h    the exploded view's placement pass
 //   shared_id_passes.h  the passes over the resolved ID image and the compute resolve
 //   shared_visibility.h the visibility buffer's payload and its shading pass
+//   shared_census.h     the visibility census's counters
 // Layout rule: members are ordered largest-alignment first so that std430 (GLSL) and the C++
 // ABI agree without hidden padding; each header's static_asserts prove it for its structs.
 // Include this file, never a member of the family alone: it defines what they share.
@@ -50,6 +51,8 @@ using dvec4 = glm::dvec4;
 #include "shared_id_passes.h"
 
 #include "shared_visibility.h"
+
+#include "shared_census.h"
 
 #ifdef __cplusplus
 } // namespace gpu

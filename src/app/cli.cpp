@@ -226,7 +226,13 @@ Options parseArgs(const std::vector<std::string>& args, Options start) {
     checkPixels(options);
     if (!options.hide.empty() && !options.isolate.empty())
         throw UsageError("--hide and --isolate cannot be combined: --isolate hides the rest");
+    if (options.census.views == 0 && !(options.censusCsv.empty() && options.censusExport.empty()))
+        throw UsageError("--census-csv and --census-export need --census VIEWSxSIZE");
     return options;
+}
+
+bool censusExportsStep(const std::string& path) {
+    return path.ends_with(".step") || path.ends_with(".stp");
 }
 
 Options parseArgs(int argc, char** argv) {

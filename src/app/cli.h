@@ -16,6 +16,7 @@
 #include "render/culling.h"
 #include "render/pick.h"
 #include "scene/camera_path.h"
+#include "scene/census.h"
 
 namespace app {
 
@@ -94,6 +95,10 @@ struct Options {
     // parts. Unique part IDs; checked against the scene when it is loaded.
     std::vector<uint32_t> hide, isolate;
     bool visibleParts = false; // print {"count","parts"} of the last frame's ID image
+    // --census VIEWSxSIZE (app/census.h): views 0 means no census. --census-csv writes its
+    // lines as CSV too; --census-export the exterior (.glb, or .step/.stp for CAD models).
+    scene::CensusSpec census;
+    std::string censusCsv, censusExport;
 
     // What is drawn, how and from where: all a headless run or the benchmark renders with,
     // and all the viewer is handed to edit while it runs (live_settings.h).
@@ -117,6 +122,9 @@ struct Options {
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// Whether --census-export's FILE is written as STEP (.step, .stp) rather than glTF (.glb).
+bool censusExportsStep(const std::string& path);
 
 // Accepts "--flag value" and "--flag=value", and one argument that is no flag: the model's path
 // or file:// URI, as --model (a launcher's `idview %f`). Throws UsageError.

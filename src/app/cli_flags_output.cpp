@@ -90,6 +90,30 @@ std::vector<Flag> headlessFlags(const Options& d) {
                "headless: print one JSON line {count,parts} of the unique parts the last frame "
                "shows, counted on the GPU; with --benchmark every frame counts them",
                &Options::visibleParts)),
+        {"--census", "VIEWSxSIZE",
+         "headless visibility census: render the model from VIEWS directions spread evenly "
+         "over a sphere (orthographic, each SIZExSIZE pixels, holding the bounding sphere) "
+         "with --hide, --isolate, --section and --explode applied, count every unique part's "
+         "pixels on the GPU and print one JSON line per part "
+         "{part,object,name,path,pixels,views,largest_share}, then one summary line (parts "
+         "and solids never seen, their triangles and share); with --benchmark time it "
+         "instead; implies --headless",
+         [](Options& o, auto& v) {
+             o.census = parseCensus(v);
+             o.headless = true;
+         }},
+        headless(text("--census-csv", "FILE", "--census: also write the part lines as CSV",
+                      &Options::censusCsv)),
+        headless({"--census-export", "FILE",
+                  "--census: write what was seen: FILE.glb the seen parts (glTF); FILE.step or "
+                  ".stp the solids with a seen face, through Open CASCADE with the source's "
+                  "names, colours and assembly (CAD models only)",
+                  [](Options& o, auto& v) {
+                      if (!v.ends_with(".glb") && !censusExportsStep(v))
+                          throw UsageError("--census-export writes .glb, .step or .stp, not '" + v +
+                                           "'");
+                      o.censusExport = v;
+                  }}),
     };
 }
 

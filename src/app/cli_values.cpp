@@ -56,6 +56,14 @@ void parseSize(const std::string& text, Options& o) {
     o.height = parseCount("--size height", text.substr(x + 1), 1, 16384);
 }
 
+scene::CensusSpec parseCensus(const std::string& text) {
+    const auto x = text.find('x');
+    if (x == std::string::npos)
+        throw UsageError("--census expects VIEWSxSIZE (e.g. 162x1024), not '" + text + "'");
+    return {parseCount("--census views", text.substr(0, x), 1, 100000),
+            parseCount("--census size", text.substr(x + 1), 16, 8192)};
+}
+
 std::array<int, 2> parseWindowPos(const std::string& text) {
     const std::vector<std::string> items = commaList(text);
     std::array<int, 2> pos{};

@@ -21,6 +21,7 @@ uint32_t parseCount(const std::string& flag, const std::string& text, uint32_t m
 float parseNumber(const std::string& flag, const std::string& text, float max, const char* what);
 float parseFraction(const std::string& flag, const std::string& text); // 0 to 1
 void parseSize(const std::string& text, Options& o);                   // WIDTHxHEIGHT
+scene::CensusSpec parseCensus(const std::string& text);                // VIEWSxSIZE
 std::array<int, 2> parseWindowPos(const std::string& text);            // X,Y (may be < 0)
 uint32_t parseRange(const std::string& flag, const std::string& text, render::Range range);
 bool parseOnOff(const std::string& flag, const std::string& text);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/benchmark.h"
+#include "app/census.h"
 #include "app/cli.h"
 #include "app/headless.h"
 #include "app/saved_settings.h"
@@ -138,6 +139,7 @@ int main(int argc, char** argv) {
             for (const std::string& line : inspection) std::printf("%s\n", line.c_str());
             return 0;
         }
+        if (options.census.views > 0) return app::runCensus(options);
         if (options.benchmark) return app::benchmarkCommand(options);
         if (!options.headless) return app::runViewer(options);
         return app::runHeadless(options);

@@ -1,0 +1,45 @@
+// census_run.cpp - a census's views, one frame each (see census_run.h).
+#include "app/census_run.h"
+
+#include <chrono>
+
+#include "app/camera_frame.h"
+
+namespace app {
+
+CensusRun::CensusRun(vk::Device& device, render::Renderer& renderer, const render::CensusPass& pass,
+                     uint32_t parts, const scene::Bounds& bounds, scene::CensusSpec spec,
+                     float explode)
+    : renderer_(renderer), pass_(pass), directions_(scene::censusDirections(spec.views)),
+      bounds_(bounds), explode_(explode),
+      targets_(std::make_shared<render::SceneTargets>(
+          device, renderer.pass(renderer.settings().pipeline.msaa),
+          VkExtent2D{spec.size, spec.size})),
+      counters_(std::make_shared<render::CensusCounters>(device, parts)) {}
+
+void CensusRun::step(render::FrameSlots& slots, uint64_t frameNumber) {
+    if (done()) return;
+    if (next_ == 0) start_ = std::chrono::steady_clock::now();
+    const uint32_t view = next_++;
+    render::FrameParams params =
+        cameraFrame(scene::censusCamera(bounds_, directions_[view]), targets_->extent());
+    params.explode = explode_;
+    render::FrameSlot& slot = slots.begin(frameNumber);
+    renderer_.record(slot, targets_, params);
+    pass_.record(slot.cmd, *targets_, *counters_, view == 0, done());
+    slot.keep(counters_);
+    slots.submit(slot);
+}
+
+scene::Census CensusRun::result() const {
+    scene::Census census;
+    census.views = views();
+    census.width = targets_->extent().width;
+    census.height = targets_->extent().height;
+    census.parts = counters_->totals();
+    census.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_)
+                    .count();
+    return census;
+}
+
+} // namespace app
