@@ -17,16 +17,21 @@ CensusRun::CensusRun(vk::Device& device, render::Renderer& renderer, const rende
           VkExtent2D{spec.size, spec.size})),
       counters_(std::make_shared<render::CensusCounters>(device, parts)) {}
 
-void CensusRun::step(render::FrameSlots& slots, uint64_t frameNumber) {
+scene::Camera CensusRun::camera(uint32_t view) const {
+    return scene::censusCamera(bounds_, directions_[view]);
+}
+
+void CensusRun::step(render::FrameSlots& slots, uint64_t frameNumber,
+                     const std::function<void(VkCommandBuffer)>& after) {
     if (done()) return;
     if (next_ == 0) start_ = std::chrono::steady_clock::now();
     const uint32_t view = next_++;
-    render::FrameParams params =
-        cameraFrame(scene::censusCamera(bounds_, directions_[view]), targets_->extent());
+    render::FrameParams params = cameraFrame(camera(view), targets_->extent());
     params.explode = explode_;
     render::FrameSlot& slot = slots.begin(frameNumber);
     renderer_.record(slot, targets_, params);
     pass_.record(slot.cmd, *targets_, *counters_, view == 0, done());
+    if (after) after(slot.cmd);
     slot.keep(counters_);
     slots.submit(slot);
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -27,8 +28,13 @@ class CensusRun {
     uint32_t views() const { return uint32_t(directions_.size()); }
     uint32_t viewsDrawn() const { return next_; }
     bool done() const { return next_ == directions_.size(); }
-    // Records the next view into the slot of frame `frameNumber` and submits it.
-    void step(render::FrameSlots& slots, uint64_t frameNumber);
+    // Records the next view into the slot of frame `frameNumber` and submits it; `after`,
+    // if given, records more into the slot after the census pass (tests copy the ID image).
+    void step(render::FrameSlots& slots, uint64_t frameNumber,
+              const std::function<void(VkCommandBuffer)>& after = {});
+    const render::SceneTargets& targets() const { return *targets_; }
+    // The camera of view `view` (0 to views() - 1).
+    scene::Camera camera(uint32_t view) const;
     // Once done() and the last view's frame has finished: what the census found.
     scene::Census result() const;
 
