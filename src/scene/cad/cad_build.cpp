@@ -151,6 +151,10 @@ BuiltGeometries buildGeometries(Scene& scene, std::vector<Distinct>& shapes,
     return counts;
 }
 
+std::string objectName(const Leaf& leaf, const std::string& stem, uint32_t& unnamed) {
+    return leaf.name.empty() ? stem + " solid " + std::to_string(++unnamed) : leaf.name;
+}
+
 void addObjects(Scene& scene, const std::vector<Leaf>& leaves, const DistinctShapes& shapes,
                 Materials& materials, const std::string& stem) {
     uint32_t unnamed = 0;
@@ -160,8 +164,7 @@ void addObjects(Scene& scene, const std::vector<Leaf>& leaves, const DistinctSha
         if (d.geometry < 0) continue;
         // The instance's colour, else the product's.
         const uint32_t material = leaf.color ? materials.of(*leaf.color) : materials.grey();
-        const std::string name =
-            leaf.name.empty() ? stem + " solid " + std::to_string(++unnamed) : leaf.name;
+        const std::string name = objectName(leaf, stem, unnamed);
         addObject(scene, uint32_t(d.geometry), material, toMatrix(leaf.world), name,
                   joinPath(leaf.group, name));
     }

@@ -77,6 +77,10 @@ BuiltGeometries buildGeometries(Scene& scene, std::vector<Distinct>& shapes,
                                 const std::string& stem, Materials& materials,
                                 const CadProgress& progress, const std::atomic<bool>* cancel);
 
+// The name addObjects gives a leaf: its own, else "<stem> solid N", N counting the leaves
+// named so far in this way.
+std::string objectName(const Leaf& leaf, const std::string& stem, uint32_t& unnamed);
+
 // One object per leaf whose shape has a geometry, placed by the leaf, with the leaf's colour
 // (else grey) and name (else "<stem> solid N"). Throws Bad where no leaf has one.
 void addObjects(Scene& scene, const std::vector<Leaf>& leaves, const DistinctShapes& shapes,

@@ -78,6 +78,10 @@ constexpr auto wholeJobFields = [](auto& io, auto& j) {
     fields(io, j.path, j.options.deflection, j.options.angularDeflection, j.options.maxTriangles,
            j.options.healing, j.levels);
 };
+constexpr auto stepExportJobFields = [](auto& io, auto& j) {
+    fields(io, j.source, j.out, j.healing, j.keep);
+    io.records(j.paths, [](auto& io, auto& p) { io(p); });
+};
 
 // The scenes go before these, through the cache's codec, which checks what it reads
 // (scene::validate).
@@ -147,6 +151,9 @@ std::string encode(const WholeFileJob& job) {
 std::string encode(const WholeFileAnswer& answer) {
     return encodeAfterScene(answer.result.scene, answer, wholeAnswerFields);
 }
+std::string encode(const StepExportJob& job) {
+    return encodeWith(job, stepExportJobFields);
+}
 
 SkeletonJob decodeSkeletonJob(std::string_view bytes) {
     return decodeWith<SkeletonJob>(bytes, skeletonJobFields);
@@ -170,6 +177,9 @@ WholeFileAnswer decodeWholeFileAnswer(std::string_view bytes) {
     wholeAnswerFields(in, answer);
     if (!in.done()) throw std::runtime_error("bytes after a worker's message");
     return answer;
+}
+StepExportJob decodeStepExportJob(std::string_view bytes) {
+    return decodeWith<StepExportJob>(bytes, stepExportJobFields);
 }
 
 } // namespace scene::cad

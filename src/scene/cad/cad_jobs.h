@@ -20,14 +20,15 @@
 
 namespace scene::cad {
 
-enum class JobKind : uint32_t { Skeleton = 1, Piece = 2, WholeFile = 3 };
+enum class JobKind : uint32_t { Skeleton = 1, Piece = 2, WholeFile = 3, StepExport = 4 };
 // Failed: the job's reason in words (the piece is lost, the load goes on); Stopped: the job
 // found that the load cannot go on (its triangles pass --max-triangles), in words.
 enum class AnswerKind : uint32_t {
     Skeleton = 101,
     Piece = 102,
     WholeFile = 103,
-    Progress = 150, // a stage and how far it is, while a whole file loads
+    StepExport = 104, // the STEP file is written (no bytes)
+    Progress = 150,   // a stage and how far it is, while a whole file loads
     Stopped = 198,
     Failed = 199
 };
@@ -110,6 +111,20 @@ struct WholeFileAnswer {
     WorkerFigures figures;
 };
 
+// A STEP file of some objects of a scene loaded from a CAD file (step_exterior.h): the source
+// read again whole, healed as the scene was, its objects checked against the scene's by path.
+struct StepExportJob {
+    std::string source;
+    std::string out; // written at partialStepPath(out), then renamed
+    Healing healing = Healing::On;
+    std::vector<std::string> paths; // the scene's objects, in order
+    std::vector<uint8_t> keep;      // per object: nonzero to write it
+};
+// Where the worker writes the file before renaming it to `out`, so that it appears whole.
+inline std::string partialStepPath(const std::string& out) {
+    return out + ".part";
+}
+
 // A Progress frame's bytes: the stage's name and the fraction.
 std::string encodeProgress(const char* stage, double fraction);
 std::pair<std::string, double> decodeProgress(std::string_view bytes);
@@ -120,6 +135,7 @@ std::string encode(const PieceJob& job);
 std::string encode(const PieceAnswer& answer);
 std::string encode(const WholeFileJob& job);
 std::string encode(const WholeFileAnswer& answer);
+std::string encode(const StepExportJob& job);
 // Throw std::runtime_error on bytes that do not hold what encode wrote.
 SkeletonJob decodeSkeletonJob(std::string_view bytes);
 SkeletonAnswer decodeSkeletonAnswer(std::string_view bytes);
@@ -127,5 +143,6 @@ PieceJob decodePieceJob(std::string_view bytes);
 PieceAnswer decodePieceAnswer(std::string_view bytes);
 WholeFileJob decodeWholeFileJob(std::string_view bytes);
 WholeFileAnswer decodeWholeFileAnswer(std::string_view bytes);
+StepExportJob decodeStepExportJob(std::string_view bytes);
 
 } // namespace scene::cad

@@ -96,6 +96,13 @@ class TreeWalker {
     void walk(const TDF_Label& label, const gp_Trsf& parent, const std::string& group,
               const TDF_Label* instance, int depth) {
         if (depth > kMaxAssemblyDepth) throw Bad("assembly nested too deep");
+        trail_.push_back(label);
+        visit(label, parent, group, instance, depth);
+        trail_.pop_back();
+    }
+
+    void visit(const TDF_Label& label, const gp_Trsf& parent, const std::string& group,
+               const TDF_Label* instance, int depth) {
         if (XCAFDoc_ShapeTool::IsReference(label)) {
             TDF_Label referred;
             if (!XCAFDoc_ShapeTool::GetReferredShape(label, referred)) return;
@@ -132,31 +139,20 @@ class TreeWalker {
         leaf.color = instance ? colorOf(*instance) : std::nullopt;
         if (!leaf.color) leaf.color = colorOf(label);
         leaf.subColors = subColors(label);
+        leaf.trail = trail_;
         leaves_.push_back(std::move(leaf));
     }
 
     Handle(XCAFDoc_ShapeTool) shapes_;
     Handle(XCAFDoc_ColorTool) colors_;
     std::vector<Leaf> leaves_;
+    std::vector<TDF_Label> trail_; // from the free shape down to the label being walked
 };
 
-// Closes the XDE document however the load ends, so that its memory goes.
 Handle(XCAFApp_Application) application() {
     const OcctLeaksIgnored ignored; // its driver table, made once
     return XCAFApp_Application::GetApplication();
 }
-
-struct DocumentGuard {
-    Handle(XCAFApp_Application) app = application();
-    Handle(TDocStd_Document) doc;
-    DocumentGuard() { app->NewDocument("MDTV-XCAF", doc); }
-    ~DocumentGuard() {
-        try {
-            if (!doc.IsNull() && doc->IsOpened()) app->Close(doc);
-        } catch (...) { // nothing to do about a failing close in a destructor
-        }
-    }
-};
 
 IFSelect_ReturnStatus readInto(STEPCAFControl_Reader& reader, const XdeSource& source) {
     if (!source.text) return reader.ReadFile(source.path.c_str());
@@ -222,8 +218,10 @@ void appendSplit(const Leaf& leaf, const std::string& group, std::vector<Leaf>& 
         TopExp::MapShapes(leaf.subColors[i].first, TopAbs_FACE, faces);
         for (int f = 1; f <= faces.Extent(); ++f) byFace.emplace(faces(f).TShape().get(), i);
     }
-    auto add = [&](TopoDS_Shape part, const std::string& name) {
+    auto add = [&](TopoDS_Shape part, const std::string& name, int32_t solid) {
         Leaf& piece = out.emplace_back();
+        piece.trail = leaf.trail;
+        piece.solid = solid;
         piece.world = leaf.world.Multiplied(part.Location().Transformation());
         piece.subColors = colorsTouching(part, byFace, leaf);
         part.Location(TopLoc_Location());
@@ -233,16 +231,16 @@ void appendSplit(const Leaf& leaf, const std::string& group, std::vector<Leaf>& 
         piece.group = group;
         piece.color = leaf.color;
     };
-    int n = 0;
-    for (TopExp_Explorer e(leaf.shape, TopAbs_SOLID); e.More(); e.Next())
-        add(e.Current(), "solid " + std::to_string(++n));
+    int32_t n = 0;
+    for (TopExp_Explorer e(leaf.shape, TopAbs_SOLID); e.More(); e.Next(), ++n)
+        add(e.Current(), "solid " + std::to_string(n + 1), n);
     TopoDS_Compound free;
     BRep_Builder builder;
     builder.MakeCompound(free);
     bool any = false;
     for (TopExp_Explorer e(leaf.shape, TopAbs_FACE, TopAbs_SOLID); e.More(); e.Next(), any = true)
         builder.Add(free, e.Current());
-    if (any) add(free, "free faces");
+    if (any) add(free, "free faces", kFreeFaces);
 }
 
 } // namespace
@@ -284,10 +282,34 @@ Format formatOf(const std::string& path) {
     }
 }
 
+XdeDocument::XdeDocument() : app(application()) {
+    app->NewDocument("MDTV-XCAF", doc);
+}
+XdeDocument::~XdeDocument() {
+    try {
+        if (!doc.IsNull() && doc->IsOpened()) app->Close(doc);
+    } catch (...) { // nothing to do about a failing close in a destructor
+    }
+}
+
 std::vector<Leaf> readXde(const XdeSource& source, Format format, const CadProgress& progress,
                           ReaderLosses& losses, double& sewTolerance,
                           const std::atomic<bool>* cancel, const SessionInspector& inspect) {
-    DocumentGuard guard;
+    XdeDocument document;
+    losses = readDocument(source, format, document.doc, progress, sewTolerance, cancel, inspect);
+    std::vector<Leaf> leaves = leavesOf(document.doc);
+    for (Leaf& leaf : leaves) leaf.trail.clear(); // its labels close with the document
+    return leaves;
+}
+
+std::vector<Leaf> leavesOf(const Handle(TDocStd_Document) & doc) {
+    return TreeWalker(doc).run();
+}
+
+ReaderLosses readDocument(const XdeSource& source, Format format, Handle(TDocStd_Document) & doc,
+                          const CadProgress& progress, double& sewTolerance,
+                          const std::atomic<bool>* cancel, const SessionInspector& inspect) {
+    ReaderLosses losses;
     // The first reader of each kind registers the toolkit's parameters, once per process.
     std::optional<OcctLeaksIgnored> ignored(std::in_place);
     if (format == Format::Step) {
@@ -297,18 +319,18 @@ std::vector<Leaf> readXde(const XdeSource& source, Format format, const CadProgr
         reader.SetGDTMode(false);
         reader.SetMatMode(false);
         reader.SetViewMode(false);
-        losses = transfer(reader, source, "STEP", guard.doc, progress, cancel);
+        losses = transfer(reader, source, "STEP", doc, progress, cancel);
         if (inspect) inspect(sessionOf(reader));
     } else {
         if (source.text) throw Bad("IGES is read from its file only");
         IGESCAFControl_Reader reader;
         ignored.reset();
-        losses = transfer(reader, source, "IGES", guard.doc, progress, cancel);
+        losses = transfer(reader, source, "IGES", doc, progress, cancel);
         const auto model = Handle(IGESData_IGESModel)::DownCast(reader.WS()->Model());
         if (!model.IsNull()) sewTolerance = model->GlobalSection().Resolution();
         if (inspect) inspect(sessionOf(reader));
     }
-    return TreeWalker(guard.doc).run();
+    return losses;
 }
 
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,

@@ -16,7 +16,10 @@
 #include <Message_ProgressIndicator.hxx>
 #include <Message_ProgressScope.hxx>
 #include <Quantity_ColorRGBA.hxx>
+#include <TDF_Label.hxx>
+#include <TDocStd_Document.hxx>
 #include <TopoDS_Shape.hxx>
+#include <XCAFApp_Application.hxx>
 #include <gp_Trsf.hxx>
 
 #include "scene/cad/cad_loader.h"
@@ -92,6 +95,9 @@ inline std::function<bool()> cancelled(const std::atomic<bool>* cancel) {
 }
 using Rgba = Quantity_ColorRGBA;
 
+// Leaf::solid of a leaf that is its whole shape, and of the faces of no solid of a split one.
+constexpr int32_t kWholeShape = -1, kFreeFaces = -2;
+
 // One leaf instance of the assembly tree.
 struct Leaf {
     TopoDS_Shape shape; // at the identity location: `world` places it
@@ -102,6 +108,22 @@ struct Leaf {
     std::optional<Rgba> color;
     // Faces (or solids and shells, for all their faces) with colours of their own.
     std::vector<std::pair<TopoDS_Shape, Rgba>> subColors;
+    // The labels walked from a free shape down to the leaf's shape (references, assemblies, the
+    // shape), from leavesOf only (readXde's document is closed): what an export
+    // (step_exterior.h) copies. And which piece of that shape splitSolids made this leaf:
+    // solid N (from 0), or the free faces.
+    std::vector<TDF_Label> trail;
+    int32_t solid = kWholeShape;
+};
+
+// An XDE document, closed however its user ends, so that its memory goes.
+struct XdeDocument {
+    Handle(XCAFApp_Application) app;
+    Handle(TDocStd_Document) doc;
+    XdeDocument();
+    ~XdeDocument();
+    XdeDocument(const XdeDocument&) = delete;
+    XdeDocument& operator=(const XdeDocument&) = delete;
 };
 
 // What an XDE reader reads: a file, or (STEP only) text in memory, `path` then naming it in
@@ -121,6 +143,14 @@ using SessionInspector = std::function<void(const Handle(XSControl_WorkSession)&
 std::vector<Leaf> readXde(const XdeSource& source, Format format, const CadProgress& progress,
                           ReaderLosses& losses, double& sewTolerance,
                           const std::atomic<bool>* cancel, const SessionInspector& inspect = {});
+
+// readXde's first half: the file read into `doc` with names and colours; returns what the
+// reader dropped. Throws Bad.
+ReaderLosses readDocument(const XdeSource& source, Format format, Handle(TDocStd_Document) & doc,
+                          const CadProgress& progress, double& sewTolerance,
+                          const std::atomic<bool>* cancel, const SessionInspector& inspect = {});
+// Its second half: the document walked from its free shapes down to the leaves.
+std::vector<Leaf> leavesOf(const Handle(TDocStd_Document) & doc);
 
 // A BREP file's shape as one leaf named `stem`. Throws Bad.
 std::vector<Leaf> readBrep(const std::string& path, const std::string& stem,

@@ -126,6 +126,10 @@ void runJob(int fd, const util::Frame& frame) {
             answer(fd, AnswerKind::WholeFile,
                    encode(readWholeFile(decodeWholeFileJob(frame.bytes), progressTo(fd))));
             return;
+        case JobKind::StepExport:
+            writeStepExport(decodeStepExportJob(frame.bytes));
+            answer(fd, AnswerKind::StepExport, {});
+            return;
         }
         answer(fd, AnswerKind::Failed, "a job this worker does not know");
     } catch (const OverBudget& e) {

@@ -18,5 +18,7 @@ int runLoadWorker(int fd);
 SkeletonAnswer readSkeleton(const SkeletonJob& job);
 PieceAnswer readPiece(const PieceJob& job);
 WholeFileAnswer readWholeFile(const WholeFileJob& job, const CadProgress& progress = {});
+// Writes the STEP file (step_export.cpp).
+void writeStepExport(const StepExportJob& job);
 
 } // namespace scene::cad
