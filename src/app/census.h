@@ -19,6 +19,7 @@ struct CensusOutcome {
     std::vector<double> scenePassMs;
     scene::PartSet hidden; // the parts --hide / --isolate left out
     std::string deviceName;
+    std::string pipeline; // render::describePipeline of what drew it
     uint32_t validationMessages = 0;
 };
 

@@ -83,11 +83,11 @@ Options parseArgs(const std::vector<std::string>& args) {
     return parseArgs(args, Options{});
 }
 
-namespace {
-
 bool given(const Options& options, const char* name) {
     return std::find(options.given.begin(), options.given.end(), name) != options.given.end();
 }
+
+namespace {
 
 // The one argument that is no flag: the model, as --model would take it (a launcher's %f);
 // refused after another model, where which one was meant is a guess.

@@ -123,6 +123,9 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// Whether the flag `name` was on the command line (Options::given).
+bool given(const Options& options, const char* name);
+
 // Whether --census-export's FILE is written as STEP (.step, .stp) rather than glTF (.glb).
 bool censusExportsStep(const std::string& path);
 
