@@ -100,6 +100,11 @@ void checkCensusExport(const Options& options, const LoadedScene& loaded) {
 void exportExterior(const Options& options, const scene::Scene& scene,
                     const scene::Census& census) {
     const std::string& path = options.censusExport;
+    if (censusExportsStep(path)) {
+        scene::writeStepSubset(options.live.scene.model, scene, scene::seenObjects(scene, census),
+                               path, options.live.scene.cad.healing);
+        return;
+    }
     const scene::PartSet seen = scene::seenParts(census);
     if (seen.empty()) throw std::runtime_error(path + ": nothing to write: the census saw no part");
     scene::writeGlb(scene::keptParts(scene, seen), path);
@@ -147,14 +152,15 @@ int runCensus(const Options& options) {
         std::printf("%s\n", timingJson(options, scene, outcome).c_str());
         return exitCode(outcome.validationMessages);
     }
+    // The files first: a refused export ends the run in its one line, before any answer.
+    if (!options.censusExport.empty()) exportExterior(options, scene, census);
+    if (!options.censusCsv.empty()) writeCensusCsv(options.censusCsv, scene, census);
     printParts(scene, census);
     const scene::CensusSummary sum = scene::summarize(scene, census, outcome.hidden);
     std::printf("%s\n", censusSummaryJson(census, sum).c_str());
-    if (!options.censusCsv.empty()) writeCensusCsv(options.censusCsv, scene, census);
-    if (!options.censusExport.empty()) exportExterior(options, scene, census);
     std::fprintf(stderr,
-                 "idview: census of %u views of %ux%u on %s, %s: %u of %u parts seen, %u never "
-                 "seen (%u solids or objects); %.1f ms\n",
+                 "idview: census of %u views of %ux%u on %s with %s; %u of %u parts seen, %u "
+                 "never seen (%u solids or objects); %.1f ms\n",
                  census.views, census.width, census.height, outcome.deviceName.c_str(),
                  outcome.pipeline.c_str(), sum.partsSeen, sum.parts, sum.partsNeverSeen,
                  sum.objectsNeverSeen, census.ms);
