@@ -2,6 +2,7 @@
 #include "app/viewer/panel/panel_census.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -78,12 +79,13 @@ void hereList(const PanelInfo& info, PanelActions& actions) {
     for (size_t i = 0; i < here.size() && i < hereRows; ++i) {
         const HerePart& row = here[i];
         const auto part = scene::describePart(*info.scene, row.part);
-        const std::string name = "#" + std::to_string(row.part) + " " + (part ? part->name : "");
+        char label[320]; // "#ID name", and the row's own ImGui ID after ##
+        std::snprintf(label, sizeof label, "#%u %s##here%zu", row.part,
+                      part ? part->name.c_str() : "", i);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         const bool selected = info.selectedParts && info.selectedParts->contains(row.part);
-        if (ImGui::Selectable((name + "##here" + std::to_string(i)).c_str(), selected,
-                              ImGuiSelectableFlags_SpanAllColumns))
+        if (ImGui::Selectable(label, selected, ImGuiSelectableFlags_SpanAllColumns))
             ask(actions, CensusAction::Part, row.part);
         ImGui::TableNextColumn();
         ImGui::Text("%llu px", static_cast<unsigned long long>(row.pixels));
