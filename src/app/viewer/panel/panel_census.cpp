@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 
+#include "app/viewer/panel/panel_widgets.h"
+
 namespace app {
 namespace {
 
@@ -43,23 +45,29 @@ void runRow(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
                      CensusAsk{CensusAction::Run, view.censusViews, view.censusSize, 0}});
 }
 
+float buttonWidth(const char* label) {
+    return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+
 double percent(uint64_t part, uint64_t whole) {
     return whole ? 100.0 * double(part) / double(whole) : 0.0;
 }
 
 void summary(const CensusFound& found, PanelActions& actions) {
     const scene::CensusSummary& s = found.summary;
-    ImGui::Text("%u views of %u x %u: %u of %u parts seen", found.census.views, found.census.width,
-                found.census.height, s.partsSeen, s.parts);
-    ImGui::Text("never seen: %u parts (%.1f%% of the triangles), %u solids", s.partsNeverSeen,
-                percent(s.trianglesNeverSeen, s.triangles), s.objectsNeverSeen);
+    ImGui::TextWrapped("%u views of %u x %u: %u of %u parts seen", found.census.views,
+                       found.census.width, found.census.height, s.partsSeen, s.parts);
+    ImGui::TextWrapped("never seen: %u parts (%.1f%% of the triangles), %u solids",
+                       s.partsNeverSeen, percent(s.trianglesNeverSeen, s.triangles),
+                       s.objectsNeverSeen);
     if (s.partsHidden || s.partsEmpty)
-        ImGui::Text("not counted: %u hidden, %u without triangles", s.partsHidden, s.partsEmpty);
+        ImGui::TextWrapped("not counted: %u hidden, %u without triangles", s.partsHidden,
+                           s.partsEmpty);
     ImGui::BeginDisabled(s.partsNeverSeen == 0);
     if (ImGui::Button("Select never seen")) ask(actions, CensusAction::Select);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Hide never seen"));
     if (ImGui::Button("Hide never seen")) ask(actions, CensusAction::Hide);
-    ImGui::SameLine();
+    sameLineIfFits(buttonWidth("Isolate never seen"));
     if (ImGui::Button("Isolate never seen")) ask(actions, CensusAction::Isolate);
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
