@@ -12,8 +12,8 @@
 #include <GLFW/glfw3.h>
 
 #include "app/viewer/commands/commands.h"
-#include "app/viewer/panel/overlays.h"
 #include "app/viewer/commands/script.h"
+#include "app/viewer/panel/overlays.h"
 #include "render/technique.h"
 #include "scene/assembly_tree.h"
 #include "scene/standard_view.h"
@@ -56,6 +56,8 @@ std::string sample(app::ArgumentKind kind) {
         return "12";
     case Kind::Level:
         return "assembly";
+    case Kind::Census:
+        return "12x128";
     case Kind::Explode:
         return "0.25";
     case Kind::Section:

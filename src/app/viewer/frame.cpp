@@ -35,6 +35,7 @@ double mean(const Values& values, size_t last) {
 
 void Viewer::drawFrame(const FrameWants& wants) {
     const double seconds = wants.now;
+    stepCensus(); // its next views, on slots of its own; what finished shows in this panel
     drawPanel();
     applySettings();
     render::FrameSlot& slot = slots_.begin(frameNumber_);
@@ -66,6 +67,7 @@ void Viewer::drawFrame(const FrameWants& wants) {
     const bool scenePass =
         pacer_.needsScene(key, wants.continuous) || std::exchange(redrawNext_, false);
     recordScene(slot, params, scenePass);
+    countHere(slot, scenePass);
     pacer_.drew(wants, scenePass, key);
     const std::string screenshot = std::exchange(screenshotPath_, {});
     presenter_.record(slot.cmd, *image, scene_.targets()->color(), changedTiles(),
@@ -329,6 +331,9 @@ PanelInfo Viewer::panelInfo() const {
         info.cullMs += times[i].cullMs / double(last);
         info.pyramidMs += times[i].pyramidMs / double(last);
     }
+    if (census_.running()) info.censusProgress = {census_.viewsDrawn(), census_.views()};
+    if (census_.found()) info.census = &*census_.found();
+    info.here = &census_.here();
     return info;
 }
 

@@ -17,6 +17,7 @@ void Viewer::follow(SceneState::Change change) {
     // lie where the last one did, so the part details start over.
     scene_.explode(settings_.animation.animate ? 0.0f : document_.explode());
     partDetails_ = PartDetailsCache{};
+    census_.forget(); // its parts were the scene's before
     if (change == Change::Grown) return grown();
     // A model's first partial scene replaces the model drawn: what Cancel brings back.
     const auto loading = scene_.loading();

@@ -61,8 +61,10 @@ Viewer::Viewer(const ViewerStart& start, const LiveSettings& settings, Window& w
               {VK_KHR_SWAPCHAIN_EXTENSION_NAME}),
       compiler_(vk::ShaderCompiler::locate(start.shaderDir)),
       presenter_(window, instance, device_, surface_.handle()),
-      scene_(device_, compiler_, events_, settings, presenter_.extent()), slots_(device_),
-      input_(*this, window.handle(), std::move(script)) {
+      scene_(device_, compiler_, events_, settings, presenter_.extent()),
+      census_(device_, compiler_, pipelineCacheFolder(settings.scene),
+              scene_.renderer().driverCache()),
+      slots_(device_), input_(*this, window.handle(), std::move(script)) {
     const auto size = window.size(), position = window.position();
     events_.say("window", [&](util::JsonWriter& j) {
         j.member("width", size[0]).member("height", size[1]);
@@ -382,7 +384,7 @@ FrameWants Viewer::frameWants() const {
     // A selection the Inspect section has not asked about yet, or its answer landed: a frame
     // for it. While the worker works the answer out, the loop may rest: the answer wakes it.
     wants.busy = input_.waiting() || picking_.waiting() || !screenshotPath_.empty() ||
-                 pendingZoom_ != 0.0f ||
+                 pendingZoom_ != 0.0f || censusBusy() ||
                  inspect_.due(document_.selection().selected(), document_.things());
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = document_.selection().hovered().has_value();

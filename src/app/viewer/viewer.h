@@ -16,6 +16,7 @@
 #include "app/viewer/panel/measure_overlay.h"
 #include "app/viewer/panel/overlays.h"
 #include "app/viewer/panel/panel.h"
+#include "app/viewer/state/census_state.h"
 #include "app/viewer/state/document.h"
 #include "app/viewer/state/events.h"
 #include "app/viewer/state/inspect_report.h"
@@ -120,6 +121,9 @@ class Viewer final : public InputTarget {
     // The tree node `node` names: its parts selected (or added), hidden or shown, as the
     // panel's tree row does. False when no node has that path.
     bool actOnNode(const NodeTarget& node) override;
+    // The Visibility section's census (viewer_census.cpp), Esc's to cancel while it runs.
+    void census(const CensusAsk& ask) override;
+    bool censusRunning() const override { return census_.running(); }
 
     // InputTarget.
     void orbit(glm::vec2 delta) override { camera_.orbit(delta); }
@@ -137,6 +141,9 @@ class Viewer final : public InputTarget {
     bool pipelinePending() const override { return scene_.pipelinePending(); }
     // The Inspect panel's answer being worked out (`inspect ready`).
     bool inspecting() const override { return inspect_.computing(); }
+    bool censusBusy() const override {
+        return census_.running() || census_.hereWaiting() || hereAsked_;
+    }
     // The next frame draws everything anew, as after a change: the scene pass, the whole
     // composition and the panel (tests compare what frames at rest show with it).
     void redraw() override { redrawNext_ = true; }
@@ -202,6 +209,7 @@ class Viewer final : public InputTarget {
     vk::ShaderCompiler compiler_;
     Presenter presenter_;
     SceneState scene_;
+    CensusState census_;       // its pass is used by the frames' `census here` counts
     render::FrameSlots slots_; // after what the frames use: destroyed (and waited for) first
     Document document_;        // what the person has done to the model (document.h)
     Picking picking_;          // the GPU's answers to the hover, clicks and boxes
@@ -264,6 +272,12 @@ class Viewer final : public InputTarget {
         scene::Section section;
     };
     std::optional<Before> before_;
+    // The census (viewer_census.cpp).
+    bool hereAsked_ = false; // `census here`: the next scene pass's ID image is counted
+    void startCensus(scene::CensusSpec spec);
+    void cancelCensus();
+    void stepCensus();
+    void countHere(render::FrameSlot& slot, bool scenePass);
 };
 
 } // namespace app

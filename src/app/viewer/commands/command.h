@@ -57,6 +57,7 @@ enum class CommandId : uint8_t {
     Object,
     Node,
     Section,
+    Census,
     // Rendering.
     Edges,
     Renderer,
@@ -86,13 +87,24 @@ struct NodeTarget {
     bool operator==(const NodeTarget&) const = default;
 };
 
+// The Visibility section's census (census_state.h): run one of `views` x `size`, cancel it,
+// act on the parts it never saw (select, hide, isolate: hide all others), or count the parts
+// of the window's picture (here); Part selects one part, as a row of here's list does.
+enum class CensusAction : uint8_t { Run, Cancel, Select, Hide, Isolate, Here, Part };
+struct CensusAsk {
+    CensusAction action = CensusAction::Run;
+    uint32_t views = 0, size = 0; // Run's
+    uint32_t part = 0;            // Part's
+    bool operator==(const CensusAsk&) const = default;
+};
+
 // What a command takes (commands.h's ArgumentKind says which alternative): nothing, on/off,
 // a number (samples, copies, the selection level), the explode fraction, a file or object
-// name, a registry entry, a section plane (nullopt: all off) or a tree node.
+// name, a registry entry, a section plane (nullopt: all off), a tree node or a census ask.
 using Argument =
     std::variant<std::monostate, Switch, uint32_t, float, std::string, const scene::StandardView*,
                  const render::Technique*, const render::DrawMode*, render::CullMode,
-                 render::ClearPath, std::optional<scene::SectionPlane>, NodeTarget>;
+                 render::ClearPath, std::optional<scene::SectionPlane>, NodeTarget, CensusAsk>;
 
 struct Command {
     CommandId id = CommandId::Help;

@@ -17,6 +17,7 @@
 namespace app {
 
 struct NodeTarget;
+struct CensusAsk;
 
 class CommandTarget {
   public:
@@ -62,6 +63,9 @@ class CommandTarget {
     virtual void toggleMeasure() = 0;
     virtual void selectObjects(const std::string& name, SelectMode mode) = 0;
     virtual bool actOnNode(const NodeTarget& node) = 0;
+    // The Visibility section's census (CensusAsk); whether one is running (Esc cancels it).
+    virtual void census(const CensusAsk& ask) = 0;
+    virtual bool censusRunning() const = 0;
 };
 
 } // namespace app

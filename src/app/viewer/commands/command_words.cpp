@@ -1,6 +1,7 @@
 // command_words.cpp - commands as people and scripts write them: a row's arguments parsed
 // from a script line and written back, key chords named, and the help overlay's lines.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "app/cli_values.h" // parseCensus: the same VIEWSxSIZE as --census
 #include "app/viewer/commands/commands.h"
 #include "app/viewer/commands/script.h" // parseNumber
 #include "render/culling.h"
@@ -51,6 +53,8 @@ const char* kindUsage(Kind kind) {
         return "AXIS,VALUE[,flip] | off";
     case Kind::Node:
         return "select|add|hide|show [PATH]";
+    case Kind::Census:
+        return "VIEWSxSIZE|cancel|select|hide|isolate|here|part ID";
     }
     return "";
 }
@@ -60,6 +64,8 @@ const char* const switchWords[] = {"on", "off"};
 const char* const clearWords[] = {"auto", "pass", "compute"};
 const char* const levelNames[] = {"face", "solid", "assembly"};
 const char* const nodeActions[] = {"select", "add", "hide", "show"};
+// CensusAction's words after Run (which is VIEWSxSIZE).
+const char* const censusWords[] = {"cancel", "select", "hide", "isolate", "here", "part"};
 
 [[noreturn]] void fail(const std::string& message) {
     throw std::invalid_argument(message);
@@ -88,6 +94,21 @@ std::optional<scene::SectionPlane> sectionPlane(const std::string& word) {
     }
 }
 
+// VIEWSxSIZE (as --census reads it) or one of censusWords.
+CensusAsk censusAsk(const CommandDef& def, const std::string& word) {
+    if (word.empty() || !std::isdigit(static_cast<unsigned char>(word[0]))) {
+        const auto action = CensusAction(1 + oneOfWords(def.name, word, censusWords));
+        if (action == CensusAction::Part) fail("'census part' takes a part ID");
+        return {action};
+    }
+    try {
+        const scene::CensusSpec spec = parseCensus(word);
+        return {CensusAction::Run, spec.views, spec.size};
+    } catch (const std::exception& e) {
+        fail(std::string("'census' ") + e.what());
+    }
+}
+
 // The kinds written as one word.
 Argument parseWord(const CommandDef& def, const std::string& word) {
     switch (def.argument) {
@@ -108,6 +129,8 @@ Argument parseWord(const CommandDef& def, const std::string& word) {
         return uint32_t(oneOfWords(def.name, word, levelNames));
     case Kind::Section:
         return sectionPlane(word);
+    case Kind::Census:
+        return censusAsk(def, word);
     default:
         break;
     }
@@ -178,6 +201,11 @@ std::string argumentText(Kind kind, const Argument& argument) {
         std::string operator()(const std::optional<scene::SectionPlane>& p) const {
             return sectionText(p);
         }
+        std::string operator()(const CensusAsk& c) const {
+            if (c.action == CensusAction::Part) return "part " + std::to_string(c.part);
+            if (c.action != CensusAction::Run) return censusWords[size_t(c.action) - 1];
+            return std::to_string(c.views) + "x" + std::to_string(c.size);
+        }
         std::string operator()(const NodeTarget& n) const {
             std::string text = nodeActions[size_t(n.action)];
             if (!n.path.empty()) text += " " + n.path;
@@ -235,6 +263,10 @@ Argument parseArgument(const CommandDef& def, const std::vector<std::string>& wo
     case Kind::Node:
         if (words.empty()) fail(usage);
         return parseNode(def, words, rest);
+    case Kind::Census: // `part ID`, the one form of two words
+        if (words.size() == 2 && words[0] == "part")
+            return CensusAsk{CensusAction::Part, 0, 0, uint32_t(number(def, words[1]))};
+        break;
     case Kind::Switch:
         if (words.empty()) return Switch::Toggle;
         break;

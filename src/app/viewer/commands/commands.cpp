@@ -101,7 +101,8 @@ std::vector<CommandDef> windowCommands() {
          [](const CommandTarget& v) { return v.helpOpen(); }},
         {CommandId::Escape, "escape", Kind::None,
          "cancel: the help, a box drag, a model loading (cancel where a model was shown "
-         "before it, else stop), measure mode, then the selection and things A and B (never "
+         "before it, else stop), a census, measure mode, then the selection and things A and B "
+         "(never "
          "quits)",
          keys({{GLFW_KEY_ESCAPE, 0}}), escape},
         {CommandId::Quit, "quit", Kind::None, "quit idview (or close the window)",
@@ -266,6 +267,14 @@ std::vector<CommandDef> partCommands() {
                  section.planes.back() = *plane;
              v.document().setSection(section, false);
          }},
+        {CommandId::Census,
+         "census",
+         Kind::Census,
+         "visibility census: VIEWSxSIZE runs one (views over a sphere, each SIZE pixels "
+         "square); cancel stops it; select, hide or isolate its never-seen parts; here lists "
+         "the parts of the window's picture by pixels; part ID selects that part",
+         {},
+         [](CommandTarget& v, const Argument& a) { v.census(arg<CensusAsk>(a)); }},
     };
 }
 
@@ -417,6 +426,10 @@ std::optional<std::string> cancelOne(CommandTarget& viewer) {
     if (const auto load = viewer.modelLoading(); load && !load->stopping) {
         execute({load->modelBefore ? CommandId::Cancel : CommandId::Stop}, viewer);
         return "load";
+    }
+    if (viewer.censusRunning()) {
+        execute({CommandId::Census, CensusAsk{CensusAction::Cancel}}, viewer);
+        return "census";
     }
     if (viewer.document().measure().on()) {
         viewer.toggleMeasure();

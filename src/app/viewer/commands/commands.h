@@ -49,6 +49,7 @@ enum class ArgumentKind : uint8_t {
     Explode,      // 0 to 1
     Section,      // AXIS,VALUE[,flip] or off
     Node,         // select|add|hide|show, then the path
+    Census,       // VIEWSxSIZE, cancel, select, hide, isolate, here or part ID
 };
 
 // Keys that ask for a command with one argument: the views' digits each give their view, a
@@ -129,7 +130,8 @@ std::vector<HelpLine> helpLines();
 size_t bindingCount();
 
 // Esc: cancels the first thing in progress of the help overlay, a box drag, a model loading
-// (Cancel where a model was shown before it, else Stop), measure mode and the selection (typing in
+// (Cancel where a model was shown before it, else Stop), a census running, measure mode and the
+// selection (typing in
 // a panel field never gets here: ImGui takes the Esc and leaves the field). Says what it cancelled;
 // nullopt when there was nothing, and nothing happens then.
 std::optional<std::string> cancelOne(CommandTarget& target);

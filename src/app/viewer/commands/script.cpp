@@ -48,6 +48,7 @@ const InputSpec inputSpecs[] = {
     {"rest", ScriptOp::Rest, 1, "rest SECONDS", false},
     {"pipeline", ScriptOp::Pipeline, 0, "pipeline hold|release|ready", false},
     {"inspect", ScriptOp::Inspect, 0, "inspect hold|release|ready", false},
+    {"census-done", ScriptOp::CensusDone, 0, "census-done", false},
 };
 
 [[noreturn]] void fail(const std::string& message) {

@@ -45,6 +45,8 @@
 //   4.95 inspect hold       the Inspect panel's questions wait on their worker until `inspect
 //                           release` (the panel says "computing..." meanwhile); `inspect
 //                           ready` waits until the answer is in (never while held)
+//   5   census-done         wait until the census running (`census 12x128`) has finished or
+//                           was cancelled, and a `census here` has counted
 //
 // Commands, each by its row's name with the argument it takes (F1 in the viewer lists them
 // all with their keys); a switch takes on or off, and without either toggles as its key does:
@@ -62,6 +64,9 @@
 //   3.5 sort off            draws in scene order (on: sorted once), as the panel's checkbox
 //   3.5 defaults            the panel's Reset to defaults: the kept settings back to defaults
 //   3.6 copies 3            model copies, as the panel's field does
+//   3.65 census 12x128      the Visibility section's census (docs/viewer.md): VIEWSxSIZE runs
+//                           one; `census cancel`, `census select|hide|isolate` (its
+//                           never-seen parts), `census here` (the window's parts by pixels)
 //   3.7 section y,0,flip    a section plane as --section gives it, in the first free slot of
 //                           the panel's three (a fourth replaces the third); `section off`
 //                           turns them all off
@@ -121,6 +126,7 @@ enum class ScriptOp {
     Rest,
     Pipeline,
     Inspect,
+    CensusDone,
     Command,
 };
 

@@ -15,6 +15,7 @@
 
 #include "app/viewer/commands/commands.h"
 #include "app/viewer/panel/panel_browser.h"
+#include "app/viewer/panel/panel_census.h"
 #include "app/viewer/panel/panel_commands.h"
 #include "app/viewer/panel/panel_layout.h"
 #include "app/viewer/panel/panel_rendering.h"
@@ -254,6 +255,8 @@ PanelActions drawPanel(LiveSettings& settings, ViewSettings& view, const PanelIn
     layout.mark("Properties");
     if (ImGui::CollapsingHeader("Properties", ImGuiTreeNodeFlags_DefaultOpen))
         propertiesSection(info, layout);
+    layout.mark("Visibility");
+    if (ImGui::CollapsingHeader("Visibility")) visibilitySection(view, info, actions);
     layout.mark("Section");
     if (ImGui::CollapsingHeader("Section")) {
         // The document's planes, edited as a copy: a change goes back as the actions' section.

@@ -16,6 +16,7 @@
 #include "app/live_settings.h"
 #include "app/viewer/commands/command.h"
 #include "app/viewer/panel/panel_layout.h"
+#include "app/viewer/state/census_state.h"
 #include "app/viewer/state/events.h"
 #include "app/viewer/state/selection.h"
 #include "app/viewer/state/view_settings.h"
@@ -131,6 +132,11 @@ struct PanelInfo {
     // Levels of detail: whether the technique, mode and culling chosen have the cull pass
     // choose them (else full detail is drawn).
     bool lodChosen = false;
+    // The Visibility section: the census running (views drawn, views), what the last one
+    // found, and the window's parts by pixels (`census here`), largest first.
+    std::optional<std::pair<uint32_t, uint32_t>> censusProgress;
+    const CensusFound* census = nullptr;
+    const std::vector<HerePart>* here = nullptr;
 };
 
 // Draws the panel; the user's changes land in `settings` (scene, render, animation) and

@@ -50,6 +50,8 @@ struct ViewSettings {
     // fits the scene in the area beside it.
     float panelLeft = 0.0f, panelRight = 0.0f;
     PanelLayoutState layout; // the row under the pointer, the clipping report
+    // The Visibility section's census fields: views, and each view's size in pixels.
+    uint32_t censusViews = 162, censusSize = 512;
 };
 
 } // namespace app

@@ -17,8 +17,8 @@
 #include <vulkan/vulkan.h>
 
 #include "app/viewer/commands/command_target.h"
-#include "app/viewer/window/key_queue.h"
 #include "app/viewer/commands/script.h"
+#include "app/viewer/window/key_queue.h"
 #include "render/pick.h"
 
 struct GLFWwindow;
@@ -36,10 +36,12 @@ class InputTarget : public CommandTarget {
     // box dragged from `a` to `b` (window coordinates) to select with `mode`.
     virtual void clicked(bool add, bool twice) = 0;
     virtual void boxed(glm::dvec2 a, glm::dvec2 b, SelectMode mode) = 0;
-    // The script's waits (`solids N`, `pipeline ready`, `inspect ready`) and holds.
+    // The script's waits (`solids N`, `pipeline ready`, `inspect ready`, `census-done`) and
+    // holds.
     virtual uint32_t solidsShown() const = 0;
     virtual bool pipelinePending() const = 0;
     virtual bool inspecting() const = 0;
+    virtual bool censusBusy() const = 0; // a census running, or a `census here` not counted
     virtual void redraw() = 0;
     virtual void holdBlink(std::optional<bool> strong) = 0;
     virtual void holdPipelineBuilds(bool hold) = 0;
@@ -124,6 +126,7 @@ class Input {
     // The same while a pipeline is being built or awaited (`pipeline ready`).
     void waitForPipelines();
     void waitForInspect();
+    void waitForCensus();
 
     InputTarget& target_;
     GLFWwindow* window_;

@@ -67,6 +67,10 @@ void Input::waitForInspect() {
     if (target_.inspecting()) steps_.push_front({[this] { waitForInspect(); }, true});
 }
 
+void Input::waitForCensus() {
+    if (target_.censusBusy()) steps_.push_front({[this] { waitForCensus(); }, true});
+}
+
 void Input::queue(const ScriptLine& line) {
     switch (line.op) {
     case ScriptOp::Command:
@@ -122,6 +126,7 @@ void Input::queue(const ScriptLine& line) {
     case ScriptOp::Rest:
     case ScriptOp::Pipeline:
     case ScriptOp::Inspect:
+    case ScriptOp::CensusDone:
         queueWait(line);
         break;
     }
@@ -210,6 +215,9 @@ void Input::queueWait(const ScriptLine& line) {
         break;
     case ScriptOp::Rest: // the steps after it wait, and the loop with them
         step([this, s = line.values[0]] { restUntil_ = scriptNow_ + s; }, false);
+        break;
+    case ScriptOp::CensusDone:
+        step([this] { waitForCensus(); }, true);
         break;
     case ScriptOp::Pipeline: // the pipeline builds' worker, or Inspect's: held or awaited
     case ScriptOp::Inspect: {

@@ -1,0 +1,109 @@
+// viewer_census.cpp - the Visibility section's census in the viewer (census_state.h): the
+// `census` command, a few views per frame, "visible from here" after a scene pass, and
+// their event records.
+#include "app/viewer/commands/commands.h"
+#include "app/viewer/viewer.h"
+
+namespace app {
+namespace {
+
+// The CPU's recording time a frame gives the census: the window keeps drawing at about
+// 30 frames a second while it runs (the views' GPU work is not waited for).
+constexpr double censusBudgetMs = 20.0;
+
+} // namespace
+
+void Viewer::census(const CensusAsk& ask) {
+    const CensusFound* found = census_.found() ? &*census_.found() : nullptr;
+    switch (ask.action) {
+    case CensusAction::Run:
+        return startCensus({ask.views, ask.size});
+    case CensusAction::Cancel:
+        return cancelCensus();
+    case CensusAction::Part: {
+        const uint32_t count = scene_.scene().uniquePartCount();
+        if (ask.part >= count)
+            throw CommandError("census part " + std::to_string(ask.part) +
+                               ": the scene's parts are 0 to " + std::to_string(count - 1));
+        scene::PartSet one(count);
+        one.insert(ask.part);
+        document_.select(one, SelectMode::Replace);
+        selectionChanged();
+        return;
+    }
+    case CensusAction::Here:
+        hereAsked_ = true;
+        redrawNext_ = true; // counted after a scene pass, whose ID image is the window's
+        return;
+    default:
+        break;
+    }
+    if (!found) throw CommandError("no census has finished yet (census VIEWSxSIZE runs one)");
+    if (ask.action == CensusAction::Select) {
+        document_.select(found->neverSeen, SelectMode::Replace);
+        selectionChanged();
+        return;
+    }
+    scene::PartSet hide = found->neverSeen;
+    if (ask.action == CensusAction::Isolate) hide.invert(); // everything else
+    document_.hide(hide);
+    selectionChanged(); // hidden parts are not selected
+    partsChanged();
+}
+
+void Viewer::startCensus(scene::CensusSpec spec) {
+    render::RenderSettings render = settings_.render;
+    render.section = document_.section();
+    const float explode = settings_.animation.animate ? 0.0f : document_.explode();
+    try {
+        census_.start(spec, scene_.atRest(), scene_.scene().bounds(), render,
+                      document_.selection().hidden(), explode);
+    } catch (const std::exception& e) {
+        throw CommandError(std::string("census: ") + e.what());
+    }
+    events_.say("census", [&](util::JsonWriter& j) {
+        j.member("state", "started").member("views", spec.views).member("size", spec.size);
+    });
+}
+
+void Viewer::cancelCensus() {
+    const uint32_t drawn = census_.viewsDrawn(), views = census_.views();
+    if (!census_.cancel()) return;
+    events_.say("census", [&](util::JsonWriter& j) {
+        j.member("state", "cancelled").member("views_drawn", drawn).member("views", views);
+    });
+}
+
+// Each frame, after the window's: the census's next views, the answers that came.
+void Viewer::stepCensus() {
+    if (census_.step(censusBudgetMs, scene_.scene())) {
+        const CensusFound& found = *census_.found();
+        const scene::CensusSummary& sum = found.summary;
+        events_.say("census", [&](util::JsonWriter& j) {
+            j.member("state", "done").member("views", found.census.views);
+            j.member("size", found.census.width).member("parts", sum.parts);
+            j.member("seen", sum.partsSeen).member("never_seen", sum.partsNeverSeen);
+            j.member("hidden", sum.partsHidden).member("empty", sum.partsEmpty);
+            j.member("solids_never_seen", sum.objectsNeverSeen);
+            j.member("triangles", sum.triangles);
+            j.member("triangles_never_seen", sum.trianglesNeverSeen);
+        });
+    }
+    if (!census_.hereReady(slots_)) return;
+    events_.say("census_here", [&](util::JsonWriter& j) {
+        j.member("count", census_.here().size()).beginArray("parts");
+        for (const HerePart& part : census_.here()) j.value(part.part);
+        j.endArray().beginArray("pixels");
+        for (const HerePart& part : census_.here()) j.value(part.pixels);
+        j.endArray();
+    });
+}
+
+// After the frame's scene pass: `census here` counts its ID image.
+void Viewer::countHere(render::FrameSlot& slot, bool scenePass) {
+    if (!hereAsked_ || !scenePass) return;
+    census_.recordHere(slot, *scene_.targets(), scene_.scene().uniquePartCount(), frameNumber_);
+    hereAsked_ = false;
+}
+
+} // namespace app
