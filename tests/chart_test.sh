@@ -151,6 +151,15 @@ sed '0,/^| empty frame (`--visible 0`) | [0-9.]*/s//| empty frame (`--visible 0`
 cmp -s "$root/docs/benchmarks.md" "$work/changed.md" && fail "the page has no empty frame row to change"
 out=$(/usr/bin/python3 "$root/scripts/bench_tables.py" --check "$work/changed.md" 2>&1)
 [[ $? -ne 0 && $out == *"9.999"* ]] || fail "a changed table passed: $out"
+# docs/census.md's tables are what scripts/census_table.py prints from the runs they cite; a
+# changed number fails, naming it.
+/usr/bin/python3 "$root/scripts/census_table.py" --check "$root/docs/census.md" \
+    >"$work/census.txt" 2>&1 || fail "docs/census.md: $(cat "$work/census.txt")"
+sed '0,/^| 162 x 1024² | [0-9.]*/s//| 162 x 1024² | 9.999/' "$root/docs/census.md" \
+    >"$work/census-changed.md"
+cmp -s "$root/docs/census.md" "$work/census-changed.md" && fail "docs/census.md has no 162 x 1024² row"
+out=$(/usr/bin/python3 "$root/scripts/census_table.py" --check "$work/census-changed.md" 2>&1)
+[[ $? -ne 0 && $out == *"9.999"* ]] || fail "a changed census table passed: $out"
 # The culling rework's before-and-after table at the still view: every row's times, their
 # ratio to culling off and now over before, and the triangles, from the two builds' JSON.
 /usr/bin/python3 - "$root/docs/benchmarks.md" "$root/docs/benchmarks" <<'PY' || fail "the rework table does not match the JSON"
