@@ -23,28 +23,12 @@
 namespace app {
 namespace {
 
-constexpr const char* kCensusTechnique = "visbuffer-compute";
-
-// What the census draws with: the run's settings single-sampled (the census counts one ID
-// per pixel) at full detail (a coarser level could show or hide a part the model has).
+// The run's options at the census's size, single-sampled (the targets' MSAA).
 Options censusOptions(const Options& options) {
     Options drawn = options;
     drawn.width = drawn.height = options.census.size;
     drawn.live.render.pipeline.msaa = 1;
-    drawn.live.render.lod.errorPixels = 0.0f;
     return drawn;
-}
-
-// Unless --renderer or --mode chose, the census draws with the configuration that drew it
-// fastest on the H200 (docs/census.md: visbuffer-compute, 3.6x faster than vertex-fs at
-// 162 views of 1024x1024), and on a device without mesh shaders with the viewer's default.
-void chooseCensusPipeline(Options& drawn, const vk::Device& device) {
-    if (given(drawn, "--renderer") || given(drawn, "--mode")) return;
-    render::PipelineKey& key = drawn.live.render.pipeline;
-    const render::PipelineKey viewer = viewerDefaults().live.render.pipeline;
-    key.technique =
-        device.info().meshShader ? render::findTechnique(kCensusTechnique) : viewer.technique;
-    key.mode = viewer.mode;
 }
 
 // The scene-pass GPU time of the newest `views` frames.
@@ -65,7 +49,9 @@ CensusOutcome renderCensus(const Options& options, const scene::Scene& scene,
     {
         Offscreen rig(instance, drawn);
         outcome.deviceName = rig.device.info().name;
-        chooseCensusPipeline(drawn, rig.device);
+        drawn.live.render =
+            censusSettings(drawn.live.render, rig.device,
+                           given(options, "--renderer") || given(options, "--mode"));
         uploadScene(rig.renderer, sourceOf(options.live.scene), scene, drawn.live.render);
         outcome.pipeline = rig.renderer.pipelineName();
         rig.renderer.setHidden(outcome.hidden);

@@ -4,8 +4,26 @@
 #include <chrono>
 
 #include "app/camera_frame.h"
+#include "app/cli.h"
+#include "render/technique.h"
 
 namespace app {
+
+namespace {
+constexpr const char* kCensusTechnique = "visbuffer-compute";
+} // namespace
+
+render::RenderSettings censusSettings(render::RenderSettings render, const vk::Device& device,
+                                      bool keepPipeline) {
+    render.pipeline.msaa = 1;
+    render.lod.errorPixels = 0.0f;
+    if (keepPipeline) return render;
+    const render::PipelineKey viewer = viewerDefaults().live.render.pipeline;
+    render.pipeline.technique =
+        device.info().meshShader ? render::findTechnique(kCensusTechnique) : viewer.technique;
+    render.pipeline.mode = viewer.mode;
+    return render;
+}
 
 CensusRun::CensusRun(vk::Device& device, render::Renderer& renderer, const render::CensusPass& pass,
                      uint32_t parts, const scene::Bounds& bounds, scene::CensusSpec spec,

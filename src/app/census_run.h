@@ -16,6 +16,14 @@
 
 namespace app {
 
+// What a census draws with, headless and in the viewer alike: `render` single-sampled (one ID
+// per pixel) at full detail (a coarser level could show or hide a part the model has), and
+// unless `keepPipeline` (--renderer or --mode given) the configuration that drew it fastest
+// on the H200 (docs/census.md: visbuffer-compute, 3.6x faster than vertex-fs at 162 views of
+// 1024x1024) where the device has mesh shaders, else the viewer's default.
+render::RenderSettings censusSettings(render::RenderSettings render, const vk::Device& device,
+                                      bool keepPipeline);
+
 class CensusRun {
   public:
     // `renderer` has the scene set and is configured with what the census should draw: the

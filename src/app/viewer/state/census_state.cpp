@@ -5,9 +5,9 @@
 // with, the composition a frame at rest redraws from (Renderer::Composed) and the compute
 // rasterizer's samples, sized for the targets last drawn, which a composition at rest reads.
 // A census view between two window frames would leave the window composing from samples of
-// the census's square targets. It would also draw with the window's MSAA and levels of
-// detail, where the census counts one ID per pixel at full detail as `idview --census` does,
-// so the two answer alike. The cost: the scene's upload and pipelines once more per start.
+// the census's square targets. It would also draw with the window's technique, MSAA and
+// levels of detail, where the census draws as `idview --census` does (censusSettings), so
+// the two answer alike. The cost: the scene's upload and pipelines once more per start.
 // Its frames go through slots of their own too: the window's frame numbers key its picks and
 // view matrices, and its GPU times feed the title and the Timing section.
 #include "app/viewer/state/census_state.h"
@@ -33,9 +33,8 @@ void CensusState::start(scene::CensusSpec spec, const scene::Scene& atRest,
                         const scene::PartSet& hidden, float explode) {
     cancel();
     found_.reset();
-    render.pipeline.msaa = 1;      // one ID per pixel, as the headless census counts
-    render.lod.errorPixels = 0.0f; // full detail: a coarser level could show another part
-    if (slots_) slots_->finish();  // the old renderer's frames, before it goes
+    render = censusSettings(render, device_, false); // as `idview --census` draws
+    if (slots_) slots_->finish();                    // the old renderer's frames, before it goes
     renderer_ = std::make_unique<render::Renderer>(device_, compiler_, cacheFolder_);
     renderer_->setScene(atRest, render);
     renderer_->setHidden(hidden);
