@@ -1,11 +1,12 @@
 #version 460
 // compose.comp - the picture shown, composed from the scene pass's kept images: its shaded
-// colour, the resolved ID image and depth. The hovered part blinks, the selection is tinted,
-// and part edges and outlines are drawn from the ID image, with no line geometry: they cost
-// the same for every technique and follow exactly the parts the ID attachment shows. Because
-// the scene pass leaves its images untouched, a viewer at rest runs this pass alone when the
-// hover, the blink or the selection changes, and for a step of the blink only over the tiles
-// of the hovered part (shared_id_passes.h has the rules).
+// colour, the resolved ID image and depth. Parts take their tint by visibility (when set),
+// the hovered part blinks, the selection is tinted, and part edges and outlines are drawn
+// from the ID image, with no line geometry: they cost the same for every technique and
+// follow exactly the parts the ID attachment shows. Because the scene pass leaves its images
+// untouched, a viewer at rest runs this pass alone when the hover, the blink, the selection
+// or the tint changes, and for a step of the blink only over the tiles of the hovered part
+// (shared_id_passes.h has the rules).
 #extension GL_KHR_shader_subgroup_vote : require
 
 #include "buffers.glsl"
@@ -86,6 +87,13 @@ vec3 highlightSelected(vec3 color) {
     return tinted;
 }
 
+// The part's tint by visibility: its colour mixed towards the tint by the tint's alpha.
+vec3 tintByVisibility(vec3 color, uint id) {
+    if (compose.tintAddress == 0ul || id == BACKGROUND_ID) return color;
+    const vec4 tint = unpackUnorm4x8(UintsRef(compose.tintAddress).values[id]);
+    return mix(color, tint.rgb, tint.a);
+}
+
 // The part under the hover pixel and its depth, where sample 0 decides as in the resolve of
 // the ID image: the same value the scene pass's pick would atomicMin there (shared.h).
 uint64_t hoverValue(uint id) {
@@ -146,7 +154,7 @@ void main() {
     const bool hoveredHere = id == hovered && id != BACKGROUND_ID;
     // The hovered pixel's tile too: it writes what is under the pixel in every step.
     if (whole) addToBox(hoveredHere || pixel == compose.hoverPixel, tile);
-    vec3 rgb = imageLoad(shaded, ivec2(pixel)).rgb;
+    vec3 rgb = tintByVisibility(imageLoad(shaded, ivec2(pixel)).rgb, id);
     if (hoveredHere) rgb = highlightHovered(rgb, compose.blink);
     if (isSelected(id)) rgb = highlightSelected(rgb);
     vec4 result = vec4(rgb, 1.0);
@@ -158,10 +166,10 @@ void main() {
     const int w = int(clamp(compose.width, 1u, EDGE_WIDTH_MAX));
     const uint outlined = (compose.flags & EDGE_HOVERED) != 0u ? hovered : BACKGROUND_ID;
     if (outline && look(p, w + 2, outlined).selectedMixed)
-        result = compose.selectColor;
+        result = unpackUnorm4x8(compose.selectColor);
     else if (outlined != BACKGROUND_ID && look(p, w + 1, outlined).hoveredMixed)
-        result = compose.hoverColor;
+        result = unpackUnorm4x8(compose.hoverColor);
     else if ((compose.flags & EDGE_LINES) != 0u && look(p, w, outlined).twoIds)
-        result = compose.lineColor;
+        result = unpackUnorm4x8(compose.lineColor);
     imageStore(color, ivec2(pixel), result);
 }

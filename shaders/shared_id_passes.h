@@ -7,7 +7,8 @@
 IDV_CONST ID_PASS_TILE = 16;
 // compose.comp writes the picture shown from the scene pass's shaded colour, its ID image
 // and its depth, which the pass leaves as they are:
-// - the hovered part (the ID at hoverPixel) is turned towards its inverted colour by `blink`
+// - each part is mixed towards its tint by visibility (tintAddress, when not 0), then the
+//   hovered part (the ID at hoverPixel) is turned towards its inverted colour by `blink`
 //   (0: not at all), then the selected parts are tinted;
 // - edges (EDGE_LINES): a pixel is drawn in a line colour when the square window of `width`
 //   pixels starting width/2 pixels up-left of it and ending (width+1)/2 down-right holds two
@@ -29,25 +30,29 @@ IDV_CONST EDGE_HOVERED = 4u;  // outline the hovered part
 //   has read it), computed exactly as in COMPOSE_WHOLE.
 IDV_CONST COMPOSE_WHOLE = 0u;
 IDV_CONST COMPOSE_TILES = 1u;
+// The line colours are display-encoded RGBA8 (packUnorm4x8 on both sides): the colour image
+// is 8-bit UNORM, so a byte reaches it exactly as the float it stood for did.
 struct ComposePush {
-    vec4 lineColor;           // display-encoded RGBA written where an edge is (the colour image's)
-    vec4 selectColor;         // the selection's outline
-    vec4 hoverColor;          // the hovered part's outline
+    uint lineColor;           // written where an edge is
+    uint selectColor;         // the selection's outline
+    uint hoverColor;          // the hovered part's outline
+    uint width;               // 1 to EDGE_WIDTH_MAX
     uint64_t selectedAddress; // bitset, or 0
     uint64_t hoverAddress;    // uint64_t written: the part and depth at hoverPixel
     uint64_t boxAddress;      // HoverBox, COMPOSE_WHOLE
-    uvec2 extent;
-    uvec2 hoverPixel; // x NO_PICK (or outside the image): nothing hovered
-    uvec2 tileOrigin; // COMPOSE_TILES: the first tile
-    uint width;       // 1 to EDGE_WIDTH_MAX
-    uint flags;
-    float blink; // the hovered part's highlight weight, 0..1 (render/blink.h)
-    uint step;   // COMPOSE_WHOLE or COMPOSE_TILES
+    // Per unique part, a display-encoded RGBA8 its pixels are mixed towards by its alpha
+    // (0: untouched); the Visibility section's tint by visibility. 0: no tint at all.
+    uint64_t tintAddress;
     // The compute rasterizer's 64-bit samples (shared_visibility.h), which hold the depth of
     // what it drew; 0 for the other techniques.
     uint64_t rasterSamplesAddress;
-    uint samples; // per pixel, of those
-    uint unused;  // pads to 16 bytes
+    uvec2 extent;
+    uvec2 hoverPixel; // x NO_PICK (or outside the image): nothing hovered
+    uvec2 tileOrigin; // COMPOSE_TILES: the first tile
+    uint flags;
+    float blink;  // the hovered part's highlight weight, 0..1 (render/blink.h)
+    uint step;    // COMPOSE_WHOLE or COMPOSE_TILES
+    uint samples; // per pixel, of rasterSamplesAddress's
 };
 // The tiles (ID_PASS_TILE pixels square) holding the hovered part and pixel, inclusive:
 // reset to tileMin 0xffffffff and tileMax 0, so an empty box has tileMin > tileMax.
@@ -89,8 +94,9 @@ struct ResolvePush {
 
 #ifdef __cplusplus
 static_assert(sizeof(ResolvePush) == 32);
-static_assert(sizeof(ComposePush) == 128 && offsetof(ComposePush, selectedAddress) == 48);
-static_assert(offsetof(ComposePush, blink) == 104);
+// Within the 128 bytes of push constants every device has.
+static_assert(sizeof(ComposePush) == 96 && offsetof(ComposePush, selectedAddress) == 16);
+static_assert(offsetof(ComposePush, tintAddress) == 40 && offsetof(ComposePush, blink) == 84);
 static_assert(sizeof(HoverBox) == 16);
 static_assert(sizeof(PartSetPush) == 32);
 static_assert(sizeof(PartSetResult) == 16);

@@ -3,9 +3,15 @@
 // selection or edge setting composed alone gives, byte for byte, the picture a scene pass
 // with the same state gives, whether it is composed whole or, for a step of the blink, over
 // the hovered part's tiles only; the part it reads under the hovered pixel is the scene
-// pass's pick there; and a composition leaves the ID image as it was. Lavapipe, validation on, at
+// pass's pick there; and a composition leaves the ID image as it was. The tint by visibility
+// moves the tinted parts' colours alone. Lavapipe, validation on, at
 // 1x and 4x MSAA, with edges on and off.
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include <glm/gtc/packing.hpp>
 
 #include "app/camera_frame.h"
 #include "app/headless.h"
@@ -201,6 +207,75 @@ TEST_P(Composition, AloneDrawsWhatAScenePassWithTheSameStateDraws) {
         EXPECT_FALSE(background.hover->part.has_value());
     }
     EXPECT_EQ(instance.validationMessages(), 0u);
+}
+
+// The tint by visibility (Renderer::setTint) over a scene pass's picture: the IDs and the
+// pick stay as they are; each pixel of a tinted part is its colour mixed towards the part's
+// tint by the tint's alpha, every other pixel (background, parts with tint 0) keeps its
+// bytes; composed alone it is what a scene pass draws; off, or all 0, the picture is as before.
+void tintMovesTintedPartsAlone(uint32_t msaa) {
+    app::SceneSettings source;
+    source.builtin = "procedural:preset=small,seed=3";
+    const app::LoadedScene loaded = app::loadScene(source);
+    const scene::Scene& scene = loaded.scene;
+    app::Options o = testing_support::headlessOptions(W, H);
+    o.live.render.pipeline.msaa = msaa;
+    vk::Instance instance({true, {}, false});
+    {
+        Drawing d(instance, o, scene, app::initialCamera(loaded, float(W) / float(H)), false);
+        const Shot before = d.draw(true);
+        const std::vector<glm::uvec2> onParts = pixelsInsideTwoParts(before.ids);
+        ASSERT_EQ(onParts.size(), 2u);
+        const uint32_t shown = before.ids[onParts[0].y * W + onParts[0].x];
+        // Every other part tinted, the part at onParts[0] among them, in colours that take turns.
+        const std::array<uint32_t, 3> colours = {0xbe0000ffu, 0xbe00ff00u, 0xbeff00ffu};
+        std::vector<uint32_t> tint(scene.uniquePartCount(), 0u);
+        for (uint32_t id = shown % 2; id < tint.size(); id += 2) tint[id] = colours[id % 3];
+        d.rig.renderer.setTint(tint);
+        const Shot composed = d.draw(false);
+        const Shot drawn = d.draw(true);
+        EXPECT_TRUE(sameIds(composed.ids, before.ids, W)) << "the tint changed the IDs";
+        EXPECT_TRUE(sameIds(drawn.ids, before.ids, W)) << "the tint changed the IDs";
+        EXPECT_TRUE(sameColours(drawn.color, composed.color, W));
+        size_t tinted = 0, wrong = 0;
+        for (size_t i = 0; i < before.ids.size(); ++i) {
+            const uint32_t id = before.ids[i];
+            const uint32_t rgba = id == NONE ? 0u : tint[id];
+            const glm::vec4 target = glm::unpackUnorm4x8(rgba) * 255.0f;
+            for (int c = 0; c < 3; ++c) {
+                const float was = before.color[4 * i + c], got = drawn.color[4 * i + c];
+                const float want = was + (target[c] - was) * target.a / 255.0f;
+                if (std::abs(got - want) > 1.0f && wrong++ < 3)
+                    ADD_FAILURE() << "msaa " << msaa << " pixel " << i % W << "," << i / W
+                                  << " part " << id << " channel " << c << ": " << got << ", want "
+                                  << want;
+            }
+            if (rgba) ++tinted;
+        }
+        EXPECT_EQ(wrong, 0u);
+        EXPECT_GT(tinted, 2000u) << "too few tinted pixels to tell";
+        EXPECT_FALSE(sameColours(drawn.color, before.color, W));
+
+        // The pick and the hovered part under a tinted part's pixel, with the tint and without.
+        d.params.pickPixel = onParts[0];
+        const Shot pickedTinted = d.draw(true);
+        d.rig.renderer.setTint(std::vector<uint32_t>(tint.size(), 0u));
+        const Shot pickedPlain = d.draw(true);
+        ASSERT_TRUE(pickedTinted.pick && pickedPlain.pick);
+        EXPECT_EQ(pickedTinted.pick->part, shown);
+        EXPECT_EQ(pickedTinted.pick->part, pickedPlain.pick->part);
+        EXPECT_EQ(pickedTinted.pick->depth, pickedPlain.pick->depth);
+        d.params.pickPixel.reset();
+        EXPECT_TRUE(sameColours(d.draw(false).color, before.color, W)) << "a tint of all 0";
+        d.rig.renderer.setTint({});
+        EXPECT_TRUE(sameColours(d.draw(false).color, before.color, W)) << "the tint off";
+    }
+    EXPECT_EQ(instance.validationMessages(), 0u);
+}
+
+TEST(CompositionTint, TintByVisibilityMovesOnlyTheTintedPartsColours) {
+    tintMovesTintedPartsAlone(1);
+    tintMovesTintedPartsAlone(4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Lavapipe, Composition,

@@ -3,7 +3,8 @@
 # under Xvfb on lavapipe with validation (docs/viewer.md): a census of the small procedural
 # scene (an assembly with parts inside) finds as many never-seen parts as `idview --census`
 # with the same views and size; hiding, isolating and selecting them each act on that many
-# parts, and Ctrl+Z brings the hidden ones back; Esc cancels a census half-way; `census here`
+# parts, and Ctrl+Z brings the hidden ones back; its tint by visibility changes the picture
+# and, off, leaves it as before; Esc cancels a census half-way; `census here`
 # lists the same parts as headless --visible-parts of the same view. Small sizes keep it to a
 # few seconds of lavapipe. viewer_lib.sh: the environment, $work, fail, at and session.
 source "$(dirname "$0")/viewer_lib.sh"
@@ -18,11 +19,25 @@ parts=$(echo "$headless" | jq -r '.parts')
 visible=$("$idview" --headless --size 720x450 --scene procedural:preset=small --frames 1 \
     --visible-parts 2>/dev/null | jq -r '.parts[]' | sort -n)
 
-# The census, then its never-seen parts hidden (undone), isolated (undone) and selected.
+# The census, tinted by visibility and back (the panel hidden and the blink held, so equal
+# pictures are equal files); then its never-seen parts hidden (undone), isolated (undone)
+# and selected.
 t=0.5
 {
+    at key F9
+    at blink strong
+    at frames 2
+    at screenshot "$work/plain.png"
     at census $spec
     at census-done
+    at frames 2
+    at screenshot "$work/done.png"
+    at census tint on
+    at frames 2
+    at screenshot "$work/tinted.png"
+    at census tint off
+    at frames 2
+    at screenshot "$work/untinted.png"
     at census hide
     at frames 2
     at key ctrl+Z
@@ -39,6 +54,17 @@ done_line=$(events "$work/run.out" census 'select(.state == "done")')
 seen_never=$(echo "$done_line" | jq -r '.never_seen')
 [[ $seen_never == "$never" ]] && echo "ok   never seen: $seen_never of $parts, as headless" ||
     fail "viewer census never_seen '$seen_never', headless '$never' ($done_line)"
+tinted=$(events "$work/run.out" tint .parts | paste -sd' ' -)
+[[ $tinted == "$(echo "$done_line" | jq -r '.seen + .never_seen') 0" ]] &&
+    echo "ok   tint by visibility: $tinted parts tinted" || fail "tint events: parts '$tinted'"
+same() { cmp -s "$work/$1.png" "$work/$2.png"; }
+if [[ $(events "$work/run.out" screenshot | wc -l) -ne 4 ]]; then
+    fail "tint: $(events "$work/run.out" screenshot | wc -l) screenshots of 4"
+elif ! same plain done || same plain tinted || ! same plain untinted; then
+    fail "tint: expected the picture changed by the tint alone (plain, done, untinted equal)"
+else
+    echo "ok   tint by visibility changes the picture, and off it is as before"
+fi
 hidden=$(events "$work/run.out" hidden .parts | paste -sd' ' -)
 expected="$never 0 $((parts - never)) 0"
 [[ $hidden == "$expected" ]] && echo "ok   hide, undo, isolate, undo: hidden $hidden" ||

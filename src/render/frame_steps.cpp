@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include <glm/gtc/packing.hpp>
+
 #include "render/blink.h"
 #include "render/renderer.h"
 #include "vk/barrier.h"
@@ -20,8 +22,8 @@ namespace {
 bool differsInBlinkOnly(const gpu::ComposePush& a, const gpu::ComposePush& b) {
     return a.lineColor == b.lineColor && a.selectColor == b.selectColor &&
            a.hoverColor == b.hoverColor && a.selectedAddress == b.selectedAddress &&
-           a.extent == b.extent && a.hoverPixel == b.hoverPixel && a.width == b.width &&
-           a.flags == b.flags;
+           a.tintAddress == b.tintAddress && a.extent == b.extent && a.hoverPixel == b.hoverPixel &&
+           a.width == b.width && a.flags == b.flags;
 }
 
 } // namespace
@@ -246,10 +248,11 @@ void Renderer::recordIdPasses(VkCommandBuffer cmd, FrameSlot& slot, const SceneT
                               const FrameParams& params) {
     const EdgeSettings& e = settings_.edges;
     gpu::ComposePush compose{};
-    compose.lineColor = glm::vec4(e.color, 1.0f);
-    compose.selectColor = glm::vec4(e.selectColor, 1.0f);
-    compose.hoverColor = glm::vec4(e.hoverColor, 1.0f);
+    compose.lineColor = glm::packUnorm4x8(glm::vec4(e.color, 1.0f));
+    compose.selectColor = glm::packUnorm4x8(glm::vec4(e.selectColor, 1.0f));
+    compose.hoverColor = glm::packUnorm4x8(glm::vec4(e.hoverColor, 1.0f));
     compose.selectedAddress = selected_->address();
+    compose.tintAddress = tint_ ? tint_->address() : 0;
     compose.hoverAddress = slot.hoverReadback.address();
     compose.extent = {targets.extent().width, targets.extent().height};
     compose.hoverPixel = params.pickPixel.value_or(glm::uvec2(gpu::NO_PICK));

@@ -125,6 +125,7 @@ void Renderer::apply(const scene::Scene& scene, const RenderSettings& settings, 
     if (newScene) {
         translucent_.reset();
         translucentSet_.reset();
+        tint_.reset();
     }
     sceneGpu_ = std::move(sceneGpu);
     partVertices_ = std::move(partVertices);
@@ -232,6 +233,23 @@ void Renderer::setSelection(const scene::PartSet& selected) {
     composed_.reset();
 }
 
+void Renderer::setTint(const std::vector<uint32_t>& rgba) {
+    if (!rgba.empty() && (!sceneGpu_ || rgba.size() != partCount_))
+        throw vk::Error("Renderer::setTint: not one colour per part of the current scene");
+    std::shared_ptr<const vk::Buffer> buffer;
+    if (!rgba.empty()) {
+        vk::UploadBatch upload(device_);
+        auto tint = std::make_shared<vk::Buffer>(upload.add(
+            rgba, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+            "tint by visibility"));
+        upload.keep(tint);
+        upload.submit();
+        buffer = std::move(tint);
+    }
+    tint_ = std::move(buffer);
+    composed_.reset();
+}
+
 void Renderer::setHidden(const scene::PartSet& hidden) {
     if (!sceneGpu_ || hidden.partCount() != partCount_)
         throw vk::Error("Renderer::setHidden: not a set over the current scene's parts");
@@ -316,7 +334,7 @@ void Renderer::record(FrameSlot& slot, const std::shared_ptr<const SceneTargets>
     for (const std::shared_ptr<const void>& used :
          std::initializer_list<std::shared_ptr<const void>>{
              pipeline_, sceneGpu_, draws_, pick_, animator_, idPasses_, culler_, resolver_,
-             visibility_, raster_, selected_, hidden_, target, translucentPipeline_})
+             visibility_, raster_, selected_, hidden_, tint_, target, translucentPipeline_})
         slot.keep(used);
     slot.scenePass = true;
     if (draws_->key.technique->computeRaster) {
@@ -354,7 +372,7 @@ void Renderer::recordComposition(FrameSlot& slot, const std::shared_ptr<const Sc
                                  const FrameParams& params) {
     if (!sceneGpu_) throw vk::Error("Renderer::recordComposition before setScene");
     for (const std::shared_ptr<const void>& used :
-         std::initializer_list<std::shared_ptr<const void>>{idPasses_, selected_, target,
+         std::initializer_list<std::shared_ptr<const void>>{idPasses_, selected_, tint_, target,
                                                             rasterSamples_})
         slot.keep(used);
     vk::CmdLabel label(device_.debug(), slot.cmd, "composition");

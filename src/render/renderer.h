@@ -133,6 +133,11 @@ class Renderer {
     // (built on first use, cached like the others), so with nothing hidden nothing changes.
     void setSelection(const scene::PartSet& selected);
     void setHidden(const scene::PartSet& hidden);
+    // Per unique part of the scene last set, a display-encoded RGBA8 (glm::packUnorm4x8) the
+    // composition mixes its pixels towards by the alpha; 0 leaves a part as it is, and an
+    // empty vector turns the tint off (setScene does too). The colour image alone changes:
+    // IDs, picks and counts never do. Uploaded once, without waiting.
+    void setTint(const std::vector<uint32_t>& rgba);
     const scene::PartSet& hidden() const { return hiddenSet_; }
     // X-ray's translucent parts (render/xray.h, xrayParts): drawn over the picture after the
     // scene pass's draws, never in the ID image, the depth or a pick; hide them with
@@ -261,6 +266,7 @@ class Renderer {
     std::shared_ptr<const DrawBuffers> draws_;
     // The selection and hidden parts as the GPU reads them (bitsets, see scene/part_set.h).
     std::shared_ptr<const vk::Buffer> selected_, hidden_;
+    std::shared_ptr<const vk::Buffer> tint_; // setTint's colours; null: no tint
     scene::PartSet hiddenSet_;
     // X-ray's pass: its draws (none: no pass) and its pipeline, made for the drawn key.
     std::shared_ptr<const std::vector<TranslucentDraw>> translucent_;

@@ -184,6 +184,7 @@ render::FrameParams Viewer::frameParams(double seconds) {
     // A released box asks for its parts (recordScene adds the visible parts' count).
     if (const auto box = picking_.boxQuery()) params.partSets.push_back(*box);
     showParts();
+    showTint();
     params.explode = animate ? scene::explodeLoop(float(seconds)) : document_.explode();
     return params;
 }
@@ -333,6 +334,7 @@ PanelInfo Viewer::panelInfo() const {
     }
     if (census_.running()) info.censusProgress = {census_.viewsDrawn(), census_.views()};
     if (census_.found()) info.census = &*census_.found();
+    info.censusTint = census_.tint();
     info.here = &census_.here();
     return info;
 }

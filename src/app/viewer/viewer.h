@@ -189,6 +189,7 @@ class Viewer final : public InputTarget {
     // explode slider places it, the animation reaches further (SceneState::explodeReach).
     double reach() { return settings_.animation.animate ? scene_.explodeReach() : 1.0; }
     void showParts();
+    void showTint();
     void recordScene(render::FrameSlot& slot, render::FrameParams params, bool scenePass);
     std::optional<VkRect2D> changedTiles() const;
     void saveScreenshot(const std::string& path);
@@ -273,6 +274,8 @@ class Viewer final : public InputTarget {
     };
     std::optional<Before> before_;
     // The census (viewer_census.cpp).
+    uint64_t drawnTint_ = 0; // the census's tintVersion() the renderer draws
+    bool tintShown_ = false; // the renderer draws a tint
     bool hereAsked_ = false; // `census here`: the next scene pass's ID image is counted
     void startCensus(scene::CensusSpec spec);
     void cancelCensus();

@@ -1,6 +1,8 @@
 // viewer_census.cpp - the Visibility section's census in the viewer (census_state.h): the
 // `census` command, a few views per frame, "visible from here" after a scene pass, and
 // their event records.
+#include <algorithm>
+
 #include "app/viewer/commands/commands.h"
 #include "app/viewer/viewer.h"
 
@@ -34,6 +36,12 @@ void Viewer::census(const CensusAsk& ask) {
     case CensusAction::Here:
         hereAsked_ = true;
         redrawNext_ = true; // counted after a scene pass, whose ID image is the window's
+        return;
+    case CensusAction::Tint:
+        census_.setTint(ask.on);
+        events_.say("census", [&](util::JsonWriter& j) {
+            j.member("state", "tint").member("on", ask.on).member("census", found != nullptr);
+        });
         return;
     default:
         break;
@@ -97,6 +105,20 @@ void Viewer::stepCensus() {
         for (const HerePart& part : census_.here()) j.value(part.pixels);
         j.endArray();
     });
+}
+
+// Hands the tint by visibility to the window's renderer once per change: a toggle, a census
+// started (its old colours go) or done (the new ones come, when on), a new scene.
+void Viewer::showTint() {
+    if (drawnTint_ == census_.tintVersion()) return;
+    const std::vector<uint32_t> colors = census_.tintColors();
+    drawnTint_ = census_.tintVersion();
+    if (colors.empty() && !tintShown_) return; // off, and it was
+    scene_.renderer().setTint(colors);
+    tintShown_ = !colors.empty();
+    redrawNext_ = true;
+    const auto tinted = std::count_if(colors.begin(), colors.end(), [](uint32_t c) { return c; });
+    events_.say("tint", [&](util::JsonWriter& j) { j.member("parts", uint64_t(tinted)); });
 }
 
 // After the frame's scene pass: `census here` counts its ID image.

@@ -136,6 +136,7 @@ struct PanelInfo {
     // found, and the window's parts by pixels (`census here`), largest first.
     std::optional<std::pair<uint32_t, uint32_t>> censusProgress;
     const CensusFound* census = nullptr;
+    bool censusTint = false; // the tint by visibility is on
     const std::vector<HerePart>* here = nullptr;
 };
 

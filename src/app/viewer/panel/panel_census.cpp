@@ -15,8 +15,8 @@ namespace {
 // The most rows "visible from here" lists; the event record has them all.
 constexpr size_t hereRows = 40;
 
-void ask(PanelActions& actions, CensusAction action, uint32_t part = 0) {
-    actions.ask({CommandId::Census, CensusAsk{action, 0, 0, part}});
+void ask(PanelActions& actions, CensusAction action, uint32_t part = 0, bool on = false) {
+    actions.ask({CommandId::Census, CensusAsk{action, 0, 0, part, on}});
 }
 
 // The fields and Run, or the running census's progress and Cancel.
@@ -51,6 +51,22 @@ float buttonWidth(const char* label) {
 
 double percent(uint64_t part, uint64_t whole) {
     return whole ? 100.0 * double(part) / double(whole) : 0.0;
+}
+
+// The toggle and, while on, what its colours mean (visibility_tint.h).
+void tintRow(const PanelInfo& info, PanelActions& actions) {
+    bool on = info.censusTint;
+    if (ImGui::Checkbox("Tint by visibility", &on)) ask(actions, CensusAction::Tint, 0, on);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("each part's colour by the pixels the census saw of it (log scale)");
+    if (!on) return;
+    ImGui::TextColored(ImVec4(0.3f, 0.5f, 1.0f, 1.0f), "barely seen");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.0f, 1.0f, 0.0f, 1.0f), "->");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.2f, 0.2f, 1.0f), "most seen");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.0f, 1.0f, 1.0f), " never seen");
 }
 
 void summary(const CensusFound& found, PanelActions& actions) {
@@ -108,7 +124,10 @@ void hereList(const PanelInfo& info, PanelActions& actions) {
 
 void visibilitySection(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
     runRow(view, info, actions);
-    if (info.census) summary(*info.census, actions);
+    if (info.census) {
+        summary(*info.census, actions);
+        tintRow(info, actions);
+    }
     ImGui::Separator();
     hereList(info, actions);
 }

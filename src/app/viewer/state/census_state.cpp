@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "app/viewer/state/visibility_tint.h"
+
 namespace app {
 
 CensusState::CensusState(vk::Device& device, const vk::ShaderCompiler& compiler,
@@ -33,6 +35,7 @@ void CensusState::start(scene::CensusSpec spec, const scene::Scene& atRest,
                         const scene::PartSet& hidden, float explode) {
     cancel();
     found_.reset();
+    ++tintVersion_;
     render = censusSettings(render, device_, false); // as `idview --census` draws
     if (slots_) slots_->finish();                    // the old renderer's frames, before it goes
     renderer_ = std::make_unique<render::Renderer>(device_, compiler_, cacheFolder_);
@@ -68,6 +71,7 @@ bool CensusState::step(double budgetMs, const scene::Scene& drawn) {
     found.summary = scene::summarize(drawn, found.census, hidden_);
     found.neverSeen = scene::neverSeenParts(drawn, found.census, hidden_);
     found_ = std::move(found);
+    ++tintVersion_;
     run_.reset();
     return true;
 }
@@ -75,9 +79,21 @@ bool CensusState::step(double budgetMs, const scene::Scene& drawn) {
 void CensusState::forget() {
     cancel();
     found_.reset();
+    ++tintVersion_;
     here_.clear();
     hereFrame_.reset();
     hereCounters_.reset();
+}
+
+void CensusState::setTint(bool on) {
+    if (on == tint_) return;
+    tint_ = on;
+    ++tintVersion_;
+}
+
+std::vector<uint32_t> CensusState::tintColors() const {
+    if (!tint_ || !found_) return {};
+    return visibilityTint(found_->census, found_->neverSeen);
 }
 
 void CensusState::recordHere(render::FrameSlot& slot, const render::SceneTargets& targets,

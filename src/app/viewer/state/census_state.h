@@ -64,6 +64,14 @@ class CensusState {
     // A new scene: the census running stops, what was found and counted here goes.
     void forget();
 
+    // Tint by visibility (visibility_tint.h), on or off over census runs. tintColors: what
+    // the window's renderer draws (Renderer::setTint), empty while off or before a census
+    // has finished; tintVersion counts its changes (a toggle, a census started or done).
+    void setTint(bool on);
+    bool tint() const { return tint_; }
+    std::vector<uint32_t> tintColors() const;
+    uint64_t tintVersion() const { return tintVersion_; }
+
     // "Visible from here": after a scene pass into `targets` recorded in `slot` (frame
     // `frame`), counts its ID image's parts; hereReady() once that frame has finished.
     void recordHere(render::FrameSlot& slot, const render::SceneTargets& targets, uint32_t parts,
@@ -89,6 +97,8 @@ class CensusState {
     VkExtent2D hereExtent_{};
     std::vector<HerePart> here_;
     std::optional<CensusFound> found_;
+    bool tint_ = false;
+    uint64_t tintVersion_ = 0;
     std::unique_ptr<render::FrameSlots> slots_; // last: destroyed first, waiting for its frames
     const render::CensusPass& pass();
 };
