@@ -9,14 +9,12 @@
 
 #include "app/census_run.h"
 #include "app/exit_code.h"
+#include "app/exterior_export.h"
 #include "app/headless.h"
 #include "app/offscreen.h"
 #include "app/scene_source.h"
-#include "scene/cad/step_exterior.h"
 #include "scene/explode.h"
-#include "scene/exterior.h"
 #include "scene/formats.h"
-#include "scene/gltf/gltf_writer.h"
 #include "util/json_writer.h"
 #include "vk/context.h"
 
@@ -74,28 +72,6 @@ CensusOutcome renderCensus(const Options& options, const scene::Scene& scene,
 
 namespace {
 
-// Before drawing: a STEP export needs the B-rep of a CAD file.
-void checkCensusExport(const Options& options, const LoadedScene& loaded) {
-    if (censusExportsStep(options.censusExport) && !loaded.scene.brep)
-        throw std::runtime_error(options.censusExport +
-                                 ": a STEP export needs a CAD model (STEP, IGES or BREP); " +
-                                 loaded.source + " is a mesh: export to .glb instead");
-}
-
-// --census-export: .glb the seen parts, .step/.stp the solids with a seen face.
-void exportExterior(const Options& options, const scene::Scene& scene,
-                    const scene::Census& census) {
-    const std::string& path = options.censusExport;
-    if (censusExportsStep(path)) {
-        scene::writeStepSubset(options.live.scene.model, scene, scene::seenObjects(scene, census),
-                               path, options.live.scene.cad.healing);
-        return;
-    }
-    const scene::PartSet seen = scene::seenParts(census);
-    if (seen.empty()) throw std::runtime_error(path + ": nothing to write: the census saw no part");
-    scene::writeGlb(scene::keptParts(scene, seen), path);
-}
-
 void printParts(const scene::Scene& scene, const scene::Census& census) {
     for (uint32_t part = 0; part < census.parts.size(); ++part)
         std::printf("%s\n", censusPartJson(scene, census, part).c_str());
@@ -130,7 +106,8 @@ int runCensus(const Options& options) {
     if (options.live.animation.explode > 0.0f)
         exploded = scene::explodedScene(loaded.scene, options.live.animation.explode);
     const scene::Scene& scene = exploded ? *exploded : loaded.scene;
-    if (!options.censusExport.empty()) checkCensusExport(options, loaded);
+    if (!options.censusExport.empty()) // before drawing: a STEP export needs a CAD file
+        checkExteriorExport(options.censusExport, loaded.scene, loaded.source);
     const uint32_t repeats = options.benchmark ? 3 : 1;
     const CensusOutcome outcome = renderCensus(options, loaded.scene, scene.bounds(), repeats);
     const scene::Census& census = outcome.runs.back();
@@ -139,7 +116,9 @@ int runCensus(const Options& options) {
         return exitCode(outcome.validationMessages);
     }
     // The files first: a refused export ends the run in its one line, before any answer.
-    if (!options.censusExport.empty()) exportExterior(options, scene, census);
+    if (!options.censusExport.empty())
+        writeExterior(options.censusExport, scene, census, options.live.scene.model,
+                      options.live.scene.cad.healing);
     if (!options.censusCsv.empty()) writeCensusCsv(options.censusCsv, scene, census);
     printParts(scene, census);
     const scene::CensusSummary sum = scene::summarize(scene, census, outcome.hidden);

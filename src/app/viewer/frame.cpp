@@ -333,9 +333,15 @@ PanelInfo Viewer::panelInfo() const {
         info.pyramidMs += times[i].pyramidMs / double(last);
     }
     if (census_.running()) info.censusProgress = {census_.viewsDrawn(), census_.views()};
-    if (census_.found()) info.census = &*census_.found();
+    if (census_.found()) {
+        info.census = &*census_.found();
+        info.exportDefault = defaultExportPath(scene_.loaded());
+        info.exportStep = info.census->scene->brep != nullptr;
+    }
     info.censusTint = census_.tint();
     info.here = &census_.here();
+    info.exporting = censusExport_.writing();
+    info.exportLine = &censusExport_.line();
     return info;
 }
 

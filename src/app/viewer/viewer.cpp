@@ -384,7 +384,7 @@ FrameWants Viewer::frameWants() const {
     // A selection the Inspect section has not asked about yet, or its answer landed: a frame
     // for it. While the worker works the answer out, the loop may rest: the answer wakes it.
     wants.busy = input_.waiting() || picking_.waiting() || !screenshotPath_.empty() ||
-                 pendingZoom_ != 0.0f || censusBusy() ||
+                 pendingZoom_ != 0.0f || censusDrawing() || censusExport_.landed() ||
                  inspect_.due(document_.selection().selected(), document_.things());
     wants.loading = loading() || pipelinePending(); // progress lines in the panel
     wants.hovering = document_.selection().hovered().has_value();

@@ -16,6 +16,7 @@
 #include "app/viewer/panel/measure_overlay.h"
 #include "app/viewer/panel/overlays.h"
 #include "app/viewer/panel/panel.h"
+#include "app/viewer/state/census_export.h"
 #include "app/viewer/state/census_state.h"
 #include "app/viewer/state/document.h"
 #include "app/viewer/state/events.h"
@@ -141,9 +142,8 @@ class Viewer final : public InputTarget {
     bool pipelinePending() const override { return scene_.pipelinePending(); }
     // The Inspect panel's answer being worked out (`inspect ready`).
     bool inspecting() const override { return inspect_.computing(); }
-    bool censusBusy() const override {
-        return census_.running() || census_.hereWaiting() || hereAsked_;
-    }
+    // A census running, a `census here` not counted, an export being written (census-done).
+    bool censusBusy() const override { return censusDrawing() || censusExport_.writing(); }
     // The next frame draws everything anew, as after a change: the scene pass, the whole
     // composition and the panel (tests compare what frames at rest show with it).
     void redraw() override { redrawNext_ = true; }
@@ -277,6 +277,11 @@ class Viewer final : public InputTarget {
     uint64_t drawnTint_ = 0; // the census's tintVersion() the renderer draws
     bool tintShown_ = false; // the renderer draws a tint
     bool hereAsked_ = false; // `census here`: the next scene pass's ID image is counted
+    // Export seen...: written on its worker (its answer wakes the loop), told when taken.
+    CensusExport censusExport_{&Window::wake};
+    bool censusDrawing() const { return census_.running() || census_.hereWaiting() || hereAsked_; }
+    void exportCensus(const std::string& path);
+    void sayExported(const ExportOutcome& outcome);
     void startCensus(scene::CensusSpec spec);
     void cancelCensus();
     void stepCensus();

@@ -1,7 +1,8 @@
 // viewer_census.cpp - the Visibility section's census in the viewer (census_state.h): the
-// `census` command, a few views per frame, "visible from here" after a scene pass, and
-// their event records.
+// `census` command, a few views per frame, "visible from here" after a scene pass, Export
+// seen... (census_export.h), and their event records.
 #include <algorithm>
+#include <stdexcept>
 
 #include "app/viewer/commands/commands.h"
 #include "app/viewer/viewer.h"
@@ -47,6 +48,7 @@ void Viewer::census(const CensusAsk& ask) {
         break;
     }
     if (!found) throw CommandError("no census has finished yet (census VIEWSxSIZE runs one)");
+    if (ask.action == CensusAction::Export) return exportCensus(ask.path);
     if (ask.action == CensusAction::Select) {
         document_.select(found->neverSeen, SelectMode::Replace);
         selectionChanged();
@@ -57,6 +59,34 @@ void Viewer::census(const CensusAsk& ask) {
     document_.hide(hide);
     selectionChanged(); // hidden parts are not selected
     partsChanged();
+}
+
+// Export seen...: refused here in its line (a STEP of a mesh, one still writing), else
+// written on the export's worker from the scene the census counted.
+void Viewer::exportCensus(const std::string& path) {
+    const CensusFound& found = *census_.found();
+    const LoadedScene& loaded = scene_.loaded();
+    try {
+        if (censusExport_.writing())
+            throw std::runtime_error(path + ": an export is still being written");
+        checkExteriorExport(path, *found.scene, loaded.source);
+    } catch (const std::exception& e) {
+        return sayExported(censusExport_.refuse(path, e.what()));
+    }
+    censusExport_.start(
+        {path, found.scene, found.census, loaded.settings.model, loaded.settings.cad.healing});
+}
+
+void Viewer::sayExported(const ExportOutcome& outcome) {
+    events_.say("census_export", [&](util::JsonWriter& j) {
+        j.member("path", outcome.path);
+        if (!outcome.written) {
+            j.member("error", outcome.error);
+            return;
+        }
+        j.member("parts", outcome.written->parts).member("objects", outcome.written->objects);
+        j.member("replaced", outcome.replaced);
+    });
 }
 
 void Viewer::startCensus(scene::CensusSpec spec) {
@@ -97,6 +127,7 @@ void Viewer::stepCensus() {
             j.member("triangles_never_seen", sum.trianglesNeverSeen);
         });
     }
+    if (const auto outcome = censusExport_.take()) sayExported(*outcome);
     if (!census_.hereReady(slots_)) return;
     events_.say("census_here", [&](util::JsonWriter& j) {
         j.member("count", census_.here().size()).beginArray("parts");

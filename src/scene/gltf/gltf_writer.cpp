@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 
@@ -191,9 +193,22 @@ glm::dmat4 zUpToYUp() {
 
 void writeGlb(const Scene& scene, const std::string& path) {
     tinygltf::Model model = GlbBuilder(scene).build();
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToFile(&model, path, false, true, false, true))
+    // Written beside it, then renamed: the file appears whole or not at all, as a STEP
+    // export does (a full disk or a failed write leaves what was there before).
+    const std::string partial = path + ".part";
+    bool written = false;
+    {
+        std::ofstream out(partial, std::ios::binary);
+        written = out && tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, out, false, true);
+        out.close();
+        written = written && !out.fail();
+    }
+    std::error_code error;
+    if (written) std::filesystem::rename(partial, path, error);
+    if (!written || error) {
+        std::filesystem::remove(partial, error);
         throw std::runtime_error("cannot write glTF binary '" + path + "'");
+    }
 }
 
 } // namespace scene

@@ -17,7 +17,8 @@ namespace scene {
 // The rotation the writer puts into every node: idview's z-up to glTF's y-up.
 glm::dmat4 zUpToYUp();
 
-// Throws std::runtime_error naming the file when it cannot be written.
+// The file appears whole or not at all (written beside it, then renamed). Throws
+// std::runtime_error naming the file when it cannot be written.
 void writeGlb(const Scene& scene, const std::string& path);
 
 } // namespace scene

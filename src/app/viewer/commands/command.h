@@ -90,13 +90,14 @@ struct NodeTarget {
 // The Visibility section's census (census_state.h): run one of `views` x `size`, cancel it,
 // act on the parts it never saw (select, hide, isolate: hide all others), or count the parts
 // of the window's picture (here); Part selects one part, as a row of here's list does; Tint
-// turns the tint by visibility on or off.
-enum class CensusAction : uint8_t { Run, Cancel, Select, Hide, Isolate, Here, Part, Tint };
+// turns the tint by visibility on or off; Export writes what it saw to `path` (.glb, .step).
+enum class CensusAction : uint8_t { Run, Cancel, Select, Hide, Isolate, Here, Part, Tint, Export };
 struct CensusAsk {
     CensusAction action = CensusAction::Run;
     uint32_t views = 0, size = 0; // Run's
     uint32_t part = 0;            // Part's
     bool on = false;              // Tint's
+    std::string path{};           // Export's
     bool operator==(const CensusAsk&) const = default;
 };
 

@@ -54,7 +54,7 @@ const char* kindUsage(Kind kind) {
     case Kind::Node:
         return "select|add|hide|show [PATH]";
     case Kind::Census:
-        return "VIEWSxSIZE|cancel|select|hide|isolate|here|part ID|tint on|off";
+        return "VIEWSxSIZE|cancel|select|hide|isolate|here|part ID|tint on|off|export PATH";
     }
     return "";
 }
@@ -65,7 +65,8 @@ const char* const clearWords[] = {"auto", "pass", "compute"};
 const char* const levelNames[] = {"face", "solid", "assembly"};
 const char* const nodeActions[] = {"select", "add", "hide", "show"};
 // CensusAction's words after Run (which is VIEWSxSIZE).
-const char* const censusWords[] = {"cancel", "select", "hide", "isolate", "here", "part", "tint"};
+const char* const censusWords[] = {"cancel", "select", "hide", "isolate",
+                                   "here",   "part",   "tint", "export"};
 
 [[noreturn]] void fail(const std::string& message) {
     throw std::invalid_argument(message);
@@ -100,6 +101,7 @@ CensusAsk censusAsk(const CommandDef& def, const std::string& word) {
         const auto action = CensusAction(1 + oneOfWords(def.name, word, censusWords));
         if (action == CensusAction::Part) fail("'census part' takes a part ID");
         if (action == CensusAction::Tint) fail("'census tint' takes on or off");
+        if (action == CensusAction::Export) fail("'census export' takes a path");
         return {action};
     }
     try {
@@ -205,6 +207,7 @@ std::string argumentText(Kind kind, const Argument& argument) {
         std::string operator()(const CensusAsk& c) const {
             if (c.action == CensusAction::Part) return "part " + std::to_string(c.part);
             if (c.action == CensusAction::Tint) return c.on ? "tint on" : "tint off";
+            if (c.action == CensusAction::Export) return "export " + c.path;
             if (c.action != CensusAction::Run) return censusWords[size_t(c.action) - 1];
             return std::to_string(c.views) + "x" + std::to_string(c.size);
         }
@@ -265,7 +268,14 @@ Argument parseArgument(const CommandDef& def, const std::vector<std::string>& wo
     case Kind::Node:
         if (words.empty()) fail(usage);
         return parseNode(def, words, rest);
-    case Kind::Census: // `part ID` and `tint on|off`, the forms of two words
+    case Kind::Census: // `part ID`, `tint on|off` and `export PATH`, the forms of more words
+        if (words.size() >= 2 && words[0] == "export") // the path: the rest of the line
+            return CensusAsk{CensusAction::Export,
+                             0,
+                             0,
+                             0,
+                             false,
+                             rest.substr(rest.find_first_not_of(" \t", words[0].size()))};
         if (words.size() == 2 && words[0] == "part")
             return CensusAsk{CensusAction::Part, 0, 0, uint32_t(number(def, words[1]))};
         if (words.size() == 2 && words[0] == "tint")

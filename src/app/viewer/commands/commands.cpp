@@ -273,7 +273,8 @@ std::vector<CommandDef> partCommands() {
          "visibility census: VIEWSxSIZE runs one (views over a sphere, each SIZE pixels "
          "square); cancel stops it; select, hide or isolate its never-seen parts; here lists "
          "the parts of the window's picture by pixels; part ID selects that part; tint on|off "
-         "colours each part by how much the last census saw it",
+         "colours each part by how much the last census saw it; export PATH writes what it saw "
+         "(.glb: the seen parts; .step: the solids with a seen face, CAD models only)",
          {},
          [](CommandTarget& v, const Argument& a) { v.census(arg<CensusAsk>(a)); }},
     };

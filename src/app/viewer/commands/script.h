@@ -46,7 +46,8 @@
 //                           release` (the panel says "computing..." meanwhile); `inspect
 //                           ready` waits until the answer is in (never while held)
 //   5   census-done         wait until the census running (`census 12x128`) has finished or
-//                           was cancelled, and a `census here` has counted
+//                           was cancelled, a `census here` has counted, and a `census
+//                           export` has been written or refused
 //
 // Commands, each by its row's name with the argument it takes (F1 in the viewer lists them
 // all with their keys); a switch takes on or off, and without either toggles as its key does:
@@ -66,7 +67,8 @@
 //   3.6 copies 3            model copies, as the panel's field does
 //   3.65 census 12x128      the Visibility section's census (docs/viewer.md): VIEWSxSIZE runs
 //                           one; `census cancel`, `census select|hide|isolate` (its
-//                           never-seen parts), `census here` (the window's parts by pixels)
+//                           never-seen parts), `census here` (the window's parts by pixels),
+//                           `census export PATH` (Export seen...: .glb or .step)
 //   3.7 section y,0,flip    a section plane as --section gives it, in the first free slot of
 //                           the panel's three (a fourth replaces the third); `section off`
 //                           turns them all off

@@ -138,6 +138,12 @@ struct PanelInfo {
     const CensusFound* census = nullptr;
     bool censusTint = false; // the tint by visibility is on
     const std::vector<HerePart>* here = nullptr;
+    // Export seen...: where it proposes to write (a .glb; a CAD model offers .step too), and
+    // the last export's line (writing, wrote, its error), "" before the first.
+    std::string exportDefault;
+    bool exportStep = false;
+    bool exporting = false;
+    const std::string* exportLine = nullptr;
 };
 
 // Draws the panel; the user's changes land in `settings` (scene, render, animation) and

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include <imgui.h>
 
+#include "app/cli.h"
 #include "app/viewer/panel/panel_widgets.h"
 
 namespace app {
@@ -90,6 +92,49 @@ void summary(const CensusFound& found, PanelActions& actions) {
         ImGui::SetTooltip("show only the parts no view saw (hide everything else); Ctrl+Z undoes");
 }
 
+// The export's path field filled with `path`, cut to fit.
+void fillExportPath(ViewSettings& view, const std::string& path) {
+    view.exportPath.fill('\0');
+    path.copy(view.exportPath.data(), view.exportPath.size() - 1);
+}
+
+// Export seen...: the path (.glb, or .step for a CAD model: the radio buttons switch the
+// extension), Export, and the last export's line.
+void exportRow(ViewSettings& view, const PanelInfo& info, PanelActions& actions) {
+    if (view.exportPathFor != info.exportDefault) { // a new model: its own proposal
+        fillExportPath(view, info.exportDefault);
+        view.exportPathFor = info.exportDefault;
+    }
+    ImGui::TextUnformatted("Export seen...");
+    if (info.exportStep) {
+        const std::filesystem::path path(view.exportPath.data());
+        int step = censusExportsStep(path.string()) ? 1 : 0;
+        const int was = step;
+        ImGui::SameLine();
+        ImGui::RadioButton("glb", &step, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("step", &step, 1);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the solids with a seen face, from the CAD file read again");
+        if (step != was)
+            fillExportPath(
+                view,
+                std::filesystem::path(path).replace_extension(step ? ".step" : ".glb").string());
+    }
+    const char* label = "Export";
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonWidth(label) -
+                            ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::InputText("##export", view.exportPath.data(), view.exportPath.size(),
+                     ImGuiInputTextFlags_AutoSelectAll);
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::BeginDisabled(info.exporting || !view.exportPath[0]);
+    if (ImGui::Button(label))
+        actions.ask({CommandId::Census, CensusAsk{CensusAction::Export, 0, 0, 0, false,
+                                                  std::string(view.exportPath.data())}});
+    ImGui::EndDisabled();
+    if (info.exportLine && !info.exportLine->empty()) wrappedLine(*info.exportLine);
+}
+
 // The window's parts by pixel area, largest first; a click on a row selects its part.
 void hereList(const PanelInfo& info, PanelActions& actions) {
     if (ImGui::Button("Visible from here")) ask(actions, CensusAction::Here);
@@ -127,6 +172,7 @@ void visibilitySection(ViewSettings& view, const PanelInfo& info, PanelActions& 
     if (info.census) {
         summary(*info.census, actions);
         tintRow(info, actions);
+        exportRow(view, info, actions);
     }
     ImGui::Separator();
     hereList(info, actions);

@@ -67,7 +67,7 @@ bool CensusState::step(double budgetMs, const scene::Scene& drawn) {
            (next_ < slotCount || slots_->finished(next_ - slotCount)))
         run_->step(*slots_, next_++);
     if (!run_->done() || !slots_->finished(next_ - 1)) return false;
-    CensusFound found{spec_, run_->result(), {}, {}};
+    CensusFound found{spec_, run_->result(), {}, {}, std::make_shared<const scene::Scene>(drawn)};
     found.summary = scene::summarize(drawn, found.census, hidden_);
     found.neverSeen = scene::neverSeenParts(drawn, found.census, hidden_);
     found_ = std::move(found);

@@ -24,6 +24,9 @@ struct CensusFound {
     scene::Census census;
     scene::CensusSummary summary;
     scene::PartSet neverSeen; // scene::neverSeenParts
+    // The scene counted, as it was drawn (exploded where it was), for Export seen...: a copy
+    // sharing its arrays and B-rep, kept as the viewer's scene moves on.
+    std::shared_ptr<const scene::Scene> scene;
 };
 
 // One part of the window's picture: its pixels and their share of the image.

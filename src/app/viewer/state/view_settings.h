@@ -52,6 +52,9 @@ struct ViewSettings {
     PanelLayoutState layout; // the row under the pointer, the clipping report
     // The Visibility section's census fields: views, and each view's size in pixels.
     uint32_t censusViews = 162, censusSize = 512;
+    // Export seen...'s path field, and the proposal it was filled with (a new model, a new one).
+    std::array<char, 512> exportPath{};
+    std::string exportPathFor;
 };
 
 } // namespace app
