@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# run_fuzz.sh gltf|cad [SECONDS] - builds the loader's fuzzer with clang in build-fuzz/ and
-# runs it for SECONDS (default 60) on a copy of its seed corpus; exits non-zero on any crash,
+# run_fuzz.sh gltf|cad [SECONDS | --runs N] - builds the loader's fuzzer with clang in
+# build-fuzz/ and runs it for SECONDS (default 60) on a copy of its seed corpus, from a new
+# random seed each time: what a person runs to look for new faults. --runs N instead tries
+# exactly N inputs from seed 1, the same ones on every machine however fast: what the test
+# suite runs, so that its verdict depends on the code alone. Exits non-zero on any crash,
 # hang or sanitizer report. Before fuzzing, real files and the regressions in
 # fuzz/regressions/ run once each through the instrumented loader.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 target=${1:-}
-seconds=${2:-60}
+limit=(-max_total_time="${2:-60}")
+[[ ${2:-} == --runs ]] && limit=(-runs="${3:?--runs needs a count}" -seed=1)
 build=$root/build-fuzz
 
 case $target in
@@ -25,7 +29,7 @@ cad)
     export ASAN_OPTIONS=detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}
     ;;
 *)
-    echo "usage: fuzz/run_fuzz.sh gltf|cad [SECONDS]" >&2
+    echo "usage: fuzz/run_fuzz.sh gltf|cad [SECONDS | --runs N]" >&2
     exit 2
     ;;
 esac
@@ -49,5 +53,5 @@ trap 'rm -rf "$work"' EXIT
 cp -r "$seeds" "$work/corpus"
 # A crashing or hanging input is kept in build-fuzz/ as crash-<hash> or timeout-<hash>; it goes
 # into fuzz/regressions/ once fixed. -timeout is per input: a hang fails the run.
-"$fuzzer" -max_total_time="$seconds" -max_len=32768 -timeout=30 -rss_limit_mb=2048 \
+"$fuzzer" "${limit[@]}" -max_len=32768 -timeout=30 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$build/" "$work/corpus"
